@@ -1,0 +1,1 @@
+//! Geometry: vectors, exact predicates, normals, intersections.

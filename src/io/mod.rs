@@ -1,0 +1,1 @@
+//! Reading and writing meshes: OBJ (tobj), OFF, PLY.

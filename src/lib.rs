@@ -1,0 +1,18 @@
+//! # halfwing
+//!
+//! A half-edge polygon-mesh kernel, a winged-edge (Baumgart) kernel and a 2D Voronoi diagram with
+//! its Delaunay dual, with the topology checks, repairs, normals, surface generation and rendering
+//! buffers that real mesh work needs. The Rust API is first-class; [`ffi`] is a thin C ABI over it
+//! (see `include/halfwing.h`).
+
+pub mod geom;
+pub mod io;
+pub mod mesh;
+pub mod soup;
+pub mod voronoi;
+pub mod winged;
+
+pub mod ffi;
+
+/// The crate version, as `Cargo.toml` states it.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

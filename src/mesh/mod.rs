@@ -1,0 +1,1 @@
+//! The half-edge polygon-mesh kernel.

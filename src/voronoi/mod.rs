@@ -1,0 +1,1 @@
+//! The 2D Voronoi diagram and its Delaunay dual.

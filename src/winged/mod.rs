@@ -1,0 +1,1 @@
+//! The winged-edge (Baumgart) mesh kernel.
