@@ -1,7 +1,22 @@
 //! Indexed face lists ("polygon soups"): the input every kernel is built from and the output every
 //! reader produces. Validation and edge pairing of a face list live here so that the half-edge and
 //! winged-edge kernels share one diagnostic instead of two copies.
+//!
+//! A builder calls [`resolve`] with a [`BuildPolicy`]: it lays the list out as a [`FaceTable`],
+//! finds malformed faces and non-finite coordinates, pairs directed edges by bucketing
+//! ([`pair_edges`]), and refuses, skips or repairs until every corner has a partner corner or is
+//! on the boundary. The [`Diagnostic`] lists everything found, by input index.
 
+mod diagnostic;
 mod face_list;
+mod pairing;
+mod policy;
+mod resolve;
+mod table;
 
+pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
+pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
+pub use policy::{BuildError, BuildPolicy};
+pub use resolve::{Resolved, resolve};
+pub use table::{FaceDefects, FaceTable, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};

@@ -1,0 +1,205 @@
+//! The report every build returns: every defect of a face list, named by index.
+
+use std::fmt;
+
+/// How many indices of each list [`Diagnostic::summary`] prints before eliding the rest.
+const SUMMARY_SAMPLE: usize = 8;
+
+/// An undirected edge, given by its two input vertex indices (smaller first), and the input
+/// faces that use it, in increasing face order.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeReport {
+    /// The two vertex indices, `vertices[0] < vertices[1]`.
+    pub vertices: [u32; 2],
+    /// Input face indices using this edge, ascending.
+    pub faces: Vec<u32>,
+}
+
+/// A problem with the face list as a whole (not with one face): nothing can be built.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ListProblem {
+    /// Face sizes add up to `expected` corners but `actual` indices were given.
+    CornerCountMismatch {
+        /// Sum of the face sizes.
+        expected: u64,
+        /// Length of the index array.
+        actual: u64,
+    },
+    /// With a uniform face size, the index count is not a multiple of it (or the size is 0).
+    RaggedUniform {
+        /// The uniform face size.
+        size: u32,
+        /// Length of the index array.
+        indices: u64,
+    },
+    /// A count does not fit the `u32` ids the kernels use (indices must stay below `u32::MAX`,
+    /// and every corner may need two half-edges).
+    TooManyElements {
+        /// Which count overflowed ("vertices", "faces", "corners").
+        what: &'static str,
+        /// The offending count.
+        count: u64,
+    },
+}
+
+impl fmt::Display for ListProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ListProblem::CornerCountMismatch { expected, actual } => write!(
+                f,
+                "face sizes add up to {expected} corners but {actual} indices were given"
+            ),
+            ListProblem::RaggedUniform { size, indices } => {
+                write!(f, "{indices} indices do not split into faces of {size} corners")
+            }
+            ListProblem::TooManyElements { what, count } => {
+                write!(f, "{count} {what} exceed the 32-bit index range")
+            }
+        }
+    }
+}
+
+/// Everything a build found wrong with its input, by index. All face indices refer to the
+/// input face list; vertex indices refer to the input positions, except
+/// [`Diagnostic::non_manifold_vertices`], which are vertex ids of the built structure (equal to the
+/// input indices unless repair copied vertices, see [`Diagnostic::vertex_copies`]).
+///
+/// Lists are sorted ascending. An empty diagnostic ([`Diagnostic::is_clean`]) means a clean,
+/// closed-or-bordered, consistently oriented 2-manifold.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Diagnostic {
+    /// A defect of the list as a whole; when set, nothing else was analysed.
+    pub list_problem: Option<ListProblem>,
+    /// Faces with fewer than 3 corners (after repair collapsed repeated consecutive corners).
+    pub faces_too_small: Vec<u32>,
+    /// Faces with a vertex index beyond the positions.
+    pub faces_out_of_range: Vec<u32>,
+    /// Faces that name one vertex more than once.
+    pub faces_repeated_vertex: Vec<u32>,
+    /// Vertices with a NaN or infinite coordinate.
+    pub non_finite_vertices: Vec<u32>,
+    /// Edges used by three or more faces.
+    pub non_manifold_edges: Vec<EdgeReport>,
+    /// Edges used by exactly two faces that traverse it in the same direction.
+    pub inconsistent_edges: Vec<EdgeReport>,
+    /// Vertices whose faces form more than one fan (e.g. two cones touching at a tip). The
+    /// half-edge structure holds them; the vertex's circulators see only the fan of its
+    /// outgoing half-edge.
+    pub non_manifold_vertices: Vec<u32>,
+    /// Vertices no face uses (kept, with no half-edge).
+    pub isolated_vertices: Vec<u32>,
+    /// Faces with zero area (Newell vector negligible against their edge lengths).
+    pub degenerate_faces: Vec<u32>,
+    /// Faces left out of the built structure ([`BuildPolicy::Skip`](super::BuildPolicy::Skip)).
+    /// Kept faces keep their relative order: built face `i` is the `i`-th input face not listed
+    /// here.
+    pub skipped_faces: Vec<u32>,
+    /// Vertices added by repair: built vertex `n_input_vertices + i` copies input vertex
+    /// `vertex_copies[i]` (same position).
+    pub vertex_copies: Vec<u32>,
+}
+
+impl Diagnostic {
+    /// `true` when nothing at all was found.
+    pub fn is_clean(&self) -> bool {
+        self == &Diagnostic::default()
+    }
+
+    /// `true` when some face is malformed (too small, out-of-range or repeated index), a
+    /// coordinate is not finite, or the list as a whole is malformed.
+    pub fn has_invalid_input(&self) -> bool {
+        self.list_problem.is_some()
+            || !self.faces_too_small.is_empty()
+            || !self.faces_out_of_range.is_empty()
+            || !self.faces_repeated_vertex.is_empty()
+            || !self.non_finite_vertices.is_empty()
+    }
+
+    /// `true` when some edge is non-manifold or inconsistently oriented.
+    pub fn has_edge_defects(&self) -> bool {
+        !self.non_manifold_edges.is_empty() || !self.inconsistent_edges.is_empty()
+    }
+
+    /// A human-readable, multi-line account: one line per non-empty list, with its count and
+    /// the first few indices.
+    pub fn summary(&self) -> String {
+        self.to_string()
+    }
+}
+
+fn write_ids(f: &mut fmt::Formatter<'_>, label: &str, prefix: &str, ids: &[u32]) -> fmt::Result {
+    if ids.is_empty() {
+        return Ok(());
+    }
+    write!(f, "{} {label}:", ids.len())?;
+    for id in ids.iter().take(SUMMARY_SAMPLE) {
+        write!(f, " {prefix}{id}")?;
+    }
+    if ids.len() > SUMMARY_SAMPLE {
+        write!(f, " …")?;
+    }
+    writeln!(f)
+}
+
+fn write_edges(f: &mut fmt::Formatter<'_>, label: &str, edges: &[EdgeReport]) -> fmt::Result {
+    if edges.is_empty() {
+        return Ok(());
+    }
+    write!(f, "{} {label}:", edges.len())?;
+    for edge in edges.iter().take(SUMMARY_SAMPLE) {
+        write!(f, " (v{}-v{} in faces", edge.vertices[0], edge.vertices[1])?;
+        for face in &edge.faces {
+            write!(f, " f{face}")?;
+        }
+        write!(f, ")")?;
+    }
+    if edges.len() > SUMMARY_SAMPLE {
+        write!(f, " …")?;
+    }
+    writeln!(f)
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_clean() {
+            return writeln!(f, "no defects found");
+        }
+        if let Some(problem) = &self.list_problem {
+            writeln!(f, "malformed face list: {problem}")?;
+        }
+        write_ids(f, "faces with fewer than 3 corners", "f", &self.faces_too_small)?;
+        write_ids(f, "faces with out-of-range vertex indices", "f", &self.faces_out_of_range)?;
+        write_ids(f, "faces with a repeated vertex", "f", &self.faces_repeated_vertex)?;
+        write_ids(f, "vertices with NaN/infinite coordinates", "v", &self.non_finite_vertices)?;
+        write_edges(f, "non-manifold edges (3+ faces)", &self.non_manifold_edges)?;
+        write_edges(f, "inconsistently oriented edges", &self.inconsistent_edges)?;
+        write_ids(f, "non-manifold vertices", "v", &self.non_manifold_vertices)?;
+        write_ids(f, "isolated vertices", "v", &self.isolated_vertices)?;
+        write_ids(f, "degenerate (zero-area) faces", "f", &self.degenerate_faces)?;
+        write_ids(f, "faces skipped", "f", &self.skipped_faces)?;
+        write_ids(f, "vertices duplicated by repair, copies of", "v", &self.vertex_copies)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn summary_names_every_non_empty_list() {
+        let diagnostic = Diagnostic {
+            faces_too_small: vec![3],
+            non_manifold_edges: vec![EdgeReport { vertices: [1, 2], faces: vec![0, 4, 5] }],
+            isolated_vertices: (0..20).collect(),
+            ..Diagnostic::default()
+        };
+        let text = diagnostic.summary();
+        assert!(text.contains("1 faces with fewer than 3 corners: f3"), "{text}");
+        assert!(text.contains("(v1-v2 in faces f0 f4 f5)"), "{text}");
+        assert!(text.contains("20 isolated vertices: v0 v1"), "{text}");
+        assert!(text.contains('…'), "{text}");
+        assert!(!diagnostic.is_clean());
+        assert!(diagnostic.has_invalid_input());
+        assert_eq!(Diagnostic::default().summary(), "no defects found\n");
+    }
+}

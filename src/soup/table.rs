@@ -1,0 +1,295 @@
+//! A face list checked and laid out for the builders: face offsets, corners, and the map back to
+//! input face indices.
+
+use std::borrow::Cow;
+use std::ops::Range;
+
+use super::{FaceList, FaceSizes, ListProblem};
+
+/// Largest number of corners a table may hold: every corner may need two half-edges and
+/// half-edge ids must stay below `u32::MAX`.
+pub const MAX_CORNERS: u64 = (u32::MAX as u64 - 1) / 2;
+
+/// Largest number of vertices (ids must stay below `u32::MAX`).
+pub const MAX_VERTICES: u64 = u32::MAX as u64 - 1;
+
+/// Faces as offsets into one corner array. Face `f` has corners `offsets[f]..offsets[f + 1]`,
+/// in the input's (counter-clockwise) order. Borrowed from the input when nothing had to change.
+#[derive(Clone, Debug)]
+pub struct FaceTable<'a> {
+    offsets: Vec<u32>,
+    corners: Cow<'a, [u32]>,
+    /// Table face → input face; `None` means the identity.
+    input_faces: Option<Vec<u32>>,
+}
+
+impl<'a> FaceTable<'a> {
+    /// Lays out a face list, checking only list-level consistency and the 32-bit limits
+    /// (face-level defects are found by [`FaceTable::face_defects`]).
+    pub fn new(list: &FaceList<'a>) -> Result<Self, ListProblem> {
+        let n_corners = list.indices.len() as u64;
+        if n_corners > MAX_CORNERS {
+            return Err(ListProblem::TooManyElements { what: "corners", count: n_corners });
+        }
+        let offsets = match list.sizes {
+            FaceSizes::Uniform(size) => {
+                if size == 0 || n_corners % u64::from(size) != 0 {
+                    if n_corners == 0 {
+                        Vec::from([0])
+                    } else {
+                        return Err(ListProblem::RaggedUniform { size, indices: n_corners });
+                    }
+                } else {
+                    // n_corners < 2^31, so every offset fits in u32.
+                    (0..=n_corners / u64::from(size)).map(|f| (f * u64::from(size)) as u32).collect()
+                }
+            }
+            FaceSizes::PerFace(sizes) => {
+                let mut offsets = Vec::with_capacity(sizes.len() + 1);
+                let mut total: u64 = 0;
+                offsets.push(0);
+                for &size in sizes {
+                    total += u64::from(size);
+                    if total > n_corners {
+                        return Err(ListProblem::CornerCountMismatch {
+                            expected: sizes.iter().map(|&s| u64::from(s)).sum(),
+                            actual: n_corners,
+                        });
+                    }
+                    offsets.push(total as u32);
+                }
+                if total != n_corners {
+                    return Err(ListProblem::CornerCountMismatch { expected: total, actual: n_corners });
+                }
+                offsets
+            }
+        };
+        let n_faces = (offsets.len() - 1) as u64;
+        if n_faces >= u64::from(u32::MAX) {
+            return Err(ListProblem::TooManyElements { what: "faces", count: n_faces });
+        }
+        Ok(FaceTable { offsets, corners: Cow::Borrowed(list.indices), input_faces: None })
+    }
+
+    /// A table from owned parts. `offsets` starts at 0, ends at `corners.len()` and never
+    /// decreases; `input_faces`, when given, has one entry per face.
+    pub(crate) fn from_parts(offsets: Vec<u32>, corners: Vec<u32>, input_faces: Option<Vec<u32>>) -> Self {
+        debug_assert_eq!(offsets.last().map(|&o| o as usize), Some(corners.len()));
+        FaceTable { offsets, corners: Cow::Owned(corners), input_faces }
+    }
+
+    /// Number of faces.
+    #[inline]
+    pub fn n_faces(&self) -> usize {
+        self.offsets.len() - 1
+    }
+
+    /// Number of corners (sum of face sizes).
+    #[inline]
+    pub fn n_corners(&self) -> usize {
+        self.corners.len()
+    }
+
+    /// Face offsets into [`FaceTable::corners`] (`n_faces + 1` entries).
+    #[inline]
+    pub fn offsets(&self) -> &[u32] {
+        &self.offsets
+    }
+
+    /// Vertex index of every corner.
+    #[inline]
+    pub fn corners(&self) -> &[u32] {
+        &self.corners
+    }
+
+    /// The corner range of face `f`.
+    #[inline]
+    pub fn face_range(&self, f: usize) -> Range<usize> {
+        self.offsets[f] as usize..self.offsets[f + 1] as usize
+    }
+
+    /// The vertex indices of face `f`.
+    #[inline]
+    pub fn face(&self, f: usize) -> &[u32] {
+        &self.corners[self.face_range(f)]
+    }
+
+    /// The input face index of table face `f`.
+    #[inline]
+    pub fn input_face(&self, f: usize) -> u32 {
+        match &self.input_faces {
+            Some(map) => map[f],
+            None => f as u32,
+        }
+    }
+
+    /// The face holding corner `c` (binary search: for the rare repair paths).
+    pub fn face_of_corner(&self, c: usize) -> usize {
+        self.offsets.partition_point(|&o| o as usize <= c) - 1
+    }
+
+    /// The corner after `c` in its face (cyclically).
+    pub fn next_corner(&self, c: usize) -> usize {
+        let range = self.face_range(self.face_of_corner(c));
+        if c + 1 == range.end { range.start } else { c + 1 }
+    }
+
+    /// Mutable corners (copies borrowed input first).
+    pub(crate) fn corners_mut(&mut self) -> &mut [u32] {
+        self.corners.to_mut()
+    }
+
+    /// The table face → input face map, materialised.
+    pub fn input_faces(&self) -> Vec<u32> {
+        (0..self.n_faces()).map(|f| self.input_face(f)).collect()
+    }
+
+    /// Calls `visit(face, corner, next_corner)` for every corner in face order, `next_corner`
+    /// being the following corner of the same face (cyclically): corner `c`'s directed edge runs
+    /// from `corners[c]` to `corners[next_corner]`.
+    #[inline]
+    pub fn for_each_corner_edge(&self, mut visit: impl FnMut(usize, usize, usize)) {
+        for f in 0..self.n_faces() {
+            let range = self.face_range(f);
+            if range.is_empty() {
+                continue;
+            }
+            let last = range.end - 1;
+            for c in range.start..last {
+                visit(f, c, c + 1);
+            }
+            visit(f, last, range.start);
+        }
+    }
+
+    /// The table without the faces where `keep` is `false` (indexed by table face).
+    pub fn retain(&self, keep: &[bool]) -> FaceTable<'static> {
+        let mut offsets = Vec::with_capacity(self.n_faces() + 1);
+        let mut corners = Vec::with_capacity(self.n_corners());
+        let mut input_faces = Vec::with_capacity(self.n_faces());
+        offsets.push(0);
+        for f in (0..self.n_faces()).filter(|&f| keep[f]) {
+            corners.extend_from_slice(self.face(f));
+            offsets.push(corners.len() as u32);
+            input_faces.push(self.input_face(f));
+        }
+        FaceTable::from_parts(offsets, corners, Some(input_faces))
+    }
+
+    /// Finds face-level defects: faces with fewer than 3 corners, with an index `>= n_vertices`,
+    /// or naming a vertex twice. Each list holds input face indices, ascending.
+    pub fn face_defects(&self, n_vertices: usize) -> FaceDefects {
+        let mut defects = FaceDefects::default();
+        let mut scratch = Vec::new();
+        for f in 0..self.n_faces() {
+            let face = self.face(f);
+            let input = self.input_face(f);
+            if face.len() < 3 {
+                defects.too_small.push(input);
+            }
+            if face.iter().any(|&v| v as usize >= n_vertices) {
+                defects.out_of_range.push(input);
+            }
+            if has_repeated_vertex(face, &mut scratch) {
+                defects.repeated_vertex.push(input);
+            }
+        }
+        defects
+    }
+}
+
+/// Face-level defects of a table, as input face indices.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FaceDefects {
+    /// Faces with fewer than 3 corners.
+    pub too_small: Vec<u32>,
+    /// Faces with an index beyond the positions.
+    pub out_of_range: Vec<u32>,
+    /// Faces naming one vertex twice.
+    pub repeated_vertex: Vec<u32>,
+}
+
+impl FaceDefects {
+    /// `true` when no face has a defect.
+    pub fn is_empty(&self) -> bool {
+        self.too_small.is_empty() && self.out_of_range.is_empty() && self.repeated_vertex.is_empty()
+    }
+}
+
+/// Quadratic scan for the small faces that dominate real meshes, a sort for big polygons.
+pub(crate) fn has_repeated_vertex(face: &[u32], scratch: &mut Vec<u32>) -> bool {
+    const QUADRATIC_LIMIT: usize = 12;
+    if face.len() <= QUADRATIC_LIMIT {
+        face.iter().enumerate().any(|(i, v)| face[i + 1..].contains(v))
+    } else {
+        scratch.clear();
+        scratch.extend_from_slice(face);
+        scratch.sort_unstable();
+        scratch.windows(2).any(|w| w[0] == w[1])
+    }
+}
+
+/// Vertices with a NaN or infinite coordinate, ascending.
+pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
+    positions
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.iter().all(|c| c.is_finite()))
+        .map(|(v, _)| v as u32)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offsets_follow_sizes() {
+        let positions = [[0.0; 3]; 5];
+        let sizes = [3, 4];
+        let indices = [0, 1, 2, 0, 2, 3, 4];
+        let table = FaceTable::new(&FaceList::polygons(&positions, &sizes, &indices)).unwrap();
+        assert_eq!(table.offsets(), &[0, 3, 7]);
+        assert_eq!(table.face(1), &[0, 2, 3, 4]);
+        let mut edges = Vec::new();
+        table.for_each_corner_edge(|f, c, n| edges.push((f, c, n)));
+        assert_eq!(edges[2], (0, 2, 0));
+        assert_eq!(edges[6], (1, 6, 3));
+    }
+
+    #[test]
+    fn list_level_problems_are_refused() {
+        let positions = [[0.0; 3]; 3];
+        let indices = [0, 1, 2, 0];
+        let err = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap_err();
+        assert_eq!(err, ListProblem::RaggedUniform { size: 3, indices: 4 });
+        let huge = [u32::MAX, u32::MAX, 7];
+        let err = FaceTable::new(&FaceList::polygons(&positions, &huge, &indices)).unwrap_err();
+        assert_eq!(
+            err,
+            ListProblem::CornerCountMismatch { expected: 2 * u64::from(u32::MAX) + 7, actual: 4 }
+        );
+        let zero = FaceList { positions: &positions, sizes: FaceSizes::Uniform(0), indices: &indices };
+        assert!(FaceTable::new(&zero).is_err());
+    }
+
+    #[test]
+    fn face_defects_are_found() {
+        let sizes = [2, 3, 3, 13];
+        let mut indices = vec![0, 1, 0, 1, 99, 0, 1, 0];
+        indices.extend(0..12);
+        indices.push(5);
+        let positions = [[0.0; 3]; 12];
+        let table = FaceTable::new(&FaceList::polygons(&positions, &sizes, &indices)).unwrap();
+        let defects = table.face_defects(positions.len());
+        assert_eq!(defects.too_small, vec![0]);
+        assert_eq!(defects.out_of_range, vec![1]);
+        assert_eq!(defects.repeated_vertex, vec![2, 3]);
+    }
+
+    #[test]
+    fn non_finite_coordinates_are_found() {
+        let positions = [[0.0; 3], [f64::NAN, 0.0, 0.0], [0.0, f64::INFINITY, 0.0]];
+        assert_eq!(non_finite_vertices(&positions), vec![1, 2]);
+    }
+}
