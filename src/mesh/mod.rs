@@ -1,1 +1,23 @@
 //! The half-edge polygon-mesh kernel.
+//!
+//! [`Mesh`] stores general polygon meshes as struct-of-arrays of `u32` ids (see its docs for the
+//! conventions: `twin(h) = h ^ 1`, boundary half-edges with no face linked in loops, vertices
+//! storing their boundary half-edge). Build one with [`Mesh::from_face_list`]; navigate with the
+//! fast accessors or their checked `try_*` forms; circulate with the iterators of
+//! [`circulators`]; validate with [`Mesh::check`].
+
+mod build;
+mod check;
+pub mod circulators;
+mod connectivity;
+mod export;
+mod ids;
+mod navigation;
+mod vertex_fans;
+
+pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
+pub use check::{Element, Invariant, InvariantError};
+pub use circulators::HalfedgeWalk;
+pub use connectivity::Mesh;
+pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
+pub use navigation::{ElementKind, HandleError};

@@ -50,7 +50,10 @@ impl fmt::Display for ListProblem {
                 "face sizes add up to {expected} corners but {actual} indices were given"
             ),
             ListProblem::RaggedUniform { size, indices } => {
-                write!(f, "{indices} indices do not split into faces of {size} corners")
+                write!(
+                    f,
+                    "{indices} indices do not split into faces of {size} corners"
+                )
             }
             ListProblem::TooManyElements { what, count } => {
                 write!(f, "{count} {what} exceed the 32-bit index range")
@@ -167,17 +170,47 @@ impl fmt::Display for Diagnostic {
         if let Some(problem) = &self.list_problem {
             writeln!(f, "malformed face list: {problem}")?;
         }
-        write_ids(f, "faces with fewer than 3 corners", "f", &self.faces_too_small)?;
-        write_ids(f, "faces with out-of-range vertex indices", "f", &self.faces_out_of_range)?;
-        write_ids(f, "faces with a repeated vertex", "f", &self.faces_repeated_vertex)?;
-        write_ids(f, "vertices with NaN/infinite coordinates", "v", &self.non_finite_vertices)?;
+        write_ids(
+            f,
+            "faces with fewer than 3 corners",
+            "f",
+            &self.faces_too_small,
+        )?;
+        write_ids(
+            f,
+            "faces with out-of-range vertex indices",
+            "f",
+            &self.faces_out_of_range,
+        )?;
+        write_ids(
+            f,
+            "faces with a repeated vertex",
+            "f",
+            &self.faces_repeated_vertex,
+        )?;
+        write_ids(
+            f,
+            "vertices with NaN/infinite coordinates",
+            "v",
+            &self.non_finite_vertices,
+        )?;
         write_edges(f, "non-manifold edges (3+ faces)", &self.non_manifold_edges)?;
         write_edges(f, "inconsistently oriented edges", &self.inconsistent_edges)?;
         write_ids(f, "non-manifold vertices", "v", &self.non_manifold_vertices)?;
         write_ids(f, "isolated vertices", "v", &self.isolated_vertices)?;
-        write_ids(f, "degenerate (zero-area) faces", "f", &self.degenerate_faces)?;
+        write_ids(
+            f,
+            "degenerate (zero-area) faces",
+            "f",
+            &self.degenerate_faces,
+        )?;
         write_ids(f, "faces skipped", "f", &self.skipped_faces)?;
-        write_ids(f, "vertices duplicated by repair, copies of", "v", &self.vertex_copies)
+        write_ids(
+            f,
+            "vertices duplicated by repair, copies of",
+            "v",
+            &self.vertex_copies,
+        )
     }
 }
 
@@ -189,12 +222,18 @@ mod tests {
     fn summary_names_every_non_empty_list() {
         let diagnostic = Diagnostic {
             faces_too_small: vec![3],
-            non_manifold_edges: vec![EdgeReport { vertices: [1, 2], faces: vec![0, 4, 5] }],
+            non_manifold_edges: vec![EdgeReport {
+                vertices: [1, 2],
+                faces: vec![0, 4, 5],
+            }],
             isolated_vertices: (0..20).collect(),
             ..Diagnostic::default()
         };
         let text = diagnostic.summary();
-        assert!(text.contains("1 faces with fewer than 3 corners: f3"), "{text}");
+        assert!(
+            text.contains("1 faces with fewer than 3 corners: f3"),
+            "{text}"
+        );
         assert!(text.contains("(v1-v2 in faces f0 f4 f5)"), "{text}");
         assert!(text.contains("20 isolated vertices: v0 v1"), "{text}");
         assert!(text.contains('…'), "{text}");

@@ -26,12 +26,20 @@ pub struct FaceList<'a> {
 impl<'a> FaceList<'a> {
     /// A triangle list: `indices.len() / 3` triangles.
     pub fn triangles(positions: &'a [[f64; 3]], indices: &'a [u32]) -> Self {
-        FaceList { positions, sizes: FaceSizes::Uniform(3), indices }
+        FaceList {
+            positions,
+            sizes: FaceSizes::Uniform(3),
+            indices,
+        }
     }
 
     /// A polygon list with one size per face.
     pub fn polygons(positions: &'a [[f64; 3]], sizes: &'a [u32], indices: &'a [u32]) -> Self {
-        FaceList { positions, sizes: FaceSizes::PerFace(sizes), indices }
+        FaceList {
+            positions,
+            sizes: FaceSizes::PerFace(sizes),
+            indices,
+        }
     }
 }
 

@@ -84,7 +84,10 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
         while run_start < bucket.len() {
             let high = bucket[run_start] >> 32;
             let run_end = run_start
-                + bucket[run_start..].iter().take_while(|&&entry| entry >> 32 == high).count();
+                + bucket[run_start..]
+                    .iter()
+                    .take_while(|&&entry| entry >> 32 == high)
+                    .count();
             let run = &bucket[run_start..run_end];
             let corner = |i: usize| (run[i] & u64::from(u32::MAX)) as u32;
             let forward = |c: u32| corners[c as usize] as usize == low;
@@ -102,7 +105,11 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
                     problems.push(ProblemEdge {
                         vertices: [low as u32, high as u32],
                         corners: edge_corners,
-                        defect: if len == 2 { EdgeDefect::Inconsistent } else { EdgeDefect::NonManifold },
+                        defect: if len == 2 {
+                            EdgeDefect::Inconsistent
+                        } else {
+                            EdgeDefect::NonManifold
+                        },
                     });
                 }
             }

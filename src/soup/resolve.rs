@@ -32,8 +32,10 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
     let invalid = |diagnostic: Diagnostic| BuildError::InvalidInput(Box::new(diagnostic));
     let n_input_vertices = list.positions.len();
     if n_input_vertices as u64 > MAX_VERTICES {
-        diagnostic.list_problem =
-            Some(ListProblem::TooManyElements { what: "vertices", count: n_input_vertices as u64 });
+        diagnostic.list_problem = Some(ListProblem::TooManyElements {
+            what: "vertices",
+            count: n_input_vertices as u64,
+        });
         return Err(invalid(diagnostic));
     }
     let mut table = match FaceTable::new(list) {
@@ -55,10 +57,17 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
         BuildPolicy::Strict => {}
         BuildPolicy::Skip if !defects.is_empty() => {
             let mut keep = vec![true; table.n_faces()];
-            for &f in defects.too_small.iter().chain(&defects.out_of_range).chain(&defects.repeated_vertex) {
+            for &f in defects
+                .too_small
+                .iter()
+                .chain(&defects.out_of_range)
+                .chain(&defects.repeated_vertex)
+            {
                 keep[f as usize] = false;
             }
-            diagnostic.skipped_faces = (0..table.n_faces() as u32).filter(|&f| !keep[f as usize]).collect();
+            diagnostic.skipped_faces = (0..table.n_faces() as u32)
+                .filter(|&f| !keep[f as usize])
+                .collect();
             table = table.retain(&keep);
         }
         BuildPolicy::Skip => {}
@@ -67,7 +76,8 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                 return Err(invalid(diagnostic));
             }
             if !defects.repeated_vertex.is_empty() {
-                let (repaired, collapsed) = repair_repeated_vertices(&table, &defects.repeated_vertex, &mut copies)?;
+                let (repaired, collapsed) =
+                    repair_repeated_vertices(&table, &defects.repeated_vertex, &mut copies)?;
                 if !collapsed.is_empty() {
                     diagnostic.faces_too_small = collapsed;
                     return Err(invalid(diagnostic));
@@ -88,7 +98,9 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                 for &(f, _) in &refused {
                     keep[f] = false;
                 }
-                diagnostic.skipped_faces.extend(refused.iter().map(|&(f, _)| table.input_face(f)));
+                diagnostic
+                    .skipped_faces
+                    .extend(refused.iter().map(|&(f, _)| table.input_face(f)));
                 diagnostic.skipped_faces.sort_unstable();
                 table = table.retain(&keep);
                 pairing = pair_edges(&table, copies.n_vertices());
@@ -104,11 +116,21 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
         Cow::Borrowed(list.positions)
     } else {
         let mut positions = list.positions.to_vec();
-        positions.extend(copies.copied_from.iter().map(|&v| list.positions[v as usize]));
+        positions.extend(
+            copies
+                .copied_from
+                .iter()
+                .map(|&v| list.positions[v as usize]),
+        );
         Cow::Owned(positions)
     };
     diagnostic.vertex_copies = copies.copied_from;
-    Ok(Resolved { table, pairing, positions, diagnostic })
+    Ok(Resolved {
+        table,
+        pairing,
+        positions,
+        diagnostic,
+    })
 }
 
 /// Vertices added by repair, each remembering the input vertex it copies.
@@ -119,7 +141,10 @@ struct VertexCopies {
 
 impl VertexCopies {
     fn new(n_input: usize) -> Self {
-        VertexCopies { n_input, copied_from: Vec::new() }
+        VertexCopies {
+            n_input,
+            copied_from: Vec::new(),
+        }
     }
 
     fn n_vertices(&self) -> usize {
@@ -131,7 +156,10 @@ impl VertexCopies {
         let id = self.n_vertices() as u64;
         if id > MAX_VERTICES {
             let diagnostic = Diagnostic {
-                list_problem: Some(ListProblem::TooManyElements { what: "vertices", count: id + 1 }),
+                list_problem: Some(ListProblem::TooManyElements {
+                    what: "vertices",
+                    count: id + 1,
+                }),
                 ..Diagnostic::default()
             };
             return Err(BuildError::InvalidInput(Box::new(diagnostic)));
@@ -159,7 +187,10 @@ fn repair_repeated_vertices(
     offsets.push(0);
     for f in 0..table.n_faces() {
         let face = table.face(f);
-        if next_repair.next_if(|&&repair| repair as usize == f).is_none() {
+        if next_repair
+            .next_if(|&&repair| repair as usize == f)
+            .is_none()
+        {
             corners.extend_from_slice(face);
         } else {
             let start = corners.len();
@@ -168,7 +199,11 @@ fn repair_repeated_vertices(
                 if v == previous {
                     continue;
                 }
-                let v = if corners[start..].contains(&v) { copies.copy(v)? } else { v };
+                let v = if corners[start..].contains(&v) {
+                    copies.copy(v)?
+                } else {
+                    v
+                };
                 corners.push(v);
             }
             if corners.len() - start < 3 {
@@ -177,16 +212,25 @@ fn repair_repeated_vertices(
         }
         offsets.push(corners.len() as u32);
     }
-    Ok((FaceTable::from_parts(offsets, corners, Some(table.input_faces())), collapsed))
+    Ok((
+        FaceTable::from_parts(offsets, corners, Some(table.input_faces())),
+        collapsed,
+    ))
 }
 
 /// Lists the problem edges in the diagnostic, with input vertex and face indices.
 fn report_problems(table: &FaceTable<'_>, problems: &[ProblemEdge], diagnostic: &mut Diagnostic) {
     for problem in problems {
-        let mut faces: Vec<u32> =
-            problem.corners.iter().map(|&c| table.input_face(table.face_of_corner(c as usize))).collect();
+        let mut faces: Vec<u32> = problem
+            .corners
+            .iter()
+            .map(|&c| table.input_face(table.face_of_corner(c as usize)))
+            .collect();
         faces.sort_unstable();
-        let report = EdgeReport { vertices: problem.vertices, faces };
+        let report = EdgeReport {
+            vertices: problem.vertices,
+            faces,
+        };
         match problem.defect {
             EdgeDefect::NonManifold => diagnostic.non_manifold_edges.push(report),
             EdgeDefect::Inconsistent => diagnostic.inconsistent_edges.push(report),
@@ -196,7 +240,10 @@ fn report_problems(table: &FaceTable<'_>, problems: &[ProblemEdge], diagnostic: 
 
 /// Takes faces in table order and refuses a face when one of its problem edges is already used in
 /// its direction by an accepted face. Returns the refused faces with their problem corners.
-fn first_come_refusals(table: &FaceTable<'_>, problems: &[ProblemEdge]) -> Vec<(usize, Vec<usize>)> {
+fn first_come_refusals(
+    table: &FaceTable<'_>,
+    problems: &[ProblemEdge],
+) -> Vec<(usize, Vec<usize>)> {
     // (face, problem, direction, corner) for every corner on a problem edge, in face order.
     let mut claims: Vec<(usize, usize, usize, usize)> = problems
         .iter()
@@ -204,7 +251,12 @@ fn first_come_refusals(table: &FaceTable<'_>, problems: &[ProblemEdge]) -> Vec<(
         .flat_map(|(p, problem)| {
             problem.corners.iter().map(move |&c| {
                 let forward = table.corners()[c as usize] == problem.vertices[0];
-                (table.face_of_corner(c as usize), p, usize::from(forward), c as usize)
+                (
+                    table.face_of_corner(c as usize),
+                    p,
+                    usize::from(forward),
+                    c as usize,
+                )
             })
         })
         .collect();
@@ -217,7 +269,10 @@ fn first_come_refusals(table: &FaceTable<'_>, problems: &[ProblemEdge]) -> Vec<(
                 taken[p][dir] = true;
             }
         } else {
-            refused.push((face_claims[0].0, face_claims.iter().map(|claim| claim.3).collect()));
+            refused.push((
+                face_claims[0].0,
+                face_claims.iter().map(|claim| claim.3).collect(),
+            ));
         }
     }
     refused
@@ -239,7 +294,10 @@ fn repair_edges(
         let mut round_copies: HashMap<u32, u32> = HashMap::new();
         for (face, problem_corners) in refused {
             let targets: Vec<usize> = if round < REPAIR_ROUNDS {
-                problem_corners.iter().flat_map(|&c| [c, table.next_corner(c)]).collect()
+                problem_corners
+                    .iter()
+                    .flat_map(|&c| [c, table.next_corner(c)])
+                    .collect()
             } else {
                 table.face_range(face).collect()
             };

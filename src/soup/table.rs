@@ -29,7 +29,10 @@ impl<'a> FaceTable<'a> {
     pub fn new(list: &FaceList<'a>) -> Result<Self, ListProblem> {
         let n_corners = list.indices.len() as u64;
         if n_corners > MAX_CORNERS {
-            return Err(ListProblem::TooManyElements { what: "corners", count: n_corners });
+            return Err(ListProblem::TooManyElements {
+                what: "corners",
+                count: n_corners,
+            });
         }
         let offsets = match list.sizes {
             FaceSizes::Uniform(size) => {
@@ -37,11 +40,16 @@ impl<'a> FaceTable<'a> {
                     if n_corners == 0 {
                         Vec::from([0])
                     } else {
-                        return Err(ListProblem::RaggedUniform { size, indices: n_corners });
+                        return Err(ListProblem::RaggedUniform {
+                            size,
+                            indices: n_corners,
+                        });
                     }
                 } else {
                     // n_corners < 2^31, so every offset fits in u32.
-                    (0..=n_corners / u64::from(size)).map(|f| (f * u64::from(size)) as u32).collect()
+                    (0..=n_corners / u64::from(size))
+                        .map(|f| (f * u64::from(size)) as u32)
+                        .collect()
                 }
             }
             FaceSizes::PerFace(sizes) => {
@@ -59,23 +67,41 @@ impl<'a> FaceTable<'a> {
                     offsets.push(total as u32);
                 }
                 if total != n_corners {
-                    return Err(ListProblem::CornerCountMismatch { expected: total, actual: n_corners });
+                    return Err(ListProblem::CornerCountMismatch {
+                        expected: total,
+                        actual: n_corners,
+                    });
                 }
                 offsets
             }
         };
         let n_faces = (offsets.len() - 1) as u64;
         if n_faces >= u64::from(u32::MAX) {
-            return Err(ListProblem::TooManyElements { what: "faces", count: n_faces });
+            return Err(ListProblem::TooManyElements {
+                what: "faces",
+                count: n_faces,
+            });
         }
-        Ok(FaceTable { offsets, corners: Cow::Borrowed(list.indices), input_faces: None })
+        Ok(FaceTable {
+            offsets,
+            corners: Cow::Borrowed(list.indices),
+            input_faces: None,
+        })
     }
 
     /// A table from owned parts. `offsets` starts at 0, ends at `corners.len()` and never
     /// decreases; `input_faces`, when given, has one entry per face.
-    pub(crate) fn from_parts(offsets: Vec<u32>, corners: Vec<u32>, input_faces: Option<Vec<u32>>) -> Self {
+    pub(crate) fn from_parts(
+        offsets: Vec<u32>,
+        corners: Vec<u32>,
+        input_faces: Option<Vec<u32>>,
+    ) -> Self {
         debug_assert_eq!(offsets.last().map(|&o| o as usize), Some(corners.len()));
-        FaceTable { offsets, corners: Cow::Owned(corners), input_faces }
+        FaceTable {
+            offsets,
+            corners: Cow::Owned(corners),
+            input_faces,
+        }
     }
 
     /// Number of faces.
@@ -131,7 +157,11 @@ impl<'a> FaceTable<'a> {
     /// The corner after `c` in its face (cyclically).
     pub fn next_corner(&self, c: usize) -> usize {
         let range = self.face_range(self.face_of_corner(c));
-        if c + 1 == range.end { range.start } else { c + 1 }
+        if c + 1 == range.end {
+            range.start
+        } else {
+            c + 1
+        }
     }
 
     /// Mutable corners (copies borrowed input first).
@@ -220,7 +250,9 @@ impl FaceDefects {
 pub(crate) fn has_repeated_vertex(face: &[u32], scratch: &mut Vec<u32>) -> bool {
     const QUADRATIC_LIMIT: usize = 12;
     if face.len() <= QUADRATIC_LIMIT {
-        face.iter().enumerate().any(|(i, v)| face[i + 1..].contains(v))
+        face.iter()
+            .enumerate()
+            .any(|(i, v)| face[i + 1..].contains(v))
     } else {
         scratch.clear();
         scratch.extend_from_slice(face);
@@ -262,14 +294,27 @@ mod tests {
         let positions = [[0.0; 3]; 3];
         let indices = [0, 1, 2, 0];
         let err = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap_err();
-        assert_eq!(err, ListProblem::RaggedUniform { size: 3, indices: 4 });
+        assert_eq!(
+            err,
+            ListProblem::RaggedUniform {
+                size: 3,
+                indices: 4
+            }
+        );
         let huge = [u32::MAX, u32::MAX, 7];
         let err = FaceTable::new(&FaceList::polygons(&positions, &huge, &indices)).unwrap_err();
         assert_eq!(
             err,
-            ListProblem::CornerCountMismatch { expected: 2 * u64::from(u32::MAX) + 7, actual: 4 }
+            ListProblem::CornerCountMismatch {
+                expected: 2 * u64::from(u32::MAX) + 7,
+                actual: 4
+            }
         );
-        let zero = FaceList { positions: &positions, sizes: FaceSizes::Uniform(0), indices: &indices };
+        let zero = FaceList {
+            positions: &positions,
+            sizes: FaceSizes::Uniform(0),
+            indices: &indices,
+        };
         assert!(FaceTable::new(&zero).is_err());
     }
 

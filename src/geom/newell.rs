@@ -1,0 +1,88 @@
+//! Newell's method: the area vector of a polygon, planar or not (seed 000's face-normal loop).
+
+/// The Newell vector of the closed polygon `points`: perpendicular to the polygon's best-fit
+/// plane, pointing to the side from which the polygon runs counter-clockwise, with length twice
+/// its area (for planar polygons). Zero for fewer than 3 points.
+pub fn newell_vector(points: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
+    let mut points = points.into_iter();
+    let Some(first) = points.next() else {
+        return [0.0; 3];
+    };
+    let mut sum = [0.0; 3];
+    let mut add = |a: [f64; 3], b: [f64; 3]| {
+        sum[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        sum[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        sum[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    };
+    let mut previous = first;
+    for point in points {
+        add(previous, point);
+        previous = point;
+    }
+    add(previous, first);
+    sum
+}
+
+/// `true` when the polygon's area is negligible against its size: the Newell vector is no longer
+/// than a few rounding errors of the sum of squared edge lengths (so collinear corners, repeated
+/// positions and needles thinner than ~1e-15 of their length count as degenerate).
+pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]> + Clone) -> bool {
+    /// Relative size of the area vector below which it is rounding noise.
+    const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;
+    let area_vector = newell_vector(points.clone());
+    let area_norm = length(area_vector);
+    let mut points = points.into_iter();
+    let Some(first) = points.next() else {
+        return true;
+    };
+    let mut squared_perimeter = 0.0;
+    let mut previous = first;
+    for point in points.chain(std::iter::once(first)) {
+        squared_perimeter += squared_distance(previous, point);
+        previous = point;
+    }
+    area_norm <= RELATIVE_TOLERANCE * squared_perimeter
+}
+
+fn squared_distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]) * (a[i] - b[i])).sum()
+}
+
+fn length(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unit_square_has_area_vector_of_twice_its_area_along_z() {
+        let square = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        assert_eq!(newell_vector(square), [0.0, 0.0, 2.0]);
+        let reversed: Vec<_> = square.iter().rev().copied().collect();
+        assert_eq!(newell_vector(reversed), [0.0, 0.0, -2.0]);
+        assert!(!is_degenerate_polygon(square));
+    }
+
+    #[test]
+    fn collinear_and_coincident_corners_are_degenerate() {
+        assert!(is_degenerate_polygon([
+            [0.0, 0.0, 0.0],
+            [1.0, 1.0, 1.0],
+            [2.0, 2.0, 2.0]
+        ]));
+        assert!(is_degenerate_polygon([[1.0, 2.0, 3.0]; 3]));
+        assert!(is_degenerate_polygon([[0.0; 3]; 0]));
+        assert!(!is_degenerate_polygon([
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1e-6, 0.0]
+        ]));
+    }
+}

@@ -1,0 +1,222 @@
+//! Bulk construction from an indexed face list.
+//!
+//! [`soup::resolve`](crate::soup::resolve) pairs the directed edges by bucketing and applies the
+//! policy; this module turns the pairing into half-edges in three linear passes:
+//! 1. number the edges in corner order (a corner opens a new edge unless its partner came
+//!    first), so each face's half-edges sit close together in memory;
+//! 2. fill origin/next/prev/face face by face, plus the origin of each boundary twin;
+//! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
+//!    (walking the fan only at vertices with several boundary gaps).
+
+use crate::geom::is_degenerate_polygon;
+use crate::soup::{BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, resolve};
+
+use super::Mesh;
+use super::connectivity::Deletions;
+use super::ids::INVALID_INDEX;
+
+impl Mesh {
+    /// Builds a mesh from an indexed face list under `policy` (see [`BuildPolicy`]).
+    ///
+    /// Returns the mesh and the diagnostic of everything found (non-manifold vertices, isolated
+    /// vertices and degenerate faces are kept and reported under every policy), or a
+    /// [`BuildError`] carrying the diagnostic. An empty list gives an empty mesh (with its
+    /// vertices, all isolated); input vertex `i` is mesh vertex `i`; face `f` is input face `f`
+    /// unless faces were skipped (see [`Diagnostic::skipped_faces`]).
+    pub fn from_face_list(
+        list: &FaceList<'_>,
+        policy: BuildPolicy,
+    ) -> Result<(Mesh, Diagnostic), BuildError> {
+        let resolved = resolve(list, policy)?;
+        let mut diagnostic = resolved.diagnostic;
+        let mesh = Mesh::from_pairing(
+            &resolved.table,
+            &resolved.pairing.partner,
+            resolved.positions.into_owned(),
+        );
+        diagnostic.non_manifold_vertices =
+            mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
+        diagnostic.isolated_vertices = mesh.isolated_vertices();
+        diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &mesh.positions);
+        Ok((mesh, diagnostic))
+    }
+
+    /// Builds the connectivity of a resolved table: `partner[c]` is the corner sharing corner
+    /// `c`'s edge the other way, or [`BOUNDARY`].
+    fn from_pairing(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) -> Mesh {
+        let corners = table.corners();
+        let n_corners = corners.len();
+
+        // Pass 1: half-edge of every corner. n_corners < 2^31, so ids stay below u32::MAX.
+        let mut corner_halfedge = vec![0u32; n_corners];
+        let mut n_edges: u32 = 0;
+        for c in 0..n_corners {
+            let p = partner[c];
+            if p == BOUNDARY {
+                corner_halfedge[c] = 2 * n_edges;
+                n_edges += 1;
+            } else if p as usize > c {
+                corner_halfedge[c] = 2 * n_edges;
+                corner_halfedge[p as usize] = 2 * n_edges + 1;
+                n_edges += 1;
+            }
+        }
+
+        // Pass 2: face loops. Zeroed allocations are cheap; every slot gets written below.
+        let n_halfedges = 2 * n_edges as usize;
+        let mut origin = vec![0u32; n_halfedges];
+        let mut next = vec![0u32; n_halfedges];
+        let mut prev = vec![0u32; n_halfedges];
+        let mut face = vec![0u32; n_halfedges];
+        let mut vertex_halfedge = vec![INVALID_INDEX; positions.len()];
+        let mut face_halfedge = vec![0u32; table.n_faces()];
+        let mut boundary = Vec::new();
+        for (f, first_corner) in face_halfedge.iter_mut().enumerate() {
+            let range = table.face_range(f);
+            let first = corner_halfedge[range.start];
+            *first_corner = first;
+            let mut previous = corner_halfedge[range.end - 1];
+            for c in range.clone() {
+                let h = corner_halfedge[c];
+                let next_c = if c + 1 == range.end {
+                    range.start
+                } else {
+                    c + 1
+                };
+                let (hu, vertex) = (h as usize, corners[c]);
+                origin[hu] = vertex;
+                face[hu] = f as u32;
+                next[hu] = corner_halfedge[next_c];
+                prev[hu] = previous;
+                previous = h;
+                vertex_halfedge[vertex as usize] = h;
+                if partner[c] == BOUNDARY {
+                    origin[hu ^ 1] = corners[next_c];
+                    face[hu ^ 1] = INVALID_INDEX;
+                    boundary.push(h ^ 1);
+                }
+            }
+        }
+
+        let mut mesh = Mesh {
+            origin,
+            next,
+            prev,
+            face,
+            vertex_halfedge,
+            positions,
+            face_halfedge,
+            deleted: Deletions::default(),
+        };
+        mesh.link_boundary(&boundary);
+        mesh
+    }
+
+    /// Makes each boundary vertex's half-edge a boundary one and links the boundary half-edges
+    /// into loops: a boundary half-edge's next is the boundary half-edge leaving its target from
+    /// the same fan.
+    fn link_boundary(&mut self, boundary: &[u32]) {
+        let mut several_gaps = Vec::new();
+        for &b in boundary {
+            let v = self.origin[b as usize] as usize;
+            let current = self.vertex_halfedge[v];
+            if self.face[current as usize] != INVALID_INDEX {
+                self.vertex_halfedge[v] = b;
+            } else {
+                several_gaps.push(v as u32);
+            }
+        }
+        several_gaps.sort_unstable();
+        several_gaps.dedup();
+        for &b in boundary {
+            let target = self.origin[(b ^ 1) as usize];
+            let out = if several_gaps.binary_search(&target).is_ok() {
+                self.fan_end(b)
+            } else {
+                self.vertex_halfedge[target as usize]
+            };
+            self.next[b as usize] = out;
+            self.prev[out as usize] = b;
+        }
+    }
+
+    /// The boundary half-edge that closes the fan entered by boundary half-edge `b`: rotate
+    /// counter-clockwise (`twin(prev(h))`) from `twin(b)` until the face is the outside. Faces are
+    /// linked already, and a fan has at most as many half-edges as the mesh.
+    fn fan_end(&self, b: u32) -> u32 {
+        let mut h = b ^ 1;
+        for _ in 0..self.origin.len() {
+            let rotated = self.prev[h as usize] ^ 1;
+            if self.face[rotated as usize] == INVALID_INDEX {
+                return rotated;
+            }
+            h = rotated;
+        }
+        unreachable!("a fan opened by a boundary half-edge is closed by one")
+    }
+}
+
+/// Input indices of the faces whose area is negligible (non-finite positions are not degenerate
+/// but non-finite, reported apart).
+fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u32> {
+    let is_degenerate = |f: usize| {
+        let points = table.face(f).iter().map(|&v| positions[v as usize]);
+        is_degenerate_polygon(points)
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        (0..table.n_faces())
+            .into_par_iter()
+            .with_min_len(4096)
+            .filter(|&f| is_degenerate(f))
+            .map(|f| table.input_face(f))
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (0..table.n_faces())
+            .filter(|&f| is_degenerate(f))
+            .map(|f| table.input_face(f))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{FaceId, HalfedgeId, VertexId};
+
+    #[test]
+    fn two_triangles_have_one_interior_edge_and_a_boundary_loop_of_four() {
+        let positions = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        let indices = [0, 1, 2, 0, 2, 3];
+        let (mesh, diagnostic) = Mesh::from_face_list(
+            &FaceList::triangles(&positions, &indices),
+            BuildPolicy::Strict,
+        )
+        .unwrap();
+        assert!(diagnostic.is_clean(), "{diagnostic}");
+        assert_eq!(
+            (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+            (4, 5, 2)
+        );
+        let boundary: Vec<_> = (0..mesh.halfedge_capacity() as u32)
+            .map(HalfedgeId)
+            .filter(|&h| mesh.face(h) == FaceId::INVALID)
+            .collect();
+        assert_eq!(boundary.len(), 4);
+        for &b in &boundary {
+            assert_eq!(mesh.face(mesh.next(b)), FaceId::INVALID);
+            assert_eq!(mesh.origin(mesh.next(b)), mesh.target(b));
+            assert!(mesh.is_boundary_halfedge(mesh.vertex_halfedge(mesh.origin(b))));
+        }
+        assert_eq!(mesh.check(), Ok(()));
+        assert_eq!(mesh.valence(VertexId(0)), 3);
+    }
+}

@@ -1,0 +1,176 @@
+//! Circulators: iterators around a vertex, around a face and along a boundary loop.
+//!
+//! Orders:
+//! - Around a vertex `v`: outgoing half-edges counter-clockwise seen from outside, starting at
+//!   [`Mesh::vertex_halfedge`] (the boundary half-edge when `v` is on a boundary, so the faces then
+//!   follow in order across the fan); one step is `h → twin(prev(h))`. The incoming, vertex,
+//!   face and edge circulators follow the same order (incoming `twin(h)`, vertex `target(h)`,
+//!   face `face(h)` skipping the outside, edge `edge(h)`). At a non-manifold vertex only the fan
+//!   of `vertex_halfedge(v)` is visited.
+//! - Around a face `f`: half-edges counter-clockwise seen from outside, starting at
+//!   [`Mesh::face_halfedge`]; one step is `next`. Vertices are the half-edges' origins; adjacent
+//!   faces are the faces of the twins, boundary sides skipped.
+//! - Along a boundary loop: `next`, clockwise seen from outside.
+//!
+//! Every walk is bounded by the number of half-edges, and stops at an out-of-range id: a corrupt
+//! structure ends the iterator early instead of looping forever or panicking.
+
+use super::Mesh;
+use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
+
+#[derive(Clone, Copy, Debug)]
+enum Step {
+    /// `h → next(h)`: around a face or a boundary loop.
+    Next,
+    /// `h → twin(prev(h))`: counter-clockwise around the origin.
+    RotateCcw,
+}
+
+/// A bounded walk over half-edges that ends when it returns to its start.
+#[derive(Clone, Debug)]
+pub struct HalfedgeWalk<'m> {
+    mesh: &'m Mesh,
+    start: u32,
+    current: u32,
+    remaining: usize,
+    step: Step,
+    cut_short: bool,
+}
+
+impl<'m> HalfedgeWalk<'m> {
+    fn new(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
+        let start = if start.idx() < mesh.halfedge_capacity() {
+            start.0
+        } else {
+            INVALID_INDEX
+        };
+        HalfedgeWalk {
+            mesh,
+            start,
+            current: start,
+            remaining: mesh.halfedge_capacity(),
+            step,
+            cut_short: false,
+        }
+    }
+
+    /// `true` when the walk was cut short by its bound or an out-of-range id (a corrupt mesh).
+    pub fn was_cut_short(&self) -> bool {
+        self.cut_short || (self.remaining == 0 && self.current != INVALID_INDEX)
+    }
+}
+
+impl Iterator for HalfedgeWalk<'_> {
+    type Item = HalfedgeId;
+
+    #[inline]
+    fn next(&mut self) -> Option<HalfedgeId> {
+        if self.current == INVALID_INDEX || self.remaining == 0 {
+            return None;
+        }
+        self.remaining -= 1;
+        let h = self.current;
+        let following = match self.step {
+            Step::Next => self.mesh.next[h as usize],
+            Step::RotateCcw => self.mesh.prev[h as usize] ^ 1,
+        };
+        self.current = if following == self.start {
+            INVALID_INDEX
+        } else if following as usize >= self.mesh.halfedge_capacity() {
+            self.cut_short = true;
+            INVALID_INDEX
+        } else {
+            following
+        };
+        Some(HalfedgeId(h))
+    }
+}
+
+impl Mesh {
+    fn vertex_walk(&self, v: VertexId) -> HalfedgeWalk<'_> {
+        let start = self
+            .vertex_halfedge
+            .get(v.idx())
+            .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
+        HalfedgeWalk::new(self, start, Step::RotateCcw)
+    }
+
+    /// Outgoing half-edges of `v`, counter-clockwise from [`Mesh::vertex_halfedge`]. Empty for an
+    /// isolated or out-of-range vertex.
+    pub fn outgoing_halfedges(&self, v: VertexId) -> HalfedgeWalk<'_> {
+        self.vertex_walk(v)
+    }
+
+    /// Incoming half-edges of `v` (twins of the outgoing ones, same order).
+    pub fn incoming_halfedges(&self, v: VertexId) -> impl Iterator<Item = HalfedgeId> + '_ {
+        self.vertex_walk(v).map(HalfedgeId::twin)
+    }
+
+    /// Neighbours of `v` (targets of the outgoing half-edges, same order).
+    pub fn vertex_vertices(&self, v: VertexId) -> impl Iterator<Item = VertexId> + '_ {
+        self.vertex_walk(v).map(|h| self.target(h))
+    }
+
+    /// Faces around `v` (faces of the outgoing half-edges, same order, outside skipped).
+    pub fn vertex_faces(&self, v: VertexId) -> impl Iterator<Item = FaceId> + '_ {
+        self.vertex_walk(v)
+            .map(|h| self.face(h))
+            .filter(|f| f.is_valid())
+    }
+
+    /// Edges at `v` (edges of the outgoing half-edges, same order).
+    pub fn vertex_edges(&self, v: VertexId) -> impl Iterator<Item = EdgeId> + '_ {
+        self.vertex_walk(v).map(HalfedgeId::edge)
+    }
+
+    /// The loop of half-edges through `h` by `next`: its face's sides, or its boundary loop.
+    pub fn halfedge_loop(&self, h: HalfedgeId) -> HalfedgeWalk<'_> {
+        HalfedgeWalk::new(self, h, Step::Next)
+    }
+
+    /// Half-edges of `f`, counter-clockwise from [`Mesh::face_halfedge`]. Empty for an
+    /// out-of-range face.
+    pub fn face_loop(&self, f: FaceId) -> HalfedgeWalk<'_> {
+        let start = self
+            .face_halfedge
+            .get(f.idx())
+            .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
+        self.halfedge_loop(start)
+    }
+
+    /// Corners of `f` (origins of its half-edges, same order).
+    pub fn face_vertices(&self, f: FaceId) -> impl Iterator<Item = VertexId> + '_ {
+        self.face_loop(f).map(|h| self.origin(h))
+    }
+
+    /// Edges of `f`, same order.
+    pub fn face_edges(&self, f: FaceId) -> impl Iterator<Item = EdgeId> + '_ {
+        self.face_loop(f).map(HalfedgeId::edge)
+    }
+
+    /// Faces across `f`'s sides (same order, boundary sides skipped; a face adjacent along two
+    /// sides appears twice).
+    pub fn face_faces(&self, f: FaceId) -> impl Iterator<Item = FaceId> + '_ {
+        self.face_loop(f)
+            .map(|h| self.face(h.twin()))
+            .filter(|f| f.is_valid())
+    }
+
+    /// One half-edge of every boundary loop (the lowest id in the loop), ascending. Walk a loop
+    /// with [`Mesh::halfedge_loop`].
+    pub fn boundary_loops(&self) -> Vec<HalfedgeId> {
+        let mut visited = vec![false; self.halfedge_capacity()];
+        let mut loops = Vec::new();
+        for h in 0..self.halfedge_capacity() {
+            let h = HalfedgeId(h as u32);
+            if visited[h.idx()] || !self.is_boundary_halfedge(h) || self.is_halfedge_deleted(h) {
+                continue;
+            }
+            loops.push(h);
+            for g in self.halfedge_loop(h) {
+                visited[g.idx()] = true;
+            }
+        }
+        loops
+    }
+}

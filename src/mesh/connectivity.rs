@@ -1,0 +1,171 @@
+//! The half-edge mesh's struct-of-arrays storage.
+
+use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
+
+/// A half-edge polygon mesh (general polygons), stored as struct-of-arrays of `u32` indices.
+///
+/// Conventions:
+/// - Half-edges come in pairs: `twin(h) = h ^ 1`, `edge(h) = h >> 1`.
+/// - Each half-edge stores its `origin` vertex, `next` and `prev` half-edge around its face, and
+///   its `face`. Faces run counter-clockwise seen from outside.
+/// - Boundary half-edges are real half-edges with `face = INVALID`, linked by `next`/`prev` into
+///   loops that run clockwise seen from outside (the rows with face ∅ in seed 000's table).
+/// - Each vertex stores one outgoing half-edge — the boundary one when the vertex is on a
+///   boundary, `INVALID` when the vertex is isolated — and its position.
+/// - Each face stores one of its half-edges.
+/// - Deleted elements are only marked until `garbage_collect`; counts exclude them.
+///
+/// Memory: 16 bytes per half-edge, 28 per vertex, 4 per face (≈ 66 bytes per triangle of a
+/// closed triangle mesh).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    pub(super) origin: Vec<u32>,
+    pub(super) next: Vec<u32>,
+    pub(super) prev: Vec<u32>,
+    pub(super) face: Vec<u32>,
+    pub(super) vertex_halfedge: Vec<u32>,
+    pub(super) positions: Vec<[f64; 3]>,
+    pub(super) face_halfedge: Vec<u32>,
+    pub(super) deleted: Deletions,
+}
+
+/// Deletion marks. The flag vectors stay empty until something is deleted, so a freshly built
+/// mesh pays nothing for them.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(super) struct Deletions {
+    pub(super) vertices: Vec<bool>,
+    pub(super) edges: Vec<bool>,
+    pub(super) faces: Vec<bool>,
+    pub(super) n_vertices: usize,
+    pub(super) n_edges: usize,
+    pub(super) n_faces: usize,
+}
+
+impl Mesh {
+    /// An empty mesh.
+    pub fn new() -> Self {
+        Mesh::default()
+    }
+
+    /// Number of live (not deleted) vertices, isolated ones included.
+    pub fn n_vertices(&self) -> usize {
+        self.vertex_halfedge.len() - self.deleted.n_vertices
+    }
+
+    /// Number of live edges.
+    pub fn n_edges(&self) -> usize {
+        self.origin.len() / 2 - self.deleted.n_edges
+    }
+
+    /// Number of live half-edges (twice the edges).
+    pub fn n_halfedges(&self) -> usize {
+        2 * self.n_edges()
+    }
+
+    /// Number of live faces.
+    pub fn n_faces(&self) -> usize {
+        self.face_halfedge.len() - self.deleted.n_faces
+    }
+
+    /// Size of the vertex arrays, deleted slots included: valid vertex ids are below this.
+    pub fn vertex_capacity(&self) -> usize {
+        self.vertex_halfedge.len()
+    }
+
+    /// Size of the half-edge arrays, deleted slots included.
+    pub fn halfedge_capacity(&self) -> usize {
+        self.origin.len()
+    }
+
+    /// Size of the edge arrays (half the half-edge arrays), deleted slots included.
+    pub fn edge_capacity(&self) -> usize {
+        self.origin.len() / 2
+    }
+
+    /// Size of the face arrays, deleted slots included.
+    pub fn face_capacity(&self) -> usize {
+        self.face_halfedge.len()
+    }
+
+    /// `true` when vertex `v` is marked deleted (out-of-range ids are not).
+    pub fn is_vertex_deleted(&self, v: VertexId) -> bool {
+        self.deleted.vertices.get(v.idx()).copied().unwrap_or(false)
+    }
+
+    /// `true` when edge `e` (and so both its half-edges) is marked deleted.
+    pub fn is_edge_deleted(&self, e: EdgeId) -> bool {
+        self.deleted.edges.get(e.idx()).copied().unwrap_or(false)
+    }
+
+    /// `true` when half-edge `h`'s edge is marked deleted.
+    pub fn is_halfedge_deleted(&self, h: HalfedgeId) -> bool {
+        self.is_edge_deleted(h.edge())
+    }
+
+    /// `true` when face `f` is marked deleted.
+    pub fn is_face_deleted(&self, f: FaceId) -> bool {
+        self.deleted.faces.get(f.idx()).copied().unwrap_or(false)
+    }
+
+    /// `true` when some element is marked deleted (so the arrays have holes).
+    pub fn has_deleted_elements(&self) -> bool {
+        self.deleted.n_vertices + self.deleted.n_edges + self.deleted.n_faces > 0
+    }
+
+    // Zero-copy views of the raw arrays, indexed by element id; `u32::MAX` means none. They
+    // include deleted slots (see the `is_*_deleted` queries).
+
+    /// Origin vertex of every half-edge.
+    pub fn halfedge_origins(&self) -> &[u32] {
+        &self.origin
+    }
+
+    /// Next half-edge (around the face or boundary loop) of every half-edge.
+    pub fn halfedge_nexts(&self) -> &[u32] {
+        &self.next
+    }
+
+    /// Previous half-edge of every half-edge.
+    pub fn halfedge_prevs(&self) -> &[u32] {
+        &self.prev
+    }
+
+    /// Face of every half-edge (`u32::MAX` on the boundary).
+    pub fn halfedge_faces(&self) -> &[u32] {
+        &self.face
+    }
+
+    /// Outgoing half-edge of every vertex (the boundary one on a boundary; `u32::MAX` if
+    /// isolated).
+    pub fn vertex_halfedges(&self) -> &[u32] {
+        &self.vertex_halfedge
+    }
+
+    /// One half-edge of every face.
+    pub fn face_halfedges(&self) -> &[u32] {
+        &self.face_halfedge
+    }
+
+    /// Vertex positions.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    /// Vertex positions, writable (connectivity stays as it is).
+    pub fn positions_mut(&mut self) -> &mut [[f64; 3]] {
+        &mut self.positions
+    }
+
+    /// Adds an isolated vertex. `None` when the vertex count would reach `u32::MAX`.
+    pub fn add_vertex(&mut self, position: [f64; 3]) -> Option<VertexId> {
+        let id = u32::try_from(self.vertex_halfedge.len())
+            .ok()
+            .filter(|&id| id != INVALID_INDEX)?;
+        self.vertex_halfedge.push(INVALID_INDEX);
+        self.positions.push(position);
+        if !self.deleted.vertices.is_empty() {
+            self.deleted.vertices.push(false);
+        }
+        Some(VertexId(id))
+    }
+}
