@@ -246,3 +246,78 @@ impl Mesh {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::soup::{BuildPolicy, FaceList};
+
+    /// Two triangles sharing edge 0-2, plus one isolated vertex.
+    fn square() -> Mesh {
+        let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [5.0; 3]];
+        let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 2, 3]);
+        Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0
+    }
+
+    fn broken(corrupt: impl FnOnce(&mut Mesh)) -> InvariantError {
+        let mut mesh = square();
+        assert_eq!(mesh.check(), Ok(()));
+        corrupt(&mut mesh);
+        mesh.check().unwrap_err()
+    }
+
+    #[test]
+    fn each_corruption_names_its_invariant() {
+        let error = broken(|m| {
+            m.next.pop();
+        });
+        assert_eq!(error, InvariantError { invariant: Invariant::ArrayLengths, element: Element::Mesh });
+
+        let error = broken(|m| m.next[0] = 999);
+        assert_eq!(error.invariant, Invariant::HalfedgeReferences);
+        assert_eq!(error.element, Element::Halfedge(HalfedgeId(0)));
+
+        let error = broken(|m| m.prev.swap(0, 2));
+        assert_eq!(error.invariant, Invariant::NextPrevInverse);
+
+        let error = broken(|m| m.face[0] = 1);
+        assert!(matches!(error.invariant, Invariant::LoopOnOneFace), "{error}");
+
+        let error = broken(|m| m.origin[0] = 3);
+        assert!(matches!(error.invariant, Invariant::LoopConnected), "{error}");
+
+        let error = broken(|m| m.face_halfedge[1] = m.face_halfedge[0]);
+        assert_eq!(error, InvariantError { invariant: Invariant::FaceHalfedge, element: Element::Face(FaceId(1)) });
+
+        let error = broken(|m| {
+            let v = m.origin[0] as usize;
+            let interior = (0..m.origin.len()).find(|&h| m.origin[h] as usize == v && m.face[h] != INVALID_INDEX);
+            m.vertex_halfedge[v] = interior.unwrap() as u32;
+        });
+        assert_eq!(error.invariant, Invariant::VertexHalfedgeOnBoundary);
+
+        let error = broken(|m| m.vertex_halfedge[0] = INVALID_INDEX);
+        assert_eq!(error.invariant, Invariant::IsolatedVertexHasNoHalfedge);
+
+        let error = broken(|m| m.vertex_halfedge[4] = 0);
+        assert_eq!(error.invariant, Invariant::VertexHalfedge);
+        assert!(error.to_string().contains("v4"), "{error}");
+    }
+
+    #[test]
+    fn a_loop_that_never_closes_ends_the_walk() {
+        // A face loop that cycles without passing its start: 3-cycle reached from a 4th half-edge
+        // is impossible with next/prev inverse, so corrupt both to make the walk cycle.
+        let mut mesh = square();
+        let start = mesh.face_halfedge[0] as usize;
+        let second = mesh.next[start] as usize;
+        let third = mesh.next[second] as usize;
+        mesh.next[third] = second as u32;
+        let walk = mesh.face_loop(FaceId(0));
+        assert!(walk.clone().count() <= mesh.halfedge_capacity());
+        let mut walk = walk;
+        walk.by_ref().for_each(drop);
+        assert!(walk.was_cut_short());
+        assert!(mesh.check().is_err());
+    }
+}
