@@ -189,6 +189,8 @@ fn attributes_are_kept_where_files_have_them() {
 /// Every OBJ gives, face after face, the corner positions tobj gives (tobj reads `f32` and
 /// renumbers vertices, so positions are compared per corner, in single precision).
 #[test]
+// `tobj::Float` is `f32`, or `f64` when another crate enables tobj's `use_f64`: keep the casts.
+#[allow(clippy::unnecessary_cast)]
 fn obj_files_agree_with_tobj() {
     let dir = data_dir();
     let options = tobj::LoadOptions {
