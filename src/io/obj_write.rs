@@ -14,9 +14,15 @@ use super::attributes::check_soup;
 use super::error::IoError;
 use super::float_text::write_row;
 
-/// Writes a soup as OBJ.
+/// Writes a soup as OBJ. A face without corners cannot be written (OBJ has no such record) and is
+/// refused with [`IoError::InvalidSoup`].
 pub fn write_obj(out: impl Write, soup: &PolygonSoup) -> Result<(), IoError> {
     check_soup(soup)?;
+    if let Some(face) = soup.face_sizes.iter().position(|&size| size == 0) {
+        return Err(IoError::InvalidSoup(format!(
+            "face {face} has no corners, which OBJ cannot store"
+        )));
+    }
     let mut out = BufWriter::new(out);
     writeln!(out, "# written by halfwing {}", crate::VERSION)?;
     for position in &soup.positions {
