@@ -312,6 +312,11 @@ fn read_body<V: Values>(elements: &[Element], mut values: V) -> Result<PolygonSo
         } else {
             &[]
         };
+        if element.properties.is_empty() {
+            // Records without properties occupy no bytes: nothing to read, however many there are
+            // (looping over a declared 2^63 of them would hang).
+            continue;
+        }
         for record in 0..element.count {
             let mut position = [0.0; 3];
             let mut normal = [0.0; 3];
