@@ -12,7 +12,7 @@
 //! faces with one or two corners are kept for the builder's diagnostic to report. Everything else
 //! (`o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, free-form geometry) is ignored, so a missing
 //! `.mtl` file is harmless. `#` starts a comment anywhere on a line.
-//! Line continuation with a trailing `\\` is not supported: such a line fails with its number.
+//! Line continuation with a trailing `\` is not supported: such a line fails with its number.
 //!
 //! Corner attributes: if any corner has a normal (texture coordinate), `corner_normals`
 //! (`corner_uvs`) is present, and corners without one get NaN components so they can be told
