@@ -12,7 +12,7 @@
 //! faces with one or two corners are kept for the builder's diagnostic to report. Everything else
 //! (`o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, free-form geometry) is ignored, so a missing
 //! `.mtl` file is harmless. `#` starts a comment anywhere on a line.
-//! Line continuation with a trailing `\` is not supported: such a line fails with its number.
+//! Line continuation with a trailing `\` is not supported and fails at that line.
 //!
 //! Corner attributes: if any corner has a normal (texture coordinate), `corner_normals`
 //! (`corner_uvs`) is present, and corners without one get NaN components so they can be told
@@ -25,7 +25,7 @@ use crate::soup::PolygonSoup;
 
 use super::error::IoError;
 use super::format::MeshFormat;
-use super::text::{Lines, Tokens, capacity_for, parse_f64, parse_i64, quote, strip_comment};
+use super::text::{Lines, Tokens, parse_f64, parse_i64, quote, strip_comment};
 
 /// Marks a corner without a normal or texture coordinate.
 const ABSENT: u32 = u32::MAX;
@@ -39,7 +39,8 @@ pub fn read_obj(mut reader: impl Read) -> Result<PolygonSoup, IoError> {
 
 /// Reads an OBJ file held in memory.
 pub fn read_obj_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
-    let mut reader = ObjReader::with_capacity_for(bytes.len());
+    // OBJ declares no counts; vectors grow as records come (large regrowths are cheap `mremap`s).
+    let mut reader = ObjReader::default();
     for (line_number, line) in Lines::new(bytes) {
         reader.line = line_number;
         reader.record(strip_comment(line))?;
@@ -86,23 +87,14 @@ struct ObjReader {
 }
 
 impl ObjReader {
-    fn with_capacity_for(len: usize) -> Self {
-        // A vertex line takes at least 8 bytes (`v 0 0 0\n`) and a triangle about as many; a
-        // quarter of each is a cheap guess that avoids most regrowth without over-reserving.
-        let guess = capacity_for(u64::MAX, len, 32);
-        ObjReader {
-            positions: Vec::with_capacity(guess),
-            face_sizes: Vec::with_capacity(guess),
-            indices: Vec::with_capacity(guess * 3),
-            ..Default::default()
-        }
-    }
-
     fn error(&self, message: impl Into<String>) -> IoError {
         IoError::at_line(MeshFormat::Obj, self.line, message)
     }
 
     fn record(&mut self, line: &[u8]) -> Result<(), IoError> {
+        if line.trim_ascii_end().ends_with(b"\\") {
+            return Err(self.error("line continuation with `\\` is not supported"));
+        }
         let mut tokens = Tokens::new(line, self.line);
         match tokens.next() {
             Some(b"v") => {
@@ -332,7 +324,7 @@ mod tests {
 
     #[test]
     fn errors_name_their_line() {
-        let cases: [(&str, u64, &str); 9] = [
+        let cases: [(&str, u64, &str); 10] = [
             (
                 "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 7\n",
                 5,
@@ -350,6 +342,7 @@ mod tests {
                 3,
                 "texture coordinate index 2 is out of range",
             ),
+            ("v 0 0 0 \\\n", 1, "line continuation"),
         ];
         for (text, line, message) in cases {
             let error = read(text).unwrap_err();

@@ -3,7 +3,8 @@
 //! Writes `v` records for every position, then the distinct texture coordinates (`vt`) and
 //! normals (`vn`) of the corners (bitwise duplicates are written once), then one `f` record per
 //! face with 1-based `v`, `v/vt`, `v//vn` or `v/vt/vn` corners. Reading the file back gives the
-//! same soup, attributes included.
+//! same soup, attributes included (an attribute array of a soup without corners has nothing to
+//! write and reads back as `None`).
 
 use std::collections::HashMap;
 use std::io::{BufWriter, Write};
