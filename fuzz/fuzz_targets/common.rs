@@ -5,10 +5,16 @@ use halfwing::io::{MeshFormat, PlyEncoding, read_bytes, write_obj, write_off, wr
 /// Reads `bytes`; when that succeeds, checks the soup's consistency and that writing it in the
 /// same format and reading it again keeps its faces and indices.
 pub fn check(format: MeshFormat, bytes: &[u8]) {
-    let Ok(soup) = read_bytes(format, bytes) else { return };
+    let Ok(soup) = read_bytes(format, bytes) else {
+        return;
+    };
     let corners: u64 = soup.face_sizes.iter().map(|&size| u64::from(size)).sum();
     assert_eq!(corners, soup.indices.len() as u64);
-    assert!(soup.indices.iter().all(|&index| (index as usize) < soup.positions.len()));
+    assert!(
+        soup.indices
+            .iter()
+            .all(|&index| (index as usize) < soup.positions.len())
+    );
     let mut written = Vec::new();
     let result = match format {
         MeshFormat::Obj => write_obj(&mut written, &soup),
