@@ -18,13 +18,15 @@ enum Encoding {
     Off,
     PlyAscii,
     PlyBinary,
+    PlyBigEndian,
 }
 
-const ENCODINGS: [Encoding; 4] = [
+const ENCODINGS: [Encoding; 5] = [
     Encoding::Obj,
     Encoding::Off,
     Encoding::PlyAscii,
     Encoding::PlyBinary,
+    Encoding::PlyBigEndian,
 ];
 
 fn round_trip(soup: &PolygonSoup, encoding: Encoding) -> PolygonSoup {
@@ -37,6 +39,9 @@ fn round_trip(soup: &PolygonSoup, encoding: Encoding) -> PolygonSoup {
         }
         Encoding::PlyBinary => {
             write_ply(&mut bytes, soup, PlyEncoding::BinaryLittleEndian).map(|()| MeshFormat::Ply)
+        }
+        Encoding::PlyBigEndian => {
+            write_ply(&mut bytes, soup, PlyEncoding::BinaryBigEndian).map(|()| MeshFormat::Ply)
         }
     }
     .unwrap_or_else(|e| panic!("{encoding:?}: write failed: {e}"));

@@ -352,6 +352,14 @@ mod tests {
     }
 
     #[test]
+    fn byte_order_marks_and_old_mac_line_ends_lose_no_record() {
+        let soup = read("\u{FEFF}v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r").unwrap();
+        assert_eq!(soup.positions.len(), 3);
+        assert_eq!(soup.face_sizes, vec![3]);
+        assert_eq!(read("v 0 0 0\rf 1 1 9\r").unwrap_err().line(), Some(2));
+    }
+
+    #[test]
     fn nan_coordinates_are_values() {
         let soup = read("v nan 0 inf\n").unwrap();
         assert!(soup.positions[0][0].is_nan());

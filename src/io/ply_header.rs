@@ -104,27 +104,14 @@ pub(crate) fn header_error(line: u64, message: impl Into<String>) -> IoError {
 /// Parses the header at the start of `bytes`.
 pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, IoError> {
     let mut lines = Lines::new(bytes);
-    let mut offset = 0usize;
     let mut encoding = None;
     let mut elements: Vec<Element> = Vec::new();
-    let mut next_line = |offset: &mut usize| {
-        let (number, line) = lines.next()?;
-        // Lines strips `\n` and one `\r`; the raw length is found again from the buffer.
-        let start = *offset;
-        let end = bytes[start..]
-            .iter()
-            .position(|&b| b == b'\n')
-            .map_or(bytes.len(), |p| start + p + 1);
-        *offset = end;
-        Some((number, line))
-    };
-
-    match next_line(&mut offset) {
+    match lines.next() {
         Some((_, line)) if line.trim_ascii_end() == b"ply" => {}
         _ => return Err(header_error(1, "the file does not start with `ply`")),
     }
     loop {
-        let Some((number, line)) = next_line(&mut offset) else {
+        let Some((number, line)) = lines.next() else {
             return Err(header_error(
                 lines_after(bytes),
                 "the header has no `end_header` line",
@@ -213,7 +200,7 @@ pub(crate) fn parse_header(bytes: &[u8]) -> Result<Header, IoError> {
                 return Ok(Header {
                     encoding,
                     elements,
-                    body_offset: offset,
+                    body_offset: lines.offset(),
                     body_line: number + 1,
                 });
             }

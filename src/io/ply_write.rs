@@ -1,4 +1,4 @@
-//! Stanford PLY writer (ASCII or binary little endian).
+//! Stanford PLY writer (ASCII, binary little or big endian).
 //!
 //! Vertices carry `double x y z`, plus `double nx ny nz` and `double u v` when every corner of
 //! each vertex has the same normal or texture coordinate (PLY stores attributes per vertex; OBJ is
@@ -15,23 +15,21 @@ use super::error::IoError;
 use super::float_text::write_row;
 use super::ply_header::PlyEncoding;
 
-/// Writes a soup as PLY. Big-endian output is not offered: no current tool needs it.
+/// Writes a soup as PLY in the given encoding.
 pub fn write_ply(
     out: impl Write,
     soup: &PolygonSoup,
     encoding: PlyEncoding,
 ) -> Result<(), IoError> {
     check_soup(soup)?;
-    if encoding == PlyEncoding::BinaryBigEndian {
-        return Err(IoError::Unsupported("writing big-endian PLY".to_owned()));
-    }
     let attributes = VertexAttributes::of(soup);
     let mut out = BufWriter::new(out);
-    let format = if encoding == PlyEncoding::Ascii {
-        "ascii"
-    } else {
-        "binary_little_endian"
+    let format = match encoding {
+        PlyEncoding::Ascii => "ascii",
+        PlyEncoding::BinaryLittleEndian => "binary_little_endian",
+        PlyEncoding::BinaryBigEndian => "binary_big_endian",
     };
+    let big_endian = encoding == PlyEncoding::BinaryBigEndian;
     let wide_sizes = soup
         .face_sizes
         .iter()
@@ -78,10 +76,22 @@ pub fn write_ply(
             write_row(&mut out, "", &row)?;
         } else {
             for value in &row {
-                out.write_all(&value.to_le_bytes())?;
+                let bytes = if big_endian {
+                    value.to_be_bytes()
+                } else {
+                    value.to_le_bytes()
+                };
+                out.write_all(&bytes)?;
             }
         }
     }
+    let put_u32 = |out: &mut BufWriter<_>, value: u32| {
+        out.write_all(&if big_endian {
+            value.to_be_bytes()
+        } else {
+            value.to_le_bytes()
+        })
+    };
     let mut corners = soup.indices.iter();
     for &size in &soup.face_sizes {
         let face = corners.by_ref().take(size as usize);
@@ -92,14 +102,16 @@ pub fn write_ply(
             }
             out.write_all(b"\n")?;
         } else {
-            match wide_sizes {
-                // Checked above: every size fits in a byte unless `wide_sizes`.
-                false => out.write_all(&[size as u8])?,
-                true => out.write_all(&size.to_le_bytes())?,
+            if wide_sizes {
+                put_u32(&mut out, size)?;
+            } else {
+                // Every size fits in a byte unless `wide_sizes`.
+                out.write_all(&[size as u8])?;
             }
             for &index in face {
-                // `int` items hold every index when there are at most 2^31 - 1 vertices.
-                out.write_all(&index.to_le_bytes())?;
+                // `int` items hold every index when there are at most 2^31 - 1 vertices, and the
+                // bytes of such a `u32` are those of the same `i32`.
+                put_u32(&mut out, index)?;
             }
         }
     }

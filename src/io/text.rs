@@ -10,16 +10,28 @@ fn is_space(byte: u8) -> bool {
     matches!(byte, b' ' | b'\t' | b'\r' | b'\n' | 0x0b | 0x0c)
 }
 
-/// The lines of a buffer with their 1-based numbers, without the line terminator (`\n` or `\r\n`).
+/// The UTF-8 byte order mark some editors put at the start of a text file.
+const BYTE_ORDER_MARK: &[u8] = b"\xEF\xBB\xBF";
+
+/// The lines of a buffer with their 1-based numbers, without their terminators. A line ends at
+/// `\n`, `\r\n` or a lone `\r` (old Mac files), so no convention merges a file into one line.
+/// A leading UTF-8 byte order mark is skipped.
 pub(crate) struct Lines<'a> {
-    rest: &'a [u8],
+    bytes: &'a [u8],
+    position: usize,
     number: u64,
 }
 
 impl<'a> Lines<'a> {
     pub(crate) fn new(bytes: &'a [u8]) -> Self {
+        let position = if bytes.starts_with(BYTE_ORDER_MARK) {
+            BYTE_ORDER_MARK.len()
+        } else {
+            0
+        };
         Lines {
-            rest: bytes,
+            bytes,
+            position,
             number: 0,
         }
     }
@@ -29,22 +41,33 @@ impl<'a> Lines<'a> {
     pub(crate) fn last_number(&self) -> u64 {
         self.number
     }
+
+    /// The byte offset just past the line last returned and its terminator.
+    pub(crate) fn offset(&self) -> usize {
+        self.position
+    }
 }
 
 impl<'a> Iterator for Lines<'a> {
     type Item = (u64, &'a [u8]);
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.rest.is_empty() {
+        let rest = &self.bytes[self.position..];
+        if rest.is_empty() {
             return None;
         }
-        let (line, rest) = match self.rest.iter().position(|&b| b == b'\n') {
-            Some(end) => (&self.rest[..end], &self.rest[end + 1..]),
-            None => (self.rest, &self.rest[self.rest.len()..]),
+        let end = rest
+            .iter()
+            .position(|&b| b == b'\n' || b == b'\r')
+            .unwrap_or(rest.len());
+        let terminator = match rest.get(end..end + 2) {
+            Some(b"\r\n") => 2,
+            _ if end < rest.len() => 1,
+            _ => 0,
         };
-        self.rest = rest;
+        self.position += end + terminator;
         self.number += 1;
-        Some((self.number, line.strip_suffix(b"\r").unwrap_or(line)))
+        Some((self.number, &rest[..end]))
     }
 }
 
@@ -99,7 +122,9 @@ impl<'a> Iterator for Tokens<'a> {
             if !is_space(byte) {
                 break;
             }
-            if byte == b'\n' {
+            let lone_carriage_return =
+                byte == b'\r' && bytes.get(self.position + 1) != Some(&b'\n');
+            if byte == b'\n' || lone_carriage_return {
                 self.line += 1;
             }
             self.position += 1;
@@ -160,6 +185,20 @@ mod tests {
                 (4, &b"c"[..])
             ]
         );
+    }
+
+    #[test]
+    fn every_line_convention_and_a_byte_order_mark_are_understood() {
+        let lines: Vec<_> = Lines::new(b"\xEF\xBB\xBFa\rb\r\nc\n")
+            .map(|(n, l)| (n, l.to_vec()))
+            .collect();
+        assert_eq!(
+            lines,
+            vec![(1, b"a".to_vec()), (2, b"b".to_vec()), (3, b"c".to_vec())]
+        );
+        let mut tokens = Tokens::new(b"a\rb\r\nc", 1);
+        let lines: Vec<_> = std::iter::from_fn(|| tokens.next().map(|_| tokens.line())).collect();
+        assert_eq!(lines, vec![1, 2, 3]);
     }
 
     #[test]
