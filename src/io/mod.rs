@@ -14,6 +14,10 @@
 //!
 //! Writers take a `&PolygonSoup` and write floats in Rust's shortest round-trip form, so writing
 //! and reading again reproduces every bit. Output is buffered internally.
+//!
+//! The readers are halfwing's own: `tobj` renumbers and splits vertices per group and `ply-rs-bw`
+//! allocates per face and rejects `nan`; the reasons are spelled out in `obj_read.rs` and
+//! `ply_read.rs`.
 
 mod attributes;
 mod error;

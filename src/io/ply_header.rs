@@ -1,10 +1,4 @@
 //! The PLY header: encoding, elements and their properties.
-//!
-//! Why not `ply-rs-bw` for reading: its model builds one owned value per element record (a `Vec`
-//! per face) and returns them all before we can copy them into the soup, doubling peak memory and
-//! allocating per face; its ASCII number grammar rejects `nan`/`inf`, `.5` and `1.`, so the NaN
-//! policy could not be applied; and its errors are free text, not a line or record index. The
-//! format is small and fully described by its header, so halfwing reads it directly.
 
 use super::error::{IoError, Location};
 use super::format::MeshFormat;

@@ -6,6 +6,12 @@
 //! Other elements and properties are skipped. Vertex normals and texture coordinates are spread
 //! onto the corners. A file without a `face` element reads as a soup without faces. Errors give the
 //! line for ASCII bodies and the element and record index for binary ones.
+//!
+//! Why not `ply-rs-bw` for reading: its model builds one owned value per element record (a `Vec`
+//! per face) and returns them all before we can copy them into the soup, doubling peak memory and
+//! allocating per face; its ASCII number grammar rejects `nan`/`inf`, `.5` and `1.`, so the NaN
+//! policy could not be applied; and its errors are free text, not a line or record index. The
+//! format is small and fully described by its header, so halfwing reads it directly.
 
 use std::io::Read;
 
