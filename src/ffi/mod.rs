@@ -1,1 +1,25 @@
+//! The C ABI: a thin layer over the Rust API that holds no algorithm.
+//!
+//! Conventions (see `include/halfwing.h` for the C view):
+//! - every exported function goes through [`boundary`]: panics are caught, pointers are checked,
+//!   errors become an [`hw_status`](status::hw_status) and a thread-local message;
+//! - outputs (`out_*`) are written only when the call returns `HW_OK`;
+//! - objects are created by `_new`/`_build`/`_from_*` and released by `_free`; `_free(NULL)` is a
+//!   no-op and freeing twice is detected and refused.
 
+#![allow(non_camel_case_types)]
+
+pub(crate) mod boundary;
+pub mod diagnostic;
+pub(crate) mod error;
+pub(crate) mod face_list;
+pub(crate) mod handle;
+pub mod status;
+pub mod mesh;
+pub mod version;
+
+pub use diagnostic::*;
+pub use error::hw_last_error_message;
+pub use status::*;
+pub use mesh::*;
+pub use version::*;

@@ -10,6 +10,7 @@ mod build;
 mod check;
 pub mod circulators;
 mod connectivity;
+mod diagnose;
 mod export;
 mod ids;
 mod navigation;

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Regenerates include/halfwing.h with the pinned cbindgen, or with --check fails when the
+# committed header differs from what the code generates.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+want="0.29.4"
+if ! have=$(cbindgen --version 2>/dev/null) || [ "$have" != "cbindgen $want" ]; then
+  echo "gen-header: needs cbindgen $want (have: ${have:-none}); install it with" >&2
+  echo "  cargo install cbindgen --locked --version $want" >&2
+  exit 2
+fi
+if [ "${1:-}" = "--check" ]; then
+  tmp=$(mktemp)
+  trap 'rm -f "$tmp"' EXIT
+  cbindgen --config cbindgen.toml --crate halfwing --output "$tmp" --quiet
+  if ! diff -u include/halfwing.h "$tmp"; then
+    echo "gen-header: include/halfwing.h is stale; run scripts/gen-header.sh and commit it" >&2
+    exit 1
+  fi
+  echo "gen-header: include/halfwing.h is up to date"
+else
+  cbindgen --config cbindgen.toml --crate halfwing --output include/halfwing.h --quiet
+fi

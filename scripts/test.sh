@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Runs every test: cargo's (Rust unit, property and integration tests, the C smoke test), the
+# header check, then the CMake build and CTest (C/C++ API tests under AddressSanitizer and UBSan,
+# comparisons against CGAL and OpenMesh, examples, the installed-package consumer tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+scripts/setup.sh test
+scripts/gen-header.sh --check
+cargo test --quiet
+build=build/test
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_SANITIZE=ON
+cmake --build "$build" --parallel "$(nproc)"
+ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)"

@@ -1,0 +1,152 @@
+//! The one gate every exported function goes through: panics are caught, errors become a status
+//! and a recorded message, and pointer arguments are checked before anything is read or written.
+//!
+//! The pattern follows rustls-ffi: a fallible body returns `Result<_, FfiError>`; outputs are
+//! written only after the whole body has succeeded (see [`Out`]).
+
+use std::any::Any;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use super::error::{FfiError, record};
+use super::status::*;
+
+fn panic_message(payload: &(dyn Any + Send)) -> String {
+    let what = payload
+        .downcast_ref::<&str>()
+        .copied()
+        .or_else(|| payload.downcast_ref::<String>().map(String::as_str))
+        .unwrap_or("unknown panic payload");
+    format!("internal error, please report it: panic caught at the C boundary: {what}")
+}
+
+/// Runs the body of a status-returning exported function.
+pub(crate) fn guard(body: impl FnOnce() -> Result<(), FfiError>) -> hw_status {
+    match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => HW_OK,
+        Ok(Err(error)) => record(error),
+        Err(payload) => record(FfiError::new(HW_ERR_PANIC, panic_message(&*payload))),
+    }
+}
+
+/// Runs the body of a value-returning exported function (a getter or a navigation step). On an
+/// error or a panic the message is recorded and `fallback` (an invalid id, zero, false) returned.
+pub(crate) fn guard_value<T>(fallback: T, body: impl FnOnce() -> Result<T, FfiError>) -> T {
+    match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(value)) => value,
+        Ok(Err(error)) => {
+            record(error);
+            fallback
+        }
+        Err(payload) => {
+            record(FfiError::new(HW_ERR_PANIC, panic_message(&*payload)));
+            fallback
+        }
+    }
+}
+
+/// Runs a body that returns nothing (the `_free` functions).
+pub(crate) fn guard_void(body: impl FnOnce() -> Result<(), FfiError>) {
+    guard(body);
+}
+
+/// Borrows a read-only argument.
+///
+/// # Safety
+/// `ptr` must be NULL or valid for reads for the returned lifetime.
+pub(crate) unsafe fn arg_ref<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, FfiError> {
+    // SAFETY: the caller promises validity when not NULL.
+    unsafe { ptr.as_ref() }.ok_or_else(|| FfiError::null_argument(name))
+}
+
+/// Borrows a mutable argument.
+///
+/// # Safety
+/// `ptr` must be NULL or valid for reads and writes, unaliased, for the returned lifetime.
+pub(crate) unsafe fn arg_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, FfiError> {
+    // SAFETY: the caller promises validity and exclusivity when not NULL.
+    unsafe { ptr.as_mut() }.ok_or_else(|| FfiError::null_argument(name))
+}
+
+/// Borrows `len` elements starting at `ptr`. NULL is accepted only when `len` is 0.
+///
+/// # Safety
+/// `ptr` must be NULL or point to `len` initialised, properly aligned elements that stay valid and
+/// unmodified for the returned lifetime.
+pub(crate) unsafe fn arg_slice<'a, T>(
+    ptr: *const T,
+    len: usize,
+    name: &str,
+) -> Result<&'a [T], FfiError> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if ptr.is_null() {
+        return Err(FfiError::null_argument(name));
+    }
+    if !ptr.is_aligned() {
+        return Err(FfiError::invalid_input(format!("argument `{name}` is misaligned")));
+    }
+    if len.checked_mul(size_of::<T>()).is_none_or(|bytes| bytes > isize::MAX as usize) {
+        return Err(FfiError::invalid_input(format!(
+            "argument `{name}`: {len} elements do not fit in memory"
+        )));
+    }
+    // SAFETY: non-NULL, aligned, size checked; validity promised by the caller.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+/// An output argument, checked for NULL up front and written only when the call succeeds.
+pub(crate) struct Out<T>(*mut T);
+
+impl<T> Out<T> {
+    /// Checks an output pointer.
+    pub(crate) fn new(ptr: *mut T, name: &str) -> Result<Self, FfiError> {
+        if ptr.is_null() { Err(FfiError::null_argument(name)) } else { Ok(Out(ptr)) }
+    }
+
+    /// An optional output: NULL means the caller does not want it.
+    pub(crate) fn optional(ptr: *mut T) -> Option<Self> {
+        (!ptr.is_null()).then_some(Out(ptr))
+    }
+
+    /// Writes the value. Call only once the function can no longer fail.
+    ///
+    /// # Safety
+    /// The pointer given to [`Out::new`] must be valid for writes.
+    pub(crate) unsafe fn write(self, value: T) {
+        // SAFETY: non-NULL (checked in `new`), writable per the caller.
+        unsafe { self.0.write(value) }
+    }
+}
+
+/// Copies `text` NUL-terminated into a caller's buffer: the protocol of every "copy into caller
+/// buffer" call. `*needed` (when not NULL) always receives the size needed, terminator included;
+/// when `buf` is NULL or `len` is smaller, nothing is written to `buf` and the error is
+/// `HW_ERR_BUFFER_TOO_SMALL`.
+///
+/// # Safety
+/// `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or writable.
+pub(crate) unsafe fn copy_text(
+    text: &str,
+    buf: *mut std::ffi::c_char,
+    len: usize,
+    needed: *mut usize,
+) -> Result<(), FfiError> {
+    let size = text.len() + 1;
+    if !needed.is_null() {
+        // SAFETY: writable per the caller.
+        unsafe { needed.write(size) };
+    }
+    if buf.is_null() || len < size {
+        return Err(FfiError::new(
+            HW_ERR_BUFFER_TOO_SMALL,
+            format!("the buffer holds {len} bytes, {size} are needed"),
+        ));
+    }
+    // SAFETY: `buf` holds at least `size` writable bytes; `text` is a distinct Rust allocation.
+    unsafe {
+        std::ptr::copy_nonoverlapping(text.as_ptr(), buf.cast::<u8>(), text.len());
+        buf.add(text.len()).write(0);
+    }
+    Ok(())
+}

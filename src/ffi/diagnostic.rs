@@ -1,0 +1,229 @@
+//! `hw_diagnostic`: what a build (or a bare analysis) found wrong with an indexed face list.
+
+use crate::soup::{Diagnostic, EdgeReport};
+
+use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void};
+use super::error::FfiError;
+use super::face_list::face_list_arg;
+use super::handle::{free_handle, into_handle};
+use super::status::*;
+
+/// The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
+/// hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
+///
+/// Face indices refer to the input face list, vertex indices to the input positions, except
+/// ::HW_DIAG_NON_MANIFOLD_VERTICES (vertices of the built mesh: equal to the input indices unless
+/// repair copied vertices, see ::HW_DIAG_VERTEX_COPIES). Every list is sorted ascending.
+pub struct hw_diagnostic {
+    pub(crate) diagnostic: Diagnostic,
+}
+
+impl hw_diagnostic {
+    pub(crate) fn into_handle(diagnostic: Diagnostic) -> *mut hw_diagnostic {
+        into_handle(hw_diagnostic { diagnostic })
+    }
+}
+
+/// One list of element ids in a diagnostic (see hw_diagnostic_ids()).
+pub type hw_diagnostic_list = u32;
+/// Faces with fewer than 3 corners.
+pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 0;
+/// Faces with a vertex index beyond the positions.
+pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 1;
+/// Faces naming one vertex more than once.
+pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 2;
+/// Vertices with a NaN or infinite coordinate.
+pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 3;
+/// Vertices whose faces form more than one fan (kept in the mesh, reported).
+pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 4;
+/// Vertices no face uses.
+pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 5;
+/// Faces with zero area.
+pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 6;
+/// Faces left out of the mesh (::HW_BUILD_SKIP).
+pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 7;
+/// Vertices added by ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i` copies input vertex
+/// `ids[i]`.
+pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 8;
+
+/// One list of edges in a diagnostic (see hw_diagnostic_edge()).
+pub type hw_diagnostic_edges = u32;
+/// Edges used by three or more faces.
+pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 0;
+/// Edges whose two faces traverse them in the same direction.
+pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 1;
+
+fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], FfiError> {
+    Ok(match list {
+        HW_DIAG_FACES_TOO_SMALL => &diagnostic.faces_too_small,
+        HW_DIAG_FACES_OUT_OF_RANGE => &diagnostic.faces_out_of_range,
+        HW_DIAG_FACES_REPEATED_VERTEX => &diagnostic.faces_repeated_vertex,
+        HW_DIAG_NON_FINITE_VERTICES => &diagnostic.non_finite_vertices,
+        HW_DIAG_NON_MANIFOLD_VERTICES => &diagnostic.non_manifold_vertices,
+        HW_DIAG_ISOLATED_VERTICES => &diagnostic.isolated_vertices,
+        HW_DIAG_DEGENERATE_FACES => &diagnostic.degenerate_faces,
+        HW_DIAG_SKIPPED_FACES => &diagnostic.skipped_faces,
+        HW_DIAG_VERTEX_COPIES => &diagnostic.vertex_copies,
+        other => return Err(FfiError::invalid_input(format!("unknown diagnostic list {other}"))),
+    })
+}
+
+fn edge_list(diagnostic: &Diagnostic, edges: hw_diagnostic_edges) -> Result<&[EdgeReport], FfiError> {
+    match edges {
+        HW_DIAG_NON_MANIFOLD_EDGES => Ok(&diagnostic.non_manifold_edges),
+        HW_DIAG_INCONSISTENT_EDGES => Ok(&diagnostic.inconsistent_edges),
+        other => Err(FfiError::invalid_input(format!("unknown diagnostic edge list {other}"))),
+    }
+}
+
+/// Analyses an indexed face list without building anything (same arguments as
+/// hw_mesh_from_indexed()). Malformed data are not an error here — they are what the diagnostic
+/// reports; only NULL or impossible array arguments fail. On success `*out_diagnostic` receives
+/// a diagnostic to release with hw_diagnostic_free().
+///
+/// # Safety
+/// As for hw_mesh_from_indexed().
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnose_indexed(
+    positions: *const f64,
+    n_vertices: usize,
+    face_sizes: *const u32,
+    n_faces: usize,
+    indices: *const u32,
+    n_indices: usize,
+    out_diagnostic: *mut *mut hw_diagnostic,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_diagnostic, "out_diagnostic")?;
+        // SAFETY: forwarded from the caller.
+        let list = unsafe {
+            face_list_arg(positions, n_vertices, face_sizes, n_faces, indices, n_indices)?
+        };
+        let diagnostic = crate::mesh::Mesh::diagnose(&list);
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(hw_diagnostic::into_handle(diagnostic)) };
+        Ok(())
+    })
+}
+
+/// Releases a diagnostic. NULL is a no-op; freeing twice is detected and refused.
+///
+/// # Safety
+/// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(diagnostic, "hw_diagnostic") });
+}
+
+/// `true` when nothing at all was found; `false` otherwise or for a NULL diagnostic.
+///
+/// # Safety
+/// `diagnostic` must be NULL or live.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic) -> bool {
+    // SAFETY: forwarded from the caller.
+    guard_value(false, || Ok(unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic.is_clean()))
+}
+
+/// A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` may be NULL when
+/// the list is empty). The view lives as long as the diagnostic.
+///
+/// # Safety
+/// `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_ids(
+    diagnostic: *const hw_diagnostic,
+    list: hw_diagnostic_list,
+    out_ids: *mut *const u32,
+    out_len: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let (out_ids, out_len) = (Out::new(out_ids, "out_ids")?, Out::new(out_len, "out_len")?);
+        // SAFETY: forwarded from the caller.
+        let ids = id_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, list)?;
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe {
+            out_ids.write(if ids.is_empty() { std::ptr::null() } else { ids.as_ptr() });
+            out_len.write(ids.len());
+        }
+        Ok(())
+    })
+}
+
+/// The number of edges in one edge list.
+///
+/// # Safety
+/// `diagnostic` must be NULL or live; `out_count` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_edge_count(
+    diagnostic: *const hw_diagnostic,
+    edges: hw_diagnostic_edges,
+    out_count: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_count, "out_count")?;
+        // SAFETY: forwarded from the caller.
+        let list = edge_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, edges)?;
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(list.len()) };
+        Ok(())
+    })
+}
+
+/// Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
+/// and a zero-copy view of the input faces using it (ascending), valid as long as the diagnostic.
+///
+/// # Safety
+/// `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
+/// `out_faces` and `out_n_faces` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_edge(
+    diagnostic: *const hw_diagnostic,
+    edges: hw_diagnostic_edges,
+    index: usize,
+    out_vertices: *mut u32,
+    out_faces: *mut *const u32,
+    out_n_faces: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let out_vertices = Out::new(out_vertices.cast::<[u32; 2]>(), "out_vertices")?;
+        let out_faces = Out::new(out_faces, "out_faces")?;
+        let out_n_faces = Out::new(out_n_faces, "out_n_faces")?;
+        // SAFETY: forwarded from the caller.
+        let list = edge_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, edges)?;
+        let edge = list.get(index).ok_or_else(|| {
+            FfiError::invalid_input(format!("edge {index} of a list of {}", list.len()))
+        })?;
+        // SAFETY: checked non-NULL, writable per the caller (`out_vertices` holds two values;
+        // written unaligned-safe as `u32` is its own alignment).
+        unsafe {
+            out_vertices.write(edge.vertices);
+            out_faces.write(edge.faces.as_ptr());
+            out_n_faces.write(edge.faces.len());
+        }
+        Ok(())
+    })
+}
+
+/// A human-readable account (one line per non-empty list, with the first few indices), copied
+/// NUL-terminated into `buf`. `*needed` receives the size needed even when `buf` is too small
+/// (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`).
+///
+/// # Safety
+/// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_diagnostic_summary(
+    diagnostic: *const hw_diagnostic,
+    buf: *mut std::ffi::c_char,
+    len: usize,
+    needed: *mut usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let diagnostic = unsafe { arg_ref(diagnostic, "diagnostic") }?;
+        // SAFETY: forwarded from the caller.
+        unsafe { copy_text(&diagnostic.diagnostic.summary(), buf, len, needed) }
+    })
+}

@@ -1,0 +1,171 @@
+//! `hw_mesh`: the half-edge mesh object — creation from an indexed face list, counts, release.
+
+use crate::mesh::Mesh;
+use crate::soup::{BuildError, BuildPolicy};
+
+use super::boundary::{Out, arg_ref, guard, guard_value, guard_void};
+use super::diagnostic::hw_diagnostic;
+use super::error::FfiError;
+use super::face_list::face_list_arg;
+use super::handle::{free_handle, into_handle};
+use super::status::*;
+
+/// A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
+/// release it with hw_mesh_free().
+pub struct hw_mesh {
+    pub(crate) mesh: Mesh,
+}
+
+/// What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
+#[allow(non_camel_case_types)]
+pub type hw_build_policy = u32;
+/// Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
+/// cannot be placed; the message names the offending faces, edges and vertices.
+pub const HW_BUILD_STRICT: hw_build_policy = 0;
+/// Leave out the faces that cannot be placed (and report them); build the rest.
+pub const HW_BUILD_SKIP: hw_build_policy = 1;
+/// Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
+pub const HW_BUILD_REPAIR: hw_build_policy = 2;
+
+fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
+    match raw {
+        HW_BUILD_STRICT => Ok(BuildPolicy::Strict),
+        HW_BUILD_SKIP => Ok(BuildPolicy::Skip),
+        HW_BUILD_REPAIR => Ok(BuildPolicy::Repair),
+        other => Err(FfiError::invalid_input(format!("unknown build policy {other}"))),
+    }
+}
+
+impl From<BuildError> for FfiError {
+    fn from(error: BuildError) -> Self {
+        let status = match &error {
+            BuildError::NonManifold(_) => HW_ERR_NON_MANIFOLD,
+            BuildError::InvalidInput(_) => HW_ERR_INVALID_INPUT,
+        };
+        FfiError::new(status, error.to_string())
+    }
+}
+
+/// Borrows the mesh of a `const hw_mesh *` argument.
+///
+/// # Safety
+/// `mesh` must be NULL or a live `hw_mesh`.
+pub(crate) unsafe fn mesh_ref<'a>(mesh: *const hw_mesh) -> Result<&'a Mesh, FfiError> {
+    // SAFETY: forwarded from the caller.
+    Ok(&unsafe { arg_ref(mesh, "mesh") }?.mesh)
+}
+
+/// Creates an empty mesh. Returns NULL only if the allocation fails.
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
+    guard_value(std::ptr::null_mut(), || Ok(into_handle(hw_mesh { mesh: Mesh::default() })))
+}
+
+/// Builds a mesh from an indexed polygon list.
+///
+/// `positions` holds `3 * n_vertices` doubles (x, y, z per vertex); `face_sizes` holds the corner
+/// count of each of the `n_faces` faces; `indices` holds the `n_indices` vertex indices of all
+/// corners, face after face (so `n_indices` must equal the sum of `face_sizes`). Faces are
+/// counter-clockwise seen from outside. Pairing is done in bulk by sorting edge keys.
+///
+/// `policy` decides what happens to faces that do not fit a half-edge structure (see
+/// ::HW_BUILD_STRICT, ::HW_BUILD_SKIP, ::HW_BUILD_REPAIR). Malformed data — sizes below 3 or not
+/// summing to `n_indices`, indices out of range, NaN or infinite coordinates — give
+/// `HW_ERR_INVALID_INPUT` under ::HW_BUILD_STRICT; the message names the faces and vertices.
+///
+/// On success `*out_mesh` receives a new mesh to release with hw_mesh_free(), and, when
+/// `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic of everything found (also what a
+/// policy skipped or repaired) to release with hw_diagnostic_free(). On failure neither is
+/// written; hw_diagnose_indexed() gives the full diagnostic of refused input.
+///
+/// # Safety
+/// Array arguments must point to at least as many elements as their counts say (they may be NULL
+/// when the count is 0); `out_mesh` must be writable; `out_diagnostic` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_from_indexed(
+    positions: *const f64,
+    n_vertices: usize,
+    face_sizes: *const u32,
+    n_faces: usize,
+    indices: *const u32,
+    n_indices: usize,
+    policy: hw_build_policy,
+    out_mesh: *mut *mut hw_mesh,
+    out_diagnostic: *mut *mut hw_diagnostic,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_mesh, "out_mesh")?;
+        let out_diagnostic = Out::optional(out_diagnostic);
+        // SAFETY: forwarded from the caller.
+        let list = unsafe {
+            face_list_arg(positions, n_vertices, face_sizes, n_faces, indices, n_indices)?
+        };
+        let (mesh, diagnostic) = Mesh::from_face_list(&list, build_policy(policy)?)?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe {
+            out.write(into_handle(hw_mesh { mesh }));
+            if let Some(out_diagnostic) = out_diagnostic {
+                out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Releases a mesh. NULL is a no-op; a mesh freed already is detected and refused (the last error
+/// says so).
+///
+/// # Safety
+/// `mesh` must be NULL or a mesh from this library not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_free(mesh: *mut hw_mesh) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(mesh, "hw_mesh") });
+}
+
+/// Reads one count of a mesh; 0 (with the error recorded) for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+unsafe fn count(mesh: *const hw_mesh, of: impl FnOnce(&Mesh) -> usize) -> usize {
+    // SAFETY: forwarded from the caller.
+    guard_value(0, || Ok(of(unsafe { mesh_ref(mesh) }?)))
+}
+
+// cbindgen reads these signatures as written, so they are spelled out rather than generated.
+
+/// Number of vertices (deleted ones not counted); 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_vertices(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_vertices) }
+}
+
+/// Number of faces (deleted ones not counted); 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_faces(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_faces) }
+}
+
+/// Number of undirected edges (deleted ones not counted); 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_edges(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_edges) }
+}
+
+/// Number of half-edges, boundary ones included (twice the edge count); 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_halfedges) }
+}
