@@ -1,0 +1,1 @@
+//! Rendering buffers: polygon triangulation and GPU-ready arrays.
