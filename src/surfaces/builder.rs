@@ -10,7 +10,10 @@ const MAX_VERTICES: usize = u32::MAX as usize - 1;
 
 /// Refuses, before anything is allocated, a surface whose vertex or corner count (given as
 /// overflow-checked products) does not fit the `u32` index space.
-pub(crate) fn ensure_fits(vertices: Option<usize>, corners: Option<usize>) -> Result<(), SurfaceError> {
+pub(crate) fn ensure_fits(
+    vertices: Option<usize>,
+    corners: Option<usize>,
+) -> Result<(), SurfaceError> {
     match (vertices, corners) {
         (Some(v), Some(c)) if v <= MAX_VERTICES && c <= u32::MAX as usize => Ok(()),
         _ => Err(SurfaceError::TooLarge),

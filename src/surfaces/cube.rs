@@ -27,7 +27,13 @@ pub fn cube(side: f64) -> Result<PolygonSoup, SurfaceError> {
         0, 4, 6, 2, // -x
         1, 3, 7, 5, // +x
     ];
-    Ok(PolygonSoup { positions, face_sizes: vec![4; 6], indices, corner_normals: None, corner_uvs: None })
+    Ok(PolygonSoup {
+        positions,
+        face_sizes: vec![4; 6],
+        indices,
+        corner_normals: None,
+        corner_uvs: None,
+    })
 }
 
 #[cfg(test)]
@@ -36,8 +42,17 @@ mod tests {
 
     #[test]
     fn rejects_bad_sides() {
-        assert_eq!(cube(0.0), Err(SurfaceError::NonPositive { what: "side", value: 0.0 }));
-        assert_eq!(cube(f64::NAN), Err(SurfaceError::NonFiniteParameter { what: "side" }));
+        assert_eq!(
+            cube(0.0),
+            Err(SurfaceError::NonPositive {
+                what: "side",
+                value: 0.0
+            })
+        );
+        assert_eq!(
+            cube(f64::NAN),
+            Err(SurfaceError::NonFiniteParameter { what: "side" })
+        );
         assert_eq!(cube(2.0).unwrap().positions[7], [1.0, 1.0, 1.0]);
     }
 }

@@ -40,7 +40,11 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
     let profile = checked_polyline("profile", sweep.profile, min_points, sweep.closed_profile)?;
     let direction = checked_direction("direction", sweep.direction)?;
     let steps = checked_steps("steps", sweep.steps, 1)? as usize;
-    let segments = if sweep.closed_profile { profile.len() } else { profile.len() - 1 };
+    let segments = if sweep.closed_profile {
+        profile.len()
+    } else {
+        profile.len() - 1
+    };
     for segment in 0..segments {
         let along = profile[(segment + 1) % profile.len()] - profile[segment];
         let scale = along.length() * direction.length();
@@ -51,9 +55,15 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
 
     let rows = steps + 1;
     let vertices = profile.len().checked_mul(rows);
-    let corners = segments.checked_mul(steps).and_then(|cells| cells.checked_mul(6));
+    let corners = segments
+        .checked_mul(steps)
+        .and_then(|cells| cells.checked_mul(6));
     ensure_fits(vertices, corners)?;
-    let mut out = SoupBuilder::with_capacity(profile.len() * rows, segments * steps * 2, segments * steps * 6);
+    let mut out = SoupBuilder::with_capacity(
+        profile.len() * rows,
+        segments * steps * 2,
+        segments * steps * 6,
+    );
     let mut ids = Vec::with_capacity(profile.len() * rows);
     for row in 0..rows {
         let offset = direction * (row as f64 / steps as f64);
@@ -79,10 +89,26 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
 mod tests {
     use super::*;
 
-    const SQUARE: [[f64; 3]; 4] = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+    const SQUARE: [[f64; 3]; 4] = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
 
-    fn sweep(profile: &[[f64; 3]], closed: bool, direction: [f64; 3], steps: u32) -> Result<PolygonSoup, SurfaceError> {
-        cylindrical_surface(&Sweep { profile, closed_profile: closed, direction, steps, faces: CellFaces::Quads })
+    fn sweep(
+        profile: &[[f64; 3]],
+        closed: bool,
+        direction: [f64; 3],
+        steps: u32,
+    ) -> Result<PolygonSoup, SurfaceError> {
+        cylindrical_surface(&Sweep {
+            profile,
+            closed_profile: closed,
+            direction,
+            steps,
+            faces: CellFaces::Quads,
+        })
     }
 
     #[test]
@@ -98,22 +124,68 @@ mod tests {
     fn faces_point_along_tangent_cross_direction() {
         let soup = sweep(&SQUARE, true, [0.0, 0.0, 1.0], 1).unwrap();
         // First face spans the segment from (0,0,0) to (1,0,0): its outside is -y.
-        let p: Vec<glam::DVec3> = soup.indices[..4].iter().map(|&i| glam::DVec3::from_array(soup.positions[i as usize])).collect();
+        let p: Vec<glam::DVec3> = soup.indices[..4]
+            .iter()
+            .map(|&i| glam::DVec3::from_array(soup.positions[i as usize]))
+            .collect();
         let normal = (p[1] - p[0]).cross(p[2] - p[0]);
         assert!(normal.y < 0.0 && normal.x.abs() < 1e-12 && normal.z.abs() < 1e-12);
     }
 
     #[test]
     fn bad_parameters_are_typed_errors() {
-        assert_eq!(sweep(&SQUARE[..1], false, [0.0, 0.0, 1.0], 1), Err(SurfaceError::TooFewPoints { what: "profile", min: 2, got: 1 }));
-        assert_eq!(sweep(&SQUARE[..2], true, [0.0, 0.0, 1.0], 1), Err(SurfaceError::TooFewPoints { what: "profile", min: 3, got: 2 }));
-        assert_eq!(sweep(&SQUARE, true, [0.0, 0.0, 0.0], 1), Err(SurfaceError::ZeroVector { what: "direction" }));
-        assert_eq!(sweep(&SQUARE, true, [f64::NAN, 0.0, 1.0], 1), Err(SurfaceError::NonFiniteParameter { what: "direction" }));
-        assert_eq!(sweep(&SQUARE, true, [0.0, 0.0, 1.0], 0), Err(SurfaceError::TooFewSteps { what: "steps", min: 1, got: 0 }));
-        assert_eq!(sweep(&SQUARE, true, [1.0, 0.0, 0.0], 1), Err(SurfaceError::SegmentParallelToSweep { segment: 0 }));
+        assert_eq!(
+            sweep(&SQUARE[..1], false, [0.0, 0.0, 1.0], 1),
+            Err(SurfaceError::TooFewPoints {
+                what: "profile",
+                min: 2,
+                got: 1
+            })
+        );
+        assert_eq!(
+            sweep(&SQUARE[..2], true, [0.0, 0.0, 1.0], 1),
+            Err(SurfaceError::TooFewPoints {
+                what: "profile",
+                min: 3,
+                got: 2
+            })
+        );
+        assert_eq!(
+            sweep(&SQUARE, true, [0.0, 0.0, 0.0], 1),
+            Err(SurfaceError::ZeroVector { what: "direction" })
+        );
+        assert_eq!(
+            sweep(&SQUARE, true, [f64::NAN, 0.0, 1.0], 1),
+            Err(SurfaceError::NonFiniteParameter { what: "direction" })
+        );
+        assert_eq!(
+            sweep(&SQUARE, true, [0.0, 0.0, 1.0], 0),
+            Err(SurfaceError::TooFewSteps {
+                what: "steps",
+                min: 1,
+                got: 0
+            })
+        );
+        assert_eq!(
+            sweep(&SQUARE, true, [1.0, 0.0, 0.0], 1),
+            Err(SurfaceError::SegmentParallelToSweep { segment: 0 })
+        );
         let nan = [[0.0, 0.0, 0.0], [f64::NAN, 0.0, 0.0]];
-        assert_eq!(sweep(&nan, false, [0.0, 0.0, 1.0], 1), Err(SurfaceError::NonFinitePoint { what: "profile", index: 1 }));
+        assert_eq!(
+            sweep(&nan, false, [0.0, 0.0, 1.0], 1),
+            Err(SurfaceError::NonFinitePoint {
+                what: "profile",
+                index: 1
+            })
+        );
         let repeated = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]];
-        assert_eq!(sweep(&repeated, true, [0.0, 0.0, 1.0], 1), Err(SurfaceError::CoincidentPoints { what: "profile", first: 2, second: 0 }));
+        assert_eq!(
+            sweep(&repeated, true, [0.0, 0.0, 1.0], 1),
+            Err(SurfaceError::CoincidentPoints {
+                what: "profile",
+                first: 2,
+                second: 0
+            })
+        );
     }
 }

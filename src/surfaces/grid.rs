@@ -37,7 +37,8 @@ pub fn grid(g: &Grid) -> Result<PolygonSoup, SurfaceError> {
     let corners = cells_x.checked_mul(cells_y).and_then(|c| c.checked_mul(6));
     ensure_fits(columns.checked_mul(rows), corners)?;
 
-    let mut out = SoupBuilder::with_capacity(columns * rows, cells_x * cells_y * 2, cells_x * cells_y * 6);
+    let mut out =
+        SoupBuilder::with_capacity(columns * rows, cells_x * cells_y * 2, cells_x * cells_y * 6);
     let mut ids = Vec::with_capacity(columns * rows);
     for row in 0..rows {
         let y = height * (row as f64 / cells_y as f64 - 0.5);
@@ -46,7 +47,13 @@ pub fn grid(g: &Grid) -> Result<PolygonSoup, SurfaceError> {
             ids.push(out.vertex(DVec3::new(x, y, 0.0)));
         }
     }
-    let lattice = Lattice { ids: &ids, columns, rows, wrap_u: false, wrap_v: false };
+    let lattice = Lattice {
+        ids: &ids,
+        columns,
+        rows,
+        wrap_u: false,
+        wrap_v: false,
+    };
     lattice
         .push_faces(&mut out, g.faces)
         .expect("grid lattice nodes are all distinct, so no cell collapses");
@@ -59,7 +66,14 @@ mod tests {
 
     #[test]
     fn spans_the_requested_rectangle() {
-        let g = grid(&Grid { width: 4.0, height: 2.0, cells_x: 4, cells_y: 2, faces: CellFaces::Quads }).unwrap();
+        let g = grid(&Grid {
+            width: 4.0,
+            height: 2.0,
+            cells_x: 4,
+            cells_y: 2,
+            faces: CellFaces::Quads,
+        })
+        .unwrap();
         assert_eq!((g.positions.len(), g.n_faces()), (15, 8));
         assert_eq!(g.positions[0], [-2.0, -1.0, 0.0]);
         assert_eq!(g.positions[14], [2.0, 1.0, 0.0]);
@@ -67,9 +81,28 @@ mod tests {
 
     #[test]
     fn rejects_bad_parameters() {
-        let bad = Grid { width: 1.0, height: 1.0, cells_x: 0, cells_y: 1, faces: CellFaces::Quads };
-        assert_eq!(grid(&bad), Err(SurfaceError::TooFewSteps { what: "cells_x", min: 1, got: 0 }));
+        let bad = Grid {
+            width: 1.0,
+            height: 1.0,
+            cells_x: 0,
+            cells_y: 1,
+            faces: CellFaces::Quads,
+        };
+        assert_eq!(
+            grid(&bad),
+            Err(SurfaceError::TooFewSteps {
+                what: "cells_x",
+                min: 1,
+                got: 0
+            })
+        );
         let bad = Grid { width: -1.0, ..bad };
-        assert_eq!(grid(&bad), Err(SurfaceError::NonPositive { what: "width", value: -1.0 }));
+        assert_eq!(
+            grid(&bad),
+            Err(SurfaceError::NonPositive {
+                what: "width",
+                value: -1.0
+            })
+        );
     }
 }

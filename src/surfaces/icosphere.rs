@@ -29,22 +29,39 @@ const ICOSAHEDRON_FACES: [[u32; 3]; 20] = [
 pub fn icosphere(radius: f64, level: u32) -> Result<PolygonSoup, SurfaceError> {
     let radius = checked_length("radius", radius)?;
     if level > MAX_ICOSPHERE_LEVEL {
-        return Err(SurfaceError::TooManySteps { what: "level", max: MAX_ICOSPHERE_LEVEL, got: level });
+        return Err(SurfaceError::TooManySteps {
+            what: "level",
+            max: MAX_ICOSPHERE_LEVEL,
+            got: level,
+        });
     }
     let split = 4usize.pow(level);
     ensure_fits(Some(10 * split + 2), Some(60 * split))?;
 
     let phi = (1.0 + 5f64.sqrt()) / 2.0;
     let corners = [
-        (-1.0, phi, 0.0), (1.0, phi, 0.0), (-1.0, -phi, 0.0), (1.0, -phi, 0.0),
-        (0.0, -1.0, phi), (0.0, 1.0, phi), (0.0, -1.0, -phi), (0.0, 1.0, -phi),
-        (phi, 0.0, -1.0), (phi, 0.0, 1.0), (-phi, 0.0, -1.0), (-phi, 0.0, 1.0),
+        (-1.0, phi, 0.0),
+        (1.0, phi, 0.0),
+        (-1.0, -phi, 0.0),
+        (1.0, -phi, 0.0),
+        (0.0, -1.0, phi),
+        (0.0, 1.0, phi),
+        (0.0, -1.0, -phi),
+        (0.0, 1.0, -phi),
+        (phi, 0.0, -1.0),
+        (phi, 0.0, 1.0),
+        (-phi, 0.0, -1.0),
+        (-phi, 0.0, 1.0),
     ];
-    let mut directions: Vec<DVec3> = corners.iter().map(|&(x, y, z)| DVec3::new(x, y, z).normalize()).collect();
+    let mut directions: Vec<DVec3> = corners
+        .iter()
+        .map(|&(x, y, z)| DVec3::new(x, y, z).normalize())
+        .collect();
     directions.reserve(10 * split + 2 - 12);
     let mut triangles: Vec<[u32; 3]> = ICOSAHEDRON_FACES.to_vec();
     for _ in 0..level {
-        let mut midpoints: HashMap<(u32, u32), u32> = HashMap::with_capacity(triangles.len() * 3 / 2);
+        let mut midpoints: HashMap<(u32, u32), u32> =
+            HashMap::with_capacity(triangles.len() * 3 / 2);
         let mut midpoint = |a: u32, b: u32| -> u32 {
             *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
                 directions.push((directions[a as usize] + directions[b as usize]).normalize());
@@ -60,7 +77,8 @@ pub fn icosphere(radius: f64, level: u32) -> Result<PolygonSoup, SurfaceError> {
             .collect();
     }
 
-    let mut out = SoupBuilder::with_capacity(directions.len(), triangles.len(), triangles.len() * 3);
+    let mut out =
+        SoupBuilder::with_capacity(directions.len(), triangles.len(), triangles.len() * 3);
     for d in directions {
         out.vertex(d * radius);
     }
@@ -80,13 +98,30 @@ mod tests {
             let s = icosphere(2.0, level).unwrap();
             assert_eq!(s.positions.len(), 10 * 4usize.pow(level) + 2);
             assert_eq!(s.n_faces(), 20 * 4usize.pow(level));
-            assert!(s.positions.iter().all(|p| (DVec3::from_array(*p).length() - 2.0).abs() < 1e-12));
+            assert!(
+                s.positions
+                    .iter()
+                    .all(|p| (DVec3::from_array(*p).length() - 2.0).abs() < 1e-12)
+            );
         }
     }
 
     #[test]
     fn rejects_bad_parameters() {
-        assert_eq!(icosphere(-1.0, 1), Err(SurfaceError::NonPositive { what: "radius", value: -1.0 }));
-        assert_eq!(icosphere(1.0, 11), Err(SurfaceError::TooManySteps { what: "level", max: 10, got: 11 }));
+        assert_eq!(
+            icosphere(-1.0, 1),
+            Err(SurfaceError::NonPositive {
+                what: "radius",
+                value: -1.0
+            })
+        );
+        assert_eq!(
+            icosphere(1.0, 11),
+            Err(SurfaceError::TooManySteps {
+                what: "level",
+                max: 10,
+                got: 11
+            })
+        );
     }
 }

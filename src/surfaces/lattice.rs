@@ -35,12 +35,20 @@ pub(crate) struct CollapsedCell {
 impl Lattice<'_> {
     /// Number of cells along u.
     pub(crate) fn cells_u(&self) -> usize {
-        if self.wrap_u { self.columns } else { self.columns.saturating_sub(1) }
+        if self.wrap_u {
+            self.columns
+        } else {
+            self.columns.saturating_sub(1)
+        }
     }
 
     /// Number of cells along v.
     pub(crate) fn cells_v(&self) -> usize {
-        if self.wrap_v { self.rows } else { self.rows.saturating_sub(1) }
+        if self.wrap_v {
+            self.rows
+        } else {
+            self.rows.saturating_sub(1)
+        }
     }
 
     fn id(&self, u: usize, v: usize) -> u32 {
@@ -49,10 +57,19 @@ impl Lattice<'_> {
 
     /// Emits every cell as faces. Corners go (u,v), (u+1,v), (u+1,v+1), (u,v+1), so a face's
     /// normal points along ∂S/∂u × ∂S/∂v: generators pick u and v so that this is "outside".
-    pub(crate) fn push_faces(&self, out: &mut SoupBuilder, kind: CellFaces) -> Result<(), CollapsedCell> {
+    pub(crate) fn push_faces(
+        &self,
+        out: &mut SoupBuilder,
+        kind: CellFaces,
+    ) -> Result<(), CollapsedCell> {
         for v in 0..self.cells_v() {
             for u in 0..self.cells_u() {
-                let quad = [self.id(u, v), self.id(u + 1, v), self.id(u + 1, v + 1), self.id(u, v + 1)];
+                let quad = [
+                    self.id(u, v),
+                    self.id(u + 1, v),
+                    self.id(u + 1, v + 1),
+                    self.id(u, v + 1),
+                ];
                 let corners = distinct_cycle(quad);
                 match (corners.as_slice(), kind) {
                     ([a, b, c, d], CellFaces::Triangles) => {

@@ -13,7 +13,11 @@ pub(crate) fn checked_polyline(
     closed: bool,
 ) -> Result<Vec<DVec3>, SurfaceError> {
     if points.len() < min_points {
-        return Err(SurfaceError::TooFewPoints { what, min: min_points, got: points.len() });
+        return Err(SurfaceError::TooFewPoints {
+            what,
+            min: min_points,
+            got: points.len(),
+        });
     }
     let mut out = Vec::with_capacity(points.len());
     for (index, p) in points.iter().enumerate() {
@@ -27,10 +31,18 @@ pub(crate) fn checked_polyline(
         let second = first + 1;
         if second < out.len() {
             if out[first] == out[second] {
-                return Err(SurfaceError::CoincidentPoints { what, first, second });
+                return Err(SurfaceError::CoincidentPoints {
+                    what,
+                    first,
+                    second,
+                });
             }
         } else if closed && out[first] == out[0] {
-            return Err(SurfaceError::CoincidentPoints { what, first, second: 0 });
+            return Err(SurfaceError::CoincidentPoints {
+                what,
+                first,
+                second: 0,
+            });
         }
     }
     Ok(out)

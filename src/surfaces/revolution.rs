@@ -40,8 +40,11 @@ pub enum Caps {
 /// Parameters of a surface of revolution.
 #[derive(Clone, Copy, Debug)]
 pub struct Revolution<'a> {
-    /// The profile polyline (at least 2 points), anywhere in space.
+    /// The profile polyline (at least 2 points, 3 when closed), anywhere in space.
     pub profile: &'a [[f64; 3]],
+    /// Join the profile's last point back to its first: a closed profile off the axis revolves
+    /// into a closed torus-like surface, and has no ends to cap.
+    pub closed_profile: bool,
     /// A point on the axis.
     pub axis_origin: [f64; 3],
     /// The axis direction (need not be unit length). Rotation is right-handed about it.
@@ -65,29 +68,42 @@ pub struct Revolution<'a> {
 /// a pinch vertex shared by two cones (allowed; the half-edge kernel reports it).
 ///
 /// # Errors
-/// Fewer than 2 profile points, non-finite or coincident consecutive points, a zero or
+/// Fewer than 2 profile points (3 when closed), non-finite or coincident consecutive points, a zero or
 /// non-finite axis, an angle outside `(0, 2π)`, too few steps, a profile segment lying on the
 /// axis, or an output too large for `u32` indices.
 pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceError> {
-    let profile = checked_polyline("profile", rev.profile, 2, false)?;
+    let closed = rev.closed_profile;
+    let profile = checked_polyline("profile", rev.profile, if closed { 3 } else { 2 }, closed)?;
     let origin = checked_point("axis_origin", rev.axis_origin)?;
     let axis = checked_direction("axis_direction", rev.axis_direction)?.normalize();
     let (angle, full) = match rev.turn {
         Turn::Full => (TAU, true),
-        Turn::Partial(radians) if radians.is_finite() && radians > 0.0 && radians < TAU => (radians, false),
-        Turn::Partial(radians) if radians.is_nan() => return Err(SurfaceError::NonFiniteParameter { what: "turn" }),
+        Turn::Partial(radians) if radians.is_finite() && radians > 0.0 && radians < TAU => {
+            (radians, false)
+        }
+        Turn::Partial(radians) if radians.is_nan() => {
+            return Err(SurfaceError::NonFiniteParameter { what: "turn" });
+        }
         Turn::Partial(radians) => return Err(SurfaceError::AngleOutOfRange { radians }),
     };
     let steps = checked_steps("steps", rev.steps, if full { 3 } else { 1 })? as usize;
 
     // Split each profile point into its axial foot and its radial offset; snap poles onto the axis.
-    let extent = profile.iter().map(|p| (*p - profile[0]).length()).fold(0.0, f64::max);
+    let extent = profile
+        .iter()
+        .map(|p| (*p - profile[0]).length())
+        .fold(0.0, f64::max);
     let foot = |p: DVec3| origin + axis * (p - origin).dot(axis);
     let is_pole: Vec<bool> = profile
         .iter()
         .map(|&p| (p - foot(p)).length() <= POLE_TOLERANCE * extent.max((p - origin).length()))
         .collect();
-    if let Some(segment) = (0..profile.len() - 1).find(|&i| is_pole[i] && is_pole[i + 1]) {
+    let segments = if closed {
+        profile.len()
+    } else {
+        profile.len() - 1
+    };
+    if let Some(segment) = (0..segments).find(|&i| is_pole[i] && is_pole[(i + 1) % profile.len()]) {
         return Err(SurfaceError::SegmentOnAxis { segment });
     }
 
@@ -95,12 +111,12 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
     let ring_points = is_pole.iter().filter(|&&pole| !pole).count();
     let caps: Vec<usize> = [0, profile.len() - 1]
         .into_iter()
-        .filter(|&i| rev.caps != Caps::None && !is_pole[i])
+        .filter(|&i| rev.caps != Caps::None && !closed && !is_pole[i])
         .collect();
     let vertices = ring_points
         .checked_mul(columns)
         .and_then(|v| v.checked_add(profile.len() + caps.len()));
-    let corners = (profile.len() - 1)
+    let corners = segments
         .checked_mul(steps)
         .and_then(|cells| cells.checked_add(caps.len() * steps))
         .and_then(|cells| cells.checked_mul(6));
@@ -118,11 +134,21 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         } else {
             // Column 0 is the profile itself, exactly, so seams and caps meet the input.
             ids.push(out.vertex(p));
-            ids.extend(rotations[1..].iter().map(|q| out.vertex(origin + *q * (p - origin))));
+            ids.extend(
+                rotations[1..]
+                    .iter()
+                    .map(|q| out.vertex(origin + *q * (p - origin))),
+            );
         }
     }
     // u runs around the axis, v along the profile.
-    let lattice = Lattice { ids: &ids, columns, rows: profile.len(), wrap_u: full, wrap_v: false };
+    let lattice = Lattice {
+        ids: &ids,
+        columns,
+        rows: profile.len(),
+        wrap_u: full,
+        wrap_v: closed,
+    };
     lattice
         .push_faces(&mut out, rev.faces)
         .map_err(|cell| SurfaceError::SegmentOnAxis { segment: cell.v })?;
@@ -138,7 +164,14 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
 }
 
 /// Closes one ring (or arc, for a partial turn) with a polygon or a fan around `centre`.
-fn push_cap(out: &mut SoupBuilder, ring: &[u32], centre: DVec3, full: bool, reversed: bool, caps: Caps) {
+fn push_cap(
+    out: &mut SoupBuilder,
+    ring: &[u32],
+    centre: DVec3,
+    full: bool,
+    reversed: bool,
+    caps: Caps,
+) {
     let mut walk: Vec<u32> = ring.to_vec();
     if reversed {
         walk.reverse();
@@ -165,9 +198,15 @@ fn push_cap(out: &mut SoupBuilder, ring: &[u32], centre: DVec3, full: bool, reve
 mod tests {
     use super::*;
 
-    fn revolve(profile: &[[f64; 3]], turn: Turn, steps: u32, caps: Caps) -> Result<PolygonSoup, SurfaceError> {
+    fn revolve(
+        profile: &[[f64; 3]],
+        turn: Turn,
+        steps: u32,
+        caps: Caps,
+    ) -> Result<PolygonSoup, SurfaceError> {
         revolution_surface(&Revolution {
             profile,
+            closed_profile: false,
             axis_origin: [0.0, 0.0, 0.0],
             axis_direction: [0.0, 0.0, 1.0],
             turn,
@@ -189,7 +228,13 @@ mod tests {
     #[test]
     fn seed_formula_rotates_towards_positive_y() {
         let profile = [[1.0, 0.0, 0.0], [1.0, 0.0, 1.0]];
-        let soup = revolve(&profile, Turn::Partial(std::f64::consts::FRAC_PI_2), 1, Caps::None).unwrap();
+        let soup = revolve(
+            &profile,
+            Turn::Partial(std::f64::consts::FRAC_PI_2),
+            1,
+            Caps::None,
+        )
+        .unwrap();
         let rotated = soup.positions[1];
         assert!(rotated[0].abs() < 1e-15 && (rotated[1] - 1.0).abs() < 1e-15);
     }
@@ -208,16 +253,50 @@ mod tests {
     #[test]
     fn bad_parameters_are_typed_errors() {
         let profile = [[1.0, 0.0, 0.0], [1.0, 0.0, 1.0]];
-        assert_eq!(revolve(&profile, Turn::Full, 2, Caps::None), Err(SurfaceError::TooFewSteps { what: "steps", min: 3, got: 2 }));
-        assert_eq!(revolve(&profile, Turn::Partial(1.0), 0, Caps::None), Err(SurfaceError::TooFewSteps { what: "steps", min: 1, got: 0 }));
-        assert_eq!(revolve(&profile, Turn::Partial(TAU), 4, Caps::None), Err(SurfaceError::AngleOutOfRange { radians: TAU }));
-        assert_eq!(revolve(&profile, Turn::Partial(-1.0), 4, Caps::None), Err(SurfaceError::AngleOutOfRange { radians: -1.0 }));
-        assert_eq!(revolve(&profile, Turn::Partial(f64::NAN), 4, Caps::None), Err(SurfaceError::NonFiniteParameter { what: "turn" }));
-        assert_eq!(revolve(&profile[..1], Turn::Full, 4, Caps::None), Err(SurfaceError::TooFewPoints { what: "profile", min: 2, got: 1 }));
+        assert_eq!(
+            revolve(&profile, Turn::Full, 2, Caps::None),
+            Err(SurfaceError::TooFewSteps {
+                what: "steps",
+                min: 3,
+                got: 2
+            })
+        );
+        assert_eq!(
+            revolve(&profile, Turn::Partial(1.0), 0, Caps::None),
+            Err(SurfaceError::TooFewSteps {
+                what: "steps",
+                min: 1,
+                got: 0
+            })
+        );
+        assert_eq!(
+            revolve(&profile, Turn::Partial(TAU), 4, Caps::None),
+            Err(SurfaceError::AngleOutOfRange { radians: TAU })
+        );
+        assert_eq!(
+            revolve(&profile, Turn::Partial(-1.0), 4, Caps::None),
+            Err(SurfaceError::AngleOutOfRange { radians: -1.0 })
+        );
+        assert_eq!(
+            revolve(&profile, Turn::Partial(f64::NAN), 4, Caps::None),
+            Err(SurfaceError::NonFiniteParameter { what: "turn" })
+        );
+        assert_eq!(
+            revolve(&profile[..1], Turn::Full, 4, Caps::None),
+            Err(SurfaceError::TooFewPoints {
+                what: "profile",
+                min: 2,
+                got: 1
+            })
+        );
         let on_axis = [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]];
-        assert_eq!(revolve(&on_axis, Turn::Full, 4, Caps::None), Err(SurfaceError::SegmentOnAxis { segment: 0 }));
+        assert_eq!(
+            revolve(&on_axis, Turn::Full, 4, Caps::None),
+            Err(SurfaceError::SegmentOnAxis { segment: 0 })
+        );
         let zero_axis = Revolution {
             profile: &profile,
+            closed_profile: false,
             axis_origin: [0.0; 3],
             axis_direction: [0.0; 3],
             turn: Turn::Full,
@@ -225,6 +304,11 @@ mod tests {
             caps: Caps::None,
             faces: CellFaces::Quads,
         };
-        assert_eq!(revolution_surface(&zero_axis), Err(SurfaceError::ZeroVector { what: "axis_direction" }));
+        assert_eq!(
+            revolution_surface(&zero_axis),
+            Err(SurfaceError::ZeroVector {
+                what: "axis_direction"
+            })
+        );
     }
 }

@@ -33,7 +33,10 @@ pub struct Ruling<'a> {
 /// rulings), or an output too large for `u32` indices.
 pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
     if ruling.first.len() != ruling.second.len() {
-        return Err(SurfaceError::MismatchedPolylines { first: ruling.first.len(), second: ruling.second.len() });
+        return Err(SurfaceError::MismatchedPolylines {
+            first: ruling.first.len(),
+            second: ruling.second.len(),
+        });
     }
     let min_points = if ruling.closed { 3 } else { 2 };
     let first = checked_polyline("first polyline", ruling.first, min_points, ruling.closed)?;
@@ -61,7 +64,13 @@ pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
             }
         }
     }
-    let lattice = Lattice { ids: &ids, columns: n, rows, wrap_u: ruling.closed, wrap_v: false };
+    let lattice = Lattice {
+        ids: &ids,
+        columns: n,
+        rows,
+        wrap_u: ruling.closed,
+        wrap_v: false,
+    };
     lattice
         .push_faces(&mut out, ruling.faces)
         .map_err(|cell| SurfaceError::DegenerateCell { segment: cell.u })?;
@@ -72,8 +81,19 @@ pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
 mod tests {
     use super::*;
 
-    fn rule(first: &[[f64; 3]], second: &[[f64; 3]], closed: bool, steps: u32) -> Result<PolygonSoup, SurfaceError> {
-        ruled_surface(&Ruling { first, second, closed, steps, faces: CellFaces::Quads })
+    fn rule(
+        first: &[[f64; 3]],
+        second: &[[f64; 3]],
+        closed: bool,
+        steps: u32,
+    ) -> Result<PolygonSoup, SurfaceError> {
+        ruled_surface(&Ruling {
+            first,
+            second,
+            closed,
+            steps,
+            faces: CellFaces::Quads,
+        })
     }
 
     #[test]
@@ -82,7 +102,11 @@ mod tests {
         let b = [[0.0, 2.0, 1.0], [1.0, 2.0, 0.0], [2.0, 2.0, -1.0]];
         let soup = rule(&a, &b, false, 2).unwrap();
         assert_eq!((soup.positions.len(), soup.n_faces()), (9, 4));
-        assert_eq!(soup.positions[1], [0.0, 1.0, 0.5], "vertices go ruling by ruling");
+        assert_eq!(
+            soup.positions[1],
+            [0.0, 1.0, 0.5],
+            "vertices go ruling by ruling"
+        );
         assert_eq!(soup.positions[8], b[2]);
     }
 
@@ -102,10 +126,36 @@ mod tests {
     fn bad_parameters_are_typed_errors() {
         let a = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]];
         let b = [[0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [2.0, 1.0, 0.0]];
-        assert_eq!(rule(&a, &b, false, 1), Err(SurfaceError::MismatchedPolylines { first: 2, second: 3 }));
-        assert_eq!(rule(&a, &b[..2], false, 0), Err(SurfaceError::TooFewSteps { what: "steps", min: 1, got: 0 }));
-        assert_eq!(rule(&a, &b[..2], true, 1), Err(SurfaceError::TooFewPoints { what: "first polyline", min: 3, got: 2 }));
+        assert_eq!(
+            rule(&a, &b, false, 1),
+            Err(SurfaceError::MismatchedPolylines {
+                first: 2,
+                second: 3
+            })
+        );
+        assert_eq!(
+            rule(&a, &b[..2], false, 0),
+            Err(SurfaceError::TooFewSteps {
+                what: "steps",
+                min: 1,
+                got: 0
+            })
+        );
+        assert_eq!(
+            rule(&a, &b[..2], true, 1),
+            Err(SurfaceError::TooFewPoints {
+                what: "first polyline",
+                min: 3,
+                got: 2
+            })
+        );
         let inf = [[0.0, 1.0, 0.0], [f64::INFINITY, 1.0, 0.0]];
-        assert_eq!(rule(&a, &inf, false, 1), Err(SurfaceError::NonFinitePoint { what: "second polyline", index: 1 }));
+        assert_eq!(
+            rule(&a, &inf, false, 1),
+            Err(SurfaceError::NonFinitePoint {
+                what: "second polyline",
+                index: 1
+            })
+        );
     }
 }

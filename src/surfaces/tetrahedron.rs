@@ -32,7 +32,8 @@ mod tests {
         let t = tetrahedron();
         for i in 0..4 {
             for j in i + 1..4 {
-                let d = DVec3::from_array(t.positions[i]).distance(DVec3::from_array(t.positions[j]));
+                let d =
+                    DVec3::from_array(t.positions[i]).distance(DVec3::from_array(t.positions[j]));
                 assert!((d - 1.0).abs() < 1e-15, "edge {i}-{j} has length {d}");
             }
         }

@@ -41,7 +41,8 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
     let vertices = columns.checked_mul(rows);
     ensure_fits(vertices, vertices.and_then(|v| v.checked_mul(6)))?;
 
-    let mut out = SoupBuilder::with_capacity(columns * rows, columns * rows * 2, columns * rows * 6);
+    let mut out =
+        SoupBuilder::with_capacity(columns * rows, columns * rows * 2, columns * rows * 6);
     let mut ids = Vec::with_capacity(columns * rows);
     for row in 0..rows {
         let (sin_v, cos_v) = (TAU * row as f64 / rows as f64).sin_cos();
@@ -52,7 +53,13 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
         }
     }
     // u around z and v around the tube make ∂S/∂u × ∂S/∂v point out of the tube.
-    let lattice = Lattice { ids: &ids, columns, rows, wrap_u: true, wrap_v: true };
+    let lattice = Lattice {
+        ids: &ids,
+        columns,
+        rows,
+        wrap_u: true,
+        wrap_v: true,
+    };
     lattice
         .push_faces(&mut out, t.faces)
         .expect("torus lattice nodes are all distinct, so no cell collapses");
@@ -63,8 +70,19 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
 mod tests {
     use super::*;
 
-    fn make(major: f64, minor: f64, steps: u32, faces: CellFaces) -> Result<PolygonSoup, SurfaceError> {
-        torus(&Torus { major_radius: major, minor_radius: minor, major_steps: steps, minor_steps: steps, faces })
+    fn make(
+        major: f64,
+        minor: f64,
+        steps: u32,
+        faces: CellFaces,
+    ) -> Result<PolygonSoup, SurfaceError> {
+        torus(&Torus {
+            major_radius: major,
+            minor_radius: minor,
+            major_steps: steps,
+            minor_steps: steps,
+            faces,
+        })
     }
 
     #[test]
@@ -72,13 +90,34 @@ mod tests {
         let quads = make(2.0, 0.5, 8, CellFaces::Quads).unwrap();
         let triangles = make(2.0, 0.5, 8, CellFaces::Triangles).unwrap();
         assert_eq!(quads.positions, triangles.positions);
-        assert_eq!((quads.positions.len(), quads.n_faces(), triangles.n_faces()), (64, 64, 128));
+        assert_eq!(
+            (quads.positions.len(), quads.n_faces(), triangles.n_faces()),
+            (64, 64, 128)
+        );
     }
 
     #[test]
     fn rejects_bad_parameters() {
-        assert_eq!(make(1.0, 1.0, 8, CellFaces::Quads), Err(SurfaceError::SelfIntersectingTorus { major: 1.0, minor: 1.0 }));
-        assert_eq!(make(1.0, 0.5, 2, CellFaces::Quads), Err(SurfaceError::TooFewSteps { what: "major_steps", min: 3, got: 2 }));
-        assert_eq!(make(f64::INFINITY, 0.5, 8, CellFaces::Quads), Err(SurfaceError::NonFiniteParameter { what: "major_radius" }));
+        assert_eq!(
+            make(1.0, 1.0, 8, CellFaces::Quads),
+            Err(SurfaceError::SelfIntersectingTorus {
+                major: 1.0,
+                minor: 1.0
+            })
+        );
+        assert_eq!(
+            make(1.0, 0.5, 2, CellFaces::Quads),
+            Err(SurfaceError::TooFewSteps {
+                what: "major_steps",
+                min: 3,
+                got: 2
+            })
+        );
+        assert_eq!(
+            make(f64::INFINITY, 0.5, 8, CellFaces::Quads),
+            Err(SurfaceError::NonFiniteParameter {
+                what: "major_radius"
+            })
+        );
     }
 }
