@@ -169,6 +169,17 @@ fn degenerate_polygons_fall_back_to_a_reported_fan() {
 }
 
 #[test]
+fn overflowing_coordinates_fan_instead_of_panicking() {
+    let huge: Vec<[f64; 3]> = l_shape()
+        .iter()
+        .map(|p| [p[0] * 1e300, p[1] * 1e300, 0.0])
+        .collect();
+    let (triangles, outcome) = triangulate_polygon(&huge);
+    assert_eq!(triangles.len(), 4);
+    assert_eq!(outcome, PolygonOutcome::Fallback(FallbackReason::ZeroArea));
+}
+
+#[test]
 fn self_intersecting_polygons_still_give_n_minus_2_triangles() {
     // A figure eight with lobes of different sizes: non-zero area, no valid ear clipping.
     let eight = planar(&[
