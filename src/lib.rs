@@ -8,7 +8,9 @@
 pub mod geom;
 pub mod io;
 pub mod mesh;
+pub mod render;
 pub mod soup;
+pub mod surfaces;
 pub mod voronoi;
 pub mod winged;
 
