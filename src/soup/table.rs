@@ -211,8 +211,17 @@ impl<'a> FaceTable<'a> {
     pub fn face_defects(&self, n_vertices: usize) -> FaceDefects {
         let mut defects = FaceDefects::default();
         let mut scratch = Vec::new();
-        for f in 0..self.n_faces() {
-            let face = self.face(f);
+        for (f, bounds) in self.offsets.windows(2).enumerate() {
+            let face = &self.corners[bounds[0] as usize..bounds[1] as usize];
+            // Fast path for the common valid triangle.
+            if let &[a, b, c] = face
+                && (a.max(b).max(c) as usize) < n_vertices
+                && a != b
+                && b != c
+                && a != c
+            {
+                continue;
+            }
             let input = self.input_face(f);
             if face.len() < 3 {
                 defects.too_small.push(input);
