@@ -167,8 +167,12 @@ fn inconsistent_orientation_follows_the_policy() {
         (mesh.n_faces(), diagnostic.skipped_faces.as_slice()),
         (2, &[2][..])
     );
-    let (mesh, _) = polygons(&[3, 3, 3], &indices, BuildPolicy::Repair).unwrap();
+    // Repair reverses the odd face out instead of cutting the surface.
+    let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, BuildPolicy::Repair).unwrap();
     assert_eq!(mesh.n_faces(), 3);
+    assert_eq!(diagnostic.reoriented_faces, vec![2]);
+    assert!(diagnostic.vertex_copies.is_empty());
+    assert_eq!(mesh.n_edges(), 7);
     assert_eq!(mesh.check(), Ok(()));
 }
 

@@ -163,9 +163,26 @@ fn broken_models_are_diagnosed_as_the_manifest_says() {
             Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Repair).unwrap();
         assert_eq!(repaired.check(), Ok(()), "{file}");
         assert_eq!(repaired.n_faces(), soup.n_faces(), "{file}");
-        assert!(!repair_diagnostic.vertex_copies.is_empty(), "{file}");
+        let repaired_something = !repair_diagnostic.vertex_copies.is_empty()
+            || !repair_diagnostic.reoriented_faces.is_empty();
+        assert!(repaired_something, "{file}");
         seed_loops_agree(&repaired);
     }
+    // Shuffled orientations are repaired by reversing faces alone: closed again, nothing cut.
+    for file in [
+        "broken/cgal_cube-shuffled.off",
+        "broken/cgal_tet-shuffled.off",
+    ] {
+        let (mesh, diagnostic) = build(file, BuildPolicy::Repair);
+        assert!(diagnostic.vertex_copies.is_empty(), "{file}: {diagnostic}");
+        assert!(!diagnostic.reoriented_faces.is_empty(), "{file}");
+        assert_eq!(boundary_edges(&mesh), 0, "{file}");
+        assert_eq!(euler(&mesh), 2, "{file}");
+    }
+    // A Möbius band cannot be oriented: repair cuts it along one seam.
+    let (mesh, diagnostic) = build("broken/gc_moebius.obj", BuildPolicy::Repair);
+    assert!(!diagnostic.vertex_copies.is_empty());
+    assert_eq!(mesh.check(), Ok(()));
     // Non-manifold vertices are kept and reported, even under Strict.
     for (file, non_manifold_vertices) in [
         ("broken/gc_hourglass_ico.obj", 1),
