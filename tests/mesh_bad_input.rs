@@ -1,19 +1,34 @@
 //! Every class of bad input gets a clear status, a complete diagnostic, and never a panic.
 
-use halfwing::mesh::{BuildError, BuildPolicy, EdgeId, FaceId, HalfedgeId, HandleError, Mesh, VertexId};
+use halfwing::mesh::{
+    BuildError, BuildPolicy, EdgeId, FaceId, HalfedgeId, HandleError, Mesh, VertexId,
+};
 use halfwing::soup::{FaceList, FaceSizes, ListProblem};
 
-const SQUARE: [[f64; 3]; 5] =
-    [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
+const SQUARE: [[f64; 3]; 5] = [
+    [0.0, 0.0, 0.0],
+    [1.0, 0.0, 0.0],
+    [1.0, 1.0, 0.0],
+    [0.0, 1.0, 0.0],
+    [0.5, 0.5, 1.0],
+];
 
-fn polygons(sizes: &[u32], indices: &[u32], policy: BuildPolicy) -> Result<(Mesh, halfwing::soup::Diagnostic), BuildError> {
+fn polygons(
+    sizes: &[u32],
+    indices: &[u32],
+    policy: BuildPolicy,
+) -> Result<(Mesh, halfwing::soup::Diagnostic), BuildError> {
     Mesh::from_face_list(&FaceList::polygons(&SQUARE, sizes, indices), policy)
 }
 
 #[test]
 fn empty_input_is_an_empty_mesh() {
-    let (mesh, diagnostic) = Mesh::from_face_list(&FaceList::triangles(&[], &[]), BuildPolicy::Strict).unwrap();
-    assert_eq!((mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()), (0, 0, 0));
+    let (mesh, diagnostic) =
+        Mesh::from_face_list(&FaceList::triangles(&[], &[]), BuildPolicy::Strict).unwrap();
+    assert_eq!(
+        (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+        (0, 0, 0)
+    );
     assert!(diagnostic.is_clean());
     assert_eq!(mesh.check(), Ok(()));
     assert!(mesh.to_soup().indices.is_empty());
@@ -28,7 +43,11 @@ fn empty_input_is_an_empty_mesh() {
 #[test]
 fn faces_with_one_or_two_corners_are_refused_or_skipped() {
     for sizes in [[1u32, 3], [2, 3], [0, 3]] {
-        let indices: Vec<u32> = [0u32, 1, 0, 1, 2].iter().copied().skip(2 - sizes[0] as usize).collect();
+        let indices: Vec<u32> = [0u32, 1, 0, 1, 2]
+            .iter()
+            .copied()
+            .skip(2 - sizes[0] as usize)
+            .collect();
         let error = polygons(&sizes, &indices, BuildPolicy::Strict).unwrap_err();
         assert!(matches!(error, BuildError::InvalidInput(_)));
         assert_eq!(error.diagnostic().faces_too_small, vec![0]);
@@ -91,11 +110,21 @@ fn counts_beyond_32_bits_are_refused_without_allocating() {
     let error = polygons(&sizes, &[0, 1, 2], BuildPolicy::Repair).unwrap_err();
     assert_eq!(
         error.diagnostic().list_problem,
-        Some(ListProblem::CornerCountMismatch { expected: 3 * u64::from(u32::MAX), actual: 3 })
+        Some(ListProblem::CornerCountMismatch {
+            expected: 3 * u64::from(u32::MAX),
+            actual: 3
+        })
     );
-    let list = FaceList { positions: &SQUARE, sizes: FaceSizes::Uniform(u32::MAX), indices: &[0, 1, 2] };
+    let list = FaceList {
+        positions: &SQUARE,
+        sizes: FaceSizes::Uniform(u32::MAX),
+        indices: &[0, 1, 2],
+    };
     let error = Mesh::from_face_list(&list, BuildPolicy::Skip).unwrap_err();
-    assert!(matches!(error.diagnostic().list_problem, Some(ListProblem::RaggedUniform { .. })));
+    assert!(matches!(
+        error.diagnostic().list_problem,
+        Some(ListProblem::RaggedUniform { .. })
+    ));
     assert!(error.to_string().contains("do not split"), "{error}");
 }
 
@@ -106,7 +135,10 @@ fn non_manifold_edges_follow_the_policy() {
     let error = polygons(&[3, 3, 3], &indices, BuildPolicy::Strict).unwrap_err();
     assert!(matches!(error, BuildError::NonManifold(_)));
     let edge = &error.diagnostic().non_manifold_edges[0];
-    assert_eq!((edge.vertices, edge.faces.as_slice()), ([0, 1], &[0, 1, 2][..]));
+    assert_eq!(
+        (edge.vertices, edge.faces.as_slice()),
+        ([0, 1], &[0, 1, 2][..])
+    );
 
     let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, BuildPolicy::Skip).unwrap();
     assert_eq!(diagnostic.skipped_faces, vec![2]);
@@ -118,7 +150,10 @@ fn non_manifold_edges_follow_the_policy() {
     assert_eq!(diagnostic.vertex_copies, vec![0, 1]);
     assert_eq!(diagnostic.non_manifold_edges.len(), 1);
     assert_eq!(mesh.check(), Ok(()));
-    assert_eq!(mesh.face_vertices(FaceId(2)).collect::<Vec<_>>(), [VertexId(5), VertexId(6), VertexId(4)]);
+    assert_eq!(
+        mesh.face_vertices(FaceId(2)).collect::<Vec<_>>(),
+        [VertexId(5), VertexId(6), VertexId(4)]
+    );
 }
 
 #[test]
@@ -128,16 +163,29 @@ fn inconsistent_orientation_follows_the_policy() {
     assert_eq!(error.diagnostic().inconsistent_edges[0].vertices, [2, 3]);
     assert_eq!(error.diagnostic().inconsistent_edges[0].faces, vec![1, 2]);
     let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, BuildPolicy::Skip).unwrap();
-    assert_eq!((mesh.n_faces(), diagnostic.skipped_faces.as_slice()), (2, &[2][..]));
-    let (mesh, _) = polygons(&[3, 3, 3], &indices, BuildPolicy::Repair).unwrap();
+    assert_eq!(
+        (mesh.n_faces(), diagnostic.skipped_faces.as_slice()),
+        (2, &[2][..])
+    );
+    // Repair reverses the odd face out instead of cutting the surface.
+    let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, BuildPolicy::Repair).unwrap();
     assert_eq!(mesh.n_faces(), 3);
+    assert_eq!(diagnostic.reoriented_faces, vec![2]);
+    assert!(diagnostic.vertex_copies.is_empty());
+    assert_eq!(mesh.n_edges(), 7);
     assert_eq!(mesh.check(), Ok(()));
 }
 
 #[test]
 fn non_manifold_vertices_are_kept_and_reported() {
     // Two triangles touching only at vertex 0 (a bow tie).
-    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [-1.0, -1.0, 0.0]];
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [-1.0, -1.0, 0.0],
+    ];
     let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 3, 4]);
     let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap();
     assert_eq!(diagnostic.non_manifold_vertices, vec![0]);
@@ -150,9 +198,14 @@ fn non_manifold_vertices_are_kept_and_reported() {
     // Two closed tetrahedra sharing one apex: no boundary at all.
     let mut positions = positions.to_vec();
     positions.extend([[0.0, 0.0, 1.0], [2.0, 2.0, 2.0]]);
-    let tetrahedra = [0, 2, 1, 0, 1, 5, 1, 2, 5, 2, 0, 5, 0, 3, 4, 0, 4, 6, 4, 3, 6, 3, 0, 6];
-    let (mesh, diagnostic) =
-        Mesh::from_face_list(&FaceList::triangles(&positions, &tetrahedra), BuildPolicy::Strict).unwrap();
+    let tetrahedra = [
+        0, 2, 1, 0, 1, 5, 1, 2, 5, 2, 0, 5, 0, 3, 4, 0, 4, 6, 4, 3, 6, 3, 0, 6,
+    ];
+    let (mesh, diagnostic) = Mesh::from_face_list(
+        &FaceList::triangles(&positions, &tetrahedra),
+        BuildPolicy::Strict,
+    )
+    .unwrap();
     assert_eq!(diagnostic.non_manifold_vertices, vec![0]);
     assert_eq!(mesh.check(), Ok(()));
     assert_eq!(mesh.valence(VertexId(0)), 3, "the circulator sees one fan");
@@ -160,7 +213,13 @@ fn non_manifold_vertices_are_kept_and_reported() {
 
 #[test]
 fn degenerate_and_isolated_elements_are_reported() {
-    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [9.0, 9.0, 9.0]];
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [9.0, 9.0, 9.0],
+    ];
     let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 2, 3]);
     let (_, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap();
     assert_eq!(diagnostic.degenerate_faces, vec![0]);
@@ -171,7 +230,10 @@ fn degenerate_and_isolated_elements_are_reported() {
 #[test]
 fn invalid_ids_give_errors_not_panics() {
     let (mesh, _) = polygons(&[3], &[0, 1, 2], BuildPolicy::Strict).unwrap();
-    assert!(matches!(mesh.try_next(HalfedgeId::INVALID), Err(HandleError::OutOfRange { .. })));
+    assert!(matches!(
+        mesh.try_next(HalfedgeId::INVALID),
+        Err(HandleError::OutOfRange { .. })
+    ));
     assert!(mesh.try_next(HalfedgeId(6)).is_err());
     assert!(mesh.try_origin(HalfedgeId(5)).is_ok());
     assert!(mesh.try_vertex_halfedge(VertexId(5)).is_err());

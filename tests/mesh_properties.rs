@@ -20,7 +20,10 @@ fn rebuilds_identically(mesh: &Mesh) {
 
 /// The soup without the faces whose bit is clear in `keep` (cycled).
 fn subset(soup: &PolygonSoup, keep: &[bool]) -> PolygonSoup {
-    let mut out = PolygonSoup { positions: soup.positions.clone(), ..PolygonSoup::default() };
+    let mut out = PolygonSoup {
+        positions: soup.positions.clone(),
+        ..PolygonSoup::default()
+    };
     let mut start = 0;
     for (f, &size) in soup.face_sizes.iter().enumerate() {
         let end = start + size as usize;

@@ -96,7 +96,11 @@ fn closed_models_build_clean_and_loops_agree() {
         let (mesh, diagnostic) = build(file, BuildPolicy::Strict);
         assert_eq!(mesh.check(), Ok(()), "{file}");
         assert!(diagnostic.is_clean(), "{file}: {diagnostic}");
-        assert_eq!((mesh.n_vertices(), mesh.n_faces()), (vertices, faces), "{file}");
+        assert_eq!(
+            (mesh.n_vertices(), mesh.n_faces()),
+            (vertices, faces),
+            "{file}"
+        );
         assert_eq!(euler(&mesh), euler_characteristic, "{file}");
         assert_eq!(boundary_edges(&mesh), 0, "{file}");
         seed_loops_agree(&mesh);
@@ -136,25 +140,61 @@ fn broken_models_are_diagnosed_as_the_manifest_says() {
         let soup = load(&data_dir().join(file));
         let error = Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Strict).unwrap_err();
         let diagnostic = error.diagnostic();
-        assert_eq!(diagnostic.non_manifold_edges.len(), non_manifold_edges, "{file}: {diagnostic}");
-        assert_eq!(diagnostic.inconsistent_edges.len(), inconsistent_edges, "{file}: {diagnostic}");
+        assert_eq!(
+            diagnostic.non_manifold_edges.len(),
+            non_manifold_edges,
+            "{file}: {diagnostic}"
+        );
+        assert_eq!(
+            diagnostic.inconsistent_edges.len(),
+            inconsistent_edges,
+            "{file}: {diagnostic}"
+        );
         // Skip and Repair both give a valid structure; Repair keeps every face.
         let (skipped, skip_diagnostic) =
             Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Skip).unwrap();
         assert_eq!(skipped.check(), Ok(()), "{file}");
-        assert_eq!(skipped.n_faces() + skip_diagnostic.skipped_faces.len(), soup.n_faces(), "{file}");
+        assert_eq!(
+            skipped.n_faces() + skip_diagnostic.skipped_faces.len(),
+            soup.n_faces(),
+            "{file}"
+        );
         let (repaired, repair_diagnostic) =
             Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Repair).unwrap();
         assert_eq!(repaired.check(), Ok(()), "{file}");
         assert_eq!(repaired.n_faces(), soup.n_faces(), "{file}");
-        assert!(!repair_diagnostic.vertex_copies.is_empty(), "{file}");
+        let repaired_something = !repair_diagnostic.vertex_copies.is_empty()
+            || !repair_diagnostic.reoriented_faces.is_empty();
+        assert!(repaired_something, "{file}");
         seed_loops_agree(&repaired);
     }
+    // Shuffled orientations are repaired by reversing faces alone: closed again, nothing cut.
+    for file in [
+        "broken/cgal_cube-shuffled.off",
+        "broken/cgal_tet-shuffled.off",
+    ] {
+        let (mesh, diagnostic) = build(file, BuildPolicy::Repair);
+        assert!(diagnostic.vertex_copies.is_empty(), "{file}: {diagnostic}");
+        assert!(!diagnostic.reoriented_faces.is_empty(), "{file}");
+        assert_eq!(boundary_edges(&mesh), 0, "{file}");
+        assert_eq!(euler(&mesh), 2, "{file}");
+    }
+    // A Möbius band cannot be oriented: repair cuts it along one seam.
+    let (mesh, diagnostic) = build("broken/gc_moebius.obj", BuildPolicy::Repair);
+    assert!(!diagnostic.vertex_copies.is_empty());
+    assert_eq!(mesh.check(), Ok(()));
     // Non-manifold vertices are kept and reported, even under Strict.
-    for (file, non_manifold_vertices) in [("broken/gc_hourglass_ico.obj", 1), ("broken/c3d_teapot.obj", 38)] {
+    for (file, non_manifold_vertices) in [
+        ("broken/gc_hourglass_ico.obj", 1),
+        ("broken/c3d_teapot.obj", 38),
+    ] {
         let (mesh, diagnostic) = build(file, BuildPolicy::Strict);
         assert_eq!(mesh.check(), Ok(()), "{file}");
-        assert_eq!(diagnostic.non_manifold_vertices.len(), non_manifold_vertices, "{file}: {diagnostic}");
+        assert_eq!(
+            diagnostic.non_manifold_vertices.len(),
+            non_manifold_vertices,
+            "{file}: {diagnostic}"
+        );
     }
     let (_, diagnostic) = build("broken/cgal_degtri_sliding.off", BuildPolicy::Strict);
     assert_eq!(diagnostic.degenerate_faces.len(), 4, "{diagnostic}");

@@ -71,8 +71,11 @@ fn seed_faces() -> (Vec<u32>, Vec<u32>) {
 
 fn build_seed() -> Mesh {
     let (sizes, indices) = seed_faces();
-    let (mesh, diagnostic) =
-        Mesh::from_face_list(&FaceList::polygons(&POSITIONS, &sizes, &indices), BuildPolicy::Strict).unwrap();
+    let (mesh, diagnostic) = Mesh::from_face_list(
+        &FaceList::polygons(&POSITIONS, &sizes, &indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap();
     assert!(diagnostic.is_clean(), "{diagnostic}");
     mesh
 }
@@ -84,7 +87,9 @@ fn seed_table_counts() {
     assert_eq!(mesh.n_faces(), 6);
     assert_eq!(mesh.n_halfedges(), 24);
     assert_eq!(mesh.n_edges(), 12);
-    let boundary = (0..24).filter(|&h| mesh.is_boundary_halfedge(HalfedgeId(h))).count();
+    let boundary = (0..24)
+        .filter(|&h| mesh.is_boundary_halfedge(HalfedgeId(h)))
+        .count();
     assert_eq!(boundary, 6);
     assert_eq!(mesh.check(), Ok(()));
 }
@@ -144,7 +149,12 @@ fn seed_vertices_store_their_boundary_halfedge() {
         (p[1] - 2.0).atan2(p[0] - 2.0)
     };
     let turns = (0..ring.len())
-        .map(|i| (angle(ring[(i + 1) % ring.len()]) - angle(ring[i])).rem_euclid(std::f64::consts::TAU))
+        .map(|i| {
+            (angle(ring[(i + 1) % ring.len()]) - angle(ring[i])).rem_euclid(std::f64::consts::TAU)
+        })
         .sum::<f64>();
-    assert!((turns - std::f64::consts::TAU).abs() < 1e-9, "ring is not one CCW turn: {ring:?}");
+    assert!(
+        (turns - std::f64::consts::TAU).abs() < 1e-9,
+        "ring is not one CCW turn: {ring:?}"
+    );
 }

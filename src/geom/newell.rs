@@ -25,31 +25,39 @@ pub fn newell_vector(points: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
 
 /// `true` when the polygon's area is negligible against its size: the Newell vector is no longer
 /// than a few rounding errors of the sum of squared edge lengths (so collinear corners, repeated
-/// positions and needles thinner than ~1e-15 of their length count as degenerate).
-pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]> + Clone) -> bool {
+/// positions and needles thinner than ~1e-15 of their length count as degenerate). One pass;
+/// non-finite coordinates give `false` (they are reported as such, not as degenerate).
+pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool {
     /// Relative size of the area vector below which it is rounding noise.
     const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;
-    let area_vector = newell_vector(points.clone());
-    let area_norm = length(area_vector);
     let mut points = points.into_iter();
     let Some(first) = points.next() else {
         return true;
     };
+    let mut area_vector = [0.0; 3];
     let mut squared_perimeter = 0.0;
+    let mut add = |a: [f64; 3], b: [f64; 3]| {
+        area_vector[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        area_vector[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        area_vector[2] += (a[0] - b[0]) * (a[1] + b[1]);
+        squared_perimeter += squared_distance(a, b);
+    };
     let mut previous = first;
-    for point in points.chain(std::iter::once(first)) {
-        squared_perimeter += squared_distance(previous, point);
+    for point in points {
+        add(previous, point);
         previous = point;
     }
-    area_norm <= RELATIVE_TOLERANCE * squared_perimeter
+    add(previous, first);
+    let bound = RELATIVE_TOLERANCE * squared_perimeter;
+    squared_length(area_vector) <= bound * bound
 }
 
 fn squared_distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|i| (a[i] - b[i]) * (a[i] - b[i])).sum()
 }
 
-fn length(v: [f64; 3]) -> f64 {
-    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+fn squared_length(v: [f64; 3]) -> f64 {
+    v[0] * v[0] + v[1] * v[1] + v[2] * v[2]
 }
 
 #[cfg(test)]

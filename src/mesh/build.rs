@@ -31,7 +31,7 @@ impl Mesh {
         let mut diagnostic = resolved.diagnostic;
         let mesh = Mesh::from_pairing(
             &resolved.table,
-            &resolved.pairing.partner,
+            resolved.pairing.partner,
             resolved.positions.into_owned(),
         );
         diagnostic.non_manifold_vertices =
@@ -42,25 +42,31 @@ impl Mesh {
     }
 
     /// Builds the connectivity of a resolved table: `partner[c]` is the corner sharing corner
-    /// `c`'s edge the other way, or [`BOUNDARY`].
-    fn from_pairing(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) -> Mesh {
+    /// `c`'s edge the other way, or [`BOUNDARY`]. The partner array is turned into the corner →
+    /// half-edge map in place (saving an allocation as large as the index list).
+    fn from_pairing(table: &FaceTable<'_>, partner: Vec<u32>, positions: Vec<[f64; 3]>) -> Mesh {
         let corners = table.corners();
-        let n_corners = corners.len();
 
-        // Pass 1: half-edge of every corner. n_corners < 2^31, so ids stay below u32::MAX.
-        let mut corner_halfedge = vec![0u32; n_corners];
+        // Pass 1: half-edge of every corner. A corner opens edge `e` (half-edge 2e) unless its
+        // partner came first, in which case it takes the partner's twin. n_corners < 2^31, so
+        // ids stay below u32::MAX.
+        let mut corner_halfedge = partner;
+        let mut is_boundary_corner = Vec::new();
         let mut n_edges: u32 = 0;
-        for c in 0..n_corners {
-            let p = partner[c];
-            if p == BOUNDARY {
-                corner_halfedge[c] = 2 * n_edges;
+        for c in 0..corner_halfedge.len() {
+            let p = corner_halfedge[c];
+            corner_halfedge[c] = if p == BOUNDARY {
+                is_boundary_corner.push(c as u32);
                 n_edges += 1;
+                2 * n_edges - 2
             } else if p as usize > c {
-                corner_halfedge[c] = 2 * n_edges;
-                corner_halfedge[p as usize] = 2 * n_edges + 1;
                 n_edges += 1;
-            }
+                2 * n_edges - 2
+            } else {
+                corner_halfedge[p as usize] ^ 1
+            };
         }
+        let boundary_corners = is_boundary_corner;
 
         // Pass 2: face loops. Zeroed allocations are cheap; every slot gets written below.
         let n_halfedges = 2 * n_edges as usize;
@@ -70,7 +76,8 @@ impl Mesh {
         let mut face = vec![0u32; n_halfedges];
         let mut vertex_halfedge = vec![INVALID_INDEX; positions.len()];
         let mut face_halfedge = vec![0u32; table.n_faces()];
-        let mut boundary = Vec::new();
+        let mut boundary = Vec::with_capacity(boundary_corners.len());
+        let mut next_boundary = boundary_corners.iter().copied().peekable();
         for (f, first_corner) in face_halfedge.iter_mut().enumerate() {
             let range = table.face_range(f);
             let first = corner_halfedge[range.start];
@@ -90,7 +97,7 @@ impl Mesh {
                 prev[hu] = previous;
                 previous = h;
                 vertex_halfedge[vertex as usize] = h;
-                if partner[c] == BOUNDARY {
+                if next_boundary.next_if_eq(&(c as u32)).is_some() {
                     origin[hu ^ 1] = corners[next_c];
                     face[hu ^ 1] = INVALID_INDEX;
                     boundary.push(h ^ 1);

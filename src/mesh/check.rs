@@ -254,7 +254,13 @@ mod tests {
 
     /// Two triangles sharing edge 0-2, plus one isolated vertex.
     fn square() -> Mesh {
-        let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [5.0; 3]];
+        let positions = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [5.0; 3],
+        ];
         let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 2, 3]);
         Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0
     }
@@ -271,7 +277,13 @@ mod tests {
         let error = broken(|m| {
             m.next.pop();
         });
-        assert_eq!(error, InvariantError { invariant: Invariant::ArrayLengths, element: Element::Mesh });
+        assert_eq!(
+            error,
+            InvariantError {
+                invariant: Invariant::ArrayLengths,
+                element: Element::Mesh
+            }
+        );
 
         let error = broken(|m| m.next[0] = 999);
         assert_eq!(error.invariant, Invariant::HalfedgeReferences);
@@ -281,17 +293,30 @@ mod tests {
         assert_eq!(error.invariant, Invariant::NextPrevInverse);
 
         let error = broken(|m| m.face[0] = 1);
-        assert!(matches!(error.invariant, Invariant::LoopOnOneFace), "{error}");
+        assert!(
+            matches!(error.invariant, Invariant::LoopOnOneFace),
+            "{error}"
+        );
 
         let error = broken(|m| m.origin[0] = 3);
-        assert!(matches!(error.invariant, Invariant::LoopConnected), "{error}");
+        assert!(
+            matches!(error.invariant, Invariant::LoopConnected),
+            "{error}"
+        );
 
         let error = broken(|m| m.face_halfedge[1] = m.face_halfedge[0]);
-        assert_eq!(error, InvariantError { invariant: Invariant::FaceHalfedge, element: Element::Face(FaceId(1)) });
+        assert_eq!(
+            error,
+            InvariantError {
+                invariant: Invariant::FaceHalfedge,
+                element: Element::Face(FaceId(1))
+            }
+        );
 
         let error = broken(|m| {
             let v = m.origin[0] as usize;
-            let interior = (0..m.origin.len()).find(|&h| m.origin[h] as usize == v && m.face[h] != INVALID_INDEX);
+            let interior = (0..m.origin.len())
+                .find(|&h| m.origin[h] as usize == v && m.face[h] != INVALID_INDEX);
             m.vertex_halfedge[v] = interior.unwrap() as u32;
         });
         assert_eq!(error.invariant, Invariant::VertexHalfedgeOnBoundary);

@@ -13,9 +13,9 @@ impl Mesh {
     pub fn to_soup(&self) -> PolygonSoup {
         let mut new_index = vec![INVALID_INDEX; self.vertex_capacity()];
         let mut positions = Vec::with_capacity(self.n_vertices());
-        for v in 0..self.vertex_capacity() {
+        for (v, slot) in new_index.iter_mut().enumerate() {
             if !self.is_vertex_deleted(VertexId(v as u32)) {
-                new_index[v] = positions.len() as u32;
+                *slot = positions.len() as u32;
                 positions.push(self.positions[v]);
             }
         }

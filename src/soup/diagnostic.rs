@@ -97,6 +97,9 @@ pub struct Diagnostic {
     /// Kept faces keep their relative order: built face `i` is the `i`-th input face not listed
     /// here.
     pub skipped_faces: Vec<u32>,
+    /// Faces whose corner order repair reversed so that they agree with their neighbours
+    /// (the built face runs the other way round from the input).
+    pub reoriented_faces: Vec<u32>,
     /// Vertices added by repair: built vertex `n_input_vertices + i` copies input vertex
     /// `vertex_copies[i]` (same position).
     pub vertex_copies: Vec<u32>,

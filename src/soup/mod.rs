@@ -9,6 +9,7 @@
 
 mod diagnostic;
 mod face_list;
+mod orient;
 mod pairing;
 mod policy;
 mod resolve;

@@ -1,11 +1,11 @@
 //! Pairing the directed edges of a face table into undirected edges by bucketing.
 //!
-//! Every corner `c` stands for its directed edge `corners[c] → corners[next(c)]`. The edges are
-//! counting-sorted by their smaller vertex (one pass to count, one to scatter); each bucket — a
-//! vertex's few edges towards larger vertices — is then sorted by the larger vertex, so the corners
-//! of one undirected edge end up adjacent, in face order. This is linear in the corner count with
-//! sequential passes, unlike the one-ring search per new face that OpenMesh's and CGAL's
-//! `add_face` do.
+//! Every corner `c` stands for its directed edge `corners[c] → corners[next(c)]`. The edges
+//! running from a smaller to a larger vertex are counting-sorted by their smaller vertex (one pass
+//! to count, one to scatter); every edge running the other way then looks its partner up in the
+//! bucket of its smaller vertex, which holds that vertex's few forward edges. This is linear in
+//! the corner count, in three sequential passes, unlike the one-ring search per new face that
+//! OpenMesh's and CGAL's `add_face` do.
 
 use super::FaceTable;
 
@@ -46,77 +46,119 @@ pub struct EdgePairing {
 
 /// Pairs the directed edges of `table`. Preconditions (checked by
 /// [`FaceTable::face_defects`]): every index is below `n_vertices` and no face repeats a vertex.
+///
+/// Forward edges (`a < b`) are counting-sorted into buckets by `a`, keyed by `b`; each backward
+/// edge (`a > b`) then finds its partner by scanning the few forward edges of bucket `b`. Only
+/// half the edges are moved, and no bucket is sorted. Anything unusual — two forward edges with
+/// one key, a backward edge meeting an already paired forward one, two unmatched backward edges
+/// with one key — marks the undirected edge as a problem, whose corners are gathered afterwards.
 pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
     let corners = table.corners();
     let n_corners = table.n_corners();
 
-    // Counting sort by the smaller vertex: `bucket_start[v]..bucket_start[v + 1]` will hold the
-    // edges whose smaller vertex is `v`.
+    // `bucket_start[a]..bucket_start[a + 1]` will hold the forward edges leaving `a`.
     let mut bucket_start = vec![0u32; n_vertices + 1];
     table.for_each_corner_edge(|_, c, n| {
-        let low = corners[c].min(corners[n]) as usize;
-        bucket_start[low + 1] += 1;
+        let (a, b) = (corners[c], corners[n]);
+        if a < b {
+            bucket_start[a as usize + 1] += 1;
+        }
     });
     for v in 0..n_vertices {
         bucket_start[v + 1] += bucket_start[v];
     }
-    let mut cursor = bucket_start[..n_vertices].to_vec();
-    // Entry = larger vertex in the high half, corner in the low half: sorting a bucket groups
-    // one undirected edge's corners together, in corner (face) order.
-    let mut entries = vec![0u64; n_corners];
-    table.for_each_corner_edge(|_, c, n| {
-        let (a, b) = (corners[c], corners[n]);
-        let slot = &mut cursor[a.min(b) as usize];
-        entries[*slot as usize] = (u64::from(a.max(b)) << 32) | c as u64;
-        *slot += 1;
-    });
-    drop(cursor);
+    // Entry = larger vertex in the high half, corner in the low half.
+    let mut entries = vec![0u64; bucket_start[n_vertices] as usize];
+    let mut problem_keys: Vec<u64> = Vec::new();
+    {
+        let mut cursor = bucket_start[..n_vertices].to_vec();
+        table.for_each_corner_edge(|_, c, n| {
+            let (a, b) = (corners[c], corners[n]);
+            if a < b {
+                let slot = &mut cursor[a as usize];
+                let bucket = &entries[bucket_start[a as usize] as usize..*slot as usize];
+                if bucket.iter().any(|&entry| (entry >> 32) as u32 == b) {
+                    problem_keys.push(edge_key(a, b));
+                }
+                entries[*slot as usize] = (u64::from(b) << 32) | c as u64;
+                *slot += 1;
+            }
+        });
+    }
 
     let mut partner = vec![BOUNDARY; n_corners];
-    let mut problems = Vec::new();
-    for low in 0..n_vertices {
-        let bucket = &mut entries[bucket_start[low] as usize..bucket_start[low + 1] as usize];
-        if bucket.len() < 2 {
-            continue; // a lone edge is a boundary edge: already marked
-        }
-        bucket.sort_unstable();
-        let mut run_start = 0;
-        while run_start < bucket.len() {
-            let high = bucket[run_start] >> 32;
-            let run_end = run_start
-                + bucket[run_start..]
-                    .iter()
-                    .take_while(|&&entry| entry >> 32 == high)
-                    .count();
-            let run = &bucket[run_start..run_end];
-            let corner = |i: usize| (run[i] & u64::from(u32::MAX)) as u32;
-            let forward = |c: u32| corners[c as usize] as usize == low;
-            match run.len() {
-                1 => {}
-                2 if forward(corner(0)) != forward(corner(1)) => {
-                    partner[corner(0) as usize] = corner(1);
-                    partner[corner(1) as usize] = corner(0);
-                }
-                len => {
-                    let edge_corners: Vec<u32> = (0..len).map(corner).collect();
-                    for &c in &edge_corners {
-                        partner[c as usize] = UNPAIRED;
+    let mut unmatched_backward: Vec<(u64, u32)> = Vec::new();
+    table.for_each_corner_edge(|_, c, n| {
+        let (a, b) = (corners[c], corners[n]);
+        if a > b {
+            let bucket =
+                &entries[bucket_start[b as usize] as usize..bucket_start[b as usize + 1] as usize];
+            match bucket.iter().find(|&&entry| (entry >> 32) as u32 == a) {
+                Some(&entry) => {
+                    let forward = (entry & u64::from(u32::MAX)) as usize;
+                    if partner[forward] == BOUNDARY {
+                        partner[forward] = c as u32;
+                        partner[c] = forward as u32;
+                    } else {
+                        problem_keys.push(edge_key(b, a));
                     }
-                    problems.push(ProblemEdge {
-                        vertices: [low as u32, high as u32],
-                        corners: edge_corners,
-                        defect: if len == 2 {
-                            EdgeDefect::Inconsistent
-                        } else {
-                            EdgeDefect::NonManifold
-                        },
-                    });
                 }
+                None => unmatched_backward.push((edge_key(b, a), c as u32)),
             }
-            run_start = run_end;
+        }
+    });
+    drop(entries);
+    unmatched_backward.sort_unstable();
+    for pair in unmatched_backward.windows(2) {
+        if pair[0].0 == pair[1].0 {
+            problem_keys.push(pair[0].0);
         }
     }
+
+    let problems = if problem_keys.is_empty() {
+        Vec::new()
+    } else {
+        gather_problems(table, problem_keys, &mut partner)
+    };
     EdgePairing { partner, problems }
+}
+
+/// An undirected edge as one sortable number: smaller vertex high, larger low.
+#[inline]
+fn edge_key(low: u32, high: u32) -> u64 {
+    (u64::from(low) << 32) | u64::from(high)
+}
+
+/// The rare path: collects every corner of the problem edges, marks them [`UNPAIRED`] and
+/// classifies each edge by its number of corners.
+fn gather_problems(
+    table: &FaceTable<'_>,
+    mut keys: Vec<u64>,
+    partner: &mut [u32],
+) -> Vec<ProblemEdge> {
+    keys.sort_unstable();
+    keys.dedup();
+    let corners = table.corners();
+    let mut edge_corners: Vec<Vec<u32>> = vec![Vec::new(); keys.len()];
+    table.for_each_corner_edge(|_, c, n| {
+        let (a, b) = (corners[c], corners[n]);
+        if let Ok(problem) = keys.binary_search(&edge_key(a.min(b), a.max(b))) {
+            edge_corners[problem].push(c as u32);
+            partner[c] = UNPAIRED;
+        }
+    });
+    keys.iter()
+        .zip(edge_corners)
+        .map(|(&key, corners)| ProblemEdge {
+            vertices: [(key >> 32) as u32, key as u32],
+            defect: if corners.len() == 2 {
+                EdgeDefect::Inconsistent
+            } else {
+                EdgeDefect::NonManifold
+            },
+            corners,
+        })
+        .collect()
 }
 
 #[cfg(test)]

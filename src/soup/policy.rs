@@ -19,7 +19,8 @@ pub enum BuildPolicy {
     /// [`Diagnostic::skipped_faces`].
     Skip,
     /// Keep every face: a vertex named twice in one face loses its consecutive repeats and gets a
-    /// copy for a non-consecutive one; faces that cannot share a non-manifold or inconsistently
+    /// copy for a non-consecutive one; faces are reversed where that makes their neighbours agree
+    /// (listed in [`Diagnostic::reoriented_faces`]); faces that still cannot share a non-manifold or inconsistently
     /// oriented edge get copies of that edge's vertices (recorded in
     /// [`Diagnostic::vertex_copies`]), which cuts the surface there. Faces with an out-of-range
     /// index or fewer than 3 distinct corners cannot be kept, so the build fails instead of

@@ -5,6 +5,7 @@
 use std::borrow::Cow;
 use std::collections::HashMap;
 
+use super::orient::{faces_to_flip, flip_faces};
 use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
 use super::table::{MAX_VERTICES, non_finite_vertices};
 use super::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, FaceTable, ListProblem};
@@ -106,6 +107,13 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                 pairing = pair_edges(&table, copies.n_vertices());
             }
             BuildPolicy::Repair => {
+                let flips = faces_to_flip(&table, &pairing);
+                if !flips.is_empty() {
+                    diagnostic.reoriented_faces =
+                        flips.iter().map(|&f| table.input_face(f)).collect();
+                    flip_faces(&mut table, &flips);
+                    pairing = pair_edges(&table, copies.n_vertices());
+                }
                 pairing = repair_edges(&mut table, pairing, &mut copies)?;
             }
         }

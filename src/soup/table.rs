@@ -207,12 +207,49 @@ impl<'a> FaceTable<'a> {
     }
 
     /// Finds face-level defects: faces with fewer than 3 corners, with an index `>= n_vertices`,
-    /// or naming a vertex twice. Each list holds input face indices, ascending.
+    /// or naming a vertex twice. Each list holds input face indices, ascending. Large tables are
+    /// checked in parallel chunks (feature `parallel`).
     pub fn face_defects(&self, n_vertices: usize) -> FaceDefects {
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            const CHUNK: usize = 1 << 16;
+            if self.n_faces() > CHUNK {
+                let chunks: Vec<FaceDefects> = (0..self.n_faces().div_ceil(CHUNK))
+                    .into_par_iter()
+                    .map(|chunk| {
+                        self.face_defects_in(
+                            chunk * CHUNK..self.n_faces().min((chunk + 1) * CHUNK),
+                            n_vertices,
+                        )
+                    })
+                    .collect();
+                let mut defects = FaceDefects::default();
+                for chunk in chunks {
+                    defects.too_small.extend(chunk.too_small);
+                    defects.out_of_range.extend(chunk.out_of_range);
+                    defects.repeated_vertex.extend(chunk.repeated_vertex);
+                }
+                return defects;
+            }
+        }
+        self.face_defects_in(0..self.n_faces(), n_vertices)
+    }
+
+    fn face_defects_in(&self, faces: Range<usize>, n_vertices: usize) -> FaceDefects {
         let mut defects = FaceDefects::default();
         let mut scratch = Vec::new();
-        for f in 0..self.n_faces() {
+        for f in faces {
             let face = self.face(f);
+            // Fast path for the common valid triangle.
+            if let &[a, b, c] = face
+                && (a.max(b).max(c) as usize) < n_vertices
+                && a != b
+                && b != c
+                && a != c
+            {
+                continue;
+            }
             let input = self.input_face(f);
             if face.len() < 3 {
                 defects.too_small.push(input);
@@ -263,12 +300,27 @@ pub(crate) fn has_repeated_vertex(face: &[u32], scratch: &mut Vec<u32>) -> bool 
 
 /// Vertices with a NaN or infinite coordinate, ascending.
 pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
-    positions
-        .iter()
-        .enumerate()
-        .filter(|(_, p)| !p.iter().all(|c| c.is_finite()))
-        .map(|(v, _)| v as u32)
-        .collect()
+    let is_bad = |p: &[f64; 3]| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite());
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        positions
+            .par_iter()
+            .with_min_len(1 << 16)
+            .enumerate()
+            .filter(|(_, p)| is_bad(p))
+            .map(|(v, _)| v as u32)
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        positions
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| is_bad(p))
+            .map(|(v, _)| v as u32)
+            .collect()
+    }
 }
 
 #[cfg(test)]
@@ -330,6 +382,22 @@ mod tests {
         assert_eq!(defects.too_small, vec![0]);
         assert_eq!(defects.out_of_range, vec![1]);
         assert_eq!(defects.repeated_vertex, vec![2, 3]);
+    }
+
+    #[test]
+    fn defects_of_large_tables_come_back_in_order() {
+        let n_faces = 150_000u32;
+        let mut indices: Vec<u32> = (0..n_faces)
+            .flat_map(|f| [0, f % 7 + 1, f % 7 + 2])
+            .collect();
+        for &bad in &[3u32, 65_536, 149_999] {
+            indices[3 * bad as usize + 1] = 0;
+        }
+        let positions = vec![[0.0; 3]; 9];
+        let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
+        let defects = table.face_defects(positions.len());
+        assert_eq!(defects.repeated_vertex, vec![3, 65_536, 149_999]);
+        assert!(defects.too_small.is_empty() && defects.out_of_range.is_empty());
     }
 
     #[test]

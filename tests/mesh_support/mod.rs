@@ -31,22 +31,35 @@ fn parse_off(text: &str) -> PolygonSoup {
         .filter(|line| !line.is_empty());
     let header = lines.next().expect("OFF header");
     assert!(header.ends_with("OFF"), "not an OFF header: {header}");
-    let mut first = header[header.len() - 3..].to_string();
-    let counts_line = if header.len() > 3 && header.split_whitespace().count() > 1 {
-        first = header.split_whitespace().skip(1).collect::<Vec<_>>().join(" ");
-        first.as_str()
+    // Counts may follow the keyword on the header line ("OFF 8 6 0") or sit on the next line.
+    let inline_counts: Vec<&str> = header.split_whitespace().skip(1).collect();
+    let counts_line = if inline_counts.is_empty() {
+        lines.next().expect("OFF counts").to_string()
     } else {
-        lines.next().expect("OFF counts")
+        inline_counts.join(" ")
     };
-    let counts: Vec<usize> = counts_line.split_whitespace().map(|t| t.parse().unwrap()).collect();
+    let counts: Vec<usize> = counts_line
+        .split_whitespace()
+        .map(|t| t.parse().unwrap())
+        .collect();
     let (n_vertices, n_faces) = (counts[0], counts[1]);
     let mut soup = PolygonSoup::default();
     for _ in 0..n_vertices {
-        let values: Vec<f64> = lines.next().unwrap().split_whitespace().take(3).map(|t| t.parse().unwrap()).collect();
+        let values: Vec<f64> = lines
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .take(3)
+            .map(|t| t.parse().unwrap())
+            .collect();
         soup.positions.push([values[0], values[1], values[2]]);
     }
     for _ in 0..n_faces {
-        let mut tokens = lines.next().unwrap().split_whitespace().map(|t| t.parse::<i64>().unwrap());
+        let mut tokens = lines
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .map(|t| t.parse::<i64>().unwrap());
         let size = tokens.next().unwrap() as usize;
         soup.face_sizes.push(size as u32);
         soup.indices.extend(tokens.take(size).map(|i| i as u32));
@@ -67,8 +80,11 @@ fn parse_obj(text: &str) -> PolygonSoup {
                 let start = soup.indices.len();
                 for token in tokens {
                     let index: i64 = token.split('/').next().unwrap().parse().unwrap();
-                    let zero_based =
-                        if index < 0 { soup.positions.len() as i64 + index } else { index - 1 };
+                    let zero_based = if index < 0 {
+                        soup.positions.len() as i64 + index
+                    } else {
+                        index - 1
+                    };
                     soup.indices.push(zero_based as u32);
                 }
                 soup.face_sizes.push((soup.indices.len() - start) as u32);
@@ -82,14 +98,22 @@ fn parse_obj(text: &str) -> PolygonSoup {
 /// A `columns × rows` grid of quads on a torus (closed, genus 1) when `closed`, else an open
 /// `columns × rows` quad grid in the plane; each quad split into two triangles when `triangles`.
 pub fn grid(columns: u32, rows: u32, closed: bool, triangles: bool) -> PolygonSoup {
-    let (vertex_columns, vertex_rows) = if closed { (columns, rows) } else { (columns + 1, rows + 1) };
+    let (vertex_columns, vertex_rows) = if closed {
+        (columns, rows)
+    } else {
+        (columns + 1, rows + 1)
+    };
     let mut soup = PolygonSoup::default();
     for j in 0..vertex_rows {
         for i in 0..vertex_columns {
             let (u, v) = (i as f64 / columns as f64, j as f64 / rows as f64);
             soup.positions.push(if closed {
                 let (a, b) = (u * std::f64::consts::TAU, v * std::f64::consts::TAU);
-                [(2.0 + b.cos()) * a.cos(), (2.0 + b.cos()) * a.sin(), b.sin()]
+                [
+                    (2.0 + b.cos()) * a.cos(),
+                    (2.0 + b.cos()) * a.sin(),
+                    b.sin(),
+                ]
             } else {
                 [u, v, 0.0]
             });
@@ -100,7 +124,8 @@ pub fn grid(columns: u32, rows: u32, closed: bool, triangles: bool) -> PolygonSo
         for i in 0..columns {
             let quad = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
             if triangles {
-                soup.indices.extend([quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]]);
+                soup.indices
+                    .extend([quad[0], quad[1], quad[2], quad[0], quad[2], quad[3]]);
                 soup.face_sizes.extend([3, 3]);
             } else {
                 soup.indices.extend(quad);
