@@ -61,6 +61,16 @@
 #define MAX_VERTICES ((uint64_t)UINT32_MAX - 1)
 
 /**
+ * Deepest subdivision accepted: level 10 already has 20·4¹⁰ ≈ 21 million triangles.
+ */
+#define MAX_ICOSPHERE_LEVEL 10
+
+/**
+ * The raw value of "no element": an id whose `idx` is this is invalid.
+ */
+#define HW_INVALID_INDEX UINT32_MAX
+
+/**
  * Major version: incompatible API changes.
  */
 #define HW_VERSION_MAJOR 0
@@ -106,6 +116,53 @@ typedef struct hw_mesh hw_mesh;
 typedef uint32_t hw_status;
 
 /**
+ * A vertex id.
+ */
+typedef struct {
+  uint32_t idx;
+} hw_vertex;
+
+/**
+ * What a circulator yields.
+ */
+typedef uint32_t hw_circulator_kind;
+
+/**
+ * A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
+ * hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
+ * kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
+ */
+typedef struct {
+  const hw_mesh *mesh;
+  uint32_t start;
+  uint32_t current;
+  uint32_t remaining;
+  uint32_t center;
+  hw_circulator_kind kind;
+} hw_circulator;
+
+/**
+ * A face id.
+ */
+typedef struct {
+  uint32_t idx;
+} hw_face;
+
+/**
+ * A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
+ */
+typedef struct {
+  uint32_t idx;
+} hw_halfedge;
+
+/**
+ * An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
+ */
+typedef struct {
+  uint32_t idx;
+} hw_edge;
+
+/**
  * One list of element ids in a diagnostic (see hw_diagnostic_ids()).
  */
 typedef uint32_t hw_diagnostic_list;
@@ -119,6 +176,36 @@ typedef uint32_t hw_diagnostic_edges;
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
  */
 typedef uint32_t hw_build_policy;
+
+/**
+ * Which internal array hw_mesh_view() shows.
+ */
+typedef uint32_t hw_mesh_array;
+
+/**
+ * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
+ */
+#define HW_CIRC_HALFEDGES 0
+
+/**
+ * Around a vertex only: the incoming half-edges (twins of the outgoing ones).
+ */
+#define HW_CIRC_INCOMING 1
+
+/**
+ * Vertices: a vertex's neighbours, a face's corners.
+ */
+#define HW_CIRC_VERTICES 2
+
+/**
+ * Edges: at a vertex, or the sides of a face.
+ */
+#define HW_CIRC_EDGES 3
+
+/**
+ * Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
+ */
+#define HW_CIRC_FACES 4
 
 /**
  * Faces with fewer than 3 corners.
@@ -177,6 +264,22 @@ typedef uint32_t hw_build_policy;
 #define HW_DIAG_INCONSISTENT_EDGES 1
 
 /**
+ * Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
+ * cannot be placed; the message names the offending faces, edges and vertices.
+ */
+#define HW_BUILD_STRICT 0
+
+/**
+ * Leave out the faces that cannot be placed (and report them); build the rest.
+ */
+#define HW_BUILD_SKIP 1
+
+/**
+ * Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
+ */
+#define HW_BUILD_REPAIR 2
+
+/**
  * Success.
  */
 #define HW_OK 0
@@ -230,24 +333,101 @@ typedef uint32_t hw_build_policy;
 #define HW_ERR_PANIC 9
 
 /**
- * Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
- * cannot be placed; the message names the offending faces, edges and vertices.
+ * Per half-edge: the vertex it leaves.
  */
-#define HW_BUILD_STRICT 0
+#define HW_ARRAY_HALFEDGE_ORIGIN 0
 
 /**
- * Leave out the faces that cannot be placed (and report them); build the rest.
+ * Per half-edge: the next half-edge around its face or boundary loop.
  */
-#define HW_BUILD_SKIP 1
+#define HW_ARRAY_HALFEDGE_NEXT 1
 
 /**
- * Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
+ * Per half-edge: the previous half-edge around its face or boundary loop.
  */
-#define HW_BUILD_REPAIR 2
+#define HW_ARRAY_HALFEDGE_PREV 2
+
+/**
+ * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+ */
+#define HW_ARRAY_HALFEDGE_FACE 3
+
+/**
+ * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
+ */
+#define HW_ARRAY_VERTEX_HALFEDGE 4
+
+/**
+ * Per face: one of its half-edges.
+ */
+#define HW_ARRAY_FACE_HALFEDGE 5
 
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Starts a walk around vertex `v`. An isolated vertex gives an empty walk.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ */
+hw_status hw_circ_around_vertex(const hw_mesh *mesh,
+                                hw_vertex v,
+                                hw_circulator_kind kind,
+                                hw_circulator *out);
+
+/**
+ * Starts a walk around face `f`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ */
+hw_status hw_circ_around_face(const hw_mesh *mesh,
+                              hw_face f,
+                              hw_circulator_kind kind,
+                              hw_circulator *out);
+
+/**
+ * Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
+ * boundary half-edge. Yields half-edges (`kind` is ::HW_CIRC_HALFEDGES).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ */
+hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *out);
+
+/**
+ * Next half-edge of a ::HW_CIRC_HALFEDGES or ::HW_CIRC_INCOMING circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ */
+bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
+
+/**
+ * Next vertex of a ::HW_CIRC_VERTICES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ */
+bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
+
+/**
+ * Next edge of a ::HW_CIRC_EDGES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ */
+bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
+
+/**
+ * Next face of a ::HW_CIRC_FACES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ */
+bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
 
 /**
  * Analyses an indexed face list without building anything (same arguments as
@@ -351,12 +531,6 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
 hw_status hw_last_error_message(char *buf, size_t len, size_t *needed);
 
 /**
- * A short, static, NUL-terminated English description of `status`. Unknown values give
- * `"unknown status"`. Never returns NULL; the string must not be freed.
- */
-const char *hw_status_str(hw_status status);
-
-/**
  * Creates an empty mesh. Returns NULL only if the allocation fails.
  */
 hw_mesh *hw_mesh_new(void);
@@ -435,6 +609,214 @@ size_t hw_mesh_n_edges(const hw_mesh *mesh);
 size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 
 /**
+ * The vertex half-edge `h` leaves (the seeds' `Origin`/`v`).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_vertex hw_mesh_he_origin(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The vertex half-edge `h` points to.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_vertex hw_mesh_he_target(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The opposite half-edge of `h` (`h.idx ^ 1`; the seeds' `Twin`/`sym`).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_he_twin(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The next half-edge around `h`'s face (counter-clockwise seen from outside), or along its
+ * boundary loop when `h` is a boundary half-edge.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_he_next(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The previous half-edge around `h`'s face or boundary loop.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_he_prev(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The face `h` borders; an invalid face (without an error) for a boundary half-edge.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_face hw_mesh_he_face(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * The undirected edge of `h` (`h.idx >> 1`).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_edge hw_mesh_he_edge(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * One of the two half-edges of `e`: `side` 0 gives `2 e`, 1 gives `2 e + 1`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_edge_halfedge(const hw_mesh *mesh, hw_edge e, uint32_t side);
+
+/**
+ * The outgoing half-edge stored at `v` (its boundary half-edge when `v` is on a boundary, so
+ * circulating from it visits the whole fan); invalid, without an error, for an isolated vertex.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_vertex_halfedge(const hw_mesh *mesh, hw_vertex v);
+
+/**
+ * One half-edge of `f` (where its loops start).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_halfedge hw_mesh_face_halfedge(const hw_mesh *mesh, hw_face f);
+
+/**
+ * `true` when `h` has no face (it lies on a boundary loop).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+bool hw_mesh_he_is_boundary(const hw_mesh *mesh, hw_halfedge h);
+
+/**
+ * `true` when one side of `e` has no face.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+bool hw_mesh_edge_is_boundary(const hw_mesh *mesh, hw_edge e);
+
+/**
+ * `true` when `v` is on a boundary (or isolated).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+bool hw_mesh_vertex_is_boundary(const hw_mesh *mesh, hw_vertex v);
+
+/**
+ * `true` when a side of `f` is on a boundary.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+bool hw_mesh_face_is_boundary(const hw_mesh *mesh, hw_face f);
+
+/**
+ * Number of edges at `v` (0 when isolated, or for an invalid id).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+uint32_t hw_mesh_vertex_valence(const hw_mesh *mesh, hw_vertex v);
+
+/**
+ * Number of sides of `f` (0 for an invalid id).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+uint32_t hw_mesh_face_degree(const hw_mesh *mesh, hw_face f);
+
+/**
+ * Copies the position of `v` into `out_xyz[0..3]`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_xyz` must hold 3 writable doubles.
+ */
+hw_status hw_mesh_vertex_position(const hw_mesh *mesh, hw_vertex v, double *out_xyz);
+
+/**
+ * Moves `v` to `xyz[0..3]`. Non-finite coordinates are refused (`HW_ERR_INVALID_INPUT`).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh used by no other thread; `xyz` must hold 3 doubles.
+ */
+hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *xyz);
+
+/**
+ * A short, static, NUL-terminated English description of `status`. Unknown values give
+ * `"unknown status"`. Never returns NULL; the string must not be freed.
+ */
+const char *hw_status_str(hw_status status);
+
+/**
+ * Validates every invariant of the half-edge structure (twins, next/prev, closed face and
+ * boundary loops, vertex half-edges outgoing and on the boundary when there is one, ids in
+ * range), with every walk bounded. `HW_OK`, or `HW_ERR_INVALID_INPUT` with a message naming the
+ * first broken invariant and its element.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+hw_status hw_mesh_check(const hw_mesh *mesh);
+
+/**
+ * Number of boundary loops (holes and open borders).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_count` writable.
+ */
+hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
+
+/**
+ * One half-edge of every boundary loop (the lowest id of the loop), ascending, copied into
+ * `out_halfedges` (`capacity` elements). `*needed` always receives the loop count; walk a loop
+ * with hw_mesh_he_next() or hw_circ_along_loop().
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_halfedges` NULL or `capacity` writable elements;
+ * `needed` NULL or writable.
+ */
+hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
+                                 hw_halfedge *out_halfedges,
+                                 size_t capacity,
+                                 size_t *needed);
+
+/**
+ * Number of connected components (faces connected across edges, as CGAL and OpenMesh count
+ * them; fans that only touch at a vertex are separate).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_count` writable.
+ */
+hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
+
+/**
+ * The component of every face (`0..count`, numbered by lowest face; `HW_INVALID_INDEX` for a
+ * deleted face), indexed by face id, copied into `out_components` (`capacity` elements).
+ * `*needed` always receives the number of face slots.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_components` NULL or `capacity` writable elements;
+ * `needed` NULL or writable.
+ */
+hw_status hw_mesh_face_components(const hw_mesh *mesh,
+                                  uint32_t *out_components,
+                                  size_t capacity,
+                                  size_t *needed);
+
+/**
  * The version number of the library actually linked, in the form of `HW_VERSION_NUMBER`.
  * Compare with `HW_VERSION_NUMBER` to detect a header/library mismatch.
  */
@@ -445,6 +827,29 @@ uint32_t hw_version_number(void);
  * `"0.1.0"`. Never NULL; must not be freed.
  */
 const char *hw_version_string(void);
+
+/**
+ * A read-only view of one connectivity array: `*out_data` (NULL when empty) and its length
+ * `*out_len`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_data` and `out_len` writable.
+ */
+hw_status hw_mesh_view(const hw_mesh *mesh,
+                       hw_mesh_array which,
+                       const uint32_t **out_data,
+                       size_t *out_len);
+
+/**
+ * A read-only view of the vertex positions: `*out_xyz` holds `3 * *out_n_vertices` doubles
+ * (x, y, z per vertex; NULL when there are none).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_vertices` writable.
+ */
+hw_status hw_mesh_view_positions(const hw_mesh *mesh,
+                                 const double **out_xyz,
+                                 size_t *out_n_vertices);
 
 #ifdef __cplusplus
 }  // extern "C"

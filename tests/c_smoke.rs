@@ -36,7 +36,14 @@ fn c_program_builds_links_and_runs_against_the_header() {
     let include = Path::new(MANIFEST_DIR).join("include");
     let output = compiler
         .to_command()
-        .args(["-std=c11", "-Wall", "-Wextra", "-Wpedantic", "-Werror", "-I"])
+        .args([
+            "-std=c11",
+            "-Wall",
+            "-Wextra",
+            "-Wpedantic",
+            "-Werror",
+            "-I",
+        ])
         .arg(include)
         .arg(source)
         .arg("-o")
@@ -50,8 +57,17 @@ fn c_program_builds_links_and_runs_against_the_header() {
         "compiling the C consumer failed:\n{}",
         String::from_utf8_lossy(&output.stderr)
     );
-    let run = Command::new(&program).output().expect("the C consumer runs");
+    let run = Command::new(&program)
+        .output()
+        .expect("the C consumer runs");
     let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(run.status.success(), "C consumer failed: {stdout}{}", String::from_utf8_lossy(&run.stderr));
-    assert!(stdout.contains("V=4 E=6 F=4"), "unexpected output: {stdout}");
+    assert!(
+        run.status.success(),
+        "C consumer failed: {stdout}{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert!(
+        stdout.contains("V=4 E=6 F=4"),
+        "unexpected output: {stdout}"
+    );
 }

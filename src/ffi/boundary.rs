@@ -84,9 +84,14 @@ pub(crate) unsafe fn arg_slice<'a, T>(
         return Err(FfiError::null_argument(name));
     }
     if !ptr.is_aligned() {
-        return Err(FfiError::invalid_input(format!("argument `{name}` is misaligned")));
+        return Err(FfiError::invalid_input(format!(
+            "argument `{name}` is misaligned"
+        )));
     }
-    if len.checked_mul(size_of::<T>()).is_none_or(|bytes| bytes > isize::MAX as usize) {
+    if len
+        .checked_mul(size_of::<T>())
+        .is_none_or(|bytes| bytes > isize::MAX as usize)
+    {
         return Err(FfiError::invalid_input(format!(
             "argument `{name}`: {len} elements do not fit in memory"
         )));
@@ -101,7 +106,11 @@ pub(crate) struct Out<T>(*mut T);
 impl<T> Out<T> {
     /// Checks an output pointer.
     pub(crate) fn new(ptr: *mut T, name: &str) -> Result<Self, FfiError> {
-        if ptr.is_null() { Err(FfiError::null_argument(name)) } else { Ok(Out(ptr)) }
+        if ptr.is_null() {
+            Err(FfiError::null_argument(name))
+        } else {
+            Ok(Out(ptr))
+        }
     }
 
     /// An optional output: NULL means the caller does not want it.
@@ -149,4 +158,53 @@ pub(crate) unsafe fn copy_text(
         buf.add(text.len()).write(0);
     }
     Ok(())
+}
+
+/// Copies `items` into a caller's array of `capacity` elements: the array form of
+/// [`copy_text`]. `*needed` (when not NULL) always receives `items.len()`; when `out` is NULL or
+/// too small, nothing is written to it and the error is `HW_ERR_BUFFER_TOO_SMALL`.
+///
+/// # Safety
+/// `out` must be NULL or point to `capacity` writable elements; `needed` NULL or writable.
+pub(crate) unsafe fn copy_items<T: Copy>(
+    items: &[T],
+    out: *mut T,
+    capacity: usize,
+    needed: *mut usize,
+) -> Result<(), FfiError> {
+    if !needed.is_null() {
+        // SAFETY: writable per the caller.
+        unsafe { needed.write(items.len()) };
+    }
+    if items.is_empty() {
+        return Ok(());
+    }
+    if out.is_null() || capacity < items.len() {
+        return Err(FfiError::new(
+            HW_ERR_BUFFER_TOO_SMALL,
+            format!(
+                "the array holds {capacity} elements, {} are needed",
+                items.len()
+            ),
+        ));
+    }
+    // SAFETY: `out` holds at least `items.len()` writable elements; `items` is Rust-owned.
+    unsafe { std::ptr::copy_nonoverlapping(items.as_ptr(), out, items.len()) };
+    Ok(())
+}
+
+/// Writes a zero-copy view (`*out_data`, NULL when empty, and `*out_len`).
+///
+/// # Safety
+/// As for [`Out::write`].
+pub(crate) unsafe fn write_view<T>(out_data: Out<*const T>, out_len: Out<usize>, data: &[T]) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        out_data.write(if data.is_empty() {
+            std::ptr::null()
+        } else {
+            data.as_ptr()
+        });
+        out_len.write(data.len());
+    }
 }

@@ -2,7 +2,7 @@
 
 use crate::soup::{Diagnostic, EdgeReport};
 
-use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void};
+use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, write_view};
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
@@ -64,15 +64,24 @@ fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], 
         HW_DIAG_DEGENERATE_FACES => &diagnostic.degenerate_faces,
         HW_DIAG_SKIPPED_FACES => &diagnostic.skipped_faces,
         HW_DIAG_VERTEX_COPIES => &diagnostic.vertex_copies,
-        other => return Err(FfiError::invalid_input(format!("unknown diagnostic list {other}"))),
+        other => {
+            return Err(FfiError::invalid_input(format!(
+                "unknown diagnostic list {other}"
+            )));
+        }
     })
 }
 
-fn edge_list(diagnostic: &Diagnostic, edges: hw_diagnostic_edges) -> Result<&[EdgeReport], FfiError> {
+fn edge_list(
+    diagnostic: &Diagnostic,
+    edges: hw_diagnostic_edges,
+) -> Result<&[EdgeReport], FfiError> {
     match edges {
         HW_DIAG_NON_MANIFOLD_EDGES => Ok(&diagnostic.non_manifold_edges),
         HW_DIAG_INCONSISTENT_EDGES => Ok(&diagnostic.inconsistent_edges),
-        other => Err(FfiError::invalid_input(format!("unknown diagnostic edge list {other}"))),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown diagnostic edge list {other}"
+        ))),
     }
 }
 
@@ -97,7 +106,9 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
         let out = Out::new(out_diagnostic, "out_diagnostic")?;
         // SAFETY: forwarded from the caller.
         let list = unsafe {
-            face_list_arg(positions, n_vertices, face_sizes, n_faces, indices, n_indices)?
+            face_list_arg(
+                positions, n_vertices, face_sizes, n_faces, indices, n_indices,
+            )?
         };
         let diagnostic = crate::mesh::Mesh::diagnose(&list);
         // SAFETY: checked non-NULL, writable per the caller.
@@ -123,7 +134,11 @@ pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic) -> bool {
     // SAFETY: forwarded from the caller.
-    guard_value(false, || Ok(unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic.is_clean()))
+    guard_value(false, || {
+        Ok(unsafe { arg_ref(diagnostic, "diagnostic") }?
+            .diagnostic
+            .is_clean())
+    })
 }
 
 /// A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` may be NULL when
@@ -141,12 +156,12 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
     guard(|| {
         let (out_ids, out_len) = (Out::new(out_ids, "out_ids")?, Out::new(out_len, "out_len")?);
         // SAFETY: forwarded from the caller.
-        let ids = id_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, list)?;
+        let ids = id_list(
+            &unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic,
+            list,
+        )?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe {
-            out_ids.write(if ids.is_empty() { std::ptr::null() } else { ids.as_ptr() });
-            out_len.write(ids.len());
-        }
+        unsafe { write_view(out_ids, out_len, ids) };
         Ok(())
     })
 }
@@ -164,7 +179,10 @@ pub unsafe extern "C" fn hw_diagnostic_edge_count(
     guard(|| {
         let out = Out::new(out_count, "out_count")?;
         // SAFETY: forwarded from the caller.
-        let list = edge_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, edges)?;
+        let list = edge_list(
+            &unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic,
+            edges,
+        )?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(list.len()) };
         Ok(())
@@ -191,7 +209,10 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
         let out_faces = Out::new(out_faces, "out_faces")?;
         let out_n_faces = Out::new(out_n_faces, "out_n_faces")?;
         // SAFETY: forwarded from the caller.
-        let list = edge_list(&unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic, edges)?;
+        let list = edge_list(
+            &unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic,
+            edges,
+        )?;
         let edge = list.get(index).ok_or_else(|| {
             FfiError::invalid_input(format!("edge {index} of a list of {}", list.len()))
         })?;

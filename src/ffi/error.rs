@@ -15,7 +15,10 @@ pub struct FfiError {
 
 impl FfiError {
     pub fn new(status: hw_status, message: impl Into<String>) -> Self {
-        FfiError { status, message: message.into() }
+        FfiError {
+            status,
+            message: message.into(),
+        }
     }
 
     pub fn null_argument(name: &str) -> Self {
@@ -41,7 +44,12 @@ pub(crate) fn record(error: FfiError) -> hw_status {
         let mut last = last.borrow_mut();
         last.clear();
         // An interior NUL would cut the C string short: show it instead.
-        last.extend(error.message.chars().map(|c| if c == '\0' { '\u{FFFD}' } else { c }));
+        last.extend(
+            error
+                .message
+                .chars()
+                .map(|c| if c == '\0' { '\u{FFFD}' } else { c }),
+        );
     });
     error.status
 }
@@ -68,7 +76,8 @@ pub unsafe extern "C" fn hw_last_error_message(
     // Not through `guard`: reading the last error must not overwrite it.
     let result = std::panic::catch_unwind(|| {
         // SAFETY: the caller's guarantees are those of `copy_text`.
-        LAST_ERROR.with(|last| unsafe { copy_text(&last.borrow(), buf, len, needed) })
+        LAST_ERROR
+            .with(|last| unsafe { copy_text(&last.borrow(), buf, len, needed) })
             .map_or_else(|error| error.status, |()| HW_OK)
     });
     result.unwrap_or(HW_ERR_PANIC)

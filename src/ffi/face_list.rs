@@ -19,9 +19,9 @@ pub(crate) unsafe fn face_list_arg<'a>(
     indices: *const u32,
     n_indices: usize,
 ) -> Result<FaceList<'a>, FfiError> {
-    let n_coordinates = n_vertices
-        .checked_mul(3)
-        .ok_or_else(|| FfiError::invalid_input(format!("n_vertices = {n_vertices} is too large")))?;
+    let n_coordinates = n_vertices.checked_mul(3).ok_or_else(|| {
+        FfiError::invalid_input(format!("n_vertices = {n_vertices} is too large"))
+    })?;
     // SAFETY: forwarded from the caller.
     let (coordinates, sizes, indices) = unsafe {
         (
@@ -30,5 +30,9 @@ pub(crate) unsafe fn face_list_arg<'a>(
             arg_slice(indices, n_indices, "indices")?,
         )
     };
-    Ok(FaceList::polygons(coordinates.as_chunks::<3>().0, sizes, indices))
+    Ok(FaceList::polygons(
+        coordinates.as_chunks::<3>().0,
+        sizes,
+        indices,
+    ))
 }

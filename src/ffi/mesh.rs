@@ -27,12 +27,14 @@ pub const HW_BUILD_SKIP: hw_build_policy = 1;
 /// Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
 pub const HW_BUILD_REPAIR: hw_build_policy = 2;
 
-fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
+pub(crate) fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
     match raw {
         HW_BUILD_STRICT => Ok(BuildPolicy::Strict),
         HW_BUILD_SKIP => Ok(BuildPolicy::Skip),
         HW_BUILD_REPAIR => Ok(BuildPolicy::Repair),
-        other => Err(FfiError::invalid_input(format!("unknown build policy {other}"))),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown build policy {other}"
+        ))),
     }
 }
 
@@ -58,7 +60,11 @@ pub(crate) unsafe fn mesh_ref<'a>(mesh: *const hw_mesh) -> Result<&'a Mesh, FfiE
 /// Creates an empty mesh. Returns NULL only if the allocation fails.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
-    guard_value(std::ptr::null_mut(), || Ok(into_handle(hw_mesh { mesh: Mesh::default() })))
+    guard_value(std::ptr::null_mut(), || {
+        Ok(into_handle(hw_mesh {
+            mesh: Mesh::default(),
+        }))
+    })
 }
 
 /// Builds a mesh from an indexed polygon list.
@@ -98,7 +104,9 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
         let out_diagnostic = Out::optional(out_diagnostic);
         // SAFETY: forwarded from the caller.
         let list = unsafe {
-            face_list_arg(positions, n_vertices, face_sizes, n_faces, indices, n_indices)?
+            face_list_arg(
+                positions, n_vertices, face_sizes, n_faces, indices, n_indices,
+            )?
         };
         let (mesh, diagnostic) = Mesh::from_face_list(&list, build_policy(policy)?)?;
         // SAFETY: checked non-NULL; writable per the caller.
@@ -123,13 +131,27 @@ pub unsafe extern "C" fn hw_mesh_free(mesh: *mut hw_mesh) {
     guard_void(|| unsafe { free_handle(mesh, "hw_mesh") });
 }
 
+/// Answers a value-returning query on a `const hw_mesh *`: `fallback` (with the error recorded)
+/// for a NULL mesh or when the query fails.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+pub(crate) unsafe fn query<T>(
+    mesh: *const hw_mesh,
+    fallback: T,
+    answer: impl FnOnce(&Mesh) -> Result<T, FfiError>,
+) -> T {
+    // SAFETY: forwarded from the caller.
+    guard_value(fallback, || answer(unsafe { mesh_ref(mesh) }?))
+}
+
 /// Reads one count of a mesh; 0 (with the error recorded) for a NULL mesh.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
 unsafe fn count(mesh: *const hw_mesh, of: impl FnOnce(&Mesh) -> usize) -> usize {
     // SAFETY: forwarded from the caller.
-    guard_value(0, || Ok(of(unsafe { mesh_ref(mesh) }?)))
+    unsafe { query(mesh, 0, |mesh| Ok(of(mesh))) }
 }
 
 // cbindgen reads these signatures as written, so they are spelled out rather than generated.

@@ -10,16 +10,30 @@
 #![allow(non_camel_case_types)]
 
 pub(crate) mod boundary;
+pub mod circulator;
 pub mod diagnostic;
+pub mod elements;
 pub(crate) mod error;
 pub(crate) mod face_list;
 pub(crate) mod handle;
-pub mod status;
+pub mod io;
 pub mod mesh;
+pub mod navigation;
+pub mod positions;
+pub mod status;
+pub mod topology;
 pub mod version;
+pub mod views;
 
+pub use circulator::*;
 pub use diagnostic::*;
+pub use elements::*;
 pub use error::hw_last_error_message;
-pub use status::*;
+pub use io::*;
 pub use mesh::*;
+pub use navigation::*;
+pub use positions::*;
+pub use status::*;
+pub use topology::*;
 pub use version::*;
+pub use views::*;

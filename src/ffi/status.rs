@@ -52,7 +52,10 @@ const STATUS_TEXT: [&str; 10] = [
 /// `"unknown status"`. Never returns NULL; the string must not be freed.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_status_str(status: hw_status) -> *const c_char {
-    let text = STATUS_TEXT.get(status as usize).copied().unwrap_or("unknown status\0");
+    let text = STATUS_TEXT
+        .get(status as usize)
+        .copied()
+        .unwrap_or("unknown status\0");
     text.as_ptr().cast()
 }
 

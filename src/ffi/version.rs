@@ -37,9 +37,18 @@ mod tests {
     /// The header's macros are written out in Rust for cbindgen; they must follow Cargo.toml.
     #[test]
     fn version_constants_match_cargo_toml() {
-        assert_eq!(HW_VERSION_MAJOR, cargo_part(env!("CARGO_PKG_VERSION_MAJOR")));
-        assert_eq!(HW_VERSION_MINOR, cargo_part(env!("CARGO_PKG_VERSION_MINOR")));
-        assert_eq!(HW_VERSION_PATCH, cargo_part(env!("CARGO_PKG_VERSION_PATCH")));
+        assert_eq!(
+            HW_VERSION_MAJOR,
+            cargo_part(env!("CARGO_PKG_VERSION_MAJOR"))
+        );
+        assert_eq!(
+            HW_VERSION_MINOR,
+            cargo_part(env!("CARGO_PKG_VERSION_MINOR"))
+        );
+        assert_eq!(
+            HW_VERSION_PATCH,
+            cargo_part(env!("CARGO_PKG_VERSION_PATCH"))
+        );
         let (major, minor, patch) = (
             cargo_part(env!("CARGO_PKG_VERSION_MAJOR")),
             cargo_part(env!("CARGO_PKG_VERSION_MINOR")),

@@ -18,12 +18,27 @@
 use super::Mesh;
 use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 
-#[derive(Clone, Copy, Debug)]
-enum Step {
+/// How a walk steps from one half-edge to the following one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Step {
     /// `h → next(h)`: around a face or a boundary loop.
     Next,
     /// `h → twin(prev(h))`: counter-clockwise around the origin.
     RotateCcw,
+}
+
+/// Where a [`HalfedgeWalk`] stands, so that it can be kept outside Rust (the C circulators live
+/// on the caller's stack) and resumed with [`HalfedgeWalk::resume`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WalkProgress {
+    /// The half-edge the walk started at; reaching it again ends the walk.
+    pub start: u32,
+    /// The half-edge the walk yields next, or `INVALID_INDEX` when it is over.
+    pub current: u32,
+    /// Steps left before the bound stops the walk.
+    pub remaining: usize,
+    /// How the walk steps.
+    pub step: Step,
 }
 
 /// A bounded walk over half-edges that ends when it returns to its start.
@@ -51,6 +66,45 @@ impl<'m> HalfedgeWalk<'m> {
             remaining: mesh.halfedge_capacity(),
             step,
             cut_short: false,
+        }
+    }
+
+    /// A walk of `mesh` from `start` stepping by `step` (a vertex's outgoing half-edges with
+    /// [`Step::RotateCcw`], a face or boundary loop with [`Step::Next`]).
+    pub fn with_step(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
+        HalfedgeWalk::new(mesh, start, step)
+    }
+
+    /// Where the walk stands now.
+    pub fn progress(&self) -> WalkProgress {
+        WalkProgress {
+            start: self.start,
+            current: self.current,
+            remaining: self.remaining,
+            step: self.step,
+        }
+    }
+
+    /// Continues a walk from a [`WalkProgress`]. Progress that does not fit `mesh` (ids out of
+    /// range, a bound above the half-edge count: stale or forged state) gives an ended walk that
+    /// reports [`HalfedgeWalk::was_cut_short`], never an out-of-bounds access.
+    pub fn resume(mesh: &'m Mesh, progress: WalkProgress) -> Self {
+        let capacity = mesh.halfedge_capacity();
+        let fits = |h: u32| (h as usize) < capacity;
+        let sound = fits(progress.start)
+            && (progress.current == INVALID_INDEX || fits(progress.current))
+            && progress.remaining <= capacity;
+        HalfedgeWalk {
+            mesh,
+            start: progress.start,
+            current: if sound {
+                progress.current
+            } else {
+                INVALID_INDEX
+            },
+            remaining: if sound { progress.remaining } else { 0 },
+            step: progress.step,
+            cut_short: !sound,
         }
     }
 

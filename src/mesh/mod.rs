@@ -9,6 +9,7 @@
 mod build;
 mod check;
 pub mod circulators;
+mod components;
 mod connectivity;
 mod diagnose;
 mod export;
@@ -18,7 +19,8 @@ mod vertex_fans;
 
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
 pub use check::{Element, Invariant, InvariantError};
-pub use circulators::HalfedgeWalk;
+pub use circulators::{HalfedgeWalk, Step, WalkProgress};
+pub use components::Components;
 pub use connectivity::Mesh;
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};

@@ -1,0 +1,61 @@
+//! Element ids as small by-value C structs, so the compiler keeps vertices, half-edges, edges and
+//! faces apart (`hw_vertex v = hw_mesh_he_origin(mesh, h);`).
+
+use crate::mesh::{EdgeId, FaceId, HalfedgeId, HandleError, VertexId};
+
+use super::error::FfiError;
+use super::status::HW_ERR_INVALID_HANDLE;
+
+/// The raw value of "no element": an id whose `idx` is this is invalid.
+pub const HW_INVALID_INDEX: u32 = u32::MAX;
+
+/// A vertex id.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct hw_vertex {
+    pub idx: u32,
+}
+
+/// A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct hw_halfedge {
+    pub idx: u32,
+}
+
+/// An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct hw_edge {
+    pub idx: u32,
+}
+
+/// A face id.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct hw_face {
+    pub idx: u32,
+}
+
+/// Pairs each C id struct with its Rust id.
+macro_rules! id_conversions {
+    ($($c:ident <=> $rust:ident),*) => {$(
+        impl From<$c> for $rust {
+            fn from(id: $c) -> Self { $rust(id.idx) }
+        }
+        impl From<$rust> for $c {
+            fn from(id: $rust) -> Self { $c { idx: id.0 } }
+        }
+        impl $c {
+            pub(crate) const INVALID: $c = $c { idx: HW_INVALID_INDEX };
+        }
+    )*};
+}
+
+id_conversions!(hw_vertex <=> VertexId, hw_halfedge <=> HalfedgeId, hw_edge <=> EdgeId, hw_face <=> FaceId);
+
+impl From<HandleError> for FfiError {
+    fn from(error: HandleError) -> Self {
+        FfiError::new(HW_ERR_INVALID_HANDLE, error.to_string())
+    }
+}

@@ -1,0 +1,56 @@
+//! Reading and moving vertex positions.
+
+use super::boundary::{Out, arg_mut, arg_ref, guard};
+use super::elements::hw_vertex;
+use super::error::FfiError;
+use super::mesh::{hw_mesh, mesh_ref};
+use super::status::hw_status;
+
+/// Copies the position of `v` into `out_xyz[0..3]`.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh; `out_xyz` must hold 3 writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_vertex_position(
+    mesh: *const hw_mesh,
+    v: hw_vertex,
+    out_xyz: *mut f64,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_xyz.cast::<[f64; 3]>(), "out_xyz")?;
+        // SAFETY: forwarded from the caller.
+        let position = unsafe { mesh_ref(mesh) }?.try_position(v.into())?;
+        // SAFETY: checked non-NULL, 3 writable doubles per the caller.
+        unsafe { out.write(position) };
+        Ok(())
+    })
+}
+
+/// Moves `v` to `xyz[0..3]`. Non-finite coordinates are refused (`HW_ERR_INVALID_INPUT`).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh used by no other thread; `xyz` must hold 3 doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_set_vertex_position(
+    mesh: *mut hw_mesh,
+    v: hw_vertex,
+    xyz: *const f64,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let (mesh, xyz) = unsafe {
+            (
+                arg_mut(mesh, "mesh")?,
+                *arg_ref(xyz.cast::<[f64; 3]>(), "xyz")?,
+            )
+        };
+        if xyz.iter().any(|c| !c.is_finite()) {
+            return Err(FfiError::invalid_input(format!(
+                "position {xyz:?} is not finite"
+            )));
+        }
+        let v = mesh.mesh.check_vertex(v.into())?;
+        mesh.mesh.positions_mut()[v.idx()] = xyz;
+        Ok(())
+    })
+}
