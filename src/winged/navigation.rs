@@ -159,4 +159,26 @@ impl Winged {
     pub fn is_boundary_vertex(&self, v: VertexId) -> Result<bool, WingedError> {
         Ok(self.vertex_ring(v)?.any(|u| !self.use_face(u).is_valid()))
     }
+
+    /// Number of edges at every vertex, indexed by vertex id (counted from the edge records, so
+    /// it includes every fan of a non-manifold vertex).
+    pub fn degrees(&self) -> Vec<u32> {
+        let mut degree = vec![0u32; self.positions.len()];
+        for e in self.edges() {
+            let r = self.rec(e);
+            degree[r.start.index()] += 1;
+            degree[r.end.index()] += 1;
+        }
+        degree
+    }
+
+    /// The vertices where two or more fans of faces meet (their ring, which follows one fan,
+    /// misses some of their edges), in increasing order. The structure holds them, but walks
+    /// around them see one fan at a time.
+    pub fn non_manifold_vertices(&self) -> Vec<VertexId> {
+        let degree = self.degrees();
+        self.vertices()
+            .filter(|&v| self.valence(v).unwrap_or(0) != degree[v.index()] as usize)
+            .collect()
+    }
 }
