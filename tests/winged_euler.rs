@@ -3,9 +3,12 @@
 use halfwing::winged::{EdgeId, FaceId, VertexId, Winged, WingedError};
 use proptest::prelude::*;
 
+/// What MEV made (edge, vertex) and what MEF made (edge, face), in order.
+type Made = (Vec<(EdgeId, VertexId)>, Vec<(EdgeId, FaceId)>);
+
 /// The cube built operator by operator: MVFS, three MEVs and an MEF for the bottom square,
-/// four MEVs up and four MEFs around the top. Returns it with the made edges and faces in order.
-fn euler_cube() -> (Winged, Vec<(EdgeId, VertexId)>, Vec<(EdgeId, FaceId)>) {
+/// four MEVs up and four MEFs around the top. Returns it with the made elements in order.
+fn euler_cube() -> (Winged, Made) {
     let mut w = Winged::new();
     let (v0, f0) = w.mvfs([0.0, 0.0, 0.0]).unwrap();
     let mut made_vertices = Vec::new();
@@ -28,7 +31,7 @@ fn euler_cube() -> (Winged, Vec<(EdgeId, VertexId)>, Vec<(EdgeId, FaceId)>) {
     for k in 0..4 {
         made_faces.push(w.mef(f0, top[k], top[(k + 1) % 4]).unwrap());
     }
-    (w, made_vertices, made_faces)
+    (w, (made_vertices, made_faces))
 }
 
 /// Six times the signed volume enclosed by the faces (positive when they face outward).
@@ -51,7 +54,7 @@ fn six_volume(w: &Winged) -> f64 {
 
 #[test]
 fn euler_operators_build_a_cube() {
-    let (w, _, _) = euler_cube();
+    let (w, _) = euler_cube();
     w.check().unwrap();
     assert_eq!((w.n_vertices(), w.n_edges(), w.n_faces()), (8, 12, 6));
     assert_eq!(w.euler_characteristic(), 2);
@@ -68,7 +71,7 @@ fn euler_operators_build_a_cube() {
 
 #[test]
 fn kill_operators_take_the_cube_back_to_a_point() {
-    let (mut w, made_vertices, made_faces) = euler_cube();
+    let (mut w, (made_vertices, made_faces)) = euler_cube();
     for &(e, f) in made_faces.iter().rev() {
         w.kef(e, f).unwrap();
         w.check().unwrap();
@@ -90,7 +93,7 @@ fn kill_operators_take_the_cube_back_to_a_point() {
 
 #[test]
 fn mev_then_kev_and_mef_then_kef_restore_the_faces() {
-    let (mut w, _, _) = euler_cube();
+    let (mut w, _) = euler_cube();
     let before = w.to_soup();
     let f = FaceId(0);
     let v = w.face_vertices(f).unwrap().next().unwrap();
@@ -118,7 +121,7 @@ fn mev_then_kev_and_mef_then_kef_restore_the_faces() {
 
 #[test]
 fn refused_operators_change_nothing() {
-    let (mut w, made_vertices, made_faces) = euler_cube();
+    let (mut w, (made_vertices, made_faces)) = euler_cube();
     let snapshot = w.clone();
     let (bottom_edge, _) = made_vertices[0];
     let f = FaceId(0);
