@@ -291,3 +291,28 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn garbage_collect_compacts_after_kills() {
+    let (mut w, (made_vertices, made_faces)) = euler_cube();
+    let (e, f) = made_faces[4];
+    w.kef(e, f).unwrap();
+    let (e, v) = *made_vertices.last().unwrap();
+    // The last top vertex is no longer dangling; remove a fresh dangling one instead.
+    assert!(w.kev(e, v).is_err());
+    let (e, v) = w.mev(FaceId(0), VertexId(0), [0.1, 0.1, 0.0]).unwrap();
+    w.kev(e, v).unwrap();
+    let before = w.to_soup();
+    let map = w.garbage_collect();
+    w.check().unwrap();
+    assert_eq!(w.vertex_capacity(), w.n_vertices());
+    assert_eq!(w.edge_capacity(), w.n_edges());
+    assert_eq!(w.face_capacity(), w.n_faces());
+    assert_eq!(map.faces[f.index()], FaceId::INVALID);
+    assert_eq!(map.vertices[v.index()], VertexId::INVALID);
+    assert_eq!(
+        map.edges.iter().filter(|e| e.is_valid()).count(),
+        w.n_edges() as usize
+    );
+    assert_eq!(w.to_soup(), before);
+}

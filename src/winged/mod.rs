@@ -56,9 +56,11 @@
 //!
 //! The Euler operators [`Winged::mvfs`], [`Winged::mev`], [`Winged::mef`], [`Winged::kev`],
 //! [`Winged::kef`] check their preconditions and leave the structure untouched when they refuse.
+//! Deleted elements keep their ids (marked) until [`Winged::garbage_collect`] compacts them.
 
 mod build;
 mod check;
+mod compact;
 mod error;
 mod euler;
 mod ids;
@@ -70,6 +72,7 @@ mod structure;
 mod table;
 mod validate;
 
+pub use compact::Compaction;
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 pub use navigation::Walk;
