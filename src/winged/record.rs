@@ -6,7 +6,11 @@ use super::ids::{EdgeId, FaceId, Side, VertexId};
 ///
 /// See the [module documentation](super) for how the fields map onto the naming conventions of
 /// the course notes. A deleted edge has `start == VertexId::INVALID`.
+///
+/// `repr(C)` (eight `u32`s in field order) so the C API can hand out a read-only view of the
+/// record array without copying.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(C)]
 pub struct EdgeRecord {
     /// First vertex (VSTART, Vi, vert_origin).
     pub start: VertexId,

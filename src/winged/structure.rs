@@ -173,6 +173,16 @@ impl Winged {
         &self.edges
     }
 
+    /// The stored edge of every vertex, indexed by vertex id (see [`Winged::vertex_edge`]).
+    pub fn vertex_edges_stored(&self) -> &[EdgeId] {
+        &self.vertex_edge
+    }
+
+    /// The stored edge of every face, indexed by face id (see [`Winged::face_edge`]).
+    pub fn face_edges_stored(&self) -> &[EdgeId] {
+        &self.face_edge
+    }
+
     /// The edge `v` stores (invalid for a vertex without edges). For a boundary vertex the
     /// builders store an edge whose side leaving `v` is a hole, so the ring starts at the gap.
     pub fn vertex_edge(&self, v: VertexId) -> Result<EdgeId, WingedError> {
