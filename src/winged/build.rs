@@ -151,29 +151,34 @@ impl Winged {
     }
 
     /// Chooses every vertex's stored edge by the rule documented on
-    /// [`Winged::from_face_list`].
+    /// [`Winged::from_face_list`], in one pass over the edges.
     pub(crate) fn choose_vertex_edges(&mut self) {
+        /// How good the edge chosen so far is; a better kind replaces it, an equal one does not
+        /// (so the lowest-numbered edge of the best kind wins).
+        const NONE: u8 = 0;
+        const ENDS_HERE: u8 = 1;
+        const STARTS_HERE: u8 = 2;
+        const BORDERS_HOLE: u8 = 3;
         let n = self.positions.len();
         let mut chosen = vec![EdgeId::INVALID; n];
-        let mut on_boundary = vec![false; n];
+        let mut kind = vec![NONE; n];
+        let mut offer = |v: VertexId, e: usize, k: u8| {
+            if kind[v.index()] < k {
+                kind[v.index()] = k;
+                chosen[v.index()] = EdgeId(e as u32);
+            }
+        };
         for (e, r) in self.edges.iter().enumerate() {
             if r.is_deleted() {
                 continue;
             }
             for side in [Side::Left, Side::Right] {
-                let tail = r.tail(side).index();
-                if !r.face(side).is_valid() && !on_boundary[tail] {
-                    on_boundary[tail] = true;
-                    chosen[tail] = EdgeId(e as u32);
+                if !r.face(side).is_valid() {
+                    offer(r.tail(side), e, BORDERS_HOLE);
                 }
             }
-        }
-        for endpoint in [Side::Left, Side::Right] {
-            for (e, r) in self.edges.iter().enumerate() {
-                if !r.is_deleted() && !chosen[r.tail(endpoint).index()].is_valid() {
-                    chosen[r.tail(endpoint).index()] = EdgeId(e as u32);
-                }
-            }
+            offer(r.start, e, STARTS_HERE);
+            offer(r.end, e, ENDS_HERE);
         }
         self.vertex_edge = chosen;
     }
@@ -260,34 +265,45 @@ fn pair_corners(
     Ok(mate)
 }
 
-/// Creates the edge records in the slide's order and fills faces and wings of the face sides.
+/// Creates the edge records in the slide's order and fills faces and wings of the face sides,
+/// in one pass over the faces.
 fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
     let indices = list.indices;
-    let opens_edge = |c: usize| mate[c] == UNPAIRED || mate[c] as usize > c;
     let mut edge_of_corner = vec![EdgeId::INVALID; indices.len()];
     let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
-    for_each_corner(offsets, |c, f, _, next| {
-        if opens_edge(c) {
-            edge_of_corner[c] = EdgeId(edges.len() as u32);
-            let mut r = EdgeRecord::unlinked(VertexId(indices[c]), VertexId(indices[next]));
-            r.left_face = FaceId(f);
-            edges.push(r);
-        } else {
-            let e = edge_of_corner[mate[c] as usize];
-            edge_of_corner[c] = e;
-            edges[e.index()].right_face = FaceId(f);
+    for (f, bounds) in offsets.windows(2).enumerate() {
+        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
+        let face = FaceId(f as u32);
+        for c in first..end {
+            let partner = mate[c];
+            if partner == UNPAIRED || partner as usize > c {
+                // First face to walk this edge: a new edge, walked forward (the slide's Cd).
+                edge_of_corner[c] = EdgeId(edges.len() as u32);
+                let next = if c + 1 == end { first } else { c + 1 };
+                let mut r = EdgeRecord::unlinked(VertexId(indices[c]), VertexId(indices[next]));
+                r.left_face = face;
+                edges.push(r);
+            } else {
+                // The edge exists: this face walks it backward (the slide's Ci).
+                let e = edge_of_corner[partner as usize];
+                edge_of_corner[c] = e;
+                edges[e.index()].right_face = face;
+            }
         }
-    });
-    for_each_corner(offsets, |c, _, prev, next| {
-        let side = if opens_edge(c) {
-            Side::Left
-        } else {
-            Side::Right
-        };
-        let r = &mut edges[edge_of_corner[c].index()];
-        r.set_prev(side, edge_of_corner[prev]);
-        r.set_next(side, edge_of_corner[next]);
-    });
+        // "Recorrer aristas y rellenar enlaces": the face's corners are still in cache.
+        for c in first..end {
+            let prev = if c == first { end - 1 } else { c - 1 };
+            let next = if c + 1 == end { first } else { c + 1 };
+            let r = &mut edges[edge_of_corner[c].index()];
+            let side = if r.left_face == face && r.start.0 == indices[c] {
+                Side::Left
+            } else {
+                Side::Right
+            };
+            r.set_prev(side, edge_of_corner[prev]);
+            r.set_next(side, edge_of_corner[next]);
+        }
+    }
 
     let n_faces = offsets.len() - 1;
     let n_vertices = list.positions.len();
