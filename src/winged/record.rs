@@ -152,3 +152,28 @@ impl EdgeRecord {
         std::mem::swap(&mut self.left_next, &mut self.right_next);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sides_are_told_apart_by_vertex() {
+        let mut r = EdgeRecord::unlinked(VertexId(3), VertexId(8));
+        r.left_face = FaceId(1);
+        r.left_next = EdgeId(5);
+        assert_eq!(r.side_leaving(VertexId(3)), Some(Side::Left));
+        assert_eq!(r.side_leaving(VertexId(8)), Some(Side::Right));
+        assert_eq!(r.side_arriving(VertexId(8)), Some(Side::Left));
+        assert_eq!(r.side_leaving(VertexId(4)), None);
+        assert_eq!(
+            (r.tail(Side::Right), r.head(Side::Right)),
+            (VertexId(8), VertexId(3))
+        );
+
+        r.reverse();
+        assert_eq!((r.start, r.end), (VertexId(8), VertexId(3)));
+        assert_eq!((r.right_face, r.right_next), (FaceId(1), EdgeId(5)));
+        assert_eq!(r.face(Side::Left), FaceId::INVALID);
+    }
+}

@@ -122,3 +122,61 @@ fn face_count(list: &FaceList<'_>) -> Result<usize, WingedError> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const P: [[f64; 3]; 4] = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]];
+
+    #[test]
+    fn offsets_follow_the_sizes() {
+        let list = FaceList::polygons(&P, &[3, 4], &[0, 1, 2, 0, 1, 3, 2]);
+        assert_eq!(validate_face_list(&list).unwrap(), [0, 3, 7]);
+        let triangles = FaceList::triangles(&P, &[0, 1, 2, 2, 1, 3]);
+        assert_eq!(validate_face_list(&triangles).unwrap(), [0, 3, 6]);
+        assert_eq!(
+            validate_face_list(&FaceList::triangles(&P, &[])).unwrap(),
+            [0]
+        );
+    }
+
+    #[test]
+    fn counts_beyond_u32_ids_are_refused() {
+        assert!(check_count("faces", u32::MAX as usize - 1).is_ok());
+        assert_eq!(
+            check_count("faces", u32::MAX as usize),
+            Err(WingedError::TooManyElements {
+                what: "faces",
+                count: u64::from(u32::MAX)
+            })
+        );
+        let list = FaceList::polygons(&P, &[u32::MAX, u32::MAX, u32::MAX, 3], &[0, 1, 2]);
+        assert!(matches!(
+            validate_face_list(&list),
+            Err(WingedError::CornerCountMismatch { actual: 3, .. })
+        ));
+    }
+
+    #[test]
+    fn uniform_sizes_below_three_are_refused() {
+        let list = FaceList {
+            positions: &P,
+            sizes: FaceSizes::Uniform(2),
+            indices: &[0, 1],
+        };
+        assert_eq!(
+            validate_face_list(&list),
+            Err(WingedError::FaceTooSmall { face: 0, size: 2 })
+        );
+        let list = FaceList {
+            positions: &P,
+            sizes: FaceSizes::Uniform(0),
+            indices: &[0],
+        };
+        assert_eq!(
+            validate_face_list(&list),
+            Err(WingedError::FaceTooSmall { face: 0, size: 0 })
+        );
+    }
+}
