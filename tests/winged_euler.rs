@@ -89,6 +89,9 @@ fn kill_operators_take_the_cube_back_to_a_point() {
         w.face_vertices(f).unwrap().collect::<Vec<_>>(),
         [VertexId(0)]
     );
+    w.kvfs(f).unwrap();
+    w.check().unwrap();
+    assert_eq!((w.n_vertices(), w.n_edges(), w.n_faces()), (0, 0, 0));
 }
 
 #[test]
@@ -143,6 +146,7 @@ fn refused_operators_change_nothing() {
         w.clone().kev(bottom_edge, VertexId(0)),
         w.clone().kev(EdgeId(500), VertexId(0)),
         w.clone().kef(first_mef_edge, not_on_edge),
+        w.clone().kvfs(f),
     ];
     for (k, r) in refusals.iter().enumerate() {
         assert!(r.is_err(), "operation {k} must be refused");
@@ -204,6 +208,9 @@ enum Op {
         edge: usize,
         left: bool,
     },
+    Kvfs {
+        face: usize,
+    },
 }
 
 fn op() -> impl Strategy<Value = Op> {
@@ -214,6 +221,7 @@ fn op() -> impl Strategy<Value = Op> {
             .prop_map(|(face, first, second)| Op::Mef { face, first, second }),
         3 => (any::<usize>(), any::<bool>()).prop_map(|(edge, end)| Op::Kev { edge, end }),
         3 => (any::<usize>(), any::<bool>()).prop_map(|(edge, left)| Op::Kef { edge, left }),
+        1 => any::<usize>().prop_map(|face| Op::Kvfs { face }),
     ]
 }
 
@@ -258,6 +266,7 @@ fn apply(w: &mut Winged, op: &Op, step: usize) -> Option<(i64, i64, i64, i64)> {
                 .ok()
                 .map(|_| (0, -1, -1, 0))
         }
+        Op::Kvfs { face } => w.kvfs(pick(&faces, face)?).ok().map(|_| (-1, 0, -1, -1)),
     }
 }
 

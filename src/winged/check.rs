@@ -190,3 +190,69 @@ impl Winged {
         None
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::soup::FaceList;
+    use crate::winged::{FaceId, VertexId};
+
+    /// A tetrahedron, faces counter-clockwise from outside.
+    fn tetrahedron() -> Winged {
+        let p = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let idx = [0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2];
+        Winged::from_face_list(&FaceList::triangles(&p, &idx)).unwrap()
+    }
+
+    fn reason(w: &Winged) -> &'static str {
+        match w.check() {
+            Err(WingedError::InvariantViolated { reason, .. }) => reason,
+            other => panic!("corruption not detected: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_sound_structure_passes() {
+        tetrahedron().check().unwrap();
+    }
+
+    #[test]
+    fn corruptions_are_detected() {
+        let mut w = tetrahedron();
+        w.edges[0].left_next = w.edges[0].left_prev;
+        assert!(!reason(&w).is_empty());
+
+        let mut w = tetrahedron();
+        w.edges[1].left_next = EdgeId(99);
+        assert_eq!(reason(&w), "wing is not a live edge");
+
+        let mut w = tetrahedron();
+        w.edges[2].right_face = FaceId(0);
+        assert!(!reason(&w).is_empty());
+
+        let mut w = tetrahedron();
+        let far = w
+            .edges()
+            .find(|&e| w.rec(e).side_leaving(VertexId(0)).is_none())
+            .unwrap();
+        w.vertex_edge[0] = far;
+        assert!(!reason(&w).is_empty());
+
+        let mut w = tetrahedron();
+        w.n_live_edges += 1;
+        assert_eq!(reason(&w), "live counts disagree with the records");
+
+        let mut w = tetrahedron();
+        w.edges[3].end = w.edges[3].start;
+        assert!(!reason(&w).is_empty());
+
+        let mut w = tetrahedron();
+        w.face_edge[1] = EdgeId::INVALID;
+        assert_eq!(reason(&w), "face without an edge is not a point face");
+    }
+}

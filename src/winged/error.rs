@@ -135,6 +135,10 @@ pub enum WingedError {
     #[error("edge {0:?} does not separate two different faces")]
     EdgeNotBetweenTwoFaces(EdgeId),
 
+    /// KVFS needs a face without edges (a solid reduced to one vertex).
+    #[error("face {0:?} has edges; only a point face can be killed with its solid")]
+    NotAPointFace(FaceId),
+
     // --- validation ---
     /// [`Winged::check`](super::Winged::check) found a broken invariant.
     #[error("invariant broken at {element}: {reason}")]

@@ -1,4 +1,4 @@
-//! Baumgart's Euler operators: MVFS, MEV, MEF and their inverses KEV, KEF.
+//! Baumgart's Euler operators: MVFS, MEV, MEF and their inverses KVFS, KEV, KEF.
 //!
 //! Each operator changes V, E and F so that V − E + F is unchanged (MVFS adds a solid:
 //! +1 vertex, +1 face). Every precondition is checked before anything is touched, so a refused
@@ -194,6 +194,20 @@ impl Winged {
         self.face_alive[kill.index()] = false;
         self.face_edge[kill.index()] = EdgeId::INVALID;
         self.n_live_faces -= 1;
+        Ok(())
+    }
+
+    /// **Kill vertex, face, solid**: removes a point solid (the inverse of MVFS): `face` must be
+    /// a point face, whose one vertex goes with it.
+    pub fn kvfs(&mut self, face: FaceId) -> Result<(), WingedError> {
+        self.require_face(face)?;
+        let vertex = self
+            .point_face_vertex(face)
+            .ok_or(WingedError::NotAPointFace(face))?;
+        self.point_faces.retain(|&(f, _)| f != face);
+        self.face_alive[face.index()] = false;
+        self.n_live_faces -= 1;
+        self.delete_vertex(vertex);
         Ok(())
     }
 

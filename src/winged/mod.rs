@@ -59,8 +59,8 @@
 //!
 //! # Editing
 //!
-//! The Euler operators [`Winged::mvfs`], [`Winged::mev`], [`Winged::mef`], [`Winged::kev`],
-//! [`Winged::kef`] check their preconditions and leave the structure untouched when they refuse.
+//! The Euler operators [`Winged::mvfs`], [`Winged::mev`], [`Winged::mef`] and their inverses
+//! [`Winged::kvfs`], [`Winged::kev`], [`Winged::kef`] check their preconditions and leave the structure untouched when they refuse.
 //! Deleted elements keep their ids (marked) until [`Winged::garbage_collect`] compacts them.
 
 mod build;
