@@ -519,3 +519,38 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn large_meshes_pair_the_same_and_report_the_first_error() {
+    // Big enough for the parallel pairing to split the vertices into several blocks.
+    let mut input = grid(160, 160, &[]);
+    assert_round_trip(&input);
+    // Two defects far apart: a face walking the last grid edge (last -> last - 1) again, in
+    // the last vertices' buckets, and one walking grid edge 0 -> 1 again, in vertex 0's bucket.
+    let n = input.positions.len() as u32;
+    let last = n - 1;
+    input
+        .positions
+        .extend([[0.5, -1.0, 0.0], [160.5, 161.0, 1.0]]);
+    input.face_sizes.push(3);
+    input.indices.extend([last, last - 1, n + 1]);
+    assert_eq!(
+        Winged::from_soup(&input).unwrap_err(),
+        WingedError::InconsistentOrientation {
+            a: last,
+            b: last - 1,
+            faces: [51199, 51200]
+        }
+    );
+    // With both, the first in vertex order is reported, however the blocks were scheduled.
+    input.face_sizes.push(3);
+    input.indices.extend([0, 1, n]);
+    assert_eq!(
+        Winged::from_soup(&input).unwrap_err(),
+        WingedError::InconsistentOrientation {
+            a: 0,
+            b: 1,
+            faces: [0, 51201]
+        }
+    );
+}

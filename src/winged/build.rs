@@ -31,9 +31,12 @@ impl Winged {
     /// the lowest-numbered edge starting at it, else the lowest-numbered edge ending at it.
     /// Unreferenced vertices are kept, without edges.
     ///
-    /// Refuses (strict policy) faces with fewer than 3 corners, out-of-range indices, a vertex
-    /// twice in one face, non-finite positions, edges shared by more than two faces, and
-    /// neighbouring faces of opposite orientation.
+    /// Refuses (strict policy; the shared `Skip`/`Repair` policies come with `crate::soup`'s
+    /// analysis) faces with fewer than 3 corners, out-of-range indices, a vertex twice in one
+    /// face, non-finite positions, edges shared by more than two faces, and two faces walking
+    /// their shared edge the same way (inconsistent orientation).
+    /// On bad input the error reported is the first in vertex order (of the edge's smaller
+    /// vertex).
     pub fn from_face_list(list: &FaceList<'_>) -> Result<Self, WingedError> {
         let offsets = validate_face_list(list)?;
         let mate = pair_corners(list.indices, &offsets, list.positions.len())?;
@@ -184,14 +187,12 @@ impl Winged {
     }
 }
 
-/// Calls `visit(corner, face, previous corner, next corner)` for every corner, face by face.
-fn for_each_corner(offsets: &[u32], mut visit: impl FnMut(usize, u32, usize, usize)) {
-    for (f, bounds) in offsets.windows(2).enumerate() {
+/// Calls `visit(corner, next corner of the same face)` for every corner, face by face.
+fn for_each_corner(offsets: &[u32], mut visit: impl FnMut(usize, usize)) {
+    for bounds in offsets.windows(2) {
         let (first, end) = (bounds[0] as usize, bounds[1] as usize);
         for c in first..end {
-            let prev = if c == first { end - 1 } else { c - 1 };
-            let next = if c + 1 == end { first } else { c + 1 };
-            visit(c, f as u32, prev, next);
+            visit(c, if c + 1 == end { first } else { c + 1 });
         }
     }
 }
@@ -212,7 +213,7 @@ fn pair_corners(
     n_vertices: usize,
 ) -> Result<Vec<u32>, WingedError> {
     let mut bucket_start = vec![0u32; n_vertices + 1];
-    for_each_corner(offsets, |c, _, _, next| {
+    for_each_corner(offsets, |c, next| {
         bucket_start[indices[c].min(indices[next]) as usize + 1] += 1;
     });
     for v in 0..n_vertices {
@@ -221,7 +222,7 @@ fn pair_corners(
     let mut cursor = bucket_start[..n_vertices].to_vec();
     // Key: larger endpoint in the high half, corner in the low half.
     let mut keyed = vec![0u64; indices.len()];
-    for_each_corner(offsets, |c, _, _, next| {
+    for_each_corner(offsets, |c, next| {
         let (a, b) = (indices[c], indices[next]);
         let slot = &mut cursor[a.min(b) as usize];
         keyed[*slot as usize] = (u64::from(a.max(b)) << 32) | c as u64;
@@ -234,13 +235,13 @@ fn pair_corners(
         bucket.sort_unstable();
         for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
             let corner = |k: usize| (group[k] & u64::from(u32::MAX)) as u32;
+            let (low, high) = (v as u32, (group[0] >> 32) as u32);
             match group.len() {
                 1 => {}
                 2 => {
                     let (c1, c2) = (corner(0), corner(1));
-                    if indices[c1 as usize] == indices[c2 as usize] {
-                        let (low, high) = (v as u32, (group[0] >> 32) as u32);
-                        let a = indices[c1 as usize];
+                    let a = indices[c1 as usize];
+                    if a == indices[c2 as usize] {
                         return Err(WingedError::InconsistentOrientation {
                             a,
                             b: if a == low { high } else { low },
@@ -250,13 +251,11 @@ fn pair_corners(
                     mate[c1 as usize] = c2;
                     mate[c2 as usize] = c1;
                 }
-                _ => {
+                n => {
                     return Err(WingedError::NonManifoldEdge {
-                        a: v as u32,
-                        b: (group[0] >> 32) as u32,
-                        faces: (0..group.len())
-                            .map(|k| face_of_corner(offsets, corner(k)))
-                            .collect(),
+                        a: low,
+                        b: high,
+                        faces: (0..n).map(|k| face_of_corner(offsets, corner(k))).collect(),
                     });
                 }
             }
@@ -269,7 +268,8 @@ fn pair_corners(
 /// in one pass over the faces.
 fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
     let indices = list.indices;
-    let mut edge_of_corner = vec![EdgeId::INVALID; indices.len()];
+    // Filled in corner order, so it grows by pushes (no up-front fill of the whole array).
+    let mut edge_of_corner: Vec<EdgeId> = Vec::with_capacity(indices.len());
     let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
     for (f, bounds) in offsets.windows(2).enumerate() {
         let (first, end) = (bounds[0] as usize, bounds[1] as usize);
@@ -278,7 +278,7 @@ fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
             let partner = mate[c];
             if partner == UNPAIRED || partner as usize > c {
                 // First face to walk this edge: a new edge, walked forward (the slide's Cd).
-                edge_of_corner[c] = EdgeId(edges.len() as u32);
+                edge_of_corner.push(EdgeId(edges.len() as u32));
                 let next = if c + 1 == end { first } else { c + 1 };
                 let mut r = EdgeRecord::unlinked(VertexId(indices[c]), VertexId(indices[next]));
                 r.left_face = face;
@@ -286,7 +286,7 @@ fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
             } else {
                 // The edge exists: this face walks it backward (the slide's Ci).
                 let e = edge_of_corner[partner as usize];
-                edge_of_corner[c] = e;
+                edge_of_corner.push(e);
                 edges[e.index()].right_face = face;
             }
         }
