@@ -128,11 +128,11 @@ fn open_grid_links_its_boundary_loop() {
     assert_eq!(boundary.len(), 10);
     let hole: Vec<_> = w.boundary_loop(boundary[0]).unwrap().unwrap().collect();
     assert_eq!(hole.len(), 10, "one loop through every boundary edge");
-    assert!(hole.iter().all(|&u| !w.use_face(u).is_valid()));
+    assert!(hole.iter().all(|&u| !w.use_face(u).unwrap().is_valid()));
     // The hole runs clockwise seen from +z (opposite to the faces): from (0,0) to (0,1) first.
     let tails: Vec<[f64; 3]> = hole
         .iter()
-        .map(|&u| w.position(w.use_tail(u)).unwrap())
+        .map(|&u| w.position(w.use_tail(u).unwrap()).unwrap())
         .collect();
     let area2: f64 = (0..tails.len())
         .map(|k| {
@@ -145,7 +145,7 @@ fn open_grid_links_its_boundary_loop() {
     let corner = VertexId(0);
     assert!(w.is_boundary_vertex(corner).unwrap());
     let first = w.vertex_ring(corner).unwrap().next().unwrap();
-    assert!(!w.use_face(first).is_valid());
+    assert!(!w.use_face(first).unwrap().is_valid());
     assert_eq!(
         w.vertex_faces(corner).unwrap().collect::<Vec<_>>(),
         [FaceId(0), FaceId(1)]
@@ -355,6 +355,9 @@ fn invalid_handles_are_errors() {
     assert!(w.vertex_ring(VertexId(4)).is_err());
     assert!(w.position(VertexId::INVALID).is_err());
     assert!(w.face_normal(FaceId(2)).is_err());
+    let stray = halfwing::winged::EdgeUse::new(EdgeId(1000), Side::Right);
+    assert!(w.use_tail(stray).is_err() && w.use_head(stray).is_err() && w.use_face(stray).is_err());
+    assert_eq!((w.use_next(stray), w.use_prev(stray)), (None, None));
     let mut w = w;
     assert!(matches!(
         w.set_vertex_edge(VertexId(1), EdgeId(1)),
@@ -372,7 +375,6 @@ fn invalid_handles_are_errors() {
         })
     );
     assert!(w.set_position(VertexId(0), [f64::NAN, 0.0, 0.0]).is_err());
-    let _ = Side::Left;
 }
 
 // --- the shared test models ------------------------------------------------------------------
@@ -499,7 +501,7 @@ proptest! {
         assert_walks_cover_everything(&w);
         for v in w.vertices() {
             let ring: Vec<_> = w.vertex_ring(v).unwrap().collect();
-            prop_assert!(ring.iter().all(|&u| w.use_tail(u) == v));
+            prop_assert!(ring.iter().all(|&u| w.use_tail(u).unwrap() == v));
         }
     }
 

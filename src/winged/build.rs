@@ -144,7 +144,7 @@ impl Winged {
                     break;
                 };
                 let leaving = arriving.twin();
-                if !self.use_face(leaving).is_valid() {
+                if !self.face_of(leaving).is_valid() {
                     self.link(hole, leaving);
                     break;
                 }

@@ -88,7 +88,7 @@ impl Winged {
                 if self.use_prev(next) != Some(u) || self.use_next(prev) != Some(u) {
                     return Err(broken(name(Some(side)), "wings are not mutual"));
                 }
-                if self.use_face(next) != f || self.use_face(prev) != f {
+                if self.face_of(next) != f || self.face_of(prev) != f {
                     return Err(broken(name(Some(side)), "loop changes face"));
                 }
             }
@@ -163,7 +163,7 @@ impl Winged {
             let mut leaves_v = true;
             let length = self.closed_walk_length(start, |u| {
                 let after = self.use_prev(u).map(EdgeUse::twin);
-                leaves_v &= after.is_some_and(|a| self.use_tail(a) == v);
+                leaves_v &= after.is_some_and(|a| self.tail_of(a) == v);
                 after
             });
             if length.is_none() || !leaves_v {

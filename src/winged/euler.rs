@@ -215,7 +215,7 @@ impl Winged {
     fn corner(&self, face: FaceId, vertex: VertexId) -> Result<EdgeUse, WingedError> {
         let mut found = None;
         for u in self.face_loop(face)? {
-            if self.use_head(u) == vertex {
+            if self.head_of(u) == vertex {
                 if found.is_some() {
                     return Err(WingedError::AmbiguousCorner { vertex, face });
                 }

@@ -101,7 +101,7 @@ impl Winged {
         let point = self.point_face_vertex(f);
         Ok(point
             .into_iter()
-            .chain(self.face_loop(f)?.map(|u| self.use_tail(u))))
+            .chain(self.face_loop(f)?.map(|u| self.tail_of(u))))
     }
 
     /// The faces across each edge of `f`, in loop order, leaving out holes. A face that shares
@@ -112,7 +112,7 @@ impl Winged {
     ) -> Result<impl Iterator<Item = FaceId> + '_, WingedError> {
         Ok(self
             .face_loop(f)?
-            .map(|u| self.use_face(u.twin()))
+            .map(|u| self.face_of(u.twin()))
             .filter(|g| g.is_valid()))
     }
 
@@ -129,7 +129,7 @@ impl Winged {
         &self,
         v: VertexId,
     ) -> Result<impl Iterator<Item = VertexId> + '_, WingedError> {
-        Ok(self.vertex_ring(v)?.map(|u| self.use_head(u)))
+        Ok(self.vertex_ring(v)?.map(|u| self.head_of(u)))
     }
 
     /// The faces around `v`, counter-clockwise, leaving out holes (each face follows the edge
@@ -140,7 +140,7 @@ impl Winged {
     ) -> Result<impl Iterator<Item = FaceId> + '_, WingedError> {
         Ok(self
             .vertex_ring(v)?
-            .map(|u| self.use_face(u))
+            .map(|u| self.face_of(u))
             .filter(|f| f.is_valid()))
     }
 
@@ -157,7 +157,7 @@ impl Winged {
 
     /// Whether `v` lies on a boundary (its ring passes through a hole).
     pub fn is_boundary_vertex(&self, v: VertexId) -> Result<bool, WingedError> {
-        Ok(self.vertex_ring(v)?.any(|u| !self.use_face(u).is_valid()))
+        Ok(self.vertex_ring(v)?.any(|u| !self.face_of(u).is_valid()))
     }
 
     /// Number of edges at every vertex, indexed by vertex id (counted from the edge records, so

@@ -22,8 +22,8 @@ impl Winged {
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
         let mut n = [0.0; 3];
         for u in self.face_loop(f)? {
-            let p = self.positions[self.use_tail(u).index()];
-            let q = self.positions[self.use_head(u).index()];
+            let p = self.positions[self.tail_of(u).index()];
+            let q = self.positions[self.head_of(u).index()];
             n[0] += (p[1] - q[1]) * (p[2] + q[2]);
             n[1] += (p[2] - q[2]) * (p[0] + q[0]);
             n[2] += (p[0] - q[0]) * (p[1] + q[1]);

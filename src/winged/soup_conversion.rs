@@ -33,7 +33,7 @@ impl Winged {
         for f in self.faces() {
             let before = indices.len();
             if let Ok(walk) = self.face_loop(f) {
-                indices.extend(walk.map(|u| new_index[self.use_tail(u).index()]));
+                indices.extend(walk.map(|u| new_index[self.tail_of(u).index()]));
             }
             if indices.len() > before {
                 face_sizes.push((indices.len() - before) as u32);

@@ -240,20 +240,35 @@ impl Winged {
     }
 
     /// The vertex a use leaves.
-    #[inline]
-    pub fn use_tail(&self, u: EdgeUse) -> VertexId {
-        self.rec(u.edge).tail(u.side)
+    pub fn use_tail(&self, u: EdgeUse) -> Result<VertexId, WingedError> {
+        Ok(self.edge(u.edge)?.tail(u.side))
     }
 
     /// The vertex a use arrives at.
-    #[inline]
-    pub fn use_head(&self, u: EdgeUse) -> VertexId {
-        self.rec(u.edge).head(u.side)
+    pub fn use_head(&self, u: EdgeUse) -> Result<VertexId, WingedError> {
+        Ok(self.edge(u.edge)?.head(u.side))
     }
 
     /// The face (or hole: invalid) whose loop contains the use.
+    pub fn use_face(&self, u: EdgeUse) -> Result<FaceId, WingedError> {
+        Ok(self.edge(u.edge)?.face(u.side))
+    }
+
+    /// [`Winged::use_tail`] for a use the caller knows is live.
     #[inline]
-    pub fn use_face(&self, u: EdgeUse) -> FaceId {
+    pub(crate) fn tail_of(&self, u: EdgeUse) -> VertexId {
+        self.rec(u.edge).tail(u.side)
+    }
+
+    /// [`Winged::use_head`] for a use the caller knows is live.
+    #[inline]
+    pub(crate) fn head_of(&self, u: EdgeUse) -> VertexId {
+        self.rec(u.edge).head(u.side)
+    }
+
+    /// [`Winged::use_face`] for a use the caller knows is live.
+    #[inline]
+    pub(crate) fn face_of(&self, u: EdgeUse) -> FaceId {
         self.rec(u.edge).face(u.side)
     }
 
