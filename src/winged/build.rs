@@ -1,0 +1,325 @@
+//! Construction from an indexed face list: the "Creación a partir de malla indexada" algorithm
+//! of seed `003_52f8c4a27ca793d7.txt`, with the per-edge lookup done by bucketing.
+//!
+//! The slide reads the faces in order and, for every consecutive corner pair `(a, b)`, either
+//! finds the edge `(b, a)` already made (the face becomes its inverse face, `Ci`) or appends a
+//! new edge `a → b` (the face becomes its direct face, `Cd`); then it fills the wings. The
+//! "does `(b, a)` exist" lookup is the expensive part; here every corner is bucketed by its
+//! smaller vertex (a counting sort) and paired within its bucket, in O(corners). Edges are then
+//! numbered in the order the slide would create them, so the result is exactly the slide's table.
+
+use std::collections::HashMap;
+
+use super::error::WingedError;
+use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
+use super::record::EdgeRecord;
+use super::structure::Winged;
+use super::validate::validate_face_list;
+use crate::soup::FaceList;
+
+/// Marks a corner with no partner (its edge is on the boundary).
+const UNPAIRED: u32 = u32::MAX;
+
+impl Winged {
+    /// Builds the structure from an indexed face list.
+    ///
+    /// Edges are numbered in order of first appearance walking the faces in order (face 0's
+    /// corners first); an edge points the way its first face walks it, so that face is its left
+    /// face (seed 003's `Cd`) and the second face its right face (`Ci`). A face stores the edge
+    /// leaving its first corner, so its loop starts where the input's face started. A vertex
+    /// stores, by preference: an edge whose side leaving it is a hole (boundary vertices), else
+    /// the lowest-numbered edge starting at it, else the lowest-numbered edge ending at it.
+    /// Unreferenced vertices are kept, without edges.
+    ///
+    /// Refuses (strict policy; the shared `Skip`/`Repair` policies come with `crate::soup`'s
+    /// analysis) faces with fewer than 3 corners, out-of-range indices, a vertex twice in one
+    /// face, non-finite positions, edges shared by more than two faces, and two faces walking
+    /// their shared edge the same way (inconsistent orientation).
+    /// On bad input the error reported is the first in vertex order (of the edge's smaller
+    /// vertex).
+    pub fn from_face_list(list: &FaceList<'_>) -> Result<Self, WingedError> {
+        let offsets = validate_face_list(list)?;
+        let mate = pair_corners(list.indices, &offsets, list.positions.len())?;
+        let mut w = assemble(list, &offsets, &mate);
+        w.link_boundary_loops();
+        w.choose_vertex_edges();
+        Ok(w)
+    }
+
+    /// Builds the structure from an indexed face list, numbering and directing the edges as
+    /// `edge_order` lists them (`edge_order[i] = [start, end]` of edge `i`).
+    ///
+    /// This reproduces tables whose edge numbering was made by hand (as the course notes'
+    /// tables are). `edge_order` must list every edge of the faces exactly once, in either
+    /// direction; the face that walks an edge `start → end` becomes its left face.
+    pub fn from_face_list_with_edge_order(
+        list: &FaceList<'_>,
+        edge_order: &[[u32; 2]],
+    ) -> Result<Self, WingedError> {
+        let mut w = Self::from_face_list(list)?;
+        w.renumber_edges(edge_order)?;
+        w.choose_vertex_edges();
+        Ok(w)
+    }
+
+    /// Applies a caller's edge numbering and directions (see
+    /// [`Winged::from_face_list_with_edge_order`]).
+    fn renumber_edges(&mut self, edge_order: &[[u32; 2]]) -> Result<(), WingedError> {
+        let mismatch = |reason: String| WingedError::EdgeOrderMismatch { reason };
+        if edge_order.len() != self.edges.len() {
+            return Err(mismatch(format!(
+                "{} edges listed, the faces have {}",
+                edge_order.len(),
+                self.edges.len()
+            )));
+        }
+        let undirected = |a: u32, b: u32| (a.min(b), a.max(b));
+        let old_of_key: HashMap<(u32, u32), u32> = self
+            .edges
+            .iter()
+            .enumerate()
+            .map(|(old, r)| (undirected(r.start.0, r.end.0), old as u32))
+            .collect();
+        let mut new_of_old = vec![EdgeId::INVALID; self.edges.len()];
+        let mut reversed = vec![false; self.edges.len()];
+        for (new, &[a, b]) in edge_order.iter().enumerate() {
+            let old = *old_of_key
+                .get(&undirected(a, b))
+                .ok_or_else(|| mismatch(format!("({a}, {b}) is not an edge of the faces")))?
+                as usize;
+            if new_of_old[old].is_valid() {
+                return Err(mismatch(format!("({a}, {b}) is listed twice")));
+            }
+            new_of_old[old] = EdgeId(new as u32);
+            reversed[old] = self.edges[old].start.0 != a;
+        }
+
+        let remap = |e: EdgeId| {
+            if e.is_valid() {
+                new_of_old[e.index()]
+            } else {
+                e
+            }
+        };
+        let mut edges =
+            vec![EdgeRecord::unlinked(VertexId::INVALID, VertexId::INVALID); self.edges.len()];
+        for (old, mut r) in self.edges.iter().copied().enumerate() {
+            if reversed[old] {
+                r.reverse();
+            }
+            for wing in [
+                &mut r.left_prev,
+                &mut r.left_next,
+                &mut r.right_prev,
+                &mut r.right_next,
+            ] {
+                *wing = remap(*wing);
+            }
+            edges[new_of_old[old].index()] = r;
+        }
+        self.edges = edges;
+        for e in &mut self.face_edge {
+            *e = remap(*e);
+        }
+        Ok(())
+    }
+
+    /// Links the hole side of every boundary edge into its boundary loop, so boundary walks work
+    /// like face walks. Runs on a fresh build, where holes are always on the right side.
+    fn link_boundary_loops(&mut self) {
+        let bound = self.walk_bound();
+        for e in 0..self.edges.len() as u32 {
+            if self.edges[e as usize].right_face.is_valid() {
+                continue;
+            }
+            // The hole walks e from end to start, arriving at `a = start`. Its successor is the
+            // next boundary edge met rotating about `a` through the faces of e's fan: step to
+            // the previous edge of the face (arriving at `a`) and cross it, until its other
+            // side is a hole. Rotating within the fan keeps non-manifold vertices (two fans
+            // touching) correct: each fan's gap is closed by its own boundary edges.
+            let hole = EdgeUse::new(EdgeId(e), Side::Right);
+            let mut around = EdgeUse::new(EdgeId(e), Side::Left);
+            for _ in 0..bound {
+                let Some(arriving) = self.use_prev(around) else {
+                    break;
+                };
+                let leaving = arriving.twin();
+                if !self.face_of(leaving).is_valid() {
+                    self.link(hole, leaving);
+                    break;
+                }
+                around = leaving;
+            }
+        }
+    }
+
+    /// Chooses every vertex's stored edge by the rule documented on
+    /// [`Winged::from_face_list`], in one pass over the edges.
+    pub(crate) fn choose_vertex_edges(&mut self) {
+        /// How good the edge chosen so far is; a better kind replaces it, an equal one does not
+        /// (so the lowest-numbered edge of the best kind wins).
+        const NONE: u8 = 0;
+        const ENDS_HERE: u8 = 1;
+        const STARTS_HERE: u8 = 2;
+        const BORDERS_HOLE: u8 = 3;
+        let n = self.positions.len();
+        let mut chosen = vec![EdgeId::INVALID; n];
+        let mut kind = vec![NONE; n];
+        let mut offer = |v: VertexId, e: usize, k: u8| {
+            if kind[v.index()] < k {
+                kind[v.index()] = k;
+                chosen[v.index()] = EdgeId(e as u32);
+            }
+        };
+        for (e, r) in self.edges.iter().enumerate() {
+            if r.is_deleted() {
+                continue;
+            }
+            for side in [Side::Left, Side::Right] {
+                if !r.face(side).is_valid() {
+                    offer(r.tail(side), e, BORDERS_HOLE);
+                }
+            }
+            offer(r.start, e, STARTS_HERE);
+            offer(r.end, e, ENDS_HERE);
+        }
+        self.vertex_edge = chosen;
+    }
+}
+
+/// Calls `visit(corner, next corner of the same face)` for every corner, face by face.
+fn for_each_corner(offsets: &[u32], mut visit: impl FnMut(usize, usize)) {
+    for bounds in offsets.windows(2) {
+        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
+        for c in first..end {
+            visit(c, if c + 1 == end { first } else { c + 1 });
+        }
+    }
+}
+
+/// The face a corner belongs to (for error messages only).
+fn face_of_corner(offsets: &[u32], corner: u32) -> u32 {
+    (offsets.partition_point(|&o| o <= corner) - 1) as u32
+}
+
+/// Finds, for every corner `c` (the edge from its vertex to the next corner's), the corner of
+/// another face walking the same edge the other way, or [`UNPAIRED`] on a boundary.
+///
+/// Corners are bucketed by the smaller endpoint of their edge (a counting sort), then sorted by
+/// the larger endpoint inside each bucket, which groups equal edges together.
+fn pair_corners(
+    indices: &[u32],
+    offsets: &[u32],
+    n_vertices: usize,
+) -> Result<Vec<u32>, WingedError> {
+    let mut bucket_start = vec![0u32; n_vertices + 1];
+    for_each_corner(offsets, |c, next| {
+        bucket_start[indices[c].min(indices[next]) as usize + 1] += 1;
+    });
+    for v in 0..n_vertices {
+        bucket_start[v + 1] += bucket_start[v];
+    }
+    let mut cursor = bucket_start[..n_vertices].to_vec();
+    // Key: larger endpoint in the high half, corner in the low half.
+    let mut keyed = vec![0u64; indices.len()];
+    for_each_corner(offsets, |c, next| {
+        let (a, b) = (indices[c], indices[next]);
+        let slot = &mut cursor[a.min(b) as usize];
+        keyed[*slot as usize] = (u64::from(a.max(b)) << 32) | c as u64;
+        *slot += 1;
+    });
+
+    let mut mate = vec![UNPAIRED; indices.len()];
+    for v in 0..n_vertices {
+        let bucket = &mut keyed[bucket_start[v] as usize..bucket_start[v + 1] as usize];
+        bucket.sort_unstable();
+        for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
+            let corner = |k: usize| (group[k] & u64::from(u32::MAX)) as u32;
+            let (low, high) = (v as u32, (group[0] >> 32) as u32);
+            match group.len() {
+                1 => {}
+                2 => {
+                    let (c1, c2) = (corner(0), corner(1));
+                    let a = indices[c1 as usize];
+                    if a == indices[c2 as usize] {
+                        return Err(WingedError::InconsistentOrientation {
+                            a,
+                            b: if a == low { high } else { low },
+                            faces: [face_of_corner(offsets, c1), face_of_corner(offsets, c2)],
+                        });
+                    }
+                    mate[c1 as usize] = c2;
+                    mate[c2 as usize] = c1;
+                }
+                n => {
+                    return Err(WingedError::NonManifoldEdge {
+                        a: low,
+                        b: high,
+                        faces: (0..n).map(|k| face_of_corner(offsets, corner(k))).collect(),
+                    });
+                }
+            }
+        }
+    }
+    Ok(mate)
+}
+
+/// Creates the edge records in the slide's order and fills faces and wings of the face sides,
+/// in one pass over the faces.
+fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
+    let indices = list.indices;
+    // Filled in corner order, so it grows by pushes (no up-front fill of the whole array).
+    let mut edge_of_corner: Vec<EdgeId> = Vec::with_capacity(indices.len());
+    let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
+    for (f, bounds) in offsets.windows(2).enumerate() {
+        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
+        let face = FaceId(f as u32);
+        for c in first..end {
+            let partner = mate[c];
+            if partner == UNPAIRED || partner as usize > c {
+                // First face to walk this edge: a new edge, walked forward (the slide's Cd).
+                edge_of_corner.push(EdgeId(edges.len() as u32));
+                let next = if c + 1 == end { first } else { c + 1 };
+                let mut r = EdgeRecord::unlinked(VertexId(indices[c]), VertexId(indices[next]));
+                r.left_face = face;
+                edges.push(r);
+            } else {
+                // The edge exists: this face walks it backward (the slide's Ci).
+                let e = edge_of_corner[partner as usize];
+                edge_of_corner.push(e);
+                edges[e.index()].right_face = face;
+            }
+        }
+        // "Recorrer aristas y rellenar enlaces": the face's corners are still in cache.
+        for c in first..end {
+            let prev = if c == first { end - 1 } else { c - 1 };
+            let next = if c + 1 == end { first } else { c + 1 };
+            let r = &mut edges[edge_of_corner[c].index()];
+            let side = if r.left_face == face && r.start.0 == indices[c] {
+                Side::Left
+            } else {
+                Side::Right
+            };
+            r.set_prev(side, edge_of_corner[prev]);
+            r.set_next(side, edge_of_corner[next]);
+        }
+    }
+
+    let n_faces = offsets.len() - 1;
+    let n_vertices = list.positions.len();
+    Winged {
+        positions: list.positions.to_vec(),
+        vertex_edge: vec![EdgeId::INVALID; n_vertices],
+        vertex_alive: vec![true; n_vertices],
+        face_edge: offsets[..n_faces]
+            .iter()
+            .map(|&c| edge_of_corner[c as usize])
+            .collect(),
+        face_alive: vec![true; n_faces],
+        n_live_vertices: n_vertices as u32,
+        n_live_edges: edges.len() as u32,
+        n_live_faces: n_faces as u32,
+        edges,
+        point_faces: Vec::new(),
+    }
+}

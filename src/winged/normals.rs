@@ -1,0 +1,92 @@
+//! Face normals (Newell's method) and vertex normals, as seed `000_…` computes them.
+
+use super::error::WingedError;
+use super::ids::{FaceId, VertexId};
+use super::structure::Winged;
+
+/// `v / |v|`, or the zero vector when `v` has no length (a degenerate face or vertex).
+fn normalized(v: [f64; 3]) -> [f64; 3] {
+    let length = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    if length > 0.0 && length.is_finite() {
+        v.map(|c| c / length)
+    } else {
+        [0.0; 3]
+    }
+}
+
+impl Winged {
+    /// The unit normal of `f` by Newell's method over its loop (exact for planar polygons,
+    /// a least-squares plane normal for non-planar ones); zero for a degenerate face.
+    ///
+    /// Points outward for a counter-clockwise face.
+    pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
+        let mut n = [0.0; 3];
+        for u in self.face_loop(f)? {
+            let p = self.positions[self.tail_of(u).index()];
+            let q = self.positions[self.head_of(u).index()];
+            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+        }
+        Ok(normalized(n))
+    }
+
+    /// Unit normals of all faces, indexed by face id (zero for deleted and degenerate faces).
+    pub fn face_normals(&self) -> Vec<[f64; 3]> {
+        let normal = |f: u32| self.face_normal(FaceId(f)).unwrap_or([0.0; 3]);
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            (0..self.face_capacity())
+                .into_par_iter()
+                .map(normal)
+                .collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            (0..self.face_capacity()).map(normal).collect()
+        }
+    }
+
+    /// The unit normal of `v`: the normalised sum of the unit normals of the faces around it
+    /// (seed 000: `v->norm += e->f->norm; e = e->prev->sym`), holes left out; zero if none.
+    pub fn vertex_normal(&self, v: VertexId) -> Result<[f64; 3], WingedError> {
+        self.vertex_normal_from(v, |f| self.face_normal(f).unwrap_or([0.0; 3]))
+    }
+
+    /// Unit normals of all vertices, indexed by vertex id (face normals are computed once).
+    pub fn vertex_normals(&self) -> Vec<[f64; 3]> {
+        let face_normals = self.face_normals();
+        let normal = |v: u32| {
+            self.vertex_normal_from(VertexId(v), |f| face_normals[f.index()])
+                .unwrap_or([0.0; 3])
+        };
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            (0..self.vertex_capacity())
+                .into_par_iter()
+                .map(normal)
+                .collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            (0..self.vertex_capacity()).map(normal).collect()
+        }
+    }
+
+    fn vertex_normal_from(
+        &self,
+        v: VertexId,
+        face_normal: impl Fn(FaceId) -> [f64; 3],
+    ) -> Result<[f64; 3], WingedError> {
+        let mut sum = [0.0; 3];
+        for f in self.vertex_faces(v)? {
+            let n = face_normal(f);
+            for k in 0..3 {
+                sum[k] += n[k];
+            }
+        }
+        Ok(normalized(sum))
+    }
+}

@@ -1,0 +1,558 @@
+//! Building from face lists: round trips, boundaries, queries and bad input.
+
+use std::path::Path;
+
+use halfwing::soup::{FaceList, PolygonSoup};
+use halfwing::winged::{EdgeId, FaceId, Side, VertexId, Winged, WingedError};
+use proptest::prelude::*;
+
+fn soup(positions: Vec<[f64; 3]>, faces: &[&[u32]]) -> PolygonSoup {
+    PolygonSoup {
+        positions,
+        face_sizes: faces.iter().map(|f| f.len() as u32).collect(),
+        indices: faces.concat(),
+        corner_normals: None,
+        corner_uvs: None,
+    }
+}
+
+/// A `cols × rows` grid of unit squares in the z = 0 plane, split into triangles, with the
+/// squares listed in `holes` left out.
+fn grid(cols: u32, rows: u32, holes: &[u32]) -> PolygonSoup {
+    let mut positions = Vec::new();
+    for j in 0..=rows {
+        for i in 0..=cols {
+            positions.push([f64::from(i), f64::from(j), 0.0]);
+        }
+    }
+    let at = |i: u32, j: u32| j * (cols + 1) + i;
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    for j in 0..rows {
+        for i in 0..cols {
+            if holes.contains(&(j * cols + i)) {
+                continue;
+            }
+            faces.push(vec![at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            faces.push(vec![at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    let faces: Vec<&[u32]> = faces.iter().map(|f| f.as_slice()).collect();
+    soup(positions, &faces)
+}
+
+fn assert_round_trip(input: &PolygonSoup) -> Winged {
+    let w = Winged::from_soup(input).expect("builds");
+    w.check().expect("valid");
+    let output = w.to_soup();
+    assert_eq!(output.positions, input.positions);
+    assert_eq!(output.face_sizes, input.face_sizes);
+    assert_eq!(output.indices, input.indices);
+    w
+}
+
+/// Every vertex ring meets all the vertex's edges except at the reported non-manifold
+/// vertices, and each side with a face is met once by the face loops.
+fn assert_walks_cover_everything(w: &Winged) {
+    let degree = w.degrees();
+    let pinched = w.non_manifold_vertices();
+    for v in w.vertices() {
+        let complete = w.valence(v).unwrap() == degree[v.index()] as usize;
+        assert_eq!(complete, !pinched.contains(&v), "vertex {v:?}");
+    }
+    let face_sides: usize = w.faces().map(|f| w.face_loop(f).unwrap().count()).sum();
+    let boundary = w
+        .edges()
+        .filter(|&e| w.is_boundary_edge(e).unwrap())
+        .count();
+    assert_eq!(face_sides, 2 * w.n_edges() as usize - boundary);
+}
+
+#[test]
+fn quads_round_trip_and_close() {
+    let cube = soup(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [0.0, 1.0, 1.0],
+        ],
+        &[
+            &[0, 3, 2, 1],
+            &[4, 5, 6, 7],
+            &[0, 1, 5, 4],
+            &[1, 2, 6, 5],
+            &[2, 3, 7, 6],
+            &[3, 0, 4, 7],
+        ],
+    );
+    let w = assert_round_trip(&cube);
+    assert_eq!((w.n_vertices(), w.n_edges(), w.n_faces()), (8, 12, 6));
+    assert_eq!(w.euler_characteristic(), 2);
+    assert_walks_cover_everything(&w);
+    // Around vertex 0, counter-clockwise seen from outside (from below-left-front).
+    let ring: Vec<u32> = w
+        .vertex_neighbors(VertexId(0))
+        .unwrap()
+        .map(|v| v.0)
+        .collect();
+    assert_eq!(ring.len(), 3);
+    let faces: Vec<u32> = w.vertex_faces(VertexId(0)).unwrap().map(|f| f.0).collect();
+    for (k, &n) in ring.iter().enumerate() {
+        // The face after the edge to `n` contains `n` and the next neighbour.
+        let f = FaceId(faces[k]);
+        let next = ring[(k + 1) % 3];
+        let verts: Vec<u32> = w.face_vertices(f).unwrap().map(|v| v.0).collect();
+        assert!(
+            verts.contains(&n) && verts.contains(&next),
+            "face {f:?} {verts:?}"
+        );
+    }
+    for f in w.faces() {
+        assert_eq!(w.face_neighbors(f).unwrap().count(), 4);
+    }
+}
+
+#[test]
+fn open_grid_links_its_boundary_loop() {
+    let input = grid(3, 2, &[]);
+    let w = assert_round_trip(&input);
+    assert_walks_cover_everything(&w);
+    let boundary: Vec<EdgeId> = w
+        .edges()
+        .filter(|&e| w.is_boundary_edge(e).unwrap())
+        .collect();
+    assert_eq!(boundary.len(), 10);
+    let hole: Vec<_> = w.boundary_loop(boundary[0]).unwrap().unwrap().collect();
+    assert_eq!(hole.len(), 10, "one loop through every boundary edge");
+    assert!(hole.iter().all(|&u| !w.use_face(u).unwrap().is_valid()));
+    // The hole runs clockwise seen from +z (opposite to the faces): from (0,0) to (0,1) first.
+    let tails: Vec<[f64; 3]> = hole
+        .iter()
+        .map(|&u| w.position(w.use_tail(u).unwrap()).unwrap())
+        .collect();
+    let area2: f64 = (0..tails.len())
+        .map(|k| {
+            let (p, q) = (tails[k], tails[(k + 1) % tails.len()]);
+            p[0] * q[1] - q[0] * p[1]
+        })
+        .sum();
+    assert_eq!(area2, -12.0);
+    // A boundary vertex's ring starts at the hole, so its faces come out in order.
+    let corner = VertexId(0);
+    assert!(w.is_boundary_vertex(corner).unwrap());
+    let first = w.vertex_ring(corner).unwrap().next().unwrap();
+    assert!(!w.use_face(first).unwrap().is_valid());
+    assert_eq!(
+        w.vertex_faces(corner).unwrap().collect::<Vec<_>>(),
+        [FaceId(0), FaceId(1)]
+    );
+    assert!(!w.is_boundary_vertex(VertexId(5)).unwrap());
+    assert_eq!(w.valence(VertexId(5)).unwrap(), 6);
+}
+
+#[test]
+fn grid_with_inner_hole_has_two_boundary_loops() {
+    let w = assert_round_trip(&grid(3, 3, &[4]));
+    assert_walks_cover_everything(&w);
+    let mut seen = std::collections::HashSet::new();
+    let mut loops = Vec::new();
+    for e in w.edges() {
+        if let Some(walk) = w.boundary_loop(e).unwrap()
+            && seen.insert(e)
+        {
+            let uses: Vec<_> = walk.collect();
+            seen.extend(uses.iter().map(|u| u.edge));
+            loops.push(uses.len());
+        }
+    }
+    loops.sort();
+    assert_eq!(loops, [4, 12]);
+}
+
+#[test]
+fn fans_touching_at_a_vertex_keep_separate_boundary_loops() {
+    // Two triangles sharing only vertex 0 (a non-manifold vertex the structure can hold).
+    let input = soup(
+        vec![
+            [0.0; 3],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [-1.0, -1.0, 0.0],
+        ],
+        &[&[0, 1, 2], &[0, 3, 4]],
+    );
+    let w = assert_round_trip(&input);
+    for e in w.edges() {
+        assert_eq!(w.boundary_loop(e).unwrap().unwrap().count(), 3);
+    }
+    assert_eq!(
+        w.valence(VertexId(0)).unwrap(),
+        2,
+        "the ring is the stored edge's fan"
+    );
+    assert_eq!(w.non_manifold_vertices(), [VertexId(0)]);
+}
+
+#[test]
+fn mixed_polygons_and_unreferenced_vertices_round_trip() {
+    let input = soup(
+        vec![
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [2.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [3.0, 0.5, 0.0],
+            [9.0; 3],
+        ],
+        &[&[0, 1, 2, 3], &[1, 4, 2]],
+    );
+    let w = assert_round_trip(&input);
+    assert_eq!(w.vertex_edge(VertexId(5)).unwrap(), EdgeId::INVALID);
+    assert_eq!(w.valence(VertexId(5)).unwrap(), 0);
+    assert_eq!(w.face_normal(FaceId(0)).unwrap(), [0.0, 0.0, 1.0]);
+    assert_eq!(
+        w.face_neighbors(FaceId(0)).unwrap().collect::<Vec<_>>(),
+        [FaceId(1)]
+    );
+}
+
+#[test]
+fn uniform_triangle_lists_build() {
+    let g = grid(2, 2, &[]);
+    let w = Winged::from_face_list(&FaceList::triangles(&g.positions, &g.indices)).unwrap();
+    w.check().unwrap();
+    assert_eq!(w.to_soup().indices, g.indices);
+}
+
+// --- bad input -------------------------------------------------------------------------------
+
+fn build_err(positions: &[[f64; 3]], faces: &[&[u32]]) -> WingedError {
+    Winged::from_soup(&soup(positions.to_vec(), faces)).expect_err("must be refused")
+}
+
+const SQUARE: [[f64; 3]; 5] = [
+    [0.0, 0.0, 0.0],
+    [1.0, 0.0, 0.0],
+    [1.0, 1.0, 0.0],
+    [0.0, 1.0, 0.0],
+    [0.5, 0.5, 1.0],
+];
+
+#[test]
+fn bad_input_gets_a_typed_error() {
+    assert_eq!(
+        build_err(&SQUARE, &[&[0, 1, 7]]),
+        WingedError::IndexOutOfRange {
+            face: 0,
+            vertex: 7,
+            n_vertices: 5
+        }
+    );
+    assert_eq!(
+        build_err(&SQUARE, &[&[0, 1, 2], &[0, 2, 1, 2]]),
+        WingedError::RepeatedVertex { face: 1, vertex: 2 }
+    );
+    assert_eq!(
+        build_err(&SQUARE, &[&[0, 1]]),
+        WingedError::FaceTooSmall { face: 0, size: 2 }
+    );
+    assert_eq!(
+        build_err(&SQUARE, &[&[0, 1, 4], &[1, 0, 2], &[0, 1, 3]]),
+        WingedError::NonManifoldEdge {
+            a: 0,
+            b: 1,
+            faces: vec![0, 1, 2]
+        }
+    );
+    assert_eq!(
+        build_err(&SQUARE, &[&[0, 1, 2], &[0, 1, 3]]),
+        WingedError::InconsistentOrientation {
+            a: 0,
+            b: 1,
+            faces: [0, 1]
+        }
+    );
+    let mut nan = SQUARE;
+    nan[3][1] = f64::NAN;
+    assert_eq!(
+        build_err(&nan, &[&[0, 1, 2]]),
+        WingedError::NonFinitePosition { vertex: 3 }
+    );
+    nan[3][1] = f64::INFINITY;
+    assert_eq!(
+        build_err(&nan, &[&[0, 1, 2]]),
+        WingedError::NonFinitePosition { vertex: 3 }
+    );
+
+    // Sizes and indices that disagree, including sizes whose sum overflows 32 bits.
+    let idx = [0, 1, 2];
+    let sizes = [u32::MAX, u32::MAX, 3];
+    assert!(matches!(
+        Winged::from_face_list(&FaceList::polygons(&SQUARE, &sizes, &idx)),
+        Err(WingedError::CornerCountMismatch { actual: 3, .. })
+    ));
+    assert!(matches!(
+        Winged::from_face_list(&FaceList::triangles(&SQUARE, &[0, 1, 2, 3])),
+        Err(WingedError::CornerCountMismatch { actual: 4, .. })
+    ));
+    assert!(matches!(
+        Winged::from_face_list(&FaceList::polygons(&SQUARE, &[3, 0], &idx)),
+        Err(WingedError::FaceTooSmall { face: 1, size: 0 })
+    ));
+}
+
+#[test]
+fn long_polygons_with_a_repeat_are_refused() {
+    let positions: Vec<[f64; 3]> = (0..100).map(|i| [f64::from(i), 0.0, 0.0]).collect();
+    let mut face: Vec<u32> = (0..100).collect();
+    face[70] = 3;
+    assert_eq!(
+        build_err(&positions, &[&face]),
+        WingedError::RepeatedVertex { face: 0, vertex: 3 }
+    );
+}
+
+#[test]
+fn explicit_edge_order_must_be_a_permutation() {
+    let tri = soup(SQUARE[..3].to_vec(), &[&[0, 1, 2]]);
+    let list = tri.as_face_list();
+    let err =
+        |order: &[[u32; 2]]| Winged::from_face_list_with_edge_order(&list, order).unwrap_err();
+    assert!(matches!(
+        err(&[[0, 1], [1, 2]]),
+        WingedError::EdgeOrderMismatch { .. }
+    ));
+    assert!(matches!(
+        err(&[[0, 1], [1, 2], [1, 0]]),
+        WingedError::EdgeOrderMismatch { .. }
+    ));
+    assert!(matches!(
+        err(&[[0, 1], [1, 2], [0, 3]]),
+        WingedError::EdgeOrderMismatch { .. }
+    ));
+    // Reversed directions are accepted: the face then lies on the edges' right sides.
+    let w = Winged::from_face_list_with_edge_order(&list, &[[0, 2], [2, 1], [1, 0]]).unwrap();
+    w.check().unwrap();
+    for e in w.edges() {
+        assert_eq!(w.edge_faces(e).unwrap(), [FaceId::INVALID, FaceId(0)]);
+    }
+    assert_eq!(w.to_soup().indices, [0, 1, 2]);
+}
+
+#[test]
+fn invalid_handles_are_errors() {
+    let w = Winged::from_soup(&grid(1, 1, &[])).unwrap();
+    assert_eq!(
+        w.edge(EdgeId(99)).unwrap_err(),
+        WingedError::InvalidEdge(EdgeId(99))
+    );
+    assert!(w.face_loop(FaceId::INVALID).is_err());
+    assert!(w.vertex_ring(VertexId(4)).is_err());
+    assert!(w.position(VertexId::INVALID).is_err());
+    assert!(w.face_normal(FaceId(2)).is_err());
+    let stray = halfwing::winged::EdgeUse::new(EdgeId(1000), Side::Right);
+    assert!(w.use_tail(stray).is_err() && w.use_head(stray).is_err() && w.use_face(stray).is_err());
+    assert_eq!((w.use_next(stray), w.use_prev(stray)), (None, None));
+    let mut w = w;
+    assert!(matches!(
+        w.set_vertex_edge(VertexId(1), EdgeId(1)),
+        Err(WingedError::NotIncident { .. }) | Ok(())
+    ));
+    let far = w
+        .edges()
+        .find(|&e| w.edge(e).unwrap().side_leaving(VertexId(0)).is_none())
+        .unwrap();
+    assert_eq!(
+        w.set_vertex_edge(VertexId(0), far),
+        Err(WingedError::NotIncident {
+            edge: far,
+            what: "vertex"
+        })
+    );
+    assert!(w.set_position(VertexId(0), [f64::NAN, 0.0, 0.0]).is_err());
+}
+
+// --- the shared test models ------------------------------------------------------------------
+
+/// A minimal OFF reader for the test models (positions and polygons; colours ignored). The
+/// crate's readers live in `crate::io`; this keeps the kernel's tests independent of them.
+fn read_off(path: &Path) -> Option<PolygonSoup> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let mut tokens = text
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or(""))
+        .flat_map(str::split_whitespace);
+    let header = tokens.next()?;
+    if !header.ends_with("OFF") {
+        return None;
+    }
+    let n_v: usize = tokens.next()?.parse().ok()?;
+    let n_f: usize = tokens.next()?.parse().ok()?;
+    let _n_e = tokens.next()?;
+    let per_vertex = if header.starts_with('N') { 6 } else { 3 };
+    let mut positions = Vec::with_capacity(n_v);
+    for _ in 0..n_v {
+        let values: Vec<f64> = (0..per_vertex)
+            .map(|_| tokens.next()?.parse().ok())
+            .collect::<Option<_>>()?;
+        positions.push([values[0], values[1], values[2]]);
+    }
+    // Faces are one per line; read them by line so trailing colours are skipped.
+    let mut lines = text
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .filter(|l| !l.is_empty());
+    let mut seen = 0;
+    let mut skip = 2 + n_v; // header line, counts line, vertex lines
+    if header.len() < text.trim_start().lines().next()?.trim().len() {
+        skip -= 1; // counts on the header line
+    }
+    let mut face_sizes = Vec::new();
+    let mut indices = Vec::new();
+    for line in lines.by_ref() {
+        if seen < skip {
+            seen += 1;
+            continue;
+        }
+        let mut fields = line.split_whitespace().map(|t| t.parse::<u32>());
+        let size = fields.next()?.ok()?;
+        face_sizes.push(size);
+        for _ in 0..size {
+            indices.push(fields.next()?.ok()?);
+        }
+        if face_sizes.len() == n_f {
+            break;
+        }
+    }
+    Some(PolygonSoup {
+        positions,
+        face_sizes,
+        indices,
+        corner_normals: None,
+        corner_uvs: None,
+    })
+}
+
+fn off_files(dir: &str) -> Vec<std::path::PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data/meshes")
+        .join(dir);
+    let mut files: Vec<_> = std::fs::read_dir(root)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    files.retain(|p| p.extension().is_some_and(|e| e == "off"));
+    files.sort();
+    files
+}
+
+#[test]
+fn manifold_models_round_trip() {
+    let mut built = 0;
+    for dir in ["closed", "open", "polygonal"] {
+        for path in off_files(dir) {
+            let Some(input) = read_off(&path) else {
+                continue;
+            };
+            let w = assert_round_trip(&input);
+            assert_walks_cover_everything(&w);
+            if dir == "closed" {
+                assert!(
+                    w.edges().all(|e| !w.is_boundary_edge(e).unwrap()),
+                    "{path:?}"
+                );
+            }
+            built += 1;
+        }
+    }
+    // The data folder is shared and read-only; when it is present it has OFF models.
+    if Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/data")
+        .exists()
+    {
+        assert!(built >= 5, "only {built} OFF models read");
+    }
+}
+
+#[test]
+fn broken_models_never_panic() {
+    for path in off_files("broken") {
+        let Some(input) = read_off(&path) else {
+            continue;
+        };
+        if let Ok(w) = Winged::from_soup(&input) {
+            w.check().unwrap_or_else(|e| panic!("{path:?}: {e}"));
+            assert_eq!(w.to_soup().indices, input.indices);
+        }
+    }
+}
+
+// --- random input ----------------------------------------------------------------------------
+
+proptest! {
+    #[test]
+    fn random_grids_with_holes_round_trip(cols in 1u32..6, rows in 1u32..6, holes in proptest::collection::vec(0u32..36, 0..6)) {
+        let input = grid(cols, rows, &holes);
+        let w = assert_round_trip(&input);
+        assert_walks_cover_everything(&w);
+        for v in w.vertices() {
+            let ring: Vec<_> = w.vertex_ring(v).unwrap().collect();
+            prop_assert!(ring.iter().all(|&u| w.use_tail(u).unwrap() == v));
+        }
+    }
+
+    #[test]
+    fn random_face_lists_never_panic(
+        n_vertices in 0usize..8,
+        sizes in proptest::collection::vec(0u32..6, 0..8),
+        indices in proptest::collection::vec(0u32..10, 0..40),
+    ) {
+        let positions: Vec<[f64; 3]> = (0..n_vertices).map(|i| [i as f64, (i * i) as f64, 0.0]).collect();
+        let list = FaceList::polygons(&positions, &sizes, &indices);
+        if let Ok(w) = Winged::from_face_list(&list) {
+            prop_assert!(w.check().is_ok());
+            let back = w.to_soup();
+            prop_assert_eq!(&back.indices, &indices);
+            prop_assert_eq!(&back.face_sizes, &sizes);
+        }
+    }
+}
+
+#[test]
+fn large_meshes_pair_the_same_and_report_the_first_error() {
+    // Big enough for the parallel pairing to split the vertices into several blocks.
+    let mut input = grid(160, 160, &[]);
+    assert_round_trip(&input);
+    // Two defects far apart: a face walking the last grid edge (last -> last - 1) again, in
+    // the last vertices' buckets, and one walking grid edge 0 -> 1 again, in vertex 0's bucket.
+    let n = input.positions.len() as u32;
+    let last = n - 1;
+    input
+        .positions
+        .extend([[0.5, -1.0, 0.0], [160.5, 161.0, 1.0]]);
+    input.face_sizes.push(3);
+    input.indices.extend([last, last - 1, n + 1]);
+    assert_eq!(
+        Winged::from_soup(&input).unwrap_err(),
+        WingedError::InconsistentOrientation {
+            a: last,
+            b: last - 1,
+            faces: [51199, 51200]
+        }
+    );
+    // With both, the first in vertex order is reported, however the blocks were scheduled.
+    input.face_sizes.push(3);
+    input.indices.extend([0, 1, n]);
+    assert_eq!(
+        Winged::from_soup(&input).unwrap_err(),
+        WingedError::InconsistentOrientation {
+            a: 0,
+            b: 1,
+            faces: [0, 51201]
+        }
+    );
+}
