@@ -107,6 +107,13 @@ typedef struct hw_diagnostic hw_diagnostic;
 typedef struct hw_mesh hw_mesh;
 
 /**
+ * An indexed face list read from a file, exactly as the file numbers its vertices (nothing
+ * welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
+ * release with hw_soup_free().
+ */
+typedef struct hw_soup hw_soup;
+
+/**
  * The result of a fallible C call. `HW_OK` (0) is success; every other value is an error whose
  * details `hw_last_error_message` gives.
  *
@@ -529,6 +536,61 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
  * writable `size_t`.
  */
 hw_status hw_last_error_message(char *buf, size_t len, size_t *needed);
+
+/**
+ * Reads a mesh file into an indexed face list. Malformed files give `HW_ERR_PARSE` with the
+ * line (or binary PLY record) and the problem; unreadable ones `HW_ERR_IO`; an unknown extension
+ * `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `path` must be NULL or NUL-terminated; `out_soup` writable.
+ */
+hw_status hw_soup_read(const char *path, hw_soup **out_soup);
+
+/**
+ * Zero-copy views of a soup's arrays, in the form hw_mesh_from_indexed() takes: positions
+ * (`3 * n_vertices` doubles), face sizes (`n_faces`) and corner indices (`n_indices`). They live
+ * as long as the soup. Any output pointer may be NULL when not wanted.
+ *
+ * # Safety
+ * `soup` must be NULL or live; each output NULL or writable.
+ */
+hw_status hw_soup_view(const hw_soup *soup,
+                       const double **out_positions,
+                       size_t *out_n_vertices,
+                       const uint32_t **out_face_sizes,
+                       size_t *out_n_faces,
+                       const uint32_t **out_indices,
+                       size_t *out_n_indices);
+
+/**
+ * Releases a soup. NULL is a no-op; freeing twice is detected and refused.
+ *
+ * # Safety
+ * `soup` must be NULL or a soup from this library, not in use by another thread.
+ */
+void hw_soup_free(hw_soup *soup);
+
+/**
+ * Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
+ * would (same policies, same diagnostic; `out_diagnostic` may be NULL).
+ *
+ * # Safety
+ * `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
+ */
+hw_status hw_mesh_read(const char *path,
+                       hw_build_policy policy,
+                       hw_mesh **out_mesh,
+                       hw_diagnostic **out_diagnostic);
+
+/**
+ * Writes a mesh to a file (format by extension; PLY is written binary little-endian). Deleted
+ * elements are left out.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `path` NULL or NUL-terminated.
+ */
+hw_status hw_mesh_write(const hw_mesh *mesh, const char *path);
 
 /**
  * Creates an empty mesh. Returns NULL only if the allocation fails.
