@@ -3,7 +3,7 @@
 
 mod mesh_support;
 
-use halfwing::mesh::{BuildPolicy, EdgeId, EditError, FaceId, Mesh, VertexId};
+use halfwing::mesh::{BuildPolicy, EdgeId, EditError, FaceId, HalfedgeId, Mesh, VertexId};
 use halfwing::soup::FaceList;
 use mesh_support::grid;
 use proptest::prelude::*;
@@ -121,6 +121,35 @@ fn deleting_faces_and_collecting_garbage() {
     assert!(!mesh.has_deleted_elements());
 }
 
+#[test]
+fn collapsing_an_interior_edge_of_a_triangle_grid() {
+    let mut mesh = build(&grid(4, 4, false, true));
+    let (v, e, f) = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+    // The edge from the grid's vertex (1, 1) to (2, 1): interior, with two triangles beside it.
+    let h = mesh.find_halfedge(VertexId(6), VertexId(7)).unwrap();
+    let kept = mesh.collapse_halfedge(h).unwrap();
+    assert_eq!(kept, VertexId(7));
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(
+        (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+        (v - 1, e - 3, f - 2)
+    );
+    assert!(mesh.is_vertex_deleted(VertexId(6)));
+    // The diagonal of the corner quad at (3, 0) joins boundary vertices 3 and 9 across the
+    // interior: collapsing it would pinch the surface, so it is refused and nothing changes.
+    let before = mesh.clone();
+    let h = mesh.find_halfedge(VertexId(3), VertexId(9)).unwrap();
+    assert!(!mesh.is_boundary_edge(h.edge()));
+    assert!(matches!(
+        mesh.collapse_halfedge(h),
+        Err(EditError::Refused { .. })
+    ));
+    assert_eq!(mesh, before);
+    mesh.garbage_collect();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(euler(&mesh), 1);
+}
+
 #[derive(Clone, Debug)]
 enum Edit {
     Flip(u32),
@@ -128,6 +157,7 @@ enum Edit {
     SplitFace(u32, u32, u32),
     Triangulate(u32),
     DeleteFace(u32, bool),
+    Collapse(u32),
 }
 
 fn edit() -> impl Strategy<Value = Edit> {
@@ -137,6 +167,7 @@ fn edit() -> impl Strategy<Value = Edit> {
         (any::<u32>(), 0u32..6, 2u32..6).prop_map(|(f, i, j)| Edit::SplitFace(f, i, j)),
         any::<u32>().prop_map(Edit::Triangulate),
         (any::<u32>(), any::<bool>()).prop_map(|(f, d)| Edit::DeleteFace(f, d)),
+        any::<u32>().prop_map(Edit::Collapse),
     ]
 }
 
@@ -173,6 +204,10 @@ fn apply(mesh: &mut Mesh, edit: &Edit) -> bool {
         }
         Edit::Triangulate(f) => mesh.triangulate_face(face(f, mesh)).is_ok(),
         Edit::DeleteFace(f, isolated) => mesh.delete_face(face(f, mesh), isolated).is_ok(),
+        Edit::Collapse(h) => {
+            let h = HalfedgeId(h % mesh.halfedge_capacity().max(1) as u32);
+            mesh.collapse_halfedge(h).is_ok()
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 //! Deletions only mark elements; [`Mesh::garbage_collect`](super::Mesh::garbage_collect)
 //! compacts the arrays and returns the old-to-new index maps.
 
+mod collapse;
 mod delete;
 mod flip;
 mod garbage;
