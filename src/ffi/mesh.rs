@@ -9,6 +9,7 @@ use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::status::*;
+use super::threads::with_threads;
 
 /// A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
 /// release it with hw_mesh_free().
@@ -108,7 +109,8 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )?
         };
-        let (mesh, diagnostic) = Mesh::from_face_list(&list, build_policy(policy)?)?;
+        let policy = build_policy(policy)?;
+        let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_mesh { mesh }));

@@ -29,6 +29,18 @@ pub enum VertexNormalWeighting {
 
 /// Unit normal of every face slot (zero for degenerate and deleted faces), indexed by face id.
 pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
+    let mut normals = vec![[0.0; 3]; mesh.face_capacity()];
+    face_normals_into(mesh, &mut normals);
+    normals
+}
+
+/// [`face_normals`] written into `out`, which must hold exactly one entry per face slot
+/// (`mesh.face_capacity()`); the form for callers that own the buffer (the C API).
+///
+/// # Panics
+/// When `out.len() != mesh.face_capacity()`.
+pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
+    assert_eq!(out.len(), mesh.face_capacity(), "one normal per face slot");
     let normal = |f: usize| {
         let f = FaceId(f as u32);
         if mesh.is_face_deleted(f) {
@@ -40,15 +52,14 @@ pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
-        (0..mesh.face_capacity())
-            .into_par_iter()
+        out.par_iter_mut()
             .with_min_len(4096)
-            .map(normal)
-            .collect()
+            .enumerate()
+            .for_each(|(f, n)| *n = normal(f));
     }
     #[cfg(not(feature = "parallel"))]
     {
-        (0..mesh.face_capacity()).map(normal).collect()
+        out.iter_mut().enumerate().for_each(|(f, n)| *n = normal(f));
     }
 }
 
@@ -59,11 +70,44 @@ pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
 
 /// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals.
 pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
-    let unit_face_normals = match weighting {
-        VertexNormalWeighting::Area => Vec::new(),
-        _ => face_normals(mesh),
+    let mut normals = vec![[0.0; 3]; mesh.vertex_capacity()];
+    vertex_normals_into(mesh, weighting, None, &mut normals);
+    normals
+}
+
+/// [`vertex_normals`] written into `out` (one entry per vertex slot). `unit_face_normals`, when
+/// the caller already has [`face_normals`], saves computing them again.
+///
+/// # Panics
+/// When `out.len() != mesh.vertex_capacity()` or `unit_face_normals` is not one per face slot.
+pub fn vertex_normals_into(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+    unit_face_normals: Option<&[[f64; 3]]>,
+    out: &mut [[f64; 3]],
+) {
+    assert_eq!(
+        out.len(),
+        mesh.vertex_capacity(),
+        "one normal per vertex slot"
+    );
+    let computed;
+    let unit_face_normals = match (weighting, unit_face_normals) {
+        (VertexNormalWeighting::Area, _) => &[][..],
+        (_, Some(given)) => {
+            assert_eq!(
+                given.len(),
+                mesh.face_capacity(),
+                "one face normal per face slot"
+            );
+            given
+        }
+        (_, None) => {
+            computed = face_normals(mesh);
+            &computed[..]
+        }
     };
-    let mut sums = vec![[0.0; 3]; mesh.vertex_capacity()];
+    out.fill([0.0; 3]);
     for f in 0..mesh.face_capacity() {
         let f = FaceId(f as u32);
         if mesh.is_face_deleted(f) {
@@ -78,10 +122,12 @@ pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64
                 VertexNormalWeighting::Angle => corner_angle(mesh, h),
                 _ => 1.0,
             };
-            add_scaled(&mut sums[mesh.origin(h).idx()], area_vector, weight);
+            add_scaled(&mut out[mesh.origin(h).idx()], area_vector, weight);
         }
     }
-    sums.into_iter().map(normalized).collect()
+    for normal in out.iter_mut() {
+        *normal = normalized(*normal);
+    }
 }
 
 /// Unit normal of every half-edge slot's corner (the corner at `origin(h)` inside `face(h)`),
