@@ -57,28 +57,49 @@ pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)))
 }
 
-/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals.
+/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
+/// the faces, with no per-face array: each face's normal is computed and scattered to its corners.
 pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
-    let unit_face_normals = match weighting {
-        VertexNormalWeighting::Area => Vec::new(),
-        _ => face_normals(mesh),
-    };
+    accumulate_normals(mesh, weighting, |_, _| {})
+}
+
+/// Face normals (as [`face_normals`]) and vertex normals (as [`vertex_normals`]) in one pass,
+/// as OpenMesh's `update_normals` gives them.
+pub fn face_and_vertex_normals(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let mut faces = vec![[0.0; 3]; mesh.face_capacity()];
+    let vertices = accumulate_normals(mesh, weighting, |f, unit| faces[f.idx()] = unit);
+    (faces, vertices)
+}
+
+/// The shared pass: for each live face, its unit normal goes to `visit_face` and its weighted
+/// normal to each corner's vertex sum; the sums come back normalised.
+fn accumulate_normals(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+    mut visit_face: impl FnMut(FaceId, [f64; 3]),
+) -> Vec<[f64; 3]> {
     let mut sums = vec![[0.0; 3]; mesh.vertex_capacity()];
     for f in 0..mesh.face_capacity() {
         let f = FaceId(f as u32);
         if mesh.is_face_deleted(f) {
             continue;
         }
-        let area_vector = match weighting {
-            VertexNormalWeighting::Area => face_area_vector(mesh, f),
-            _ => unit_face_normals[f.idx()],
+        let area_vector = face_area_vector(mesh, f);
+        let unit = normalized(area_vector);
+        visit_face(f, unit);
+        let face_normal = match weighting {
+            VertexNormalWeighting::Area => area_vector,
+            _ => unit,
         };
         for h in mesh.face_loop(f) {
             let weight = match weighting {
                 VertexNormalWeighting::Angle => corner_angle(mesh, h),
                 _ => 1.0,
             };
-            add_scaled(&mut sums[mesh.origin(h).idx()], area_vector, weight);
+            add_scaled(&mut sums[mesh.origin(h).idx()], face_normal, weight);
         }
     }
     sums.into_iter().map(normalized).collect()
@@ -265,6 +286,20 @@ mod tests {
                     normals[v as usize]
                 );
             }
+        }
+    }
+
+    #[test]
+    fn one_pass_normals_match_the_separate_ones() {
+        let mesh = cube();
+        for weighting in [
+            VertexNormalWeighting::Uniform,
+            VertexNormalWeighting::Area,
+            VertexNormalWeighting::Angle,
+        ] {
+            let (faces, vertices) = face_and_vertex_normals(&mesh, weighting);
+            assert_eq!(faces, face_normals(&mesh));
+            assert_eq!(vertices, vertex_normals(&mesh, weighting));
         }
     }
 
