@@ -836,6 +836,16 @@ size_t hw_mesh_n_edges(const hw_mesh *mesh);
 size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 
 /**
+ * The number of id slots of one element kind: ids run from 0 to this minus one. Equal to the
+ * element count unless elements were deleted and not yet garbage-collected; arrays indexed by id
+ * (views, normals) have this length. 0 for a NULL mesh or an unknown kind.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
+
+/**
  * The vertex half-edge `h` leaves (the seeds' `Origin`/`v`).
  *
  * # Safety
@@ -978,21 +988,34 @@ hw_status hw_mesh_face_normals(const hw_mesh *mesh,
                                size_t *needed);
 
 /**
- * Unit vertex normals with the chosen weighting. Every fan of a non-manifold vertex counts.
- * When the caller already has the face normals of this mesh (from hw_mesh_face_normals()), it may
- * pass them as `face_normals` (`3 * n` doubles, one per face slot) to save computing them again;
- * otherwise NULL.
+ * Unit vertex normals with the chosen weighting, in one pass over the faces. Every fan of a
+ * non-manifold vertex counts.
  *
  * # Safety
- * `mesh` must be NULL or live; `face_normals` NULL or one normal per face slot;
- * `out_normals` NULL or `3 * capacity` writable doubles; `needed` NULL or writable.
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * NULL or writable.
  */
 hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
                                  hw_normal_weighting weighting_kind,
-                                 const double *face_normals,
                                  double *out_normals,
                                  size_t capacity,
                                  size_t *needed);
+
+/**
+ * Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
+ * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
+ * (see hw_mesh_slot_count()).
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
+ * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+ */
+hw_status hw_mesh_normals(const hw_mesh *mesh,
+                          hw_normal_weighting weighting_kind,
+                          double *out_face_normals,
+                          size_t face_capacity,
+                          double *out_vertex_normals,
+                          size_t vertex_capacity);
 
 /**
  * Per-corner normals, one per half-edge slot (the corner at the half-edge's origin inside its

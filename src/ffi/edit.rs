@@ -8,7 +8,7 @@
 use crate::mesh::{EditError, IndexMaps};
 
 use super::boundary::{Out, arg_mut, arg_ref, guard, guard_void, write_view};
-use super::elements::{hw_edge, hw_face, hw_halfedge, hw_vertex};
+use super::elements::*;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::hw_mesh;
@@ -224,17 +224,6 @@ pub unsafe extern "C" fn hw_mesh_triangulate_face(
 pub struct hw_index_maps {
     pub(crate) maps: IndexMaps,
 }
-
-/// An element kind, to pick one of several per-kind arrays.
-pub type hw_element_kind = u32;
-/// Vertices.
-pub const HW_ELEMENT_VERTEX: hw_element_kind = 0;
-/// Half-edges.
-pub const HW_ELEMENT_HALFEDGE: hw_element_kind = 1;
-/// Edges.
-pub const HW_ELEMENT_EDGE: hw_element_kind = 2;
-/// Faces.
-pub const HW_ELEMENT_FACE: hw_element_kind = 3;
 
 /// Removes deleted elements for good, renumbering the live ones in their order. When
 /// `out_maps` is not NULL it receives the old-to-new maps (deleted → `HW_INVALID_INDEX`).

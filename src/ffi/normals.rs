@@ -5,9 +5,9 @@
 //! normals (not doubles); `*needed` always receives the number of normals the array needs.
 //! Degenerate and deleted faces, isolated vertices and boundary half-edges get (0, 0, 0).
 
-use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, vertex_normals_into};
+use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, normals_into};
 
-use super::boundary::{arg_slice, copy_items, guard};
+use super::boundary::{copy_items, guard};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
 use super::status::*;
@@ -86,19 +86,16 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
     })
 }
 
-/// Unit vertex normals with the chosen weighting. Every fan of a non-manifold vertex counts.
-/// When the caller already has the face normals of this mesh (from hw_mesh_face_normals()), it may
-/// pass them as `face_normals` (`3 * n` doubles, one per face slot) to save computing them again;
-/// otherwise NULL.
+/// Unit vertex normals with the chosen weighting, in one pass over the faces. Every fan of a
+/// non-manifold vertex counts.
 ///
 /// # Safety
-/// `mesh` must be NULL or live; `face_normals` NULL or one normal per face slot;
-/// `out_normals` NULL or `3 * capacity` writable doubles; `needed` NULL or writable.
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// NULL or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_normals(
     mesh: *const hw_mesh,
     weighting_kind: hw_normal_weighting,
-    face_normals: *const f64,
     out_normals: *mut f64,
     capacity: usize,
     needed: *mut usize,
@@ -107,21 +104,51 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
         let weighting = weighting(weighting_kind)?;
-        let given = if face_normals.is_null() {
-            None
-        } else {
-            // SAFETY: one normal per face slot per the caller.
-            Some(unsafe {
-                arg_slice(
-                    face_normals.cast::<[f64; 3]>(),
-                    mesh.face_capacity(),
-                    "face_normals",
-                )
-            }?)
-        };
         // SAFETY: forwarded from the caller.
         let out = unsafe { normal_buffer(out_normals, capacity, mesh.vertex_capacity(), needed) }?;
-        with_threads(|| vertex_normals_into(mesh, weighting, given, out));
+        with_threads(|| normals_into(mesh, weighting, None, out));
+        Ok(())
+    })
+}
+
+/// Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
+/// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
+/// (see hw_mesh_slot_count()).
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
+/// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_normals(
+    mesh: *const hw_mesh,
+    weighting_kind: hw_normal_weighting,
+    out_face_normals: *mut f64,
+    face_capacity: usize,
+    out_vertex_normals: *mut f64,
+    vertex_capacity: usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        let weighting = weighting(weighting_kind)?;
+        // SAFETY: forwarded from the caller.
+        let (faces, vertices) = unsafe {
+            (
+                normal_buffer(
+                    out_face_normals,
+                    face_capacity,
+                    mesh.face_capacity(),
+                    std::ptr::null_mut(),
+                )?,
+                normal_buffer(
+                    out_vertex_normals,
+                    vertex_capacity,
+                    mesh.vertex_capacity(),
+                    std::ptr::null_mut(),
+                )?,
+            )
+        };
+        with_threads(|| normals_into(mesh, weighting, Some(faces), vertices));
         Ok(())
     })
 }

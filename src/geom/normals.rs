@@ -34,8 +34,8 @@ pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
     normals
 }
 
-/// [`face_normals`] written into `out`, which must hold exactly one entry per face slot
-/// (`mesh.face_capacity()`); the form for callers that own the buffer (the C API).
+/// [`face_normals`] written into `out`, one entry per face slot (`mesh.face_capacity()`): the
+/// form for callers that own the buffer (the C API).
 ///
 /// # Panics
 /// When `out.len() != mesh.face_capacity()`.
@@ -68,65 +68,86 @@ pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)))
 }
 
-/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals.
+/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
+/// the faces, with no per-face array: each face's normal is computed and scattered to its corners.
 pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
-    let mut normals = vec![[0.0; 3]; mesh.vertex_capacity()];
-    vertex_normals_into(mesh, weighting, None, &mut normals);
-    normals
+    let mut vertices = vec![[0.0; 3]; mesh.vertex_capacity()];
+    accumulate_normals(mesh, weighting, |_, _| {}, &mut vertices);
+    vertices
 }
 
-/// [`vertex_normals`] written into `out` (one entry per vertex slot). `unit_face_normals`, when
-/// the caller already has [`face_normals`], saves computing them again.
-///
-/// # Panics
-/// When `out.len() != mesh.vertex_capacity()` or `unit_face_normals` is not one per face slot.
-pub fn vertex_normals_into(
+/// Face normals (as [`face_normals`]) and vertex normals (as [`vertex_normals`]) in one pass,
+/// as OpenMesh's `update_normals` gives them.
+pub fn face_and_vertex_normals(
     mesh: &Mesh,
     weighting: VertexNormalWeighting,
-    unit_face_normals: Option<&[[f64; 3]]>,
-    out: &mut [[f64; 3]],
+) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let mut faces = vec![[0.0; 3]; mesh.face_capacity()];
+    let mut vertices = vec![[0.0; 3]; mesh.vertex_capacity()];
+    normals_into(mesh, weighting, Some(&mut faces), &mut vertices);
+    (faces, vertices)
+}
+
+/// Vertex normals, and face normals when `faces` is given, written into caller buffers (one
+/// entry per vertex slot, one per face slot) in one pass.
+///
+/// # Panics
+/// When a buffer's length is not the slot count.
+pub fn normals_into(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+    faces: Option<&mut [[f64; 3]]>,
+    vertices: &mut [[f64; 3]],
+) {
+    match faces {
+        Some(faces) => {
+            assert_eq!(
+                faces.len(),
+                mesh.face_capacity(),
+                "one normal per face slot"
+            );
+            accumulate_normals(mesh, weighting, |f, unit| faces[f.idx()] = unit, vertices);
+        }
+        None => accumulate_normals(mesh, weighting, |_, _| {}, vertices),
+    }
+}
+
+/// The shared pass: for each live face, its unit normal goes to `visit_face` and its weighted
+/// normal to each corner's vertex sum in `sums`; the sums are normalised at the end.
+fn accumulate_normals(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+    mut visit_face: impl FnMut(FaceId, [f64; 3]),
+    sums: &mut [[f64; 3]],
 ) {
     assert_eq!(
-        out.len(),
+        sums.len(),
         mesh.vertex_capacity(),
         "one normal per vertex slot"
     );
-    let computed;
-    let unit_face_normals = match (weighting, unit_face_normals) {
-        (VertexNormalWeighting::Area, _) => &[][..],
-        (_, Some(given)) => {
-            assert_eq!(
-                given.len(),
-                mesh.face_capacity(),
-                "one face normal per face slot"
-            );
-            given
-        }
-        (_, None) => {
-            computed = face_normals(mesh);
-            &computed[..]
-        }
-    };
-    out.fill([0.0; 3]);
+    sums.fill([0.0; 3]);
     for f in 0..mesh.face_capacity() {
         let f = FaceId(f as u32);
         if mesh.is_face_deleted(f) {
             continue;
         }
-        let area_vector = match weighting {
-            VertexNormalWeighting::Area => face_area_vector(mesh, f),
-            _ => unit_face_normals[f.idx()],
+        let area_vector = face_area_vector(mesh, f);
+        let unit = normalized(area_vector);
+        visit_face(f, unit);
+        let face_normal = match weighting {
+            VertexNormalWeighting::Area => area_vector,
+            _ => unit,
         };
         for h in mesh.face_loop(f) {
             let weight = match weighting {
                 VertexNormalWeighting::Angle => corner_angle(mesh, h),
                 _ => 1.0,
             };
-            add_scaled(&mut out[mesh.origin(h).idx()], area_vector, weight);
+            add_scaled(&mut sums[mesh.origin(h).idx()], face_normal, weight);
         }
     }
-    for normal in out.iter_mut() {
-        *normal = normalized(*normal);
+    for sum in sums.iter_mut() {
+        *sum = normalized(*sum);
     }
 }
 
@@ -311,6 +332,20 @@ mod tests {
                     normals[v as usize]
                 );
             }
+        }
+    }
+
+    #[test]
+    fn one_pass_normals_match_the_separate_ones() {
+        let mesh = cube();
+        for weighting in [
+            VertexNormalWeighting::Uniform,
+            VertexNormalWeighting::Area,
+            VertexNormalWeighting::Angle,
+        ] {
+            let (faces, vertices) = face_and_vertex_normals(&mesh, weighting);
+            assert_eq!(faces, face_normals(&mesh));
+            assert_eq!(vertices, vertex_normals(&mesh, weighting));
         }
     }
 

@@ -37,6 +37,19 @@ impl Mesh {
                 "the edge is a boundary edge of a lone triangle or its sides close up",
             );
         }
+        let beside = [self.face(h), self.face(o)];
+        let shares_other_face = self
+            .vertex_faces(v0)
+            .any(|f| !beside.contains(&f) && self.face_vertices(f).any(|w| w == v1));
+        if shares_other_face {
+            return refuse(
+                COLLAPSE,
+                "another face holds both ends (it would name a vertex twice)",
+            );
+        }
+        if self.may_have_pinched_vertices && self.fan_misses_halfedges(v0) {
+            return refuse(COLLAPSE, "the vertex to remove has several fans");
+        }
         let interior_edge = !self.is_boundary_halfedge(h) && !self.is_boundary_halfedge(o);
         if interior_edge && self.is_boundary_vertex(v0) && self.is_boundary_vertex(v1) {
             return refuse(COLLAPSE, "an interior edge joins two boundary vertices");
@@ -56,9 +69,11 @@ impl Mesh {
     /// Collapses half-edge `h`: its origin is removed and merged into its target, which keeps
     /// its position; the triangles beside the edge vanish with one of their other edges each.
     /// Deleted elements are marked (see [`Mesh::garbage_collect`]). Returns the kept vertex.
-    /// Refused, with the mesh unchanged, when [`Mesh::can_collapse_halfedge`] fails. The origin
-    /// must be a manifold vertex (one fan); that is the case in every mesh whose diagnostic
-    /// lists no non-manifold vertex.
+    /// Refused, with the mesh unchanged, when [`Mesh::can_collapse_halfedge`] fails: that
+    /// includes a face other than the two beside the edge holding both ends (polygon meshes), and
+    /// an origin with several fans (found by a linear scan, run only while the mesh may have such
+    /// vertices: after a build that reported some, or after face deletions until the next
+    /// [`Mesh::garbage_collect`]).
     pub fn collapse_halfedge(&mut self, h: HalfedgeId) -> Result<VertexId, EditError> {
         self.can_collapse_halfedge(h)?;
         let kept = self.target(h);
@@ -70,6 +85,16 @@ impl Mesh {
             }
         }
         Ok(kept)
+    }
+
+    /// `true` when some live half-edge leaves `v` outside the fan of its stored half-edge (a scan
+    /// of all half-edges: only needed while the mesh may have pinched vertices).
+    fn fan_misses_halfedges(&self, v: VertexId) -> bool {
+        let in_fan = self.outgoing_halfedges(v).count();
+        let leaving = (0..self.halfedge_capacity())
+            .filter(|&h| self.origin[h] == v.0 && !self.is_halfedge_deleted(HalfedgeId(h as u32)))
+            .count();
+        leaving != in_fan
     }
 
     /// Removes edge `h` (from `gone` to `kept`), moving `gone`'s half-edges to `kept`.

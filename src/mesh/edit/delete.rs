@@ -25,6 +25,7 @@ impl Mesh {
             vertices.push(self.target(h));
         }
         self.mark_face_deleted(f);
+        self.may_have_pinched_vertices = true;
         for e in dead_edges {
             self.remove_faceless_edge(e, delete_isolated_vertices);
         }

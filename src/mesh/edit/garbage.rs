@@ -111,7 +111,9 @@ impl Mesh {
             positions,
             face_halfedge,
             deleted: Deletions::default(),
+            may_have_pinched_vertices: true,
         };
+        self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
         IndexMaps {
             vertices,
             halfedges,
