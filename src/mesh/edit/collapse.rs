@@ -63,6 +63,25 @@ impl Mesh {
                 "the link condition fails (the ends share another neighbour)",
             );
         }
+        // The edge part of the link condition: when the two opposite corners are joined by an
+        // edge whose faces hold one end each (a tetrahedron), the collapse would leave the same
+        // triangle twice.
+        if let [c, d] = opposite
+            && c.is_valid()
+            && d.is_valid()
+            && let Some(cd) = self.find_halfedge(c, d)
+        {
+            let holds = |g: HalfedgeId, v: VertexId| {
+                !self.is_boundary_halfedge(g) && self.face_vertices(self.face(g)).any(|w| w == v)
+            };
+            let (g, t) = (cd, cd.twin());
+            if (holds(g, v0) && holds(t, v1)) || (holds(g, v1) && holds(t, v0)) {
+                return refuse(
+                    COLLAPSE,
+                    "the link condition fails (the opposite corners' edge would be doubled)",
+                );
+            }
+        }
         Ok(())
     }
 
