@@ -219,9 +219,8 @@ impl Delaunay {
     fn canonicalise_representatives(&mut self, mut representative: Vec<u32>) {
         let n = representative.len();
         let mut smallest: Vec<u32> = (0..n as u32).collect();
-        for i in 0..n {
-            let r = representative[i] as usize;
-            smallest[r] = smallest[r].min(i as u32);
+        for (i, &r) in representative.iter().enumerate() {
+            smallest[r as usize] = smallest[r as usize].min(i as u32);
         }
         let renamed = (0..n).any(|r| representative[r] == r as u32 && smallest[r] != r as u32);
         for r in representative.iter_mut() {
@@ -369,6 +368,7 @@ impl Delaunay {
     }
 
     /// Exact orientation in the triangulation's own (scaled) coordinates.
+    #[cfg(test)]
     pub(crate) fn orient(&self, a: u32, b: u32, c: u32) -> f64 {
         orient2d(
             self.scaled_point(a),

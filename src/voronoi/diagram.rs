@@ -1,0 +1,451 @@
+//! The Voronoi diagram as a DCEL, dual to the Delaunay triangulation.
+
+use super::delaunay::{Delaunay, Dimension, INVALID};
+use super::error::VoronoiError;
+use super::incremental::{next_edge, prev_edge};
+use super::predicates::incircle;
+
+/// Geometry of an undirected Voronoi edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeGeometry {
+    /// Both ends are Voronoi vertices.
+    Segment {
+        /// Start point (origin of the half-edge asked about).
+        from: [f64; 2],
+        /// End point.
+        to: [f64; 2],
+    },
+    /// One end at infinity: the points `origin + t·direction`, `t ≥ 0`.
+    Ray {
+        /// The finite end (a Voronoi vertex).
+        origin: [f64; 2],
+        /// Unit-free direction towards infinity (perpendicular to the hull edge, pointing out).
+        direction: [f64; 2],
+    },
+    /// Both ends at infinity (collinear sites): the points `point + t·direction`, `t ∈ ℝ`,
+    /// `direction` oriented like the half-edge asked about.
+    Line {
+        /// The midpoint of the two sites.
+        point: [f64; 2],
+        /// Direction, with the half-edge's cell on its left.
+        direction: [f64; 2],
+    },
+}
+
+/// A Voronoi diagram: one cell (face) per distinct site, vertices at circumcentres, half-edges in
+/// twin pairs (`twin(h) = h ^ 1`).
+///
+/// Conventions:
+/// * Half-edge `h` bounds the cell of [`Voronoi::site`]`(h)`, which lies on its **left**; its twin
+///   bounds the cell of [`Voronoi::opposite_site`]`(h)`. Every edge is the perpendicular bisector
+///   piece between those two sites, dual to the Delaunay edge joining them.
+/// * `next` circulates **counter-clockwise** around the cell. An unbounded cell's cycle passes
+///   through infinity: the half-edge running out to infinity ([`Voronoi::origin`] of its twin is
+///   [`INVALID`]) is followed by the one coming back (its own origin is [`INVALID`]).
+/// * Cocircular sites give one vertex of degree > 3 (Delaunay triangles with the same
+///   circumcircle, decided exactly with the in-circle predicate, are merged); no edge has zero
+///   length in exact arithmetic.
+/// * Cells are indexed by site; duplicates (see [`Delaunay::representative`]) have no cell of
+///   their own.
+#[derive(Clone, Debug)]
+pub struct Voronoi {
+    pub(crate) delaunay: Delaunay,
+    pub(crate) vertices: Vec<[f64; 2]>,
+    pub(crate) vertex_edge: Vec<u32>,
+    pub(crate) triangle_vertex: Vec<u32>,
+    pub(crate) origin: Vec<u32>,
+    pub(crate) next: Vec<u32>,
+    pub(crate) prev: Vec<u32>,
+    pub(crate) site: Vec<u32>,
+    pub(crate) cell_edge: Vec<u32>,
+}
+
+impl Voronoi {
+    /// The Voronoi diagram of `sites` (see [`Delaunay::new`] for the accepted input).
+    pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
+        Ok(Self::from_delaunay(Delaunay::new(sites)?))
+    }
+
+    /// The dual of an existing triangulation.
+    pub fn from_delaunay(delaunay: Delaunay) -> Self {
+        let n = delaunay.n_sites();
+        let mut v = Voronoi {
+            vertices: Vec::new(),
+            vertex_edge: Vec::new(),
+            triangle_vertex: Vec::new(),
+            origin: Vec::new(),
+            next: Vec::new(),
+            prev: Vec::new(),
+            site: Vec::new(),
+            cell_edge: vec![INVALID; n],
+            delaunay,
+        };
+        match v.delaunay.dimension() {
+            Dimension::Plane => v.build_planar(),
+            Dimension::Line => v.build_parallel(),
+            Dimension::Empty | Dimension::Point => {}
+        }
+        v
+    }
+
+    /// Groups triangles with one circumcircle, places vertices, and links the half-edges.
+    fn build_planar(&mut self) {
+        let d = &self.delaunay;
+        let n_tri = d.n_triangles();
+        // Union-find over triangles: adjacent triangles whose fourth point is exactly cocircular.
+        let mut parent: Vec<u32> = (0..n_tri as u32).collect();
+        let mut internal = vec![false; d.triangles.len()];
+        for e in 0..d.triangles.len() as u32 {
+            let t = d.twins[e as usize];
+            if t == INVALID || t < e {
+                continue;
+            }
+            let base = 3 * (e / 3) as usize;
+            let [a, b, c] = [
+                d.triangles[base],
+                d.triangles[base + 1],
+                d.triangles[base + 2],
+            ];
+            let apex = d.origin(prev_edge(t));
+            let s = incircle(
+                d.scaled_point(a),
+                d.scaled_point(b),
+                d.scaled_point(c),
+                d.scaled_point(apex),
+            );
+            if s == 0.0 {
+                internal[e as usize] = true;
+                internal[t as usize] = true;
+                let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
+                if ra != rb {
+                    parent[ra.max(rb) as usize] = ra.min(rb);
+                }
+            }
+        }
+        let mut triangle_vertex = vec![INVALID; n_tri];
+        let mut vertices = Vec::with_capacity(n_tri);
+        for t in 0..n_tri as u32 {
+            let root = find(&mut parent, t);
+            if triangle_vertex[root as usize] == INVALID {
+                triangle_vertex[root as usize] = vertices.len() as u32;
+                vertices.push(self.circumcentre(root));
+            }
+            triangle_vertex[t as usize] = triangle_vertex[root as usize];
+        }
+        // Half-edges: a pair per kept Delaunay edge; the even one is dual to the Delaunay
+        // half-edge `e` (cell of origin(e)), the odd one to its twin (or the hull's outer side).
+        let mut dual = vec![INVALID; d.triangles.len()];
+        let mut outer_dual = vec![INVALID; d.triangles.len()];
+        let n_half = internal.iter().filter(|&&i| !i).count() * 2; // upper bound, exact below
+        let mut origin = Vec::with_capacity(n_half);
+        let mut site = Vec::with_capacity(n_half);
+        for e in 0..d.triangles.len() as u32 {
+            let t = d.twins[e as usize];
+            if internal[e as usize] || (t != INVALID && t < e) {
+                continue;
+            }
+            let h = origin.len() as u32;
+            let here = triangle_vertex[(e / 3) as usize];
+            let there = if t == INVALID {
+                INVALID
+            } else {
+                triangle_vertex[(t / 3) as usize]
+            };
+            origin.push(there);
+            site.push(d.origin(e));
+            origin.push(here);
+            site.push(d.origin(next_edge(e)));
+            dual[e as usize] = h;
+            if t == INVALID {
+                outer_dual[e as usize] = h + 1;
+            } else {
+                dual[t as usize] = h + 1;
+            }
+        }
+        let mut next = vec![INVALID; origin.len()];
+        let mut cycle = Vec::new();
+        for s in 0..d.n_sites() as u32 {
+            cycle.clear();
+            let mut last = INVALID;
+            for e in d.outgoing(s) {
+                if dual[e as usize] != INVALID {
+                    cycle.push(dual[e as usize]);
+                }
+                last = e;
+            }
+            if last == INVALID {
+                continue;
+            }
+            let incoming = prev_edge(last);
+            if d.twins[incoming as usize] == INVALID {
+                cycle.push(outer_dual[incoming as usize]);
+            }
+            for (i, &h) in cycle.iter().enumerate() {
+                next[h as usize] = cycle[(i + 1) % cycle.len()];
+            }
+            self.cell_edge[s as usize] = cycle[0];
+        }
+        self.vertices = vertices;
+        self.triangle_vertex = triangle_vertex;
+        self.origin = origin;
+        self.site = site;
+        self.finish_links(next);
+    }
+
+    /// All sites on a line: the cells are slabs between parallel bisectors.
+    fn build_parallel(&mut self) {
+        let chain = self.delaunay.hull.clone();
+        let m = chain.len() - 1;
+        self.origin = vec![INVALID; 2 * m];
+        self.site = Vec::with_capacity(2 * m);
+        for w in chain.windows(2) {
+            self.site.push(w[0]);
+            self.site.push(w[1]);
+        }
+        let mut next = vec![INVALID; 2 * m];
+        for k in 0..m {
+            // Cell of chain[k+1] holds 2k+1 (towards chain[k]) and 2k+2 (towards chain[k+2]).
+            let left_of_next = 2 * k as u32 + 1;
+            let right_of_next = if k + 1 < m {
+                2 * k as u32 + 2
+            } else {
+                left_of_next
+            };
+            next[left_of_next as usize] = right_of_next;
+            next[right_of_next as usize] = left_of_next;
+            self.cell_edge[chain[k + 1] as usize] = left_of_next;
+        }
+        next[0] = 0;
+        self.cell_edge[chain[0] as usize] = 0;
+        self.finish_links(next);
+    }
+
+    fn finish_links(&mut self, next: Vec<u32>) {
+        let mut prev = vec![INVALID; next.len()];
+        for (h, &n) in next.iter().enumerate() {
+            if n != INVALID {
+                prev[n as usize] = h as u32;
+            }
+        }
+        let mut vertex_edge = vec![INVALID; self.vertices.len()];
+        for (h, &o) in self.origin.iter().enumerate() {
+            if o != INVALID {
+                vertex_edge[o as usize] = h as u32;
+            }
+        }
+        self.next = next;
+        self.prev = prev;
+        self.vertex_edge = vertex_edge;
+    }
+
+    /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
+    /// scaled frame and mapped back.
+    fn circumcentre(&self, t: u32) -> [f64; 2] {
+        let d = &self.delaunay;
+        let base = 3 * t as usize;
+        let [a, b, c] = [
+            d.triangles[base],
+            d.triangles[base + 1],
+            d.triangles[base + 2],
+        ]
+        .map(|v| d.scaled_point(v));
+        let (bx, by) = (b[0] - a[0], b[1] - a[1]);
+        let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+        let bl = bx * bx + by * by;
+        let cl = cx * cx + cy * cy;
+        let det = 2.0 * (bx * cy - by * cx);
+        let ux = (cy * bl - by * cl) / det;
+        let uy = (bx * cl - cx * bl) / det;
+        [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
+    }
+
+    /// The underlying Delaunay triangulation.
+    pub fn delaunay(&self) -> &Delaunay {
+        &self.delaunay
+    }
+
+    /// Number of Voronoi vertices.
+    pub fn n_vertices(&self) -> usize {
+        self.vertices.len()
+    }
+
+    /// Positions of all Voronoi vertices.
+    pub fn vertices(&self) -> &[[f64; 2]] {
+        &self.vertices
+    }
+
+    /// An outgoing half-edge of vertex `v`.
+    pub fn vertex_edge(&self, v: u32) -> u32 {
+        self.vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Number of half-edges (twice the number of edges).
+    pub fn n_halfedges(&self) -> usize {
+        self.origin.len()
+    }
+
+    /// Start vertex of `h`, [`INVALID`] when it comes from infinity.
+    pub fn origin(&self, h: u32) -> u32 {
+        self.origin[h as usize]
+    }
+
+    /// End vertex of `h`, [`INVALID`] when it runs to infinity.
+    pub fn target(&self, h: u32) -> u32 {
+        self.origin[(h ^ 1) as usize]
+    }
+
+    /// The opposite half-edge (`h ^ 1`).
+    pub fn twin(&self, h: u32) -> u32 {
+        h ^ 1
+    }
+
+    /// Next half-edge counter-clockwise around the same cell.
+    pub fn next(&self, h: u32) -> u32 {
+        self.next[h as usize]
+    }
+
+    /// Previous half-edge around the same cell.
+    pub fn prev(&self, h: u32) -> u32 {
+        self.prev[h as usize]
+    }
+
+    /// The site whose cell `h` bounds (on its left).
+    pub fn site(&self, h: u32) -> u32 {
+        self.site[h as usize]
+    }
+
+    /// The site across `h`.
+    pub fn opposite_site(&self, h: u32) -> u32 {
+        self.site[(h ^ 1) as usize]
+    }
+
+    /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
+    /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
+    pub fn cell_edge(&self, site: u32) -> u32 {
+        let h = self
+            .cell_edge
+            .get(site as usize)
+            .copied()
+            .unwrap_or(INVALID);
+        if h == INVALID || self.origin.is_empty() {
+            return h;
+        }
+        // Unbounded cells start at the edge coming from infinity so that a walk is a chain.
+        let mut g = h;
+        for _ in 0..self.origin.len() {
+            if self.origin[g as usize] == INVALID {
+                return g;
+            }
+            g = self.next[g as usize];
+            if g == h {
+                break;
+            }
+        }
+        h
+    }
+
+    /// Half-edges of the cell of `site`, counter-clockwise (in-ray first for unbounded cells).
+    pub fn cell_halfedges(&self, site: u32) -> Vec<u32> {
+        let start = self.cell_edge(site);
+        let mut out = Vec::new();
+        if start == INVALID {
+            return out;
+        }
+        let mut h = start;
+        loop {
+            out.push(h);
+            h = self.next[h as usize];
+            if h == start || out.len() > self.origin.len() {
+                break;
+            }
+        }
+        out
+    }
+
+    /// Is the cell of `site` bounded?
+    pub fn is_bounded(&self, site: u32) -> bool {
+        let h = self.cell_edge(site);
+        h != INVALID && self.origin[h as usize] != INVALID
+    }
+
+    /// Sites whose cells share an edge with the cell of `site` (Delaunay neighbours not merged
+    /// away by cocircularity), counter-clockwise.
+    pub fn neighbours(&self, site: u32) -> Vec<u32> {
+        self.cell_halfedges(site)
+            .into_iter()
+            .map(|h| self.opposite_site(h))
+            .collect()
+    }
+
+    /// The half-edge of the cell of `a` separating it from the cell of `b`, if they share an edge.
+    pub fn edge_between(&self, a: u32, b: u32) -> Option<u32> {
+        let (a, b) = (self.canonical(a)?, self.canonical(b)?);
+        self.cell_halfedges(a)
+            .into_iter()
+            .find(|&h| self.opposite_site(h) == b)
+    }
+
+    fn canonical(&self, s: u32) -> Option<u32> {
+        self.delaunay.representative.get(s as usize).copied()
+    }
+
+    /// Sites equidistant from vertex `v` (all corners of its merged Delaunay triangles),
+    /// counter-clockwise.
+    pub fn vertex_sites(&self, v: u32) -> Vec<u32> {
+        let start = self.vertex_edge(v);
+        let mut out = Vec::new();
+        if start == INVALID {
+            return out;
+        }
+        let mut h = start;
+        loop {
+            out.push(self.site[h as usize]);
+            // Next outgoing half-edge around v: twin of the previous edge of this cell.
+            h = self.prev[h as usize] ^ 1;
+            if h == start || out.len() > self.origin.len() {
+                break;
+            }
+        }
+        out
+    }
+
+    /// Geometry of the edge of half-edge `h`.
+    pub fn edge_geometry(&self, h: u32) -> EdgeGeometry {
+        let (o, t) = (self.origin(h), self.target(h));
+        let sites = self.delaunay.sites();
+        let (a, b) = (
+            sites[self.site(h) as usize],
+            sites[self.opposite_site(h) as usize],
+        );
+        // Left site a: moving along the bisector with a on the left is direction rot90(b - a).
+        let along = [a[1] - b[1], b[0] - a[0]];
+        match (o == INVALID, t == INVALID) {
+            (false, false) => EdgeGeometry::Segment {
+                from: self.vertices[o as usize],
+                to: self.vertices[t as usize],
+            },
+            (true, false) => EdgeGeometry::Ray {
+                origin: self.vertices[t as usize],
+                direction: [-along[0], -along[1]],
+            },
+            (false, true) => EdgeGeometry::Ray {
+                origin: self.vertices[o as usize],
+                direction: along,
+            },
+            (true, true) => EdgeGeometry::Line {
+                point: [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+                direction: along,
+            },
+        }
+    }
+}
+
+/// Union-find root with path halving.
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let grand = parent[parent[x as usize] as usize];
+        parent[x as usize] = grand;
+        x = grand;
+    }
+    x
+}
