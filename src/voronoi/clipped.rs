@@ -17,7 +17,7 @@ use crate::soup::PolygonSoup;
 #[derive(Clone, Debug)]
 pub struct ClippedCells {
     positions: Vec<[f64; 2]>,
-    offsets: Vec<u32>,
+    ranges: Vec<[u32; 2]>,
     indices: Vec<u32>,
     clip: ClipPolygon,
 }
@@ -124,24 +124,32 @@ impl Voronoi {
             pieces.push(piece);
         }
         let n_sites = self.delaunay.n_sites();
-        let mut offsets = Vec::with_capacity(n_sites + 1);
+        let mut ranges = vec![[0u32, 0u32]; n_sites];
         let mut indices = Vec::with_capacity(pieces.len() * 2 + m);
-        offsets.push(0u32);
         let owner_of_everything = if any_piece {
             INVALID
         } else {
             self.owner_of(clip.vertices()[0])
         };
         let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
-        for s in 0..n_sites as u32 {
+        // Cells in insertion order: neighbouring cells are assembled one after the other.
+        for &s in &self.delaunay.insertion_order {
+            let first = indices.len() as u32;
             if s == owner_of_everything {
                 indices.extend(0..m as u32);
-            } else if self.delaunay.representative[s as usize] == s {
+            } else if self.delaunay.representative[s as usize] == s && self.cell_edge(s) != INVALID
+            {
                 cell_pieces.clear();
-                for h in self.cell_halfedges(s) {
+                let start = self.cell_edge(s);
+                let mut h = start;
+                loop {
                     let p = pieces[(h >> 1) as usize];
                     if p[0] != INVALID {
                         cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
+                    }
+                    h = self.next[h as usize];
+                    if h == start {
+                        break;
                     }
                 }
                 let count = cell_pieces.len();
@@ -156,11 +164,11 @@ impl Voronoi {
                     }
                 }
             }
-            offsets.push(indices.len() as u32);
+            ranges[s as usize] = [first, indices.len() as u32 - first];
         }
         ClippedCells {
             positions: b.positions,
-            offsets,
+            ranges,
             indices,
             clip: clip.clone(),
         }
@@ -264,13 +272,19 @@ impl ClippedCells {
         &self.positions
     }
 
-    /// Offsets into [`ClippedCells::indices`]: the cell of site `s` is
-    /// `indices[offsets[s]..offsets[s + 1]]`.
-    pub fn offsets(&self) -> &[u32] {
-        &self.offsets
+    /// `[start, length]` of every site's cell in [`ClippedCells::indices`]: the cell of site `s`
+    /// is `indices[start..start + length]`.
+    pub fn cell_ranges(&self) -> &[[u32; 2]] {
+        &self.ranges
     }
 
-    /// Position indices of every cell, site after site.
+    /// Number of sites (cells, empty ones included).
+    pub fn n_cells(&self) -> usize {
+        self.ranges.len()
+    }
+
+    /// Position indices of all cells (in an internal, spatially coherent order; see
+    /// [`ClippedCells::cell_ranges`]).
     pub fn indices(&self) -> &[u32] {
         &self.indices
     }
@@ -283,14 +297,13 @@ impl ClippedCells {
     /// Position indices of the cell of `site`, counter-clockwise (empty when the cell misses the
     /// region or the site is a duplicate).
     pub fn cell(&self, site: u32) -> Result<&[u32], VoronoiError> {
-        let s = site as usize;
-        if s + 1 >= self.offsets.len() {
+        let Some(&[start, len]) = self.ranges.get(site as usize) else {
             return Err(VoronoiError::InvalidSite {
                 site,
-                count: self.offsets.len().saturating_sub(1),
+                count: self.ranges.len(),
             });
-        }
-        Ok(&self.indices[self.offsets[s] as usize..self.offsets[s + 1] as usize])
+        };
+        Ok(&self.indices[start as usize..(start + len) as usize])
     }
 
     /// The polygon of the cell of `site`.
@@ -325,8 +338,8 @@ impl ClippedCells {
             ..PolygonSoup::default()
         };
         let mut face_site = Vec::new();
-        for s in 0..self.offsets.len().saturating_sub(1) {
-            let cell = &self.indices[self.offsets[s] as usize..self.offsets[s + 1] as usize];
+        for (s, &[start, len]) in self.ranges.iter().enumerate() {
+            let cell = &self.indices[start as usize..(start + len) as usize];
             if cell.len() >= 3 {
                 soup.face_sizes.push(cell.len() as u32);
                 soup.indices.extend_from_slice(cell);

@@ -54,6 +54,9 @@ pub struct Delaunay {
     pub(crate) vertex_edge: Vec<u32>,
     pub(crate) hull: Vec<u32>,
     pub(crate) dimension: Dimension,
+    /// Sites in insertion order (spatially coherent): per-site passes follow it so that they
+    /// touch memory in the order the triangles were created.
+    pub(crate) insertion_order: Vec<u32>,
 }
 
 impl Delaunay {
@@ -96,6 +99,7 @@ impl Delaunay {
             vertex_edge: vec![INVALID; n],
             hull: Vec::new(),
             dimension: Dimension::Empty,
+            insertion_order: Vec::new(),
         };
         match find_initial_triangle(&result.scaled, &order, &mut representative) {
             Seed::Empty => {}
@@ -117,6 +121,7 @@ impl Delaunay {
             }
         }
         result.canonicalise_representatives(representative);
+        result.insertion_order = order;
         Ok(result)
     }
 

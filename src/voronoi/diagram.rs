@@ -162,28 +162,35 @@ impl Voronoi {
                 dual[t as usize] = h + 1;
             }
         }
+        // Links, one Delaunay half-edge at a time (memory-coherent, no per-site circulation):
+        // after dual(e) comes the dual of the next kept edge counter-clockwise around origin(e),
+        // or, past the hull, the ray out to infinity; after that ray, the cell's in-ray.
         let mut next = vec![INVALID; origin.len()];
-        let mut cycle = Vec::new();
-        for s in 0..d.n_sites() as u32 {
-            cycle.clear();
-            let mut last = INVALID;
-            for e in d.outgoing(s) {
-                if dual[e as usize] != INVALID {
-                    cycle.push(dual[e as usize]);
-                }
-                last = e;
-            }
-            if last == INVALID {
+        for e in 0..d.triangles.len() as u32 {
+            let h = dual[e as usize];
+            if h == INVALID {
                 continue;
             }
-            let incoming = prev_edge(last);
-            if d.twins[incoming as usize] == INVALID {
-                cycle.push(outer_dual[incoming as usize]);
+            let mut cur = e;
+            next[h as usize] = loop {
+                let p = prev_edge(cur);
+                let t = d.twins[p as usize];
+                if t == INVALID {
+                    let out_ray = outer_dual[p as usize];
+                    let a = d.origin(e);
+                    next[out_ray as usize] = dual[d.vertex_edge[a as usize] as usize];
+                    break out_ray;
+                }
+                if !internal[t as usize] {
+                    break dual[t as usize];
+                }
+                cur = t;
+            };
+            let a = d.origin(e) as usize;
+            // The in-ray of an unbounded cell is its first half-edge.
+            if self.cell_edge[a] == INVALID || d.twins[e as usize] == INVALID {
+                self.cell_edge[a] = h;
             }
-            for (i, &h) in cycle.iter().enumerate() {
-                next[h as usize] = cycle[(i + 1) % cycle.len()];
-            }
-            self.cell_edge[s as usize] = cycle[0];
         }
         self.vertices = vertices;
         self.triangle_vertex = triangle_vertex;
@@ -322,26 +329,10 @@ impl Voronoi {
     /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
     /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
     pub fn cell_edge(&self, site: u32) -> u32 {
-        let h = self
-            .cell_edge
+        self.cell_edge
             .get(site as usize)
             .copied()
-            .unwrap_or(INVALID);
-        if h == INVALID || self.origin.is_empty() {
-            return h;
-        }
-        // Unbounded cells start at the edge coming from infinity so that a walk is a chain.
-        let mut g = h;
-        for _ in 0..self.origin.len() {
-            if self.origin[g as usize] == INVALID {
-                return g;
-            }
-            g = self.next[g as usize];
-            if g == h {
-                break;
-            }
-        }
-        h
+            .unwrap_or(INVALID)
     }
 
     /// Half-edges of the cell of `site`, counter-clockwise (in-ray first for unbounded cells).

@@ -8,19 +8,112 @@ fn coord(p: [f64; 2]) -> Coord<f64> {
     Coord { x: p[0], y: p[1] }
 }
 
+/// Shewchuk's machine epsilon (half an ulp of 1).
+const HALF_EPSILON: f64 = f64::EPSILON * 0.5;
+/// Error bound of the floating-point orientation determinant (Shewchuk's `ccwerrboundA`).
+const ORIENT_BOUND: f64 = (3.0 + 16.0 * HALF_EPSILON) * HALF_EPSILON;
+/// Error bound of the floating-point in-circle determinant (Shewchuk's `iccerrboundA`).
+const INCIRCLE_BOUND: f64 = (10.0 + 96.0 * HALF_EPSILON) * HALF_EPSILON;
+
 /// Orientation of the triangle `a, b, c`: positive when counter-clockwise (`c` left of `a → b`),
 /// negative when clockwise, exactly zero when collinear.
+///
+/// Evaluation: the floating-point determinant when its error bound decides the sign; otherwise
+/// the same determinant when the coordinate differences lie on a coarse power-of-two lattice that
+/// makes it exact (integer grids: their many exact zeros would all need the slow path); otherwise
+/// Shewchuk's adaptive exact arithmetic.
 #[inline(always)]
 pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    let (acx, acy, bcx, bcy) = (a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]);
+    let left = acx * bcy;
+    let right = acy * bcx;
+    let det = left - right;
+    if (det).abs() > ORIENT_BOUND * (left.abs() + right.abs()) {
+        return det;
+    }
+    orient2d_slow(a, b, c, det)
+}
+
+#[cold]
+fn orient2d_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], det: f64) -> f64 {
+    if on_small_lattice([(a[0], c[0]), (a[1], c[1]), (b[0], c[0]), (b[1], c[1])], 25) {
+        return det;
+    }
     robust::orient2d(coord(a), coord(b), coord(c))
 }
 
 /// In-circle test: for a counter-clockwise triangle `a, b, c`, positive when `d` lies strictly
 /// inside its circumcircle, negative when strictly outside, exactly zero when the four points are
-/// cocircular. (For a clockwise triangle the sign flips.)
+/// cocircular. (For a clockwise triangle the sign flips.) Evaluated like [`orient2d`].
 #[inline(always)]
 pub fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    let (adx, ady) = (a[0] - d[0], a[1] - d[1]);
+    let (bdx, bdy) = (b[0] - d[0], b[1] - d[1]);
+    let (cdx, cdy) = (c[0] - d[0], c[1] - d[1]);
+    let (bdxcdy, cdxbdy) = (bdx * cdy, cdx * bdy);
+    let (cdxady, adxcdy) = (cdx * ady, adx * cdy);
+    let (adxbdy, bdxady) = (adx * bdy, bdx * ady);
+    let alift = adx * adx + ady * ady;
+    let blift = bdx * bdx + bdy * bdy;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
+        + (cdxady.abs() + adxcdy.abs()) * blift
+        + (adxbdy.abs() + bdxady.abs()) * clift;
+    if det.abs() > INCIRCLE_BOUND * permanent {
+        return det;
+    }
+    incircle_slow(a, b, c, d, det)
+}
+
+#[cold]
+fn incircle_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], det: f64) -> f64 {
+    let diffs = [
+        (a[0], d[0]),
+        (a[1], d[1]),
+        (b[0], d[0]),
+        (b[1], d[1]),
+        (c[0], d[0]),
+        (c[1], d[1]),
+    ];
+    if on_small_lattice(diffs, 12) {
+        return det;
+    }
     robust::incircle(coord(a), coord(b), coord(c), coord(d))
+}
+
+/// True when every difference `x - y` is computed exactly and all of them are integer multiples
+/// of one power of two `u` with magnitude below `2^bits · u` (and `u` far from underflow). Then
+/// the floating-point orientation (`bits = 25`) or in-circle (`bits = 12`) determinant is exact:
+/// every product and sum stays below `2^53` units of its lattice.
+fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
+    let mut largest = 0.0_f64;
+    let mut diffs = [0.0; N];
+    for (k, &(x, y)) in pairs.iter().enumerate() {
+        let d = x - y;
+        // Exactness of the subtraction (Dekker/Knuth two-difference error term is zero).
+        let y_virtual = x - d;
+        let x_virtual = d + y_virtual;
+        if (x - x_virtual) + (y_virtual - y) != 0.0 {
+            return false;
+        }
+        diffs[k] = d;
+        largest = largest.max(d.abs());
+    }
+    if largest == 0.0 {
+        return true;
+    }
+    // u = 2^(e + 1 - bits) where 2^e <= largest < 2^(e+1).
+    let biased_exponent = ((largest.to_bits() >> 52) & 0x7ff) as i32;
+    let unit_exponent = biased_exponent - 1023 + 1 - bits;
+    if !(-240..=240).contains(&unit_exponent) || biased_exponent == 0 {
+        return false;
+    }
+    let inverse_unit = pow2(-unit_exponent);
+    diffs.iter().all(|&d| {
+        let units = d * inverse_unit;
+        units == units.trunc()
+    })
 }
 
 /// The power of two by which sites are multiplied before any predicate is evaluated, so that
@@ -91,6 +184,34 @@ mod tests {
         // A point displaced from the circle by one ulp must not be reported as cocircular.
         let d = [1.0, 1.0 + f64::EPSILON];
         assert!(incircle([0.0, 0.0], [1.0, 0.0], [0.0, 1.0], d) < 0.0);
+    }
+
+    #[test]
+    fn lattice_shortcut_agrees_with_adaptive_arithmetic() {
+        // Integer grids (exact zeros) and near-lattice perturbations.
+        let pts: Vec<[f64; 2]> = (0..36)
+            .map(|i| [(i % 6) as f64 * 0.25, (i / 6) as f64 * 0.25])
+            .collect();
+        let coord = |p: [f64; 2]| Coord { x: p[0], y: p[1] };
+        for (i, &a) in pts.iter().enumerate().step_by(5) {
+            for &b in pts.iter().skip(i % 3).step_by(4) {
+                for &c in pts.iter().skip(1).step_by(7) {
+                    let o = robust::orient2d(coord(a), coord(b), coord(c));
+                    assert_eq!(orient2d(a, b, c).signum(), o.signum());
+                    assert_eq!(orient2d(a, b, c) == 0.0, o == 0.0);
+                    for &d in pts.iter().step_by(3) {
+                        let r = robust::incircle(coord(a), coord(b), coord(c), coord(d));
+                        let mine = incircle(a, b, c, d);
+                        assert_eq!((mine > 0.0, mine < 0.0), (r > 0.0, r < 0.0));
+                    }
+                }
+            }
+        }
+        // Differences that are not exact must not take the shortcut.
+        let big = 9007199254740992.0; // 2^53
+        assert!(!on_small_lattice([(big, 1.0), (0.0, 0.0)], 25));
+        assert!(on_small_lattice([(3.0, 1.0), (0.5, 0.0)], 25));
+        assert!(!on_small_lattice([(3.0, 1.0), (0.1, 0.0)], 25));
     }
 
     #[test]

@@ -49,7 +49,7 @@ pub fn to_svg(voronoi: &Voronoi, cells: &ClippedCells, options: &SvgOptions) -> 
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{:.0}" height="{:.0}" viewBox="0 0 {} {}">"#,
         options.width_px, height_px, options.width_px, height_px
     );
-    let n_sites = cells.offsets().len().saturating_sub(1);
+    let n_sites = cells.n_cells();
     for s in 0..n_sites as u32 {
         let Ok(cell) = cells.cell(s) else { continue };
         if cell.len() < 3 {

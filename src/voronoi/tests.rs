@@ -309,7 +309,7 @@ fn soup_export_shares_vertices() {
         .keys()
         .filter(|&&(a, b)| !directed.contains_key(&(b, a)))
         .count();
-    assert!(boundary >= 4 && boundary < 200);
+    assert!((4..200).contains(&boundary));
 }
 
 #[test]
