@@ -43,8 +43,9 @@ pub enum EdgeGeometry {
 ///   through infinity: the half-edge running out to infinity ([`Voronoi::origin`] of its twin is
 ///   [`INVALID`]) is followed by the one coming back (its own origin is [`INVALID`]).
 /// * Cocircular sites give one vertex of degree > 3 (Delaunay triangles with the same
-///   circumcircle, decided exactly with the in-circle predicate, are merged); no edge has zero
-///   length in exact arithmetic.
+///   circumcircle, decided exactly with the in-circle predicate, are merged). Adjacent triangles
+///   whose circumcentres round to the same floating-point point are merged too, so no edge has
+///   zero length in the output.
 /// * Cells are indexed by site; duplicates (see [`Delaunay::representative`]) have no cell of
 ///   their own.
 #[derive(Clone, Debug)]
@@ -92,7 +93,10 @@ impl Voronoi {
     fn build_planar(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
-        // Union-find over triangles: adjacent triangles whose fourth point is exactly cocircular.
+        let centres: Vec<[f64; 2]> = (0..n_tri as u32).map(|t| self.circumcentre(t)).collect();
+        // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
+        // point is exactly cocircular, and also when their circumcentres round to the same point
+        // (so that no edge has zero length in the floating-point output either).
         let mut parent: Vec<u32> = (0..n_tri as u32).collect();
         let mut internal = vec![false; d.triangles.len()];
         for e in 0..d.triangles.len() as u32 {
@@ -100,20 +104,22 @@ impl Voronoi {
             if t == INVALID || t < e {
                 continue;
             }
-            let base = 3 * (e / 3) as usize;
-            let [a, b, c] = [
-                d.triangles[base],
-                d.triangles[base + 1],
-                d.triangles[base + 2],
-            ];
-            let apex = d.origin(prev_edge(t));
-            let s = incircle(
-                d.scaled_point(a),
-                d.scaled_point(b),
-                d.scaled_point(c),
-                d.scaled_point(apex),
-            );
-            if s == 0.0 {
+            let merge = centres[(e / 3) as usize] == centres[(t / 3) as usize] || {
+                let base = 3 * (e / 3) as usize;
+                let [a, b, c] = [
+                    d.triangles[base],
+                    d.triangles[base + 1],
+                    d.triangles[base + 2],
+                ];
+                let apex = d.origin(prev_edge(t));
+                incircle(
+                    d.scaled_point(a),
+                    d.scaled_point(b),
+                    d.scaled_point(c),
+                    d.scaled_point(apex),
+                ) == 0.0
+            };
+            if merge {
                 internal[e as usize] = true;
                 internal[t as usize] = true;
                 let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
@@ -128,7 +134,7 @@ impl Voronoi {
             let root = find(&mut parent, t);
             if triangle_vertex[root as usize] == INVALID {
                 triangle_vertex[root as usize] = vertices.len() as u32;
-                vertices.push(self.circumcentre(root));
+                vertices.push(centres[root as usize]);
             }
             triangle_vertex[t as usize] = triangle_vertex[root as usize];
         }
@@ -246,7 +252,7 @@ impl Voronoi {
     }
 
     /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
-    /// scaled frame and mapped back.
+    /// scaled frame and mapped back (dividing by a power of two is exact).
     fn circumcentre(&self, t: u32) -> [f64; 2] {
         let d = &self.delaunay;
         let base = 3 * t as usize;
@@ -258,11 +264,14 @@ impl Voronoi {
         .map(|v| d.scaled_point(v));
         let (bx, by) = (b[0] - a[0], b[1] - a[1]);
         let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
-        let bl = bx * bx + by * by;
-        let cl = cx * cx + cy * cy;
-        let det = 2.0 * (bx * cy - by * cx);
-        let ux = (cy * bl - by * cl) / det;
-        let uy = (bx * cl - cx * bl) / det;
+        let naive = bx * cy - by * cx;
+        let (a, det, ux, uy) = if naive.abs() >= 1e-6 * ((bx * cy).abs() + (by * cx).abs()) {
+            let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
+            (a, 2.0 * naive, cy * bl - by * cl, bx * cl - cx * bl)
+        } else {
+            sliver_circumcentre_offset(a, b, c)
+        };
+        let (ux, uy) = (ux / det, uy / det);
         [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
     }
 
@@ -429,6 +438,41 @@ impl Voronoi {
             },
         }
     }
+}
+
+/// Circumcentre of a nearly degenerate triangle as `(origin, 2·det, x·det, y·det)` offsets.
+///
+/// The origin is an endpoint of the shortest edge: then the short edge vector is exact and small,
+/// its squared length cannot cancel against the other's, and the fused-multiply-add differences
+/// of products keep the few significant digits that decide where the centre lies.
+#[cold]
+fn sliver_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> ([f64; 2], f64, f64, f64) {
+    let length2 = |p: [f64; 2], q: [f64; 2]| (q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2);
+    let (ab, bc, ca) = (length2(a, b), length2(b, c), length2(c, a));
+    let (a, b, c) = if ab <= bc && ab <= ca {
+        (a, b, c)
+    } else if bc <= ca {
+        (b, c, a)
+    } else {
+        (c, a, b)
+    };
+    let (bx, by) = (b[0] - a[0], b[1] - a[1]);
+    let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+    let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
+    (
+        a,
+        2.0 * difference_of_products(bx, cy, by, cx),
+        difference_of_products(cy, bl, by, cl),
+        difference_of_products(bx, cl, cx, bl),
+    )
+}
+
+/// `a·b − c·d` to within about one ulp (Kahan's algorithm with fused multiply-adds).
+#[inline]
+fn difference_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let cd = c * d;
+    let cd_error = (-c).mul_add(d, cd);
+    a.mul_add(b, -cd) + cd_error
 }
 
 /// Union-find root with path halving.
