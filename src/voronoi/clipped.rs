@@ -106,14 +106,34 @@ impl Voronoi {
             crossings: Vec::new(),
         };
         // Voronoi vertices inside (closed test) get a position; the same test decides every edge.
+        // Those exactly on the boundary become perimeter points (or the corner they sit on), so
+        // that the walk along the boundary knows where they are.
         let mut vertex_position = vec![INVALID; self.vertices.len()];
+        let mut on_boundary = Vec::new();
         for (v, p) in self.vertices.iter().enumerate() {
-            if clip.contains(*p) {
+            let lowest = (0..m)
+                .map(|i| clip.edge_function(i, *p))
+                .fold(f64::INFINITY, f64::min);
+            if lowest > 0.0 {
                 vertex_position[v] = b.positions.len() as u32;
                 b.positions.push(*p);
+            } else if lowest == 0.0 {
+                on_boundary.push(v);
             }
         }
         b.first_crossing = b.positions.len();
+        for &v in &on_boundary {
+            let p = self.vertices[v];
+            let zero = |i: usize| clip.edge_function(i % m, p) == 0.0;
+            let i = (0..m).find(|&i| zero(i)).unwrap_or(0);
+            vertex_position[v] = if zero(i + 1) {
+                ((i + 1) % m) as u32
+            } else if zero(i + m - 1) {
+                i as u32
+            } else {
+                b.crossing(i, p)
+            };
+        }
         // One clipped piece per undirected edge, oriented like its even half-edge.
         let n_edges = self.n_halfedges() / 2;
         let mut pieces: Vec<[u32; 2]> = Vec::with_capacity(n_edges);
@@ -155,10 +175,12 @@ impl Voronoi {
                 let count = cell_pieces.len();
                 for (i, &[start, end]) in cell_pieces.iter().enumerate() {
                     indices.push(start);
-                    if let Some(exit) = b.perimeter(end) {
-                        indices.push(end);
-                        let next_start = cell_pieces[(i + 1) % count][0];
-                        if let Some(entry) = b.perimeter(next_start) {
+                    let next_start = cell_pieces[(i + 1) % count][0];
+                    // A piece ending on the boundary is followed by the boundary up to where the
+                    // next piece starts (nothing when the next piece starts right there).
+                    if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
+                        if end != next_start {
+                            indices.push(end);
                             b.corners_between(exit, entry, &mut indices);
                         }
                     }
