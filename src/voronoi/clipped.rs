@@ -149,9 +149,18 @@ impl Voronoi {
         let owner_of_everything = if any_piece {
             INVALID
         } else {
-            self.owner_of(clip.vertices()[0])
+            self.owner_of(clip.centroid())
         };
         let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
+        // What the cell walk reads, one record per half-edge (one cache line fetch per step):
+        // the next half-edge and the piece oriented along this half-edge.
+        let walk: Vec<[u32; 3]> = (0..self.n_halfedges())
+            .map(|h| {
+                let p = pieces[h >> 1];
+                let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
+                [self.next[h], a, b]
+            })
+            .collect();
         // Cells in insertion order: neighbouring cells are assembled one after the other.
         for &s in &self.delaunay.insertion_order {
             let first = indices.len() as u32;
@@ -163,11 +172,11 @@ impl Voronoi {
                 let start = self.cell_edge(s);
                 let mut h = start;
                 loop {
-                    let p = pieces[(h >> 1) as usize];
-                    if p[0] != INVALID {
-                        cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
+                    let [next, a, b] = walk[h as usize];
+                    if a != INVALID {
+                        cell_pieces.push([a, b]);
                     }
-                    h = self.next[h as usize];
+                    h = next;
                     if h == start {
                         break;
                     }

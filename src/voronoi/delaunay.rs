@@ -54,6 +54,10 @@ pub struct Delaunay {
     pub(crate) vertex_edge: Vec<u32>,
     pub(crate) hull: Vec<u32>,
     pub(crate) dimension: Dimension,
+    /// Scaled coordinates in insertion order, and the insertion rank of every triangle corner:
+    /// passes over the triangles read coordinates through these, sequentially in memory.
+    pub(crate) ranked: Vec<[f64; 2]>,
+    pub(crate) corner_ranks: Vec<u32>,
     /// Sites in insertion order (spatially coherent): per-site passes follow it so that they
     /// touch memory in the order the triangles were created.
     pub(crate) insertion_order: Vec<u32>,
@@ -100,24 +104,35 @@ impl Delaunay {
             hull: Vec::new(),
             dimension: Dimension::Empty,
             insertion_order: Vec::new(),
+            ranked: Vec::new(),
+            corner_ranks: Vec::new(),
         };
-        match find_initial_triangle(&result.scaled, &order, &mut representative) {
+        // The triangulation is built on vertices numbered by insertion rank, with coordinates
+        // stored in that (space-filling-curve) order: walks and cavities then touch memory
+        // sequentially instead of jumping across the input. Ranks map back to sites at the end.
+        let sorted: Vec<[f64; 2]> = order.iter().map(|&s| result.scaled[s as usize]).collect();
+        let ranks: Vec<u32> = (0..n as u32).collect();
+        let mut rank_representative = ranks.clone();
+        match find_initial_triangle(&sorted, &ranks, &mut rank_representative) {
             Seed::Empty => {}
             Seed::Degenerate => result.build_collinear(&mut representative),
             Seed::Triangle { a, b, c, position } => {
-                let pts = &result.scaled;
-                let mut tri = GhostTriangulation::new(pts, a, b, c, 6 * n + 12);
+                let mut tri = GhostTriangulation::new(&sorted, a, b, c, 6 * n + 12);
                 // Sites skipped while looking for the seed triangle come first, then the rest.
-                for &s in order[..position].iter().chain(&order[position + 1..]) {
-                    if s == a || s == b || representative[s as usize] != s {
+                for k in (0..n as u32).filter(|&k| k as usize != position) {
+                    if k == a || k == b || rank_representative[k as usize] != k {
                         continue;
                     }
-                    if let Some(existing) = tri.insert(s) {
-                        representative[s as usize] = existing;
+                    if let Some(existing) = tri.insert(k) {
+                        rank_representative[k as usize] = existing;
                     }
                 }
+                for (k, &r) in rank_representative.iter().enumerate() {
+                    representative[order[k] as usize] = order[r as usize];
+                }
                 let (origin, twin) = (tri.origin, tri.twin);
-                result.finish_planar(origin, twin);
+                result.finish_planar(origin, twin, &order);
+                result.ranked = sorted;
             }
         }
         result.canonicalise_representatives(representative);
@@ -126,7 +141,8 @@ impl Delaunay {
     }
 
     /// Copies the real triangles out of the ghost triangulation and walks the hull.
-    fn finish_planar(&mut self, origin: Vec<u32>, twin: Vec<u32>) {
+    /// `to_site` maps the builder's vertex numbers (insertion ranks) to site indices.
+    fn finish_planar(&mut self, origin: Vec<u32>, twin: Vec<u32>, to_site: &[u32]) {
         let n_all = origin.len() / 3;
         let is_ghost = |t: usize| {
             origin[3 * t] == GHOST || origin[3 * t + 1] == GHOST || origin[3 * t + 2] == GHOST
@@ -140,6 +156,7 @@ impl Delaunay {
             }
         }
         let mut triangles = Vec::with_capacity(3 * count as usize);
+        let mut corner_ranks = Vec::with_capacity(3 * count as usize);
         let mut twins = Vec::with_capacity(3 * count as usize);
         let mut some_ghost = INVALID;
         for t in 0..n_all {
@@ -148,7 +165,8 @@ impl Delaunay {
                 continue;
             }
             for e in 3 * t..3 * t + 3 {
-                triangles.push(origin[e]);
+                triangles.push(to_site[origin[e] as usize]);
+                corner_ranks.push(origin[e]);
                 let o = twin[e] as usize;
                 let nt = new_index[o / 3];
                 twins.push(if nt == INVALID {
@@ -171,7 +189,7 @@ impl Delaunay {
             let finite = base + (k + 1) % 3; // u → v
             let from_infinity = base + k; // ∞ → u
             let v = origin[next_edge(finite) as usize];
-            hull.push(v);
+            hull.push(to_site[v as usize]);
             g = twin[from_infinity as usize] / 3;
             if g == start || hull.len() > n_all {
                 break;
@@ -187,6 +205,7 @@ impl Delaunay {
             }
         }
         self.triangles = triangles;
+        self.corner_ranks = corner_ranks;
         self.twins = twins;
         self.hull = hull;
         self.dimension = Dimension::Plane;
@@ -364,6 +383,12 @@ impl Delaunay {
             corner_normals: None,
             corner_uvs: None,
         }
+    }
+
+    /// Scaled coordinates of the start of half-edge `e` (read in triangle order, coherently).
+    #[inline(always)]
+    pub(crate) fn corner_point(&self, e: u32) -> [f64; 2] {
+        self.ranked[self.corner_ranks[e as usize] as usize]
     }
 
     /// Scaled coordinates used by the exact predicates.

@@ -105,19 +105,9 @@ impl Voronoi {
                 continue;
             }
             let merge = centres[(e / 3) as usize] == centres[(t / 3) as usize] || {
-                let base = 3 * (e / 3) as usize;
-                let [a, b, c] = [
-                    d.triangles[base],
-                    d.triangles[base + 1],
-                    d.triangles[base + 2],
-                ];
-                let apex = d.origin(prev_edge(t));
-                incircle(
-                    d.scaled_point(a),
-                    d.scaled_point(b),
-                    d.scaled_point(c),
-                    d.scaled_point(apex),
-                ) == 0.0
+                let base = 3 * (e / 3);
+                let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
             };
             if merge {
                 internal[e as usize] = true;
@@ -255,13 +245,8 @@ impl Voronoi {
     /// scaled frame and mapped back (dividing by a power of two is exact).
     fn circumcentre(&self, t: u32) -> [f64; 2] {
         let d = &self.delaunay;
-        let base = 3 * t as usize;
-        let [a, b, c] = [
-            d.triangles[base],
-            d.triangles[base + 1],
-            d.triangles[base + 2],
-        ]
-        .map(|v| d.scaled_point(v));
+        let base = 3 * t;
+        let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
         let (bx, by) = (b[0] - a[0], b[1] - a[1]);
         let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
         let naive = bx * cy - by * cx;
@@ -412,6 +397,12 @@ impl Voronoi {
     /// Geometry of the edge of half-edge `h`.
     pub fn edge_geometry(&self, h: u32) -> EdgeGeometry {
         let (o, t) = (self.origin(h), self.target(h));
+        if o != INVALID && t != INVALID {
+            return EdgeGeometry::Segment {
+                from: self.vertices[o as usize],
+                to: self.vertices[t as usize],
+            };
+        }
         let sites = self.delaunay.sites();
         let (a, b) = (
             sites[self.site(h) as usize],
@@ -420,10 +411,6 @@ impl Voronoi {
         // Left site a: moving along the bisector with a on the left is direction rot90(b - a).
         let along = [a[1] - b[1], b[0] - a[0]];
         match (o == INVALID, t == INVALID) {
-            (false, false) => EdgeGeometry::Segment {
-                from: self.vertices[o as usize],
-                to: self.vertices[t as usize],
-            },
             (true, false) => EdgeGeometry::Ray {
                 origin: self.vertices[t as usize],
                 direction: [-along[0], -along[1]],
@@ -432,7 +419,7 @@ impl Voronoi {
                 origin: self.vertices[o as usize],
                 direction: along,
             },
-            (true, true) => EdgeGeometry::Line {
+            _ => EdgeGeometry::Line {
                 point: [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
                 direction: along,
             },
