@@ -166,8 +166,8 @@ impl Voronoi {
             let first = indices.len() as u32;
             if s == owner_of_everything {
                 indices.extend(0..m as u32);
-            } else if self.delaunay.representative[s as usize] == s && self.cell_edge(s) != INVALID
-            {
+            } else if self.cell_edge(s) != INVALID {
+                // (Duplicates have no cell edge.)
                 cell_pieces.clear();
                 let start = self.cell_edge(s);
                 let mut h = start;

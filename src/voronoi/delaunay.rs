@@ -147,33 +147,50 @@ impl Delaunay {
         let is_ghost = |t: usize| {
             origin[3 * t] == GHOST || origin[3 * t + 1] == GHOST || origin[3 * t + 2] == GHOST
         };
-        let mut new_index = vec![INVALID; n_all];
-        let mut count = 0u32;
-        for (t, slot) in new_index.iter_mut().enumerate() {
-            if !is_ghost(t) {
-                *slot = count;
-                count += 1;
-            }
-        }
-        let mut triangles = Vec::with_capacity(3 * count as usize);
-        let mut corner_ranks = Vec::with_capacity(3 * count as usize);
-        let mut twins = Vec::with_capacity(3 * count as usize);
+        // Real triangles are renumbered by their newest corner (a counting sort on insertion
+        // rank): slot reuse during construction scatters neighbours across the array, and every
+        // later pass (Voronoi vertices, links, clipping) walks neighbours, so the output order is
+        // made spatially coherent once here.
+        let mut start = vec![0u32; to_site.len() + 1];
+        let newest =
+            |t: usize| origin[3 * t].max(origin[3 * t + 1]).max(origin[3 * t + 2]) as usize;
         let mut some_ghost = INVALID;
         for t in 0..n_all {
-            if new_index[t] == INVALID {
+            if is_ghost(t) {
                 some_ghost = t as u32;
+            } else {
+                start[newest(t) + 1] += 1;
+            }
+        }
+        for k in 1..start.len() {
+            start[k] += start[k - 1];
+        }
+        let count = start[to_site.len()] as usize;
+        let mut new_index = vec![INVALID; n_all];
+        for (t, slot) in new_index.iter_mut().enumerate() {
+            if !is_ghost(t) {
+                let key = newest(t);
+                *slot = start[key];
+                start[key] += 1;
+            }
+        }
+        let mut triangles = vec![0u32; 3 * count];
+        let mut corner_ranks = vec![0u32; 3 * count];
+        let mut twins = vec![INVALID; 3 * count];
+        for t in 0..n_all {
+            let nt = new_index[t];
+            if nt == INVALID {
                 continue;
             }
-            for e in 3 * t..3 * t + 3 {
-                triangles.push(to_site[origin[e] as usize]);
-                corner_ranks.push(origin[e]);
+            for k in 0..3 {
+                let (e, ne) = (3 * t + k, 3 * nt as usize + k);
+                triangles[ne] = to_site[origin[e] as usize];
+                corner_ranks[ne] = origin[e];
                 let o = twin[e] as usize;
-                let nt = new_index[o / 3];
-                twins.push(if nt == INVALID {
-                    INVALID
-                } else {
-                    3 * nt + (o % 3) as u32
-                });
+                let no = new_index[o / 3];
+                if no != INVALID {
+                    twins[ne] = 3 * no + (o % 3) as u32;
+                }
             }
         }
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
@@ -392,6 +409,7 @@ impl Delaunay {
     }
 
     /// Scaled coordinates used by the exact predicates.
+    #[cfg(test)]
     #[inline(always)]
     pub(crate) fn scaled_point(&self, v: u32) -> [f64; 2] {
         self.scaled[v as usize]
