@@ -118,20 +118,25 @@ impl Voronoi {
                 }
             }
         }
-        let mut triangle_vertex = vec![INVALID; n_tri];
-        let mut vertices = Vec::with_capacity(n_tri);
-        for t in 0..n_tri as u32 {
-            let root = find(&mut parent, t);
-            if triangle_vertex[root as usize] == INVALID {
-                triangle_vertex[root as usize] = vertices.len() as u32;
-                vertices.push(centres[root as usize]);
+        let (triangle_vertex, vertices) = if internal.iter().any(|&i| i) {
+            let mut triangle_vertex = vec![INVALID; n_tri];
+            let mut vertices = Vec::with_capacity(n_tri);
+            for t in 0..n_tri as u32 {
+                let root = find(&mut parent, t);
+                if triangle_vertex[root as usize] == INVALID {
+                    triangle_vertex[root as usize] = vertices.len() as u32;
+                    vertices.push(centres[root as usize]);
+                }
+                triangle_vertex[t as usize] = triangle_vertex[root as usize];
             }
-            triangle_vertex[t as usize] = triangle_vertex[root as usize];
-        }
+            (triangle_vertex, vertices)
+        } else {
+            // No cocircular or coincident pair (the usual case): one vertex per triangle.
+            ((0..n_tri as u32).collect(), centres)
+        };
         // Half-edges: a pair per kept Delaunay edge; the even one is dual to the Delaunay
         // half-edge `e` (cell of origin(e)), the odd one to its twin (or the hull's outer side).
         let mut dual = vec![INVALID; d.triangles.len()];
-        let mut outer_dual = vec![INVALID; d.triangles.len()];
         let n_half = internal.iter().filter(|&&i| !i).count() * 2; // upper bound, exact below
         let mut origin = Vec::with_capacity(n_half);
         let mut site = Vec::with_capacity(n_half);
@@ -152,9 +157,8 @@ impl Voronoi {
             origin.push(here);
             site.push(d.origin(next_edge(e)));
             dual[e as usize] = h;
-            if t == INVALID {
-                outer_dual[e as usize] = h + 1;
-            } else {
+            // The outer side of a hull edge is simply the pair `dual[e] ^ 1`.
+            if t != INVALID {
                 dual[t as usize] = h + 1;
             }
         }
@@ -172,7 +176,7 @@ impl Voronoi {
                 let p = prev_edge(cur);
                 let t = d.twins[p as usize];
                 if t == INVALID {
-                    let out_ray = outer_dual[p as usize];
+                    let out_ray = dual[p as usize] ^ 1;
                     let a = d.origin(e);
                     next[out_ray as usize] = dual[d.vertex_edge[a as usize] as usize];
                     break out_ray;
