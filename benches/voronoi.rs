@@ -3,7 +3,7 @@
 //!
 //! Run: `cargo bench --bench voronoi` (single-threaded: construction does not use rayon).
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
 use halfwing::voronoi::{ClipPolygon, Delaunay, Voronoi};
 use std::hint::black_box;
 
@@ -54,6 +54,20 @@ fn bench(c: &mut Criterion) {
                 let v = Voronoi::new(black_box(s)).expect("finite sites");
                 black_box(v.clip(clip))
             })
+        });
+    }
+    group.finish();
+    // The dual and the clipping alone, from a finished triangulation (not in the table,
+    // but it separates the two costs).
+    let mut group = c.benchmark_group("voronoi_clip_only");
+    group.sample_size(10);
+    for (name, sites, clip) in &inputs {
+        group.bench_with_input(BenchmarkId::from_parameter(name), sites, |b, s| {
+            b.iter_batched(
+                || Delaunay::new(s).expect("finite sites"),
+                |d| black_box(Voronoi::from_delaunay(d).clip(clip)),
+                BatchSize::LargeInput,
+            )
         });
     }
     group.finish();

@@ -161,37 +161,46 @@ impl Voronoi {
                 [self.next[h], a, b]
             })
             .collect();
-        // Cells in insertion order: neighbouring cells are assembled one after the other.
-        for &s in &self.delaunay.insertion_order {
+        // Cells in the order of their first half-edge, which follows the (spatially coherent)
+        // triangle order, so that consecutive cells share cache lines.
+        let mut cell_at = vec![INVALID; self.n_halfedges()];
+        for (site, &h) in self.cell_edge.iter().enumerate() {
+            if h != INVALID {
+                cell_at[h as usize] = site as u32;
+            }
+        }
+        if owner_of_everything != INVALID {
+            ranges[owner_of_everything as usize] = [indices.len() as u32, m as u32];
+            indices.extend(0..m as u32);
+        }
+        for (start, &s) in cell_at.iter().enumerate() {
+            if s == INVALID || s == owner_of_everything {
+                continue;
+            }
             let first = indices.len() as u32;
-            if s == owner_of_everything {
-                indices.extend(0..m as u32);
-            } else if self.cell_edge(s) != INVALID {
-                // (Duplicates have no cell edge.)
-                cell_pieces.clear();
-                let start = self.cell_edge(s);
-                let mut h = start;
-                loop {
-                    let [next, a, b] = walk[h as usize];
-                    if a != INVALID {
-                        cell_pieces.push([a, b]);
-                    }
-                    h = next;
-                    if h == start {
-                        break;
-                    }
+            cell_pieces.clear();
+            let start = start as u32;
+            let mut h = start;
+            loop {
+                let [next, a, b] = walk[h as usize];
+                if a != INVALID {
+                    cell_pieces.push([a, b]);
                 }
-                let count = cell_pieces.len();
-                for (i, &[start, end]) in cell_pieces.iter().enumerate() {
-                    indices.push(start);
-                    let next_start = cell_pieces[(i + 1) % count][0];
-                    // A piece ending on the boundary is followed by the boundary up to where the
-                    // next piece starts (nothing when the next piece starts right there).
-                    if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
-                        if end != next_start {
-                            indices.push(end);
-                            b.corners_between(exit, entry, &mut indices);
-                        }
+                h = next;
+                if h == start {
+                    break;
+                }
+            }
+            let count = cell_pieces.len();
+            for (i, &[start, end]) in cell_pieces.iter().enumerate() {
+                indices.push(start);
+                let next_start = cell_pieces[(i + 1) % count][0];
+                // A piece ending on the boundary is followed by the boundary up to where the
+                // next piece starts (nothing when the next piece starts right there).
+                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
+                    if end != next_start {
+                        indices.push(end);
+                        b.corners_between(exit, entry, &mut indices);
                     }
                 }
             }

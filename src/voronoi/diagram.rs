@@ -186,10 +186,20 @@ impl Voronoi {
                 }
                 cur = t;
             };
-            let a = d.origin(e) as usize;
-            // The in-ray of an unbounded cell is its first half-edge.
-            if self.cell_edge[a] == INVALID || d.twins[e as usize] == INVALID {
-                self.cell_edge[a] = h;
+        }
+        // A cell starts at the dual of its site's vertex edge: the outgoing hull edge for hull
+        // sites, whose dual is the in-ray. (One read per site instead of a write per half-edge.)
+        for site in 0..d.n_sites() as u32 {
+            let first = d.vertex_edge[site as usize];
+            if first != INVALID {
+                self.cell_edge[site as usize] = d
+                    .outgoing(site)
+                    .map(|e| dual[e as usize])
+                    .find(|&h| h != INVALID)
+                    .unwrap_or(INVALID);
+                debug_assert!(
+                    dual[first as usize] != INVALID || d.twins[first as usize] != INVALID
+                );
             }
         }
         self.vertices = vertices;
