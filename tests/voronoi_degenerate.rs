@@ -239,3 +239,26 @@ fn bad_input_is_refused_with_a_clear_error() {
     );
     println!("{}", VoronoiError::NonConvexClip { vertex: 3 });
 }
+
+#[test]
+fn invalid_element_ids_give_invalid_not_panics() {
+    let v = Voronoi::new(&uniform(30, 2)).unwrap();
+    let bad = v.n_halfedges() as u32 + 7;
+    let inv = halfwing::voronoi::INVALID;
+    assert_eq!(
+        (v.origin(bad), v.target(bad), v.next(bad), v.prev(bad)),
+        (inv, inv, inv, inv)
+    );
+    assert_eq!((v.site(bad), v.opposite_site(bad)), (inv, inv));
+    assert!(v.edge_geometry(bad).is_none() && v.edge_geometry(u32::MAX).is_none());
+    assert!(v.vertex_sites(u32::MAX).is_empty() && v.cell_halfedges(u32::MAX).is_empty());
+    let d = v.delaunay();
+    let bad = d.triangles().len() as u32;
+    assert_eq!(
+        (d.origin(bad), d.twin(bad), d.next(bad), d.prev(bad)),
+        (inv, inv, inv, inv)
+    );
+    assert_eq!(d.vertex_edge(u32::MAX), inv);
+    assert_eq!(d.outgoing(u32::MAX).count(), 0);
+    assert!(d.neighbours(u32::MAX).is_empty());
+}

@@ -229,7 +229,7 @@ impl Voronoi {
         let (o, t) = (self.origin(h), self.target(h));
         // Parametrise as base + s·dir with s in [lo, hi]; the finite end (if any) is at s = 0.
         // An in-ray (from infinity) is clipped as the ray from its finite end, then reversed.
-        let (base, dir, far, mut lo, mut hi, reversed) = match self.edge_geometry(h) {
+        let (base, dir, far, mut lo, mut hi, reversed) = match self.geometry(h) {
             EdgeGeometry::Segment { from, to } => {
                 if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
                 {

@@ -333,24 +333,32 @@ impl Delaunay {
         &self.twins
     }
 
-    /// Start vertex of half-edge `e`.
+    /// Start vertex of half-edge `e` ([`INVALID`] for an invalid half-edge; so for all accessors).
     pub fn origin(&self, e: u32) -> u32 {
-        self.triangles[e as usize]
+        self.triangles.get(e as usize).copied().unwrap_or(INVALID)
     }
 
     /// Opposite half-edge of `e`, or [`INVALID`] for a hull edge.
     pub fn twin(&self, e: u32) -> u32 {
-        self.twins[e as usize]
+        self.twins.get(e as usize).copied().unwrap_or(INVALID)
     }
 
     /// Next half-edge counter-clockwise in the same triangle.
     pub fn next(&self, e: u32) -> u32 {
-        next_edge(e)
+        if (e as usize) < self.triangles.len() {
+            next_edge(e)
+        } else {
+            INVALID
+        }
     }
 
     /// Previous half-edge in the same triangle.
     pub fn prev(&self, e: u32) -> u32 {
-        prev_edge(e)
+        if (e as usize) < self.triangles.len() {
+            prev_edge(e)
+        } else {
+            INVALID
+        }
     }
 
     /// An outgoing half-edge of site `v` (the hull one for hull vertices), [`INVALID`] for

@@ -299,14 +299,14 @@ impl Voronoi {
         self.origin.len()
     }
 
-    /// Start vertex of `h`, [`INVALID`] when it comes from infinity.
+    /// Start vertex of `h`, [`INVALID`] when it comes from infinity (or `h` is invalid).
     pub fn origin(&self, h: u32) -> u32 {
-        self.origin[h as usize]
+        self.origin.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// End vertex of `h`, [`INVALID`] when it runs to infinity.
     pub fn target(&self, h: u32) -> u32 {
-        self.origin[(h ^ 1) as usize]
+        self.origin(h ^ 1)
     }
 
     /// The opposite half-edge (`h ^ 1`).
@@ -316,22 +316,22 @@ impl Voronoi {
 
     /// Next half-edge counter-clockwise around the same cell.
     pub fn next(&self, h: u32) -> u32 {
-        self.next[h as usize]
+        self.next.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// Previous half-edge around the same cell.
     pub fn prev(&self, h: u32) -> u32 {
-        self.prev[h as usize]
+        self.prev.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// The site whose cell `h` bounds (on its left).
     pub fn site(&self, h: u32) -> u32 {
-        self.site[h as usize]
+        self.site.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// The site across `h`.
     pub fn opposite_site(&self, h: u32) -> u32 {
-        self.site[(h ^ 1) as usize]
+        self.site(h ^ 1)
     }
 
     /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
@@ -408,8 +408,15 @@ impl Voronoi {
         out
     }
 
-    /// Geometry of the edge of half-edge `h`.
-    pub fn edge_geometry(&self, h: u32) -> EdgeGeometry {
+    /// Geometry of the edge of half-edge `h`, `None` for an invalid half-edge.
+    pub fn edge_geometry(&self, h: u32) -> Option<EdgeGeometry> {
+        if h as usize >= self.origin.len() {
+            return None;
+        }
+        Some(self.geometry(h))
+    }
+
+    pub(crate) fn geometry(&self, h: u32) -> EdgeGeometry {
         let (o, t) = (self.origin(h), self.target(h));
         if o != INVALID && t != INVALID {
             return EdgeGeometry::Segment {

@@ -163,7 +163,7 @@ pub(crate) fn check_voronoi(v: &Voronoi) {
         if v.target(h) != INVALID && v.origin(v.next(h)) != INVALID {
             assert_eq!(v.origin(v.next(h)), v.target(h));
         }
-        if let EdgeGeometry::Segment { from, to } = v.edge_geometry(h) {
+        if let Some(EdgeGeometry::Segment { from, to }) = v.edge_geometry(h) {
             assert_ne!(from, to, "zero-length edge {h}");
         }
     }

@@ -113,7 +113,7 @@ pub fn check_voronoi(v: &Voronoi) {
         assert_eq!(v.prev(v.next(h)), h);
         assert_eq!(v.site(v.next(h)), v.site(h));
         assert_ne!(v.site(h), v.opposite_site(h));
-        if let EdgeGeometry::Segment { from, to } = v.edge_geometry(h) {
+        if let Some(EdgeGeometry::Segment { from, to }) = v.edge_geometry(h) {
             assert_ne!(from, to, "zero-length edge");
         }
     }
