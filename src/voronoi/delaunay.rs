@@ -8,8 +8,10 @@ use super::spatial_sort::brio_hilbert_order;
 /// Invalid index (no half-edge, no twin, no site).
 pub const INVALID: u32 = u32::MAX;
 
-/// Largest number of sites: `6n` half-edge indices must fit a `u32` below [`INVALID`].
-pub const MAX_SITES: usize = (u32::MAX as usize - 16) / 6;
+/// Largest number of sites. Triangulation half-edges (`< 6n`), Voronoi half-edges (`< 6n`) and
+/// clipped-cell corners (`< 6n` plus the region's corners and boundary crossings) are all `u32`
+/// indices below [`INVALID`]; `8n` leaves room for all of them.
+pub const MAX_SITES: usize = (u32::MAX as usize - 16) / 8;
 
 /// Dimension of the triangulated site set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
