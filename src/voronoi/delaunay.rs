@@ -12,6 +12,8 @@ pub const INVALID: u32 = u32::MAX;
 /// clipped-cell corners (`< 6n` plus the region's corners and boundary crossings) are all `u32`
 /// indices below [`INVALID`]; `8n` leaves room for all of them.
 pub const MAX_SITES: usize = (u32::MAX as usize - 16) / 8;
+// Compile-time check of that headroom.
+const _: () = assert!((MAX_SITES as u64) * 8 < INVALID as u64);
 
 /// Dimension of the triangulated site set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
