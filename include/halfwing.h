@@ -35,42 +35,6 @@
 #include <stdint.h>
 
 /**
- * Largest number of components per element (a 4 × 4 matrix).
- */
-#define MAX_COMPONENTS 16
-
-/**
- * The index that means "no element" (`u32::MAX`), as in the C API's `HW_INVALID_INDEX`.
- */
-#define INVALID_INDEX UINT32_MAX
-
-/**
- * `partner` value of a corner whose edge no other face uses.
- */
-#define BOUNDARY UINT32_MAX
-
-/**
- * `partner` value of a corner on a [`ProblemEdge`].
- */
-#define UNPAIRED (UINT32_MAX - 1)
-
-/**
- * Largest number of corners a table may hold: every corner may need two half-edges and
- * half-edge ids must stay below `u32::MAX`.
- */
-#define MAX_CORNERS (((uint64_t)UINT32_MAX - 1) / 2)
-
-/**
- * Largest number of vertices (ids must stay below `u32::MAX`).
- */
-#define MAX_VERTICES ((uint64_t)UINT32_MAX - 1)
-
-/**
- * Deepest subdivision accepted: level 10 already has 20·4¹⁰ ≈ 21 million triangles.
- */
-#define MAX_ICOSPHERE_LEVEL 10
-
-/**
  * The raw value of "no element": an id whose `idx` is this is invalid.
  */
 #define HW_INVALID_INDEX UINT32_MAX
