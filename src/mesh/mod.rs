@@ -15,6 +15,7 @@ mod diagnose;
 mod export;
 mod ids;
 mod navigation;
+mod raw_parts;
 mod vertex_fans;
 
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
@@ -24,3 +25,4 @@ pub use components::Components;
 pub use connectivity::Mesh;
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};
+pub(crate) use raw_parts::MeshArrays;

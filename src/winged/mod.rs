@@ -69,13 +69,13 @@ mod compact;
 mod error;
 mod euler;
 mod ids;
+mod mesh_conversion;
 mod navigation;
 mod normals;
 mod record;
 mod soup_conversion;
 mod structure;
 mod table;
-mod validate;
 
 pub use compact::Compaction;
 pub use error::WingedError;
