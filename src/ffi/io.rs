@@ -60,7 +60,10 @@ unsafe fn path_arg(path: *const c_char) -> Result<PathBuf, FfiError> {
 /// # Safety
 /// `path` must be NULL or NUL-terminated; `out_soup` writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_soup_read(path: *const c_char, out_soup: *mut *mut hw_soup) -> hw_status {
+pub unsafe extern "C" fn hw_soup_read(
+    path: *const c_char,
+    out_soup: *mut *mut hw_soup,
+) -> hw_status {
     guard(|| {
         let out = Out::new(out_soup, "out_soup")?;
         // SAFETY: forwarded from the caller.
@@ -94,17 +97,25 @@ pub unsafe extern "C" fn hw_soup_view(
         unsafe {
             if let Some(out) = Out::optional(out_positions) {
                 let xyz = soup.positions.as_flattened();
-                out.write(if xyz.is_empty() { std::ptr::null() } else { xyz.as_ptr() });
+                out.write(if xyz.is_empty() {
+                    std::ptr::null()
+                } else {
+                    xyz.as_ptr()
+                });
             }
             if let Some(out) = Out::optional(out_n_vertices) {
                 out.write(soup.positions.len());
             }
-            if let (Some(data), Some(len)) = (Out::optional(out_face_sizes), Out::optional(out_n_faces)) {
+            if let (Some(data), Some(len)) =
+                (Out::optional(out_face_sizes), Out::optional(out_n_faces))
+            {
                 write_view(data, len, &soup.face_sizes);
             } else if let Some(len) = Out::optional(out_n_faces) {
                 len.write(soup.face_sizes.len());
             }
-            if let (Some(data), Some(len)) = (Out::optional(out_indices), Out::optional(out_n_indices)) {
+            if let (Some(data), Some(len)) =
+                (Out::optional(out_indices), Out::optional(out_n_indices))
+            {
                 write_view(data, len, &soup.indices);
             } else if let Some(len) = Out::optional(out_n_indices) {
                 len.write(soup.indices.len());

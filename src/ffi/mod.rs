@@ -24,6 +24,9 @@ pub mod status;
 pub mod topology;
 pub mod version;
 pub mod views;
+pub mod winged;
+pub mod winged_circulator;
+pub mod winged_euler;
 
 pub use circulator::*;
 pub use diagnostic::*;
@@ -37,3 +40,6 @@ pub use status::*;
 pub use topology::*;
 pub use version::*;
 pub use views::*;
+pub use winged::*;
+pub use winged_circulator::*;
+pub use winged_euler::*;

@@ -80,7 +80,7 @@ mod table;
 pub use compact::Compaction;
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
-pub use navigation::Walk;
+pub use navigation::{Step, Walk, WalkState};
 pub use record::EdgeRecord;
 pub use structure::Winged;
 pub use table::{Naming, TableFormat};
