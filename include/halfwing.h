@@ -197,18 +197,18 @@ typedef uint32_t hw_build_policy;
 typedef uint32_t hw_mesh_array;
 
 /**
- * An edge id of an ::hw_winged (one record per undirected edge).
- */
-typedef struct {
-  uint32_t idx;
-} hw_wedge;
-
-/**
  * A vertex id of an ::hw_winged.
  */
 typedef struct {
   uint32_t idx;
 } hw_wvertex;
+
+/**
+ * An edge id of an ::hw_winged (one record per undirected edge).
+ */
+typedef struct {
+  uint32_t idx;
+} hw_wedge;
 
 /**
  * A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
@@ -1125,6 +1125,28 @@ hw_status hw_winged_from_indexed(const double *positions,
                                  hw_diagnostic **out_diagnostic);
 
 /**
+ * Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
+ * `edge_order` lists them: edge `i` runs from `edge_order[2 i]` to `edge_order[2 i + 1]`, and
+ * the face walking it that way is its left face. This reproduces tables whose edge numbering was
+ * made by hand, as the course notes' are. `n_edges` must be the edge count of the faces and
+ * every edge must be listed once, in either direction; otherwise `HW_ERR_INVALID_INPUT` with
+ * the first mismatch in the message.
+ *
+ * # Safety
+ * As for hw_winged_from_indexed(); `edge_order` must point to `2 * n_edges` indices (NULL
+ * when `n_edges` is 0).
+ */
+hw_status hw_winged_from_indexed_ordered(const double *positions,
+                                         size_t n_vertices,
+                                         const uint32_t *face_sizes,
+                                         size_t n_faces,
+                                         const uint32_t *indices,
+                                         size_t n_indices,
+                                         const uint32_t *edge_order,
+                                         size_t n_edges,
+                                         hw_winged **out_winged);
+
+/**
  * Builds the winged-edge structure of a half-edge mesh, record for record: winged edge `e` is
  * mesh edge `e` directed as its half-edge `2e` (its left side) — the other half-edge is its
  * right side —, vertices and faces keep their ids and their stored edge. Deleted mesh elements
@@ -1206,6 +1228,30 @@ size_t hw_winged_edge_capacity(const hw_winged *winged);
  * `winged` must be NULL or a live structure.
  */
 size_t hw_winged_face_capacity(const hw_winged *winged);
+
+/**
+ * Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
+
+/**
+ * Whether `e` names a live edge (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
+
+/**
+ * Whether `f` names a live face (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
 
 /**
  * Copies the record of edge `e` (its vertices, faces and wings) into `*out_record`.

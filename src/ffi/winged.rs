@@ -13,7 +13,8 @@ use crate::winged::{
 };
 
 use super::boundary::{
-    Out, arg_mut, arg_ref, copy_items, copy_text, guard, guard_value, guard_void, write_view,
+    Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, guard, guard_value, guard_void,
+    write_view,
 };
 use super::diagnostic::hw_diagnostic;
 use super::elements::id_conversions;
@@ -221,6 +222,50 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
     })
 }
 
+/// Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
+/// `edge_order` lists them: edge `i` runs from `edge_order[2 i]` to `edge_order[2 i + 1]`, and
+/// the face walking it that way is its left face. This reproduces tables whose edge numbering was
+/// made by hand, as the course notes' are. `n_edges` must be the edge count of the faces and
+/// every edge must be listed once, in either direction; otherwise `HW_ERR_INVALID_INPUT` with
+/// the first mismatch in the message.
+///
+/// # Safety
+/// As for hw_winged_from_indexed(); `edge_order` must point to `2 * n_edges` indices (NULL
+/// when `n_edges` is 0).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_winged_from_indexed_ordered(
+    positions: *const f64,
+    n_vertices: usize,
+    face_sizes: *const u32,
+    n_faces: usize,
+    indices: *const u32,
+    n_indices: usize,
+    edge_order: *const u32,
+    n_edges: usize,
+    out_winged: *mut *mut hw_winged,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_winged, "out_winged")?;
+        let n_endpoints = n_edges
+            .checked_mul(2)
+            .ok_or_else(|| FfiError::invalid_input(format!("n_edges = {n_edges} is too large")))?;
+        // SAFETY: forwarded from the caller.
+        let (list, order) = unsafe {
+            (
+                face_list_arg(
+                    positions, n_vertices, face_sizes, n_faces, indices, n_indices,
+                )?,
+                arg_slice(edge_order, n_endpoints, "edge_order")?,
+            )
+        };
+        let order: Vec<[u32; 2]> = order.chunks_exact(2).map(|e| [e[0], e[1]]).collect();
+        let winged = Winged::from_face_list_with_edge_order(&list, &order)?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe { out.write(into_handle(hw_winged { winged })) };
+        Ok(())
+    })
+}
+
 /// Builds the winged-edge structure of a half-edge mesh, record for record: winged edge `e` is
 /// mesh edge `e` directed as its half-edge `2e` (its left side) — the other half-edge is its
 /// right side —, vertices and faces keep their ids and their stored edge. Deleted mesh elements
@@ -334,6 +379,33 @@ pub unsafe extern "C" fn hw_winged_edge_capacity(winged: *const hw_winged) -> us
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_face_capacity(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.face_capacity() as usize)) }
+}
+
+/// Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
+///
+/// # Safety
+/// `winged` must be NULL or a live structure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_winged_is_vertex(winged: *const hw_winged, v: hw_wvertex) -> bool {
+    unsafe { query(winged, false, |w| Ok(w.is_vertex(v.into()))) }
+}
+
+/// Whether `e` names a live edge (false for a NULL structure, with the error recorded).
+///
+/// # Safety
+/// `winged` must be NULL or a live structure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_winged_is_edge(winged: *const hw_winged, e: hw_wedge) -> bool {
+    unsafe { query(winged, false, |w| Ok(w.is_edge(e.into()))) }
+}
+
+/// Whether `f` names a live face (false for a NULL structure, with the error recorded).
+///
+/// # Safety
+/// `winged` must be NULL or a live structure.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_winged_is_face(winged: *const hw_winged, f: hw_wface) -> bool {
+    unsafe { query(winged, false, |w| Ok(w.is_face(f.into()))) }
 }
 
 /// Copies the record of edge `e` (its vertices, faces and wings) into `*out_record`.
