@@ -1,5 +1,8 @@
-// The C++ wrapper: RAII ownership, moves, and exceptions carrying status and message.
+// The C++ wrapper: RAII ownership and moves, exceptions carrying status and message, range-for
+// circulation, reading files, normals and editing.
+#include <cmath>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,8 +17,14 @@ static void exceptions_carry_status_and_message() {
   } catch (const hw::error& e) {
     thrown = true;
     CHECK(e.status() == HW_ERR_INVALID_INPUT);
-    CHECK(std::string(e.what()).find("out of range") != std::string::npos ||
-          std::string(e.what()).find("vertex") != std::string::npos);
+    CHECK(std::string(e.what()).find("out-of-range") != std::string::npos);
+  }
+  CHECK(thrown);
+  thrown = false;
+  try {
+    hw::mesh::read("no/such/file.off");
+  } catch (const hw::error& e) {
+    thrown = e.status() == HW_ERR_IO;
   }
   CHECK(thrown);
 }
@@ -31,11 +40,75 @@ static void ownership_moves() {
   CHECK(c.n_halfedges() == 6);
 }
 
+static void circulation_and_normals() {
+  const std::string path = std::string(HALFWING_DATA_DIR) + "/meshes/closed/lapy_icosahedron.off";
+  hw::diagnostic report;
+  hw::mesh m = hw::mesh::read(path, HW_BUILD_STRICT, &report);
+  CHECK(report && report.is_clean());
+  CHECK(report.summary() == "no defects found\n");
+  m.check_invariants();
+  std::size_t ring_total = 0;
+  for (uint32_t i = 0; i < m.n_vertices(); ++i) {
+    hw_vertex v{i};
+    std::set<uint32_t> ring, faces;
+    for (hw_vertex w : m.vertices_around(v)) ring.insert(w.idx);
+    for (hw_face f : m.faces_around(v)) faces.insert(f.idx);
+    for (hw_halfedge h : m.outgoing(v)) CHECK(m.origin(h).idx == i);
+    CHECK(ring.size() == 5 && faces.size() == 5 && m.valence(v) == 5);
+    ring_total += ring.size();
+  }
+  CHECK(ring_total == 2 * m.n_edges());
+  for (uint32_t f = 0; f < m.n_faces(); ++f) {
+    std::size_t sides = 0, across = 0;
+    for (hw_vertex v : m.vertices_of(hw_face{f})) {
+      (void)v;
+      ++sides;
+    }
+    for (hw_face g : m.faces_across(hw_face{f})) across += g.idx != f;
+    CHECK(sides == 3 && across == 3);
+  }
+  CHECK(m.boundary_loops().empty() && m.n_components() == 1);
+  const std::vector<double> normals = m.vertex_normals(HW_WEIGHT_ANGLE);
+  for (uint32_t i = 0; i < m.n_vertices(); ++i) {
+    // An icosahedron centred at the origin (coordinates rounded in the file): the normal points
+    // along the position.
+    const std::array<double, 3> p = m.position(hw_vertex{i});
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    const double along = (normals[3 * i] * p[0] + normals[3 * i + 1] * p[1] + normals[3 * i + 2] * p[2]) / r;
+    CHECK(along > 0.9999);
+  }
+}
+
+static void editing() {
+  hw::mesh m = hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {3, 3},
+                                      {0, 1, 2, 0, 2, 3});
+  hw_edge diagonal{};
+  for (uint32_t e = 0; e < m.n_edges(); ++e)
+    if (!m.is_boundary(hw_edge{e})) diagonal = hw_edge{e};
+  m.flip(diagonal);
+  m.check_invariants();
+  bool refused = false;
+  try {
+    m.flip(hw_edge{0});  // a boundary edge
+  } catch (const hw::error& e) {
+    refused = e.status() == HW_ERR_REFUSED;
+  }
+  CHECK(refused);
+  const hw_vertex middle = m.split(diagonal, {0.5, 0.5, 0});
+  CHECK(m.n_vertices() == 5 && m.valence(middle) == 2);
+  m.remove(hw_face{0});
+  m.garbage_collect();
+  CHECK(m.n_faces() == 1);
+  m.check_invariants();
+}
+
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
 
 int main() {
   exceptions_carry_status_and_message();
   ownership_moves();
+  circulation_and_normals();
+  editing();
   version_string();
   return check_summary("test_hpp");
 }

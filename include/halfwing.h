@@ -101,6 +101,12 @@
 typedef struct hw_diagnostic hw_diagnostic;
 
 /**
+ * The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
+ * hw_index_maps_view(), release with hw_index_maps_free().
+ */
+typedef struct hw_index_maps hw_index_maps;
+
+/**
  * A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
  * release it with hw_mesh_free().
  */
@@ -187,9 +193,19 @@ typedef uint32_t hw_diagnostic_list;
 typedef uint32_t hw_diagnostic_edges;
 
 /**
+ * An element kind, to pick one of several per-kind arrays.
+ */
+typedef uint32_t hw_element_kind;
+
+/**
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
  */
 typedef uint32_t hw_build_policy;
+
+/**
+ * How a vertex normal weighs the faces around it.
+ */
+typedef uint32_t hw_normal_weighting;
 
 /**
  * Which internal array hw_mesh_view() shows.
@@ -372,6 +388,26 @@ typedef struct {
 #define HW_DIAG_INCONSISTENT_EDGES 1
 
 /**
+ * Vertices.
+ */
+#define HW_ELEMENT_VERTEX 0
+
+/**
+ * Half-edges.
+ */
+#define HW_ELEMENT_HALFEDGE 1
+
+/**
+ * Edges.
+ */
+#define HW_ELEMENT_EDGE 2
+
+/**
+ * Faces.
+ */
+#define HW_ELEMENT_FACE 3
+
+/**
  * Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
  * cannot be placed; the message names the offending faces, edges and vertices.
  */
@@ -386,6 +422,21 @@ typedef struct {
  * Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
  */
 #define HW_BUILD_REPAIR 2
+
+/**
+ * Unit face normals summed: OpenMesh's default, the course notes' average.
+ */
+#define HW_WEIGHT_UNIFORM 0
+
+/**
+ * Face normals weighted by face area.
+ */
+#define HW_WEIGHT_AREA 1
+
+/**
+ * Unit face normals weighted by the face's angle at the vertex: pmp's default.
+ */
+#define HW_WEIGHT_ANGLE 2
 
 /**
  * Success.
@@ -698,6 +749,120 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
                                 size_t *needed);
 
 /**
+ * Adds an isolated vertex at `xyz[0..3]` (finite) and gives its id in `*out_vertex`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
+ * writable.
+ */
+hw_status hw_mesh_add_vertex(hw_mesh *mesh, const double *xyz, hw_vertex *out_vertex);
+
+/**
+ * Deletes face `f`; its edges with no face left go too, and, when `delete_isolated_vertices`,
+ * its vertices left without edges.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses.
+ */
+hw_status hw_mesh_delete_face(hw_mesh *mesh, hw_face f, bool delete_isolated_vertices);
+
+/**
+ * Deletes edge `e` with the faces on both its sides (see hw_mesh_delete_face()).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses.
+ */
+hw_status hw_mesh_delete_edge(hw_mesh *mesh, hw_edge e, bool delete_isolated_vertices);
+
+/**
+ * Deletes vertex `v` with every face around it.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses.
+ */
+hw_status hw_mesh_delete_vertex(hw_mesh *mesh, hw_vertex v);
+
+/**
+ * Flips interior edge `e` between two triangles to join their other two corners. Refused on a
+ * boundary edge, between non-triangles, or when the new edge exists already.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses.
+ */
+hw_status hw_mesh_flip_edge(hw_mesh *mesh, hw_edge e);
+
+/**
+ * Splits edge `e` at a new vertex placed at `xyz[0..3]`, given in `*out_vertex`; the faces beside
+ * the edge gain a corner (they are not triangulated).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
+ * writable.
+ */
+hw_status hw_mesh_split_edge(hw_mesh *mesh, hw_edge e, const double *xyz, hw_vertex *out_vertex);
+
+/**
+ * Splits the face holding half-edges `h0` and `h1` with a new edge from `target(h0)` to
+ * `target(h1)`; `*out_halfedge` receives the new half-edge inside the original face.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
+ */
+hw_status hw_mesh_split_face(hw_mesh *mesh,
+                             hw_halfedge h0,
+                             hw_halfedge h1,
+                             hw_halfedge *out_halfedge);
+
+/**
+ * Collapses half-edge `h`: its origin merges into its target (which keeps its position, given in
+ * `*out_vertex`). Refused unless the link condition holds and the triangles beside the edge can
+ * vanish without breaking the surface.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.
+ */
+hw_status hw_mesh_collapse_halfedge(hw_mesh *mesh, hw_halfedge h, hw_vertex *out_vertex);
+
+/**
+ * Splits polygon `f` into triangles by a fan of new edges (from the first corner whose diagonals
+ * are all new edges); `*out_n_faces`, when not NULL, receives the number of triangles (`f` is
+ * the first of them).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.
+ */
+hw_status hw_mesh_triangulate_face(hw_mesh *mesh, hw_face f, size_t *out_n_faces);
+
+/**
+ * Removes deleted elements for good, renumbering the live ones in their order. When
+ * `out_maps` is not NULL it receives the old-to-new maps (deleted → `HW_INVALID_INDEX`).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_maps` NULL or writable.
+ */
+hw_status hw_mesh_garbage_collect(hw_mesh *mesh, hw_index_maps **out_maps);
+
+/**
+ * A read-only view of the old-to-new map of one element kind (`*out_len` entries, one per old
+ * id slot). Lives as long as the maps.
+ *
+ * # Safety
+ * `maps` must be NULL or live; `out_map` and `out_len` writable.
+ */
+hw_status hw_index_maps_view(const hw_index_maps *maps,
+                             hw_element_kind kind,
+                             const uint32_t **out_map,
+                             size_t *out_len);
+
+/**
+ * Releases index maps. NULL is a no-op; freeing twice is detected and refused.
+ *
+ * # Safety
+ * `maps` must be NULL or maps from this library, not in use by another thread.
+ */
+void hw_index_maps_free(hw_index_maps *maps);
+
+/**
  * Copies the message of the last failed call on this thread into `buf`, NUL-terminated.
  *
  * `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
@@ -848,6 +1013,16 @@ size_t hw_mesh_n_edges(const hw_mesh *mesh);
 size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 
 /**
+ * The number of id slots of one element kind: ids run from 0 to this minus one. Equal to the
+ * element count unless elements were deleted and not yet garbage-collected; arrays indexed by id
+ * (views, normals) have this length. 0 for a NULL mesh or an unknown kind.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ */
+size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
+
+/**
  * The vertex half-edge `h` leaves (the seeds' `Origin`/`v`).
  *
  * # Safety
@@ -978,6 +1153,64 @@ uint32_t hw_mesh_vertex_valence(const hw_mesh *mesh, hw_vertex v);
 uint32_t hw_mesh_face_degree(const hw_mesh *mesh, hw_face f);
 
 /**
+ * Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * NULL or writable.
+ */
+hw_status hw_mesh_face_normals(const hw_mesh *mesh,
+                               double *out_normals,
+                               size_t capacity,
+                               size_t *needed);
+
+/**
+ * Unit vertex normals with the chosen weighting, in one pass over the faces. Every fan of a
+ * non-manifold vertex counts.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * NULL or writable.
+ */
+hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
+                                 hw_normal_weighting weighting_kind,
+                                 double *out_normals,
+                                 size_t capacity,
+                                 size_t *needed);
+
+/**
+ * Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
+ * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
+ * (see hw_mesh_slot_count()).
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
+ * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+ */
+hw_status hw_mesh_normals(const hw_mesh *mesh,
+                          hw_normal_weighting weighting_kind,
+                          double *out_face_normals,
+                          size_t face_capacity,
+                          double *out_vertex_normals,
+                          size_t vertex_capacity);
+
+/**
+ * Per-corner normals, one per half-edge slot (the corner at the half-edge's origin inside its
+ * face): angle-weighted over the faces around the vertex reachable without crossing a boundary or
+ * an edge sharper than `crease_angle` radians. `crease_angle >= pi` gives smooth normals per fan,
+ * 0 a faceted look.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * NULL or writable.
+ */
+hw_status hw_mesh_corner_normals(const hw_mesh *mesh,
+                                 double crease_angle,
+                                 double *out_normals,
+                                 size_t capacity,
+                                 size_t *needed);
+
+/**
  * Copies the position of `v` into `out_xyz[0..3]`.
  *
  * # Safety
@@ -998,6 +1231,13 @@ hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *
  * `"unknown status"`. Never returns NULL; the string must not be freed.
  */
 const char *hw_status_str(hw_status status);
+
+/**
+ * Sets how many threads bulk construction and normal computation use from now on, for every
+ * thread of the process: 1 runs them single-threaded, 0 restores the default (one per core).
+ * In a build without the `parallel` feature everything is single-threaded and this is a no-op.
+ */
+hw_status hw_set_thread_count(size_t count);
 
 /**
  * Validates every invariant of the half-edge structure (twins, next/prev, closed face and

@@ -11,10 +11,10 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -86,9 +86,98 @@ class owned {
 
 }  // namespace detail
 
+/// A range over a C circulator (of either kernel), for range-for loops:
+/// `for (hw_vertex w : m.vertices_around(v))`. It borrows the mesh: do not modify the mesh while
+/// iterating.
+template <class Circulator, class Id, bool (*Next)(Circulator*, Id*)>
+class circulation_of {
+ public:
+  explicit circulation_of(const Circulator& start) : start_(start) {}
+
+  class iterator {
+   public:
+    using value_type = Id;
+    using difference_type = std::ptrdiff_t;
+    using iterator_category = std::input_iterator_tag;
+    using pointer = const Id*;
+    using reference = const Id&;
+    iterator() = default;
+    explicit iterator(const Circulator& c) : c_(c), live_(true) { ++*this; }
+    const Id& operator*() const { return current_; }
+    iterator& operator++() {
+      live_ = live_ && Next(&c_, &current_);
+      return *this;
+    }
+    void operator++(int) { ++*this; }
+    bool operator==(const iterator& other) const { return live_ == other.live_ && !live_; }
+    bool operator!=(const iterator& other) const { return !(*this == other); }
+
+   private:
+    Circulator c_{};
+    Id current_{};
+    bool live_ = false;
+  };
+
+  iterator begin() const { return iterator(start_); }
+  iterator end() const { return iterator(); }
+
+ private:
+  Circulator start_;
+};
+
+/// A range over a half-edge circulator (see circulation_of).
+template <class Id, bool (*Next)(hw_circulator*, Id*)>
+using circulation = circulation_of<hw_circulator, Id, Next>;
+
+using halfedge_circulation = circulation<hw_halfedge, hw_circ_next_halfedge>;
+using vertex_circulation = circulation<hw_vertex, hw_circ_next_vertex>;
+using edge_circulation = circulation<hw_edge, hw_circ_next_edge>;
+using face_circulation = circulation<hw_face, hw_circ_next_face>;
+
+/// What a build found wrong with its input (owns an hw_diagnostic).
+class diagnostic {
+ public:
+  diagnostic() = default;
+  explicit diagnostic(hw_diagnostic* raw) : raw_(raw) {}
+
+  /// Analyses an indexed face list without building (see hw_diagnose_indexed()).
+  static diagnostic of(const std::vector<double>& positions,
+                       const std::vector<uint32_t>& face_sizes,
+                       const std::vector<uint32_t>& indices) {
+    hw_diagnostic* raw = nullptr;
+    check(hw_diagnose_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
+                              face_sizes.size(), indices.data(), indices.size(), &raw));
+    return diagnostic(raw);
+  }
+
+  bool is_clean() const { return hw_diagnostic_is_clean(raw_.get()); }
+  /// One id list (faces or vertices, per `list`).
+  std::vector<uint32_t> ids(hw_diagnostic_list list) const {
+    const uint32_t* data = nullptr;
+    std::size_t n = 0;
+    check(hw_diagnostic_ids(raw_.get(), list, &data, &n));
+    return std::vector<uint32_t>(data, data + n);
+  }
+  /// The human-readable account.
+  std::string summary() const {
+    std::size_t needed = 0;
+    hw_diagnostic_summary(raw_.get(), nullptr, 0, &needed);
+    std::string text(needed, '\0');
+    check(hw_diagnostic_summary(raw_.get(), &text[0], text.size(), &needed));
+    text.resize(needed - 1);
+    return text;
+  }
+  hw_diagnostic* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  detail::owned<hw_diagnostic, hw_diagnostic_free> raw_;
+};
+
 class winged;
 
-/// A half-edge polygon mesh (owns an hw_mesh).
+/// A half-edge polygon mesh (owns an hw_mesh). Const methods may run concurrently; the others
+/// need exclusive access. Failures throw hw::error.
 class mesh {
  public:
   /// An empty mesh.
@@ -97,24 +186,133 @@ class mesh {
   }
 
   /// Builds a mesh from positions (x, y, z per vertex), corners per face and the vertex index of
-  /// every corner; see hw_mesh_from_indexed().
+  /// every corner; see hw_mesh_from_indexed(). `report`, when given, receives the diagnostic.
   static mesh from_indexed(const std::vector<double>& positions,
                            const std::vector<uint32_t>& face_sizes,
                            const std::vector<uint32_t>& indices,
-                           hw_build_policy policy = HW_BUILD_STRICT) {
+                           hw_build_policy policy = HW_BUILD_STRICT,
+                           diagnostic* report = nullptr) {
     if (positions.size() % 3 != 0)
       throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
     hw_mesh* raw = nullptr;
+    hw_diagnostic* found = nullptr;
     check(hw_mesh_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
                                face_sizes.size(), indices.data(), indices.size(), policy, &raw,
-                               nullptr));
+                               report ? &found : nullptr));
+    if (report) *report = diagnostic(found);
     return mesh(raw);
   }
+
+  /// Reads an OBJ, OFF or PLY file; see hw_mesh_read().
+  static mesh read(const std::string& path, hw_build_policy policy = HW_BUILD_STRICT,
+                   diagnostic* report = nullptr) {
+    hw_mesh* raw = nullptr;
+    hw_diagnostic* found = nullptr;
+    check(hw_mesh_read(path.c_str(), policy, &raw, report ? &found : nullptr));
+    if (report) *report = diagnostic(found);
+    return mesh(raw);
+  }
+
+  /// Writes the mesh (format by extension); see hw_mesh_write().
+  void write(const std::string& path) const { check(hw_mesh_write(get(), path.c_str())); }
 
   std::size_t n_vertices() const { return hw_mesh_n_vertices(get()); }
   std::size_t n_edges() const { return hw_mesh_n_edges(get()); }
   std::size_t n_halfedges() const { return hw_mesh_n_halfedges(get()); }
   std::size_t n_faces() const { return hw_mesh_n_faces(get()); }
+
+  // Navigation (invalid ids give HW_INVALID_INDEX, as in C).
+  hw_vertex origin(hw_halfedge h) const { return hw_mesh_he_origin(get(), h); }
+  hw_vertex target(hw_halfedge h) const { return hw_mesh_he_target(get(), h); }
+  hw_halfedge twin(hw_halfedge h) const { return hw_mesh_he_twin(get(), h); }
+  hw_halfedge next(hw_halfedge h) const { return hw_mesh_he_next(get(), h); }
+  hw_halfedge prev(hw_halfedge h) const { return hw_mesh_he_prev(get(), h); }
+  hw_face face(hw_halfedge h) const { return hw_mesh_he_face(get(), h); }
+  hw_edge edge(hw_halfedge h) const { return hw_mesh_he_edge(get(), h); }
+  hw_halfedge halfedge(hw_vertex v) const { return hw_mesh_vertex_halfedge(get(), v); }
+  hw_halfedge halfedge(hw_face f) const { return hw_mesh_face_halfedge(get(), f); }
+  bool is_boundary(hw_halfedge h) const { return hw_mesh_he_is_boundary(get(), h); }
+  bool is_boundary(hw_vertex v) const { return hw_mesh_vertex_is_boundary(get(), v); }
+  bool is_boundary(hw_edge e) const { return hw_mesh_edge_is_boundary(get(), e); }
+  bool is_boundary(hw_face f) const { return hw_mesh_face_is_boundary(get(), f); }
+  uint32_t valence(hw_vertex v) const { return hw_mesh_vertex_valence(get(), v); }
+  uint32_t degree(hw_face f) const { return hw_mesh_face_degree(get(), f); }
+  std::array<double, 3> position(hw_vertex v) const {
+    std::array<double, 3> p{};
+    check(hw_mesh_vertex_position(get(), v, p.data()));
+    return p;
+  }
+
+  // Circulation, in the orders documented in halfwing.h (counter-clockwise from outside).
+  halfedge_circulation outgoing(hw_vertex v) const { return halfedge_circulation(around(v, HW_CIRC_HALFEDGES)); }
+  halfedge_circulation incoming(hw_vertex v) const { return halfedge_circulation(around(v, HW_CIRC_INCOMING)); }
+  vertex_circulation vertices_around(hw_vertex v) const { return vertex_circulation(around(v, HW_CIRC_VERTICES)); }
+  edge_circulation edges_around(hw_vertex v) const { return edge_circulation(around(v, HW_CIRC_EDGES)); }
+  face_circulation faces_around(hw_vertex v) const { return face_circulation(around(v, HW_CIRC_FACES)); }
+  halfedge_circulation halfedges_of(hw_face f) const { return halfedge_circulation(around(f, HW_CIRC_HALFEDGES)); }
+  vertex_circulation vertices_of(hw_face f) const { return vertex_circulation(around(f, HW_CIRC_VERTICES)); }
+  edge_circulation edges_of(hw_face f) const { return edge_circulation(around(f, HW_CIRC_EDGES)); }
+  face_circulation faces_across(hw_face f) const { return face_circulation(around(f, HW_CIRC_FACES)); }
+  /// The loop through `h` by next: a face's sides or a boundary loop.
+  halfedge_circulation loop(hw_halfedge h) const {
+    hw_circulator c;
+    check(hw_circ_along_loop(get(), h, &c));
+    return halfedge_circulation(c);
+  }
+
+  // Topology.
+  void check_invariants() const { check(hw_mesh_check(get())); }
+  std::vector<hw_halfedge> boundary_loops() const {
+    std::size_t n = 0;
+    hw_mesh_boundary_loops(get(), nullptr, 0, &n);
+    std::vector<hw_halfedge> loops(n);
+    check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
+    return loops;
+  }
+  std::size_t n_components() const {
+    std::size_t n = 0;
+    check(hw_mesh_n_components(get(), &n));
+    return n;
+  }
+
+  // Normals, x y z per element slot.
+  std::vector<double> face_normals() const {
+    std::vector<double> out(3 * slots(HW_ELEMENT_FACE));
+    check(hw_mesh_face_normals(get(), out.data(), out.size() / 3, nullptr));
+    return out;
+  }
+  std::vector<double> vertex_normals(hw_normal_weighting weighting = HW_WEIGHT_UNIFORM) const {
+    std::vector<double> out(3 * slots(HW_ELEMENT_VERTEX));
+    check(hw_mesh_vertex_normals(get(), weighting, out.data(), out.size() / 3, nullptr));
+    return out;
+  }
+  std::vector<double> corner_normals(double crease_angle) const {
+    std::vector<double> out(3 * slots(HW_ELEMENT_HALFEDGE));
+    check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
+    return out;
+  }
+
+  // Editing; a refused operation throws hw::error (HW_ERR_REFUSED) and changes nothing.
+  hw_vertex add_vertex(const std::array<double, 3>& p) {
+    hw_vertex v;
+    check(hw_mesh_add_vertex(get(), p.data(), &v));
+    return v;
+  }
+  void flip(hw_edge e) { check(hw_mesh_flip_edge(get(), e)); }
+  hw_vertex split(hw_edge e, const std::array<double, 3>& p) {
+    hw_vertex v;
+    check(hw_mesh_split_edge(get(), e, p.data(), &v));
+    return v;
+  }
+  hw_vertex collapse(hw_halfedge h) {
+    hw_vertex v;
+    check(hw_mesh_collapse_halfedge(get(), h, &v));
+    return v;
+  }
+  void remove(hw_face f, bool delete_isolated_vertices = true) {
+    check(hw_mesh_delete_face(get(), f, delete_isolated_vertices));
+  }
+  void garbage_collect() { check(hw_mesh_garbage_collect(get(), nullptr)); }
 
   /// The C object, for calls the wrapper does not cover. Still owned by this mesh.
   hw_mesh* get() const noexcept { return raw_.get(); }
@@ -123,48 +321,22 @@ class mesh {
  private:
   friend class winged;  // hw::winged::to_mesh() hands over a new hw_mesh
   explicit mesh(hw_mesh* raw) : raw_(raw) {}
+  hw_circulator around(hw_vertex v, hw_circulator_kind kind) const {
+    hw_circulator c;
+    check(hw_circ_around_vertex(get(), v, kind, &c));
+    return c;
+  }
+  hw_circulator around(hw_face f, hw_circulator_kind kind) const {
+    hw_circulator c;
+    check(hw_circ_around_face(get(), f, kind, &c));
+    return c;
+  }
+  std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
 };
 
 // ---------------------------------------------------------------------------------------------
 // Winged-edge kernel
-
-namespace detail {
-
-/// A winged circulator as a range of ids: `for (hw_wvertex v : w.face_vertices(f)) ...`. It
-/// borrows the structure: do not modify the structure while iterating.
-template <class Id, bool (*Next)(hw_wcirculator*, Id*)>
-class wcirc_range {
- public:
-  /// Marks the end of the walk.
-  struct sentinel {};
-
-  class iterator {
-   public:
-    explicit iterator(hw_wcirculator c) : c_(c) { ++*this; }
-    Id operator*() const noexcept { return id_; }
-    iterator& operator++() {
-      done_ = !Next(&c_, &id_);
-      return *this;
-    }
-    bool operator!=(sentinel) const noexcept { return !done_; }
-    bool operator==(sentinel) const noexcept { return done_; }
-
-   private:
-    hw_wcirculator c_;
-    Id id_{HW_INVALID_INDEX};
-    bool done_ = false;
-  };
-
-  explicit wcirc_range(hw_wcirculator c) : c_(c) {}
-  iterator begin() const { return iterator(c_); }
-  sentinel end() const noexcept { return {}; }
-
- private:
-  hw_wcirculator c_;
-};
-
-}  // namespace detail
 
 /// A winged-edge (Baumgart) polygon mesh (owns an hw_winged). Ids are hw_wvertex, hw_wedge and
 /// hw_wface; the walks are ranges (`for (hw_wedge e : w.face_edges(f))`); the Euler operators
@@ -172,9 +344,9 @@ class wcirc_range {
 /// structure unchanged when they refuse.
 class winged {
  public:
-  using edge_range = detail::wcirc_range<hw_wedge, hw_wcirc_next_edge>;
-  using vertex_range = detail::wcirc_range<hw_wvertex, hw_wcirc_next_vertex>;
-  using face_range = detail::wcirc_range<hw_wface, hw_wcirc_next_face>;
+  using edge_range = circulation_of<hw_wcirculator, hw_wedge, hw_wcirc_next_edge>;
+  using vertex_range = circulation_of<hw_wcirculator, hw_wvertex, hw_wcirc_next_vertex>;
+  using face_range = circulation_of<hw_wcirculator, hw_wface, hw_wcirc_next_face>;
   using point = std::array<double, 3>;
 
   /// An empty structure, to build with the Euler operators (mvfs() first).
@@ -306,13 +478,14 @@ class winged {
  private:
   explicit winged(hw_winged* raw) : raw_(raw) {}
 
-  template <class Id>
-  hw_wcirculator around(Id id, hw_wcirculator_kind kind) const {
+  hw_wcirculator around(hw_wface f, hw_wcirculator_kind kind) const {
     hw_wcirculator c;
-    if constexpr (std::is_same_v<Id, hw_wface>)
-      check(hw_wcirc_around_face(get(), id, kind, &c));
-    else
-      check(hw_wcirc_around_vertex(get(), id, kind, &c));
+    check(hw_wcirc_around_face(get(), f, kind, &c));
+    return c;
+  }
+  hw_wcirculator around(hw_wvertex v, hw_wcirculator_kind kind) const {
+    hw_wcirculator c;
+    check(hw_wcirc_around_vertex(get(), v, kind, &c));
     return c;
   }
 

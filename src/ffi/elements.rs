@@ -37,6 +37,17 @@ pub struct hw_face {
     pub idx: u32,
 }
 
+/// An element kind, to pick one of several per-kind arrays.
+pub type hw_element_kind = u32;
+/// Vertices.
+pub const HW_ELEMENT_VERTEX: hw_element_kind = 0;
+/// Half-edges.
+pub const HW_ELEMENT_HALFEDGE: hw_element_kind = 1;
+/// Edges.
+pub const HW_ELEMENT_EDGE: hw_element_kind = 2;
+/// Faces.
+pub const HW_ELEMENT_FACE: hw_element_kind = 3;
+
 /// Pairs each C id struct with its Rust id (also used by the winged-edge ids).
 macro_rules! id_conversions {
     ($($c:ident <=> $rust:ident),*) => {$(

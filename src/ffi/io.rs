@@ -14,6 +14,7 @@ use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{build_policy, hw_build_policy, hw_mesh, mesh_ref};
 use super::status::*;
+use super::threads::with_threads;
 
 /// An indexed face list read from a file, exactly as the file numbers its vertices (nothing
 /// welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
@@ -153,7 +154,8 @@ pub unsafe extern "C" fn hw_mesh_read(
         let policy = build_policy(policy)?;
         // SAFETY: forwarded from the caller.
         let soup = read_path(unsafe { path_arg(path) }?)?;
-        let (mesh, diagnostic) = Mesh::from_face_list(&soup.as_face_list(), policy)?;
+        let (mesh, diagnostic) =
+            with_threads(|| Mesh::from_face_list(&soup.as_face_list(), policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_mesh { mesh }));

@@ -5,10 +5,14 @@ use crate::soup::{BuildError, BuildPolicy};
 
 use super::boundary::{Out, arg_ref, guard, guard_value, guard_void};
 use super::diagnostic::hw_diagnostic;
+use super::elements::{
+    HW_ELEMENT_EDGE, HW_ELEMENT_FACE, HW_ELEMENT_HALFEDGE, HW_ELEMENT_VERTEX, hw_element_kind,
+};
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::status::*;
+use super::threads::with_threads;
 
 /// A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
 /// release it with hw_mesh_free().
@@ -108,7 +112,8 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )?
         };
-        let (mesh, diagnostic) = Mesh::from_face_list(&list, build_policy(policy)?)?;
+        let policy = build_policy(policy)?;
+        let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_mesh { mesh }));
@@ -190,4 +195,25 @@ pub unsafe extern "C" fn hw_mesh_n_edges(mesh: *const hw_mesh) -> usize {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_halfedges) }
+}
+
+/// The number of id slots of one element kind: ids run from 0 to this minus one. Equal to the
+/// element count unless elements were deleted and not yet garbage-collected; arrays indexed by id
+/// (views, normals) have this length. 0 for a NULL mesh or an unknown kind.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_slot_count(mesh: *const hw_mesh, kind: hw_element_kind) -> usize {
+    unsafe {
+        query(mesh, 0, |mesh| match kind {
+            HW_ELEMENT_VERTEX => Ok(mesh.vertex_capacity()),
+            HW_ELEMENT_HALFEDGE => Ok(mesh.halfedge_capacity()),
+            HW_ELEMENT_EDGE => Ok(mesh.edge_capacity()),
+            HW_ELEMENT_FACE => Ok(mesh.face_capacity()),
+            other => Err(FfiError::invalid_input(format!(
+                "unknown element kind {other}"
+            ))),
+        })
+    }
 }

@@ -30,13 +30,14 @@ impl Mesh {
     ) -> Result<(Mesh, Diagnostic), BuildError> {
         let resolved = resolve(list, policy)?;
         let mut diagnostic = resolved.diagnostic;
-        let mesh = Mesh::from_pairing(
+        let mut mesh = Mesh::from_pairing(
             &resolved.table,
             resolved.pairing.partner,
             resolved.positions.into_owned(),
         );
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
+        mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         diagnostic.isolated_vertices = mesh.isolated_vertices();
         diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &mesh.positions);
         Ok((mesh, diagnostic))
@@ -115,6 +116,7 @@ impl Mesh {
             positions,
             face_halfedge,
             deleted: Deletions::default(),
+            may_have_pinched_vertices: true,
         };
         mesh.link_boundary(&boundary);
         mesh

@@ -27,6 +27,10 @@ pub struct Mesh {
     pub(super) positions: Vec<[f64; 3]>,
     pub(super) face_halfedge: Vec<u32>,
     pub(super) deleted: Deletions,
+    /// `false` only when no vertex can have more than one fan (known after a build or a garbage
+    /// collection); deleting faces may pinch vertices, so it sets this. Operators that must see a
+    /// vertex's every half-edge check the slow way while it is set.
+    pub(super) may_have_pinched_vertices: bool,
 }
 
 /// Deletion marks. The flag vectors stay empty until something is deleted, so a freshly built

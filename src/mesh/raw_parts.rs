@@ -21,7 +21,7 @@ impl Mesh {
     /// The mesh of `arrays`, after [`Mesh::check`] accepted it: arrays from a converter can
     /// never yield a mesh that breaks the kernel's invariants.
     pub(crate) fn from_arrays(arrays: MeshArrays) -> Result<Mesh, InvariantError> {
-        let mesh = Mesh {
+        let mut mesh = Mesh {
             origin: arrays.origin,
             next: arrays.next,
             prev: arrays.prev,
@@ -30,8 +30,11 @@ impl Mesh {
             positions: arrays.positions,
             face_halfedge: arrays.face_halfedge,
             deleted: Deletions::default(),
+            // Until the vertices are looked at below, operators must not assume single fans.
+            may_have_pinched_vertices: true,
         };
         mesh.check()?;
+        mesh.may_have_pinched_vertices = !mesh.non_manifold_vertices().is_empty();
         Ok(mesh)
     }
 }

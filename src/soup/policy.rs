@@ -6,7 +6,9 @@ use super::Diagnostic;
 ///
 /// Whatever the policy, every defect is listed in the returned [`Diagnostic`]; isolated vertices,
 /// degenerate faces and non-manifold vertices the structure can hold (several fans touching at a
-/// vertex) are kept and reported, never refused.
+/// vertex) are kept and reported, never refused. Non-finite coordinates are refused by `Strict`
+/// and kept (reported) by `Skip` and `Repair`, which only act on connectivity. An empty face list
+/// is valid: it builds a structure with no faces (its vertices, if any, isolated).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum BuildPolicy {
     /// Refuse any malformed face, non-finite coordinate, non-manifold or inconsistently oriented

@@ -13,14 +13,23 @@ pub const MAX_CORNERS: u64 = (u32::MAX as u64 - 1) / 2;
 /// Largest number of vertices (ids must stay below `u32::MAX`).
 pub const MAX_VERTICES: u64 = u32::MAX as u64 - 1;
 
-/// Faces as offsets into one corner array. Face `f` has corners `offsets[f]..offsets[f + 1]`,
-/// in the input's (counter-clockwise) order. Borrowed from the input when nothing had to change.
+/// Faces as ranges of one corner array, in the input's (counter-clockwise) order. Borrowed from
+/// the input when nothing had to change; a uniform face size needs no offset array at all.
 #[derive(Clone, Debug)]
 pub struct FaceTable<'a> {
-    offsets: Vec<u32>,
+    layout: Layout,
     corners: Cow<'a, [u32]>,
     /// Table face → input face; `None` means the identity.
     input_faces: Option<Vec<u32>>,
+}
+
+/// Where each face's corners start.
+#[derive(Clone, Debug)]
+enum Layout {
+    /// Face `f` has corners `f * size .. (f + 1) * size` (`size > 0`).
+    Uniform { size: u32, n_faces: usize },
+    /// Face `f` has corners `offsets[f]..offsets[f + 1]`.
+    Offsets(Vec<u32>),
 }
 
 impl<'a> FaceTable<'a> {
@@ -34,11 +43,11 @@ impl<'a> FaceTable<'a> {
                 count: n_corners,
             });
         }
-        let offsets = match list.sizes {
+        let layout = match list.sizes {
             FaceSizes::Uniform(size) => {
                 if size == 0 || n_corners % u64::from(size) != 0 {
                     if n_corners == 0 {
-                        Vec::from([0])
+                        Layout::Offsets(Vec::from([0]))
                     } else {
                         return Err(ListProblem::RaggedUniform {
                             size,
@@ -46,10 +55,10 @@ impl<'a> FaceTable<'a> {
                         });
                     }
                 } else {
-                    // n_corners < 2^31, so every offset fits in u32.
-                    (0..=n_corners / u64::from(size))
-                        .map(|f| (f * u64::from(size)) as u32)
-                        .collect()
+                    Layout::Uniform {
+                        size,
+                        n_faces: (n_corners / u64::from(size)) as usize,
+                    }
                 }
             }
             FaceSizes::PerFace(sizes) => {
@@ -64,6 +73,7 @@ impl<'a> FaceTable<'a> {
                             actual: n_corners,
                         });
                     }
+                    // n_corners < 2^31, so every offset fits in u32.
                     offsets.push(total as u32);
                 }
                 if total != n_corners {
@@ -72,21 +82,22 @@ impl<'a> FaceTable<'a> {
                         actual: n_corners,
                     });
                 }
-                offsets
+                Layout::Offsets(offsets)
             }
         };
-        let n_faces = (offsets.len() - 1) as u64;
+        let table = FaceTable {
+            layout,
+            corners: Cow::Borrowed(list.indices),
+            input_faces: None,
+        };
+        let n_faces = table.n_faces() as u64;
         if n_faces >= u64::from(u32::MAX) {
             return Err(ListProblem::TooManyElements {
                 what: "faces",
                 count: n_faces,
             });
         }
-        Ok(FaceTable {
-            offsets,
-            corners: Cow::Borrowed(list.indices),
-            input_faces: None,
-        })
+        Ok(table)
     }
 
     /// A table from owned parts. `offsets` starts at 0, ends at `corners.len()` and never
@@ -98,7 +109,7 @@ impl<'a> FaceTable<'a> {
     ) -> Self {
         debug_assert_eq!(offsets.last().map(|&o| o as usize), Some(corners.len()));
         FaceTable {
-            offsets,
+            layout: Layout::Offsets(offsets),
             corners: Cow::Owned(corners),
             input_faces,
         }
@@ -107,19 +118,16 @@ impl<'a> FaceTable<'a> {
     /// Number of faces.
     #[inline]
     pub fn n_faces(&self) -> usize {
-        self.offsets.len() - 1
+        match &self.layout {
+            Layout::Uniform { n_faces, .. } => *n_faces,
+            Layout::Offsets(offsets) => offsets.len() - 1,
+        }
     }
 
     /// Number of corners (sum of face sizes).
     #[inline]
     pub fn n_corners(&self) -> usize {
         self.corners.len()
-    }
-
-    /// Face offsets into [`FaceTable::corners`] (`n_faces + 1` entries).
-    #[inline]
-    pub fn offsets(&self) -> &[u32] {
-        &self.offsets
     }
 
     /// Vertex index of every corner.
@@ -131,7 +139,10 @@ impl<'a> FaceTable<'a> {
     /// The corner range of face `f`.
     #[inline]
     pub fn face_range(&self, f: usize) -> Range<usize> {
-        self.offsets[f] as usize..self.offsets[f + 1] as usize
+        match &self.layout {
+            Layout::Uniform { size, .. } => f * *size as usize..(f + 1) * *size as usize,
+            Layout::Offsets(offsets) => offsets[f] as usize..offsets[f + 1] as usize,
+        }
     }
 
     /// The vertex indices of face `f`.
@@ -149,9 +160,13 @@ impl<'a> FaceTable<'a> {
         }
     }
 
-    /// The face holding corner `c` (binary search: for the rare repair paths).
+    /// The face holding corner `c < n_corners` (a division for uniform sizes, else a binary
+    /// search: meant for the rare repair paths).
     pub fn face_of_corner(&self, c: usize) -> usize {
-        self.offsets.partition_point(|&o| o as usize <= c) - 1
+        match &self.layout {
+            Layout::Uniform { size, .. } => c / *size as usize,
+            Layout::Offsets(offsets) => offsets.partition_point(|&o| o as usize <= c) - 1,
+        }
     }
 
     /// The corner after `c` in its face (cyclically).
@@ -333,7 +348,17 @@ mod tests {
         let sizes = [3, 4];
         let indices = [0, 1, 2, 0, 2, 3, 4];
         let table = FaceTable::new(&FaceList::polygons(&positions, &sizes, &indices)).unwrap();
-        assert_eq!(table.offsets(), &[0, 3, 7]);
+        assert_eq!((table.face_range(0), table.face_range(1)), (0..3, 3..7));
+        assert_eq!(table.face_of_corner(5), 1);
+        let uniform = FaceTable::new(&FaceList::triangles(&positions, &indices[..6])).unwrap();
+        assert_eq!(
+            (
+                uniform.n_faces(),
+                uniform.face_range(1),
+                uniform.face_of_corner(4)
+            ),
+            (2, 3..6, 1)
+        );
         assert_eq!(table.face(1), &[0, 2, 3, 4]);
         let mut edges = Vec::new();
         table.for_each_corner_edge(|f, c, n| edges.push((f, c, n)));

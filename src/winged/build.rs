@@ -207,12 +207,13 @@ impl Winged {
 /// way, or [`BOUNDARY`].
 fn assemble(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) -> Winged {
     let indices = table.corners();
-    let offsets = table.offsets();
     // Filled in corner order, so it grows by pushes (no up-front fill of the whole array).
     let mut edge_of_corner: Vec<EdgeId> = Vec::with_capacity(indices.len());
     let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
-    for (f, bounds) in offsets.windows(2).enumerate() {
-        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
+    let mut face_edge = Vec::with_capacity(table.n_faces());
+    for f in 0..table.n_faces() {
+        let corners = table.face_range(f);
+        let (first, end) = (corners.start, corners.end);
         let face = FaceId(f as u32);
         for c in first..end {
             let mate = partner[c];
@@ -243,6 +244,7 @@ fn assemble(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) ->
             r.set_prev(side, edge_of_corner[prev]);
             r.set_next(side, edge_of_corner[next]);
         }
+        face_edge.push(edge_of_corner[first]);
     }
 
     let n_faces = table.n_faces();
@@ -251,10 +253,7 @@ fn assemble(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) ->
         positions,
         vertex_edge: vec![EdgeId::INVALID; n_vertices],
         vertex_alive: vec![true; n_vertices],
-        face_edge: offsets[..n_faces]
-            .iter()
-            .map(|&c| edge_of_corner[c as usize])
-            .collect(),
+        face_edge,
         face_alive: vec![true; n_faces],
         n_live_vertices: n_vertices as u32,
         n_live_edges: edges.len() as u32,

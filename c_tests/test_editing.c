@@ -1,0 +1,197 @@
+/* Normals, editing operators, deletion and compaction, slot counts and thread count through the
+ * C API, with the refusals and bad arguments of each. */
+#include <math.h>
+
+#include "check.h"
+
+/* A unit cube of six quads, counter-clockwise seen from outside. */
+static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                        0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
+static const uint32_t cube_faces[] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
+                                      1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+
+static hw_mesh *cube(void) {
+  hw_mesh *mesh = NULL;
+  CHECK(hw_mesh_from_indexed(cube_positions, 8, cube_sizes, 6, cube_faces, 24, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  return mesh;
+}
+
+static double length3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+static void normals(void) {
+  hw_mesh *mesh = cube();
+  double faces[6 * 3], vertices[8 * 3], corners[24 * 3], small[3];
+  size_t needed = 0, f, v, h;
+  hw_normal_weighting w;
+
+  CHECK(hw_mesh_face_normals(mesh, faces, 6, &needed) == HW_OK && needed == 6);
+  for (f = 0; f < 6; ++f) {
+    /* Outward: along the direction from the cube's centre to the face's first corner. */
+    const double *p = cube_positions + 3 * cube_faces[4 * f];
+    const double outward = faces[3 * f] * (p[0] - 0.5) + faces[3 * f + 1] * (p[1] - 0.5) +
+                           faces[3 * f + 2] * (p[2] - 0.5);
+    CHECK(fabs(length3(faces + 3 * f) - 1) < 1e-12 && outward > 0);
+  }
+  for (w = HW_WEIGHT_UNIFORM; w <= HW_WEIGHT_ANGLE; ++w) {
+    CHECK(hw_mesh_vertex_normals(mesh, w, vertices, 8, NULL) == HW_OK);
+    /* A cube corner's normal points along the diagonal, whatever the weighting. */
+    for (v = 0; v < 8; ++v) {
+      const double *p = cube_positions + 3 * v;
+      const double c = 1 / sqrt(3.0);
+      CHECK(fabs(vertices[3 * v] - (p[0] - 0.5) * 2 * c) < 1e-12);
+      CHECK(fabs(vertices[3 * v + 2] - (p[2] - 0.5) * 2 * c) < 1e-12);
+    }
+  }
+  CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, vertices, 8) == HW_OK);
+  /* Crease angle 0: every corner takes its face's normal (flat shading). */
+  CHECK(hw_mesh_corner_normals(mesh, 0.0, corners, 24, &needed) == HW_OK && needed == 24);
+  for (h = 0; h < 24; ++h) {
+    hw_halfedge he = {(uint32_t)h};
+    hw_face face = hw_mesh_he_face(mesh, he);
+    if (face.idx == HW_INVALID_INDEX) continue;
+    CHECK(fabs(corners[3 * h] - faces[3 * face.idx]) < 1e-12 &&
+          fabs(corners[3 * h + 1] - faces[3 * face.idx + 1]) < 1e-12 &&
+          fabs(corners[3 * h + 2] - faces[3 * face.idx + 2]) < 1e-12);
+  }
+  /* Smooth (crease angle pi): the angle-weighted vertex normal. */
+  CHECK(hw_mesh_corner_normals(mesh, 3.2, corners, 24, NULL) == HW_OK);
+  CHECK(hw_mesh_vertex_normals(mesh, HW_WEIGHT_ANGLE, vertices, 8, NULL) == HW_OK);
+  for (h = 0; h < 24; ++h) {
+    hw_halfedge he = {(uint32_t)h};
+    hw_vertex origin = hw_mesh_he_origin(mesh, he);
+    CHECK(fabs(corners[3 * h] - vertices[3 * origin.idx]) < 1e-12);
+  }
+
+  CHECK_STATUS(hw_mesh_face_normals(mesh, small, 1, &needed), HW_ERR_BUFFER_TOO_SMALL,
+               "6 are needed");
+  CHECK(needed == 6);
+  CHECK_STATUS(hw_mesh_face_normals(mesh, NULL, 0, &needed), HW_ERR_BUFFER_TOO_SMALL, "needed");
+  CHECK_STATUS(hw_mesh_vertex_normals(mesh, 9u, vertices, 8, NULL), HW_ERR_INVALID_INPUT,
+               "weighting 9");
+  CHECK_STATUS(hw_mesh_vertex_normals(NULL, HW_WEIGHT_UNIFORM, vertices, 8, NULL),
+               HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, vertices, 7),
+               HW_ERR_BUFFER_TOO_SMALL, "8 are needed");
+  CHECK_STATUS(hw_mesh_corner_normals(mesh, -1.0, corners, 24, NULL), HW_ERR_INVALID_INPUT,
+               "crease");
+  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE) == 24);
+  CHECK(hw_mesh_slot_count(mesh, 17u) == 0 && last_error_contains("kind 17"));
+  hw_mesh_free(mesh);
+}
+
+static void editing(void) {
+  hw_mesh *mesh = cube();
+  hw_index_maps *maps = NULL;
+  hw_vertex v;
+  hw_halfedge h0, h1, made;
+  hw_face top = {1}, deleted = {0};
+  hw_edge e0 = {0}, diagonal = {12};
+  hw_vertex missing = {999};
+  const uint32_t *map = NULL;
+  size_t n_tri = 0, len = 0;
+  const double middle[3] = {0.5, 0.5, 1.0}, far[3] = {9, 9, 9};
+  double nan_point[3] = {0, 0, 0};
+  nan_point[1] = nan("");
+
+  /* Flip needs two triangles: refused on the quad cube, nothing changes. */
+  CHECK_STATUS(hw_mesh_flip_edge(mesh, e0), HW_ERR_REFUSED, "flip");
+  CHECK(hw_mesh_n_edges(mesh) == 12 && hw_mesh_check(mesh) == HW_OK);
+
+  /* Triangulate the top quad, then flip its diagonal. */
+  CHECK(hw_mesh_triangulate_face(mesh, top, &n_tri) == HW_OK && n_tri == 2);
+  CHECK(hw_mesh_n_faces(mesh) == 7 && hw_mesh_n_edges(mesh) == 13);
+  CHECK(hw_mesh_edge_is_boundary(mesh, diagonal) == false);
+  CHECK(hw_mesh_flip_edge(mesh, diagonal) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 7 && hw_mesh_check(mesh) == HW_OK);
+
+  /* Split an edge at a new vertex, then split a face through it. */
+  CHECK(hw_mesh_split_edge(mesh, e0, middle, &v) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 9 && hw_mesh_check(mesh) == HW_OK);
+  CHECK_STATUS(hw_mesh_split_edge(mesh, e0, nan_point, &v), HW_ERR_INVALID_INPUT, "not finite");
+  h0 = hw_mesh_vertex_halfedge(mesh, v);
+  h1 = hw_mesh_he_next(mesh, hw_mesh_he_next(mesh, h0));
+  h0 = hw_mesh_he_prev(mesh, h0);
+  CHECK(hw_mesh_split_face(mesh, h0, h1, &made) == HW_OK);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  CHECK_STATUS(hw_mesh_split_face(mesh, h0, h0, &made), HW_ERR_REFUSED, "split");
+
+
+  /* Add an isolated vertex; delete a face; compact. */
+  CHECK(hw_mesh_add_vertex(mesh, far, &v) == HW_OK);
+  CHECK(hw_mesh_vertex_halfedge(mesh, v).idx == HW_INVALID_INDEX);
+  CHECK_STATUS(hw_mesh_add_vertex(mesh, nan_point, &v), HW_ERR_INVALID_INPUT, "not finite");
+  CHECK(hw_mesh_delete_face(mesh, deleted, false) == HW_OK);
+  CHECK_STATUS(hw_mesh_delete_face(mesh, deleted, false), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK(hw_mesh_face_halfedge(mesh, deleted).idx == HW_INVALID_INDEX);
+  CHECK(last_error_contains("face 0 is deleted"));
+  CHECK(hw_mesh_garbage_collect(mesh, &maps) == HW_OK);
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_FACE, &map, &len) == HW_OK);
+  CHECK(len >= 1 && map[0] == HW_INVALID_INDEX);
+  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_FACE) == hw_mesh_n_faces(mesh));
+  CHECK_STATUS(hw_index_maps_view(maps, 8u, &map, &len), HW_ERR_INVALID_INPUT, "kind 8");
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  hw_index_maps_free(maps);
+  hw_index_maps_free(maps);
+  CHECK(last_error_contains("already freed"));
+  CHECK(hw_mesh_garbage_collect(mesh, NULL) == HW_OK);
+
+  CHECK_STATUS(hw_mesh_flip_edge(NULL, e0), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_delete_vertex(mesh, missing), HW_ERR_INVALID_HANDLE, "999");
+  CHECK_STATUS(hw_mesh_split_edge(mesh, e0, middle, NULL), HW_ERR_NULL_ARGUMENT, "out_vertex");
+  hw_mesh_free(mesh);
+}
+
+/* Edge collapse on triangles: the link condition refuses on a tetrahedron (it would fold the
+ * solid flat), and an interior edge of the seed 000 fan collapses to one vertex fewer. */
+static void collapse(void) {
+  static const double tet_positions[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+  static const uint32_t tet_sizes[] = {3, 3, 3, 3};
+  static const uint32_t tet_faces[] = {0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0};
+  static const double fan_positions[] = {1, 4, 0, 3, 4, 0, 0, 2, 0, 2, 2, 0,
+                                         4, 2, 0, 1, 0, 0, 3, 0, 0};
+  static const uint32_t fan_sizes[] = {3, 3, 3, 3, 3, 3};
+  static const uint32_t fan_faces[] = {0, 2, 3, 0, 3, 1, 1, 3, 4, 2, 5, 3, 3, 5, 6, 3, 6, 4};
+  hw_mesh *mesh = NULL;
+  hw_halfedge h = {0};
+  hw_vertex kept, target, inner = {3};
+  hw_circulator c;
+  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_faces, 12, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  CHECK_STATUS(hw_mesh_collapse_halfedge(mesh, h, &kept), HW_ERR_REFUSED, "collapse");
+  CHECK(hw_mesh_n_faces(mesh) == 4 && hw_mesh_check(mesh) == HW_OK);
+  hw_mesh_free(mesh);
+
+  CHECK(hw_mesh_from_indexed(fan_positions, 7, fan_sizes, 6, fan_faces, 18, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  /* The inner vertex v4 (index 3) merges into one of its boundary neighbours. */
+  CHECK(hw_circ_around_vertex(mesh, inner, HW_CIRC_HALFEDGES, &c) == HW_OK);
+  CHECK(hw_circ_next_halfedge(&c, &h));
+  target = hw_mesh_he_target(mesh, h);
+  CHECK(hw_mesh_collapse_halfedge(mesh, h, &kept) == HW_OK);
+  CHECK(kept.idx == target.idx);
+  CHECK(hw_mesh_n_vertices(mesh) == 6 && hw_mesh_n_faces(mesh) == 4);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_garbage_collect(mesh, NULL) == HW_OK && hw_mesh_check(mesh) == HW_OK);
+  hw_mesh_free(mesh);
+}
+
+static void thread_count(void) {
+  hw_mesh *mesh = NULL;
+  CHECK(hw_set_thread_count(1) == HW_OK);
+  mesh = cube();
+  hw_mesh_free(mesh);
+  CHECK(hw_set_thread_count(2) == HW_OK);
+  mesh = cube();
+  hw_mesh_free(mesh);
+  CHECK(hw_set_thread_count(0) == HW_OK);
+}
+
+int main(void) {
+  normals();
+  editing();
+  collapse();
+  thread_count();
+  return check_summary("test_editing");
+}

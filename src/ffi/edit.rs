@@ -1,0 +1,291 @@
+//! Editing a `hw_mesh *`: adding and deleting elements, the standard operators, compaction.
+//!
+//! Every operator checks its preconditions first: a refused operation returns `HW_ERR_REFUSED`
+//! (or `HW_ERR_INVALID_HANDLE` for a bad id) with a message, and leaves the mesh exactly as it
+//! was. Deletions only mark elements (ids stay stable); hw_mesh_garbage_collect() compacts.
+//! Every edit invalidates views taken with hw_mesh_view() and running circulators.
+
+use crate::mesh::{EditError, IndexMaps};
+
+use super::boundary::{Out, arg_mut, arg_ref, guard, guard_void, write_view};
+use super::elements::*;
+use super::error::FfiError;
+use super::handle::{free_handle, into_handle};
+use super::mesh::hw_mesh;
+use super::status::*;
+
+impl From<EditError> for FfiError {
+    fn from(error: EditError) -> Self {
+        let status = match error {
+            EditError::Handle(_) => HW_ERR_INVALID_HANDLE,
+            EditError::Refused { .. } | EditError::Full { .. } => HW_ERR_REFUSED,
+        };
+        FfiError::new(status, error.to_string())
+    }
+}
+
+/// Reads a finite `xyz[0..3]` argument.
+///
+/// # Safety
+/// `xyz` must be NULL or point to 3 doubles.
+unsafe fn point_arg(xyz: *const f64) -> Result<[f64; 3], FfiError> {
+    // SAFETY: forwarded from the caller.
+    let point = *unsafe { arg_ref(xyz.cast::<[f64; 3]>(), "xyz") }?;
+    if point.iter().any(|c| !c.is_finite()) {
+        return Err(FfiError::invalid_input(format!(
+            "position {point:?} is not finite"
+        )));
+    }
+    Ok(point)
+}
+
+/// Runs an edit on a `hw_mesh *` argument.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses.
+unsafe fn edit(
+    mesh: *mut hw_mesh,
+    operation: impl FnOnce(&mut crate::mesh::Mesh) -> Result<(), FfiError>,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    guard(|| operation(&mut unsafe { arg_mut(mesh, "mesh") }?.mesh))
+}
+
+/// Adds an isolated vertex at `xyz[0..3]` (finite) and gives its id in `*out_vertex`.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_add_vertex(
+    mesh: *mut hw_mesh,
+    xyz: *const f64,
+    out_vertex: *mut hw_vertex,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::new(out_vertex, "out_vertex")?;
+            let point = point_arg(xyz)?;
+            let v = mesh
+                .add_vertex(point)
+                .ok_or_else(|| FfiError::new(HW_ERR_REFUSED, "the mesh is full (32-bit ids)"))?;
+            out.write(v.into());
+            Ok(())
+        })
+    }
+}
+
+/// Deletes face `f`; its edges with no face left go too, and, when `delete_isolated_vertices`,
+/// its vertices left without edges.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_delete_face(
+    mesh: *mut hw_mesh,
+    f: hw_face,
+    delete_isolated_vertices: bool,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            Ok(mesh.delete_face(f.into(), delete_isolated_vertices)?)
+        })
+    }
+}
+
+/// Deletes edge `e` with the faces on both its sides (see hw_mesh_delete_face()).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_delete_edge(
+    mesh: *mut hw_mesh,
+    e: hw_edge,
+    delete_isolated_vertices: bool,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            Ok(mesh.delete_edge(e.into(), delete_isolated_vertices)?)
+        })
+    }
+}
+
+/// Deletes vertex `v` with every face around it.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_delete_vertex(mesh: *mut hw_mesh, v: hw_vertex) -> hw_status {
+    unsafe { edit(mesh, |mesh| Ok(mesh.delete_vertex(v.into())?)) }
+}
+
+/// Flips interior edge `e` between two triangles to join their other two corners. Refused on a
+/// boundary edge, between non-triangles, or when the new edge exists already.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_flip_edge(mesh: *mut hw_mesh, e: hw_edge) -> hw_status {
+    unsafe { edit(mesh, |mesh| Ok(mesh.flip_edge(e.into())?)) }
+}
+
+/// Splits edge `e` at a new vertex placed at `xyz[0..3]`, given in `*out_vertex`; the faces beside
+/// the edge gain a corner (they are not triangulated).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_split_edge(
+    mesh: *mut hw_mesh,
+    e: hw_edge,
+    xyz: *const f64,
+    out_vertex: *mut hw_vertex,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::new(out_vertex, "out_vertex")?;
+            let v = mesh.split_edge(e.into(), point_arg(xyz)?)?;
+            out.write(v.into());
+            Ok(())
+        })
+    }
+}
+
+/// Splits the face holding half-edges `h0` and `h1` with a new edge from `target(h0)` to
+/// `target(h1)`; `*out_halfedge` receives the new half-edge inside the original face.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_split_face(
+    mesh: *mut hw_mesh,
+    h0: hw_halfedge,
+    h1: hw_halfedge,
+    out_halfedge: *mut hw_halfedge,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::new(out_halfedge, "out_halfedge")?;
+            let h = mesh.split_face(h0.into(), h1.into())?;
+            out.write(h.into());
+            Ok(())
+        })
+    }
+}
+
+/// Collapses half-edge `h`: its origin merges into its target (which keeps its position, given in
+/// `*out_vertex`). Refused unless the link condition holds and the triangles beside the edge can
+/// vanish without breaking the surface.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_collapse_halfedge(
+    mesh: *mut hw_mesh,
+    h: hw_halfedge,
+    out_vertex: *mut hw_vertex,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::new(out_vertex, "out_vertex")?;
+            let kept = mesh.collapse_halfedge(h.into())?;
+            out.write(kept.into());
+            Ok(())
+        })
+    }
+}
+
+/// Splits polygon `f` into triangles by a fan of new edges (from the first corner whose diagonals
+/// are all new edges); `*out_n_faces`, when not NULL, receives the number of triangles (`f` is
+/// the first of them).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_triangulate_face(
+    mesh: *mut hw_mesh,
+    f: hw_face,
+    out_n_faces: *mut usize,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let triangles = mesh.triangulate_face(f.into())?;
+            if let Some(out) = Out::optional(out_n_faces) {
+                out.write(triangles.len());
+            }
+            Ok(())
+        })
+    }
+}
+
+/// The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
+/// hw_index_maps_view(), release with hw_index_maps_free().
+pub struct hw_index_maps {
+    pub(crate) maps: IndexMaps,
+}
+
+/// Removes deleted elements for good, renumbering the live ones in their order. When
+/// `out_maps` is not NULL it receives the old-to-new maps (deleted → `HW_INVALID_INDEX`).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_maps` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_garbage_collect(
+    mesh: *mut hw_mesh,
+    out_maps: *mut *mut hw_index_maps,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::optional(out_maps);
+            let maps = mesh.garbage_collect();
+            if let Some(out) = out {
+                out.write(into_handle(hw_index_maps { maps }));
+            }
+            Ok(())
+        })
+    }
+}
+
+/// A read-only view of the old-to-new map of one element kind (`*out_len` entries, one per old
+/// id slot). Lives as long as the maps.
+///
+/// # Safety
+/// `maps` must be NULL or live; `out_map` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_index_maps_view(
+    maps: *const hw_index_maps,
+    kind: hw_element_kind,
+    out_map: *mut *const u32,
+    out_len: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let (out_map, out_len) = (Out::new(out_map, "out_map")?, Out::new(out_len, "out_len")?);
+        // SAFETY: forwarded from the caller.
+        let maps = &unsafe { arg_ref(maps, "maps") }?.maps;
+        let map = match kind {
+            HW_ELEMENT_VERTEX => &maps.vertices,
+            HW_ELEMENT_HALFEDGE => &maps.halfedges,
+            HW_ELEMENT_EDGE => &maps.edges,
+            HW_ELEMENT_FACE => &maps.faces,
+            other => {
+                return Err(FfiError::invalid_input(format!(
+                    "unknown element kind {other}"
+                )));
+            }
+        };
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { write_view(out_map, out_len, map) };
+        Ok(())
+    })
+}
+
+/// Releases index maps. NULL is a no-op; freeing twice is detected and refused.
+///
+/// # Safety
+/// `maps` must be NULL or maps from this library, not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_index_maps_free(maps: *mut hw_index_maps) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(maps, "hw_index_maps") });
+}

@@ -1,0 +1,184 @@
+//! Face, vertex and corner normals into caller buffers.
+//!
+//! Each array is indexed by element id and holds one normal (x, y, z) per id slot: as many as the
+//! element count unless elements were deleted and not yet garbage-collected. `capacity` counts
+//! normals (not doubles); `*needed` always receives the number of normals the array needs.
+//! Degenerate and deleted faces, isolated vertices and boundary half-edges get (0, 0, 0).
+
+use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, normals_into};
+
+use super::boundary::{copy_items, guard};
+use super::error::FfiError;
+use super::mesh::{hw_mesh, mesh_ref};
+use super::status::*;
+use super::threads::with_threads;
+
+/// How a vertex normal weighs the faces around it.
+pub type hw_normal_weighting = u32;
+/// Unit face normals summed: OpenMesh's default, the course notes' average.
+pub const HW_WEIGHT_UNIFORM: hw_normal_weighting = 0;
+/// Face normals weighted by face area.
+pub const HW_WEIGHT_AREA: hw_normal_weighting = 1;
+/// Unit face normals weighted by the face's angle at the vertex: pmp's default.
+pub const HW_WEIGHT_ANGLE: hw_normal_weighting = 2;
+
+fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
+    match raw {
+        HW_WEIGHT_UNIFORM => Ok(VertexNormalWeighting::Uniform),
+        HW_WEIGHT_AREA => Ok(VertexNormalWeighting::Area),
+        HW_WEIGHT_ANGLE => Ok(VertexNormalWeighting::Angle),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown normal weighting {other}"
+        ))),
+    }
+}
+
+/// Borrows `capacity` normals of a caller buffer when it can hold `slots` of them.
+///
+/// # Safety
+/// `out` must be NULL or point to `3 * capacity` writable doubles.
+unsafe fn normal_buffer<'a>(
+    out: *mut f64,
+    capacity: usize,
+    slots: usize,
+    needed: *mut usize,
+) -> Result<&'a mut [[f64; 3]], FfiError> {
+    if !needed.is_null() {
+        // SAFETY: writable per the caller.
+        unsafe { needed.write(slots) };
+    }
+    if slots == 0 {
+        return Ok(&mut []);
+    }
+    if out.is_null() || capacity < slots {
+        return Err(FfiError::new(
+            HW_ERR_BUFFER_TOO_SMALL,
+            format!("the buffer holds {capacity} normals, {slots} are needed"),
+        ));
+    }
+    if !out.is_aligned() {
+        return Err(FfiError::invalid_input("normal buffer is misaligned"));
+    }
+    // SAFETY: at least `slots` triples of writable doubles per the caller; `[f64; 3]` has the
+    // alignment of `f64`.
+    Ok(unsafe { std::slice::from_raw_parts_mut(out.cast::<[f64; 3]>(), slots) })
+}
+
+/// Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_face_normals(
+    mesh: *const hw_mesh,
+    out_normals: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        // SAFETY: forwarded from the caller.
+        let out = unsafe { normal_buffer(out_normals, capacity, mesh.face_capacity(), needed) }?;
+        with_threads(|| face_normals_into(mesh, out));
+        Ok(())
+    })
+}
+
+/// Unit vertex normals with the chosen weighting, in one pass over the faces. Every fan of a
+/// non-manifold vertex counts.
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_vertex_normals(
+    mesh: *const hw_mesh,
+    weighting_kind: hw_normal_weighting,
+    out_normals: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        let weighting = weighting(weighting_kind)?;
+        // SAFETY: forwarded from the caller.
+        let out = unsafe { normal_buffer(out_normals, capacity, mesh.vertex_capacity(), needed) }?;
+        with_threads(|| normals_into(mesh, weighting, None, out));
+        Ok(())
+    })
+}
+
+/// Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
+/// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
+/// (see hw_mesh_slot_count()).
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
+/// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_normals(
+    mesh: *const hw_mesh,
+    weighting_kind: hw_normal_weighting,
+    out_face_normals: *mut f64,
+    face_capacity: usize,
+    out_vertex_normals: *mut f64,
+    vertex_capacity: usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        let weighting = weighting(weighting_kind)?;
+        // SAFETY: forwarded from the caller.
+        let (faces, vertices) = unsafe {
+            (
+                normal_buffer(
+                    out_face_normals,
+                    face_capacity,
+                    mesh.face_capacity(),
+                    std::ptr::null_mut(),
+                )?,
+                normal_buffer(
+                    out_vertex_normals,
+                    vertex_capacity,
+                    mesh.vertex_capacity(),
+                    std::ptr::null_mut(),
+                )?,
+            )
+        };
+        with_threads(|| normals_into(mesh, weighting, Some(faces), vertices));
+        Ok(())
+    })
+}
+
+/// Per-corner normals, one per half-edge slot (the corner at the half-edge's origin inside its
+/// face): angle-weighted over the faces around the vertex reachable without crossing a boundary or
+/// an edge sharper than `crease_angle` radians. `crease_angle >= pi` gives smooth normals per fan,
+/// 0 a faceted look.
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_corner_normals(
+    mesh: *const hw_mesh,
+    crease_angle: f64,
+    out_normals: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> hw_status {
+    guard(|| {
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        if crease_angle.is_nan() || crease_angle < 0.0 {
+            return Err(FfiError::invalid_input(format!(
+                "crease angle {crease_angle} is not >= 0"
+            )));
+        }
+        let normals = with_threads(|| corner_normals(mesh, crease_angle));
+        // SAFETY: forwarded from the caller (capacity in normals).
+        unsafe { copy_items(&normals, out_normals.cast::<[f64; 3]>(), capacity, needed) }
+    })
+}

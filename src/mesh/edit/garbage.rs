@@ -1,0 +1,124 @@
+//! Compaction after deletions.
+
+use crate::mesh::Mesh;
+use crate::mesh::connectivity::Deletions;
+use crate::mesh::ids::INVALID_INDEX;
+
+/// Old-to-new index maps returned by [`Mesh::garbage_collect`]: `vertices[old] = new`, with
+/// `u32::MAX` for deleted elements. Live elements keep their relative order.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct IndexMaps {
+    /// Vertex map.
+    pub vertices: Vec<u32>,
+    /// Half-edge map (twins stay paired: `new(h ^ 1) = new(h) ^ 1`).
+    pub halfedges: Vec<u32>,
+    /// Edge map.
+    pub edges: Vec<u32>,
+    /// Face map.
+    pub faces: Vec<u32>,
+}
+
+/// New index of every slot, `INVALID_INDEX` where `deleted`; lengths below `u32::MAX` hold
+/// because the arrays were built with 32-bit ids.
+fn compaction_map(len: usize, deleted: &[bool]) -> Vec<u32> {
+    let mut next = 0u32;
+    (0..len)
+        .map(|i| {
+            if deleted.get(i).copied().unwrap_or(false) {
+                INVALID_INDEX
+            } else {
+                next += 1;
+                next - 1
+            }
+        })
+        .collect()
+}
+
+fn remap(value: u32, map: &[u32]) -> u32 {
+    if value == INVALID_INDEX {
+        INVALID_INDEX
+    } else {
+        map[value as usize]
+    }
+}
+
+/// Keeps the elements whose map entry is valid, in order.
+fn compact<T: Copy>(values: &[T], map: &[u32]) -> Vec<T> {
+    values
+        .iter()
+        .zip(map)
+        .filter(|&(_, &m)| m != INVALID_INDEX)
+        .map(|(&v, _)| v)
+        .collect()
+}
+
+impl Mesh {
+    /// Removes every deleted element, renumbering the live ones in order, and returns the maps
+    /// from old to new ids. A mesh with nothing deleted is left as it is (identity maps).
+    pub fn garbage_collect(&mut self) -> IndexMaps {
+        let vertices = compaction_map(self.vertex_halfedge.len(), &self.deleted.vertices);
+        let edges = compaction_map(self.origin.len() / 2, &self.deleted.edges);
+        let faces = compaction_map(self.face_halfedge.len(), &self.deleted.faces);
+        let halfedges: Vec<u32> = (0..self.origin.len())
+            .map(|h| match edges[h / 2] {
+                INVALID_INDEX => INVALID_INDEX,
+                e => 2 * e + (h as u32 & 1),
+            })
+            .collect();
+
+        let keep_halfedge = |values: &[u32]| -> Vec<u32> {
+            let mut out = Vec::with_capacity(values.len());
+            for (e, &new) in edges.iter().enumerate() {
+                if new != INVALID_INDEX {
+                    out.push(values[2 * e]);
+                    out.push(values[2 * e + 1]);
+                }
+            }
+            out
+        };
+        let origin: Vec<u32> = keep_halfedge(&self.origin)
+            .into_iter()
+            .map(|v| remap(v, &vertices))
+            .collect();
+        let next: Vec<u32> = keep_halfedge(&self.next)
+            .into_iter()
+            .map(|h| remap(h, &halfedges))
+            .collect();
+        let prev: Vec<u32> = keep_halfedge(&self.prev)
+            .into_iter()
+            .map(|h| remap(h, &halfedges))
+            .collect();
+        let face: Vec<u32> = keep_halfedge(&self.face)
+            .into_iter()
+            .map(|f| remap(f, &faces))
+            .collect();
+        let vertex_halfedge: Vec<u32> = compact(&self.vertex_halfedge, &vertices)
+            .into_iter()
+            .map(|h| remap(h, &halfedges))
+            .collect();
+        let positions = compact(&self.positions, &vertices);
+        let face_halfedge: Vec<u32> = compact(&self.face_halfedge, &faces)
+            .into_iter()
+            .map(|h| remap(h, &halfedges))
+            .collect();
+
+        *self = Mesh {
+            origin,
+            next,
+            prev,
+            face,
+            vertex_halfedge,
+            positions,
+            face_halfedge,
+            deleted: Deletions::default(),
+            may_have_pinched_vertices: true,
+        };
+        self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
+        IndexMaps {
+            vertices,
+            halfedges,
+            edges,
+            faces,
+        }
+    }
+}

@@ -1,0 +1,133 @@
+//! Editing operators. Each checks its preconditions first and returns [`EditError`] without
+//! touching the mesh when one fails, so a refused operation leaves the mesh as it was.
+//! Deletions only mark elements; [`Mesh::garbage_collect`](super::Mesh::garbage_collect)
+//! compacts the arrays and returns the old-to-new index maps.
+
+mod collapse;
+mod delete;
+mod flip;
+mod garbage;
+mod split;
+mod triangulate;
+
+pub use garbage::IndexMaps;
+
+use super::Mesh;
+use super::ids::{FaceId, HalfedgeId, INVALID_INDEX, VertexId};
+use super::navigation::HandleError;
+
+/// Why an editing operator refused.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum EditError {
+    /// An argument names no live element.
+    #[error(transparent)]
+    Handle(#[from] HandleError),
+    /// The operation's precondition does not hold; the mesh is unchanged.
+    #[error("{operation} refused: {reason}")]
+    Refused {
+        /// The operator.
+        operation: &'static str,
+        /// The failed precondition.
+        reason: &'static str,
+    },
+    /// The mesh would need more elements than 32-bit ids can name.
+    #[error("{operation} refused: the mesh is full (32-bit ids exhausted)")]
+    Full {
+        /// The operator.
+        operation: &'static str,
+    },
+}
+
+pub(super) fn refuse<T>(operation: &'static str, reason: &'static str) -> Result<T, EditError> {
+    Err(EditError::Refused { operation, reason })
+}
+
+impl Mesh {
+    /// The half-edge from `from` to `to`, searched in `from`'s fan; `None` when there is none.
+    pub fn find_halfedge(&self, from: VertexId, to: VertexId) -> Option<HalfedgeId> {
+        self.outgoing_halfedges(from)
+            .find(|&h| self.target(h) == to)
+    }
+
+    /// Appends a pair of half-edges (fields to be set by the caller); returns the even one.
+    pub(super) fn push_edge(&mut self, operation: &'static str) -> Result<HalfedgeId, EditError> {
+        let h = self.origin.len();
+        if h as u64 + 2 >= u64::from(INVALID_INDEX) {
+            return Err(EditError::Full { operation });
+        }
+        for array in [
+            &mut self.origin,
+            &mut self.next,
+            &mut self.prev,
+            &mut self.face,
+        ] {
+            array.extend([INVALID_INDEX; 2]);
+        }
+        if !self.deleted.edges.is_empty() {
+            self.deleted.edges.push(false);
+        }
+        Ok(HalfedgeId(h as u32))
+    }
+
+    /// Appends a face whose loop starts at `h` (face ids of the loop set by the caller).
+    pub(super) fn push_face(
+        &mut self,
+        h: HalfedgeId,
+        operation: &'static str,
+    ) -> Result<FaceId, EditError> {
+        let f = self.face_halfedge.len();
+        if f as u64 + 1 >= u64::from(INVALID_INDEX) {
+            return Err(EditError::Full { operation });
+        }
+        self.face_halfedge.push(h.0);
+        if !self.deleted.faces.is_empty() {
+            self.deleted.faces.push(false);
+        }
+        Ok(FaceId(f as u32))
+    }
+
+    /// Links `a → b` (sets `next(a)` and `prev(b)`).
+    #[inline]
+    pub(super) fn link(&mut self, a: HalfedgeId, b: HalfedgeId) {
+        self.next[a.idx()] = b.0;
+        self.prev[b.idx()] = a.0;
+    }
+
+    /// Makes `v`'s half-edge a boundary one if `v`'s fan has one (the vertex invariant).
+    pub(super) fn adjust_outgoing_halfedge(&mut self, v: VertexId) {
+        if let Some(h) = self
+            .outgoing_halfedges(v)
+            .find(|&h| self.is_boundary_halfedge(h))
+        {
+            self.vertex_halfedge[v.idx()] = h.0;
+        }
+    }
+
+    pub(super) fn mark_face_deleted(&mut self, f: FaceId) {
+        if self.deleted.faces.is_empty() {
+            self.deleted.faces = vec![false; self.face_halfedge.len()];
+        }
+        if !std::mem::replace(&mut self.deleted.faces[f.idx()], true) {
+            self.deleted.n_faces += 1;
+        }
+    }
+
+    pub(super) fn mark_edge_deleted(&mut self, h: HalfedgeId) {
+        if self.deleted.edges.is_empty() {
+            self.deleted.edges = vec![false; self.origin.len() / 2];
+        }
+        if !std::mem::replace(&mut self.deleted.edges[h.edge().idx()], true) {
+            self.deleted.n_edges += 1;
+        }
+    }
+
+    pub(super) fn mark_vertex_deleted(&mut self, v: VertexId) {
+        if self.deleted.vertices.is_empty() {
+            self.deleted.vertices = vec![false; self.vertex_halfedge.len()];
+        }
+        if !std::mem::replace(&mut self.deleted.vertices[v.idx()], true) {
+            self.deleted.n_vertices += 1;
+        }
+        self.vertex_halfedge[v.idx()] = INVALID_INDEX;
+    }
+}

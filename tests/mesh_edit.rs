@@ -1,0 +1,244 @@
+//! Editing operators: direct cases, and random edit sequences that must keep every invariant,
+//! leave the mesh untouched when refused, and survive compaction.
+
+mod mesh_support;
+
+use halfwing::mesh::{BuildPolicy, EdgeId, EditError, FaceId, HalfedgeId, Mesh, VertexId};
+use halfwing::soup::FaceList;
+use mesh_support::grid;
+use proptest::prelude::*;
+
+fn build(soup: &halfwing::soup::PolygonSoup) -> Mesh {
+    Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Strict)
+        .unwrap()
+        .0
+}
+
+fn euler(mesh: &Mesh) -> i64 {
+    mesh.n_vertices() as i64 - mesh.n_edges() as i64 + mesh.n_faces() as i64
+}
+
+fn square() -> Mesh {
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    Mesh::from_face_list(
+        &FaceList::triangles(&positions, &[0, 1, 2, 0, 2, 3]),
+        BuildPolicy::Strict,
+    )
+    .unwrap()
+    .0
+}
+
+#[test]
+fn flipping_the_diagonal_of_a_square() {
+    let mut mesh = square();
+    let diagonal = (0..mesh.edge_capacity() as u32)
+        .map(EdgeId)
+        .find(|&e| !mesh.is_boundary_edge(e))
+        .unwrap();
+    mesh.flip_edge(diagonal).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    let ends = [
+        mesh.origin(diagonal.halfedge(0)),
+        mesh.target(diagonal.halfedge(0)),
+    ];
+    assert!(
+        ends.contains(&VertexId(1)) && ends.contains(&VertexId(3)),
+        "{ends:?}"
+    );
+    // Boundary edges cannot flip; the mesh is untouched.
+    let before = mesh.clone();
+    let boundary = (0..mesh.edge_capacity() as u32)
+        .map(EdgeId)
+        .find(|&e| mesh.is_boundary_edge(e))
+        .unwrap();
+    assert!(matches!(
+        mesh.flip_edge(boundary),
+        Err(EditError::Refused { .. })
+    ));
+    assert!(matches!(
+        mesh.flip_edge(EdgeId(99)),
+        Err(EditError::Handle(_))
+    ));
+    assert_eq!(mesh, before);
+}
+
+#[test]
+fn splitting_and_triangulating_a_quad_face() {
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    let list = FaceList::polygons(&positions, &[4], &[0, 1, 2, 3]);
+    let mut mesh = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0;
+    let mut pentagon = mesh.clone();
+    let w = pentagon.split_edge(EdgeId(0), [0.5, 0.0, 0.0]).unwrap();
+    assert_eq!(pentagon.check(), Ok(()));
+    assert_eq!(pentagon.face_degree(FaceId(0)), 5);
+    assert_eq!(pentagon.valence(w), 2);
+    let faces = pentagon.triangulate_face(FaceId(0)).unwrap();
+    assert_eq!(faces.len(), 3);
+    assert!(faces.iter().all(|&f| pentagon.face_degree(f) == 3));
+    assert_eq!(pentagon.check(), Ok(()));
+
+    let h0 = mesh.face_halfedge(FaceId(0));
+    let h2 = mesh.next(mesh.next(h0));
+    assert!(mesh.split_face(h0, mesh.next(h0)).is_err());
+    let diagonal = mesh.split_face(h0, h2).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!((mesh.n_faces(), mesh.n_edges()), (2, 5));
+    assert_eq!(mesh.face_degree(mesh.face(diagonal)), 3);
+    assert_eq!(mesh.face_degree(mesh.face(diagonal.twin())), 3);
+}
+
+#[test]
+fn deleting_faces_and_collecting_garbage() {
+    let mut mesh = build(&grid(3, 3, false, false));
+    mesh.delete_face(FaceId(4), false).unwrap(); // the middle quad: a hole
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(mesh.boundary_loops().len(), 2);
+    mesh.delete_face(FaceId(0), true).unwrap(); // a corner quad: its corner vertex goes
+    assert_eq!(mesh.check(), Ok(()));
+    assert!(mesh.is_vertex_deleted(VertexId(0)));
+    assert!(mesh.try_face_halfedge(FaceId(0)).is_err());
+    let (v, e, f) = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+    let maps = mesh.garbage_collect();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(
+        (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+        (v, e, f)
+    );
+    assert_eq!(mesh.vertex_capacity(), v);
+    assert_eq!(maps.vertices[0], u32::MAX);
+    assert_eq!(maps.vertices[1], 0);
+    assert_eq!(maps.faces[..2], [u32::MAX, 0]);
+    assert!(!mesh.has_deleted_elements());
+}
+
+#[test]
+fn collapsing_an_interior_edge_of_a_triangle_grid() {
+    let mut mesh = build(&grid(4, 4, false, true));
+    let (v, e, f) = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+    // The edge from the grid's vertex (1, 1) to (2, 1): interior, with two triangles beside it.
+    let h = mesh.find_halfedge(VertexId(6), VertexId(7)).unwrap();
+    let kept = mesh.collapse_halfedge(h).unwrap();
+    assert_eq!(kept, VertexId(7));
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(
+        (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
+        (v - 1, e - 3, f - 2)
+    );
+    assert!(mesh.is_vertex_deleted(VertexId(6)));
+    // The diagonal of the corner quad at (3, 0) joins boundary vertices 3 and 9 across the
+    // interior: collapsing it would pinch the surface, so it is refused and nothing changes.
+    let before = mesh.clone();
+    let h = mesh.find_halfedge(VertexId(3), VertexId(9)).unwrap();
+    assert!(!mesh.is_boundary_edge(h.edge()));
+    assert!(matches!(
+        mesh.collapse_halfedge(h),
+        Err(EditError::Refused { .. })
+    ));
+    assert_eq!(mesh, before);
+    mesh.garbage_collect();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(euler(&mesh), 1);
+}
+
+#[derive(Clone, Debug)]
+enum Edit {
+    Flip(u32),
+    SplitEdge(u32),
+    SplitFace(u32, u32, u32),
+    Triangulate(u32),
+    DeleteFace(u32, bool),
+    Collapse(u32),
+}
+
+fn edit() -> impl Strategy<Value = Edit> {
+    prop_oneof![
+        any::<u32>().prop_map(Edit::Flip),
+        any::<u32>().prop_map(Edit::SplitEdge),
+        (any::<u32>(), 0u32..6, 2u32..6).prop_map(|(f, i, j)| Edit::SplitFace(f, i, j)),
+        any::<u32>().prop_map(Edit::Triangulate),
+        (any::<u32>(), any::<bool>()).prop_map(|(f, d)| Edit::DeleteFace(f, d)),
+        any::<u32>().prop_map(Edit::Collapse),
+    ]
+}
+
+/// Applies `edit` with ids taken modulo the capacities; returns whether it succeeded.
+fn apply(mesh: &mut Mesh, edit: &Edit) -> bool {
+    let edge = |i: u32, mesh: &Mesh| EdgeId(i % mesh.edge_capacity().max(1) as u32);
+    let face = |i: u32, mesh: &Mesh| FaceId(i % mesh.face_capacity().max(1) as u32);
+    match *edit {
+        Edit::Flip(e) => mesh.flip_edge(edge(e, mesh)).is_ok(),
+        Edit::SplitEdge(e) => {
+            let e = edge(e, mesh);
+            let Ok(a) = mesh.try_origin(e.halfedge(0)) else {
+                return false;
+            };
+            let (pa, pb) = (mesh.position(a), mesh.position(mesh.target(e.halfedge(0))));
+            mesh.split_edge(
+                e,
+                [
+                    0.5 * (pa[0] + pb[0]),
+                    0.5 * (pa[1] + pb[1]),
+                    0.5 * (pa[2] + pb[2]),
+                ],
+            )
+            .is_ok()
+        }
+        Edit::SplitFace(f, i, j) => {
+            let f = face(f, mesh);
+            let Ok(start) = mesh.try_face_halfedge(f) else {
+                return false;
+            };
+            let h0 = mesh.halfedge_loop(start).nth(i as usize).unwrap_or(start);
+            let h1 = mesh.halfedge_loop(h0).nth(j as usize).unwrap_or(h0);
+            mesh.split_face(h0, h1).is_ok()
+        }
+        Edit::Triangulate(f) => mesh.triangulate_face(face(f, mesh)).is_ok(),
+        Edit::DeleteFace(f, isolated) => mesh.delete_face(face(f, mesh), isolated).is_ok(),
+        Edit::Collapse(h) => {
+            let h = HalfedgeId(h % mesh.halfedge_capacity().max(1) as u32);
+            mesh.collapse_halfedge(h).is_ok()
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn random_edits_keep_every_invariant(
+        columns in 3u32..7, rows in 3u32..7, closed: bool, triangles: bool,
+        edits in prop::collection::vec(edit(), 1..40),
+    ) {
+        let mut mesh = build(&grid(columns, rows, closed, triangles));
+        let mut euler_expected = Some(euler(&mesh));
+        for edit in &edits {
+            let before = mesh.clone();
+            let done = apply(&mut mesh, edit);
+            prop_assert_eq!(mesh.check(), Ok(()), "after {:?}", edit);
+            if !done {
+                prop_assert_eq!(&mesh, &before, "refused {:?} changed the mesh", edit);
+            }
+            if matches!(edit, Edit::DeleteFace(..)) {
+                euler_expected = None;
+            }
+            if let Some(expected) = euler_expected {
+                prop_assert_eq!(euler(&mesh), expected, "after {:?}", edit);
+            }
+        }
+        let counts = (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());
+        mesh.garbage_collect();
+        prop_assert_eq!(mesh.check(), Ok(()));
+        prop_assert_eq!((mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()), counts);
+        let rebuilt = build(&mesh.to_soup());
+        prop_assert_eq!(rebuilt.check(), Ok(()));
+        prop_assert_eq!((rebuilt.n_vertices(), rebuilt.n_edges(), rebuilt.n_faces()), counts);
+    }
+}
