@@ -355,17 +355,20 @@ class winged {
   }
 
   /// Builds from positions (x, y, z per vertex), corners per face and the vertex index of every
-  /// corner; see hw_winged_from_indexed().
+  /// corner; see hw_winged_from_indexed(). `report`, when given, receives the diagnostic.
   static winged from_indexed(const std::vector<double>& positions,
                              const std::vector<uint32_t>& face_sizes,
                              const std::vector<uint32_t>& indices,
-                             hw_build_policy policy = HW_BUILD_STRICT) {
+                             hw_build_policy policy = HW_BUILD_STRICT,
+                             diagnostic* report = nullptr) {
     if (positions.size() % 3 != 0)
       throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
     hw_winged* raw = nullptr;
+    hw_diagnostic* found = nullptr;
     check(hw_winged_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
                                  face_sizes.size(), indices.data(), indices.size(), policy, &raw,
-                                 nullptr));
+                                 report ? &found : nullptr));
+    if (report) *report = diagnostic(found);
     return winged(raw);
   }
 
