@@ -1388,9 +1388,9 @@ hw_status hw_winged_from_indexed_ordered(const double *positions,
 
 /**
  * Builds the winged-edge structure of a half-edge mesh, record for record: winged edge `e` is
- * mesh edge `e` directed as its half-edge `2e` (its left side) — the other half-edge is its
- * right side —, vertices and faces keep their ids and their stored edge. Deleted mesh elements
- * are left out and the rest renumbered densely in order.
+ * mesh edge `e`, directed as its half-edge `2e` (its left side; half-edge `2e + 1` is its right
+ * side); vertices and faces keep their ids and their stored edge. Deleted mesh elements are left
+ * out and the rest renumbered densely in order.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_winged` writable.
