@@ -35,6 +35,11 @@
 #include <stdint.h>
 
 /**
+ * Largest number of components per element (a 4 × 4 matrix).
+ */
+#define MAX_COMPONENTS 16
+
+/**
  * The index that means "no element" (`u32::MAX`), as in the C API's `HW_INVALID_INDEX`.
  */
 #define INVALID_INDEX UINT32_MAX
@@ -136,6 +141,16 @@ typedef struct hw_winged hw_winged;
 typedef uint32_t hw_status;
 
 /**
+ * An element kind, to pick one of several per-kind arrays.
+ */
+typedef uint32_t hw_element_kind;
+
+/**
+ * The numeric type of an attribute column.
+ */
+typedef uint32_t hw_scalar_type;
+
+/**
  * A vertex id.
  */
 typedef struct {
@@ -191,11 +206,6 @@ typedef uint32_t hw_diagnostic_list;
  * One list of edges in a diagnostic (see hw_diagnostic_edge()).
  */
 typedef uint32_t hw_diagnostic_edges;
-
-/**
- * An element kind, to pick one of several per-kind arrays.
- */
-typedef uint32_t hw_element_kind;
 
 /**
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
@@ -305,6 +315,26 @@ typedef struct {
   uint32_t center;
   hw_wcirculator_kind kind;
 } hw_wcirculator;
+
+/**
+ * `double`.
+ */
+#define HW_SCALAR_F64 0
+
+/**
+ * `float`.
+ */
+#define HW_SCALAR_F32 1
+
+/**
+ * `int32_t`.
+ */
+#define HW_SCALAR_I32 2
+
+/**
+ * `uint32_t`.
+ */
+#define HW_SCALAR_U32 3
 
 /**
  * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
@@ -492,6 +522,11 @@ typedef struct {
 #define HW_ERR_PANIC 9
 
 /**
+ * A named item (an attribute) does not exist.
+ */
+#define HW_ERR_NOT_FOUND 10
+
+/**
  * Per half-edge: the vertex it leaves.
  */
 #define HW_ARRAY_HALFEDGE_ORIGIN 0
@@ -600,6 +635,144 @@ typedef struct {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Adds a zero-filled attribute `name` of `components` (1 to 16) values of type `scalar` per
+ * element of `kind`. `HW_ERR_INVALID_INPUT` when the name is taken, empty, not UTF-8 or starts
+ * with `hw:` (reserved), or the kind, type or count is out of range.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ */
+hw_status hw_mesh_attribute_add(hw_mesh *mesh,
+                                hw_element_kind kind,
+                                const char *name,
+                                hw_scalar_type scalar,
+                                size_t components);
+
+/**
+ * Removes attribute `name` of `kind` (`"hw:corner_normal"` and `"hw:corner_uv"` included).
+ * `HW_ERR_NOT_FOUND` when there is none.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ */
+hw_status hw_mesh_attribute_remove(hw_mesh *mesh, hw_element_kind kind, const char *name);
+
+/**
+ * The type and component count of attribute `name` of `kind` (`HW_ERR_NOT_FOUND` when there is
+ * none; a way to test for one). Either output may be NULL.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; outputs NULL or writable.
+ */
+hw_status hw_mesh_attribute_info(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type *out_scalar,
+                                 size_t *out_components);
+
+/**
+ * A read-only view of attribute `name` of `kind`, which must hold `scalar` values:
+ * `*out_data` (cast it to `const double *`, `const float *`, ...; NULL when empty) holds
+ * `*out_len` scalars, `components` per element slot. `HW_ERR_NOT_FOUND` for an unknown name,
+ * `HW_ERR_INVALID_INPUT` for another type.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; `out_data`, `out_len`
+ * writable.
+ */
+hw_status hw_mesh_attribute_view(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type scalar,
+                                 const void **out_data,
+                                 size_t *out_len);
+
+/**
+ * Writable access to attribute `name` of `kind` (layout as hw_mesh_attribute_view()): write
+ * through `*out_data` until the next call that modifies the mesh.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
+ * `out_data`, `out_len` writable.
+ */
+hw_status hw_mesh_attribute_data(hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type scalar,
+                                 void **out_data,
+                                 size_t *out_len);
+
+/**
+ * Number of attributes of `kind` (halfwing's own `hw:` ones included).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_count` writable.
+ */
+hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
+
+/**
+ * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
+ * `kind` NUL-terminated into `buf` of `len` bytes; `*needed` (when not NULL) receives the size
+ * needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND` when `index` is
+ * past the last.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
+ * writable.
+ */
+hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 size_t index,
+                                 char *buf,
+                                 size_t len,
+                                 size_t *needed);
+
+/**
+ * A read-only view of the corner normals: `*out_xyz` holds `3 * *out_n_halfedges` doubles (x,
+ * y, z per half-edge slot, boundary ones included; NULL when empty). `HW_ERR_NOT_FOUND` when
+ * the mesh has none (a mesh read from a file with normals, or given them with
+ * hw_mesh_corner_normals_set(), has them).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
+ */
+hw_status hw_mesh_corner_normals_view(const hw_mesh *mesh,
+                                      const double **out_xyz,
+                                      size_t *out_n_halfedges);
+
+/**
+ * Sets the corner normals (adding them when the mesh has none) from `3 * n_halfedges` finite
+ * doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_slot_count()). Writing single
+ * values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`
+ * doubles.
+ */
+hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_halfedges);
+
+/**
+ * A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
+ * doubles (u, v per half-edge slot). `HW_ERR_NOT_FOUND` when the mesh has none.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
+ */
+hw_status hw_mesh_corner_uvs_view(const hw_mesh *mesh,
+                                  const double **out_uv,
+                                  size_t *out_n_halfedges);
+
+/**
+ * Sets the corner texture coordinates (adding them when needed) from `2 * n_halfedges` finite
+ * doubles, `n_halfedges` being the half-edge slot count.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `uv` NULL or `2 * n_halfedges`
+ * doubles.
+ */
+hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfedges);
 
 /**
  * Starts a walk around vertex `v`. An isolated vertex gives an empty walk.
@@ -756,6 +929,20 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
  * writable.
  */
 hw_status hw_mesh_add_vertex(hw_mesh *mesh, const double *xyz, hw_vertex *out_vertex);
+
+/**
+ * Adds the face with corners `vertices[0..n]` (counter-clockwise seen from outside; at least 3,
+ * distinct, live) and gives its id in `*out_face`; its loop starts at `vertices[0]`. Existing
+ * boundary sides are reused, missing edges created; the face and its corners have zero
+ * attributes. `HW_ERR_INVALID_HANDLE` for a bad vertex id; `HW_ERR_REFUSED`, with the mesh
+ * unchanged, for fewer than 3 or repeated corners, a side that has a face on this side already
+ * (complex edge), or a corner with no gap for the face (complex vertex).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `vertices` NULL (when `n` is 0) or
+ * `n` ids; `out_face` writable.
+ */
+hw_status hw_mesh_add_face(hw_mesh *mesh, const hw_vertex *vertices, size_t n, hw_face *out_face);
 
 /**
  * Deletes face `f`; its edges with no face left go too, and, when `delete_isolated_vertices`,
@@ -915,7 +1102,9 @@ void hw_soup_free(hw_soup *soup);
 
 /**
  * Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
- * would (same policies, same diagnostic; `out_diagnostic` may be NULL).
+ * would (same policies, same diagnostic; `out_diagnostic` may be NULL), keeping the file's
+ * normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
+ * hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
  *
  * # Safety
  * `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.

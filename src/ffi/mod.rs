@@ -9,6 +9,7 @@
 
 #![allow(non_camel_case_types)]
 
+pub mod attributes;
 pub(crate) mod boundary;
 pub mod circulator;
 pub mod diagnostic;
@@ -31,6 +32,7 @@ pub mod winged;
 pub mod winged_circulator;
 pub mod winged_euler;
 
+pub use attributes::*;
 pub use circulator::*;
 pub use diagnostic::*;
 pub use edit::*;

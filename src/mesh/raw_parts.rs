@@ -4,7 +4,7 @@
 use super::check::InvariantError;
 use super::connectivity::{Deletions, Mesh};
 
-/// The arrays of a mesh without deletions, in [`Mesh`]'s layout: per half-edge `origin`,
+/// The arrays of a mesh without deletions or attributes, in [`Mesh`]'s layout: per half-edge `origin`,
 /// `next`, `prev`, `face` (half-edge `2e` and `2e + 1` form edge `e`), per vertex its outgoing
 /// half-edge and position, per face one half-edge; `u32::MAX` means none.
 pub(crate) struct MeshArrays {
@@ -32,6 +32,7 @@ impl Mesh {
             deleted: Deletions::default(),
             // Until the vertices are looked at below, operators must not assume single fans.
             may_have_pinched_vertices: true,
+            attributes: Default::default(),
         };
         mesh.check()?;
         mesh.may_have_pinched_vertices = !mesh.non_manifold_vertices().is_empty();
