@@ -141,6 +141,7 @@ static void faces_and_attributes() {
     missing = e.status() == HW_ERR_NOT_FOUND;
   }
   CHECK(missing);
+}
 
 /// hw::winged: a quad built by the Euler operators, walked with range-for, converted to a
 /// half-edge mesh and back; refusals throw with HW_ERR_REFUSED and change nothing.
