@@ -3,7 +3,6 @@
 // connected components, uniform vertex normals (OpenMesh's update_normals) and angle-weighted
 // vertex normals (a reference computed here); and, on the broken models, every face OpenMesh's
 // add_face refuses is accounted for by halfwing's diagnostic.
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <cmath>
@@ -13,35 +12,9 @@
 
 #include "check.h"
 #include "models.hpp"
+#include "openmesh_build.hpp"
 
 namespace {
-
-/// Double precision, like halfwing (OpenMesh's default traits store float points and normals).
-struct DoubleTraits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
-
-/// Builds an OpenMesh mesh with add_face in input order; returns the faces it refused.
-std::vector<std::size_t> openmesh_build(const models::Indexed& m, PolyMesh& mesh) {
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    mesh.add_vertex(PolyMesh::Point(m.positions[3 * v], m.positions[3 * v + 1],
-                                    m.positions[3 * v + 2]));
-  std::vector<std::size_t> refused, offsets;
-  std::vector<PolyMesh::VertexHandle> face;
-  for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    face.clear();
-    bool in_range = true;
-    for (uint32_t v : m.face(f, offsets)) {
-      in_range = in_range && v < m.n_vertices();
-      face.emplace_back(int(v));
-    }
-    // OpenMesh asserts on faces of fewer than 3 corners: they count as refused.
-    if (!in_range || face.size() < 3 || !mesh.add_face(face).is_valid()) refused.push_back(f);
-  }
-  return refused;
-}
 
 std::vector<std::size_t> openmesh_boundary_loop_lengths(const PolyMesh& mesh) {
   std::vector<char> seen(mesh.n_halfedges(), 0);

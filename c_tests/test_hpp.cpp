@@ -143,6 +143,61 @@ static void faces_and_attributes() {
   CHECK(missing);
 }
 
+/// hw::winged: a quad built by the Euler operators, walked with range-for, converted to a
+/// half-edge mesh and back; refusals throw with HW_ERR_REFUSED and change nothing.
+static void winged_kernel() {
+  hw::winged w;
+  auto [v0, f0] = w.mvfs({0, 0, 0});
+  auto [e1, v1] = w.mev(f0, v0, {1, 0, 0});
+  auto [e2, v2] = w.mev(f0, v1, {1, 1, 0});
+  auto [e3, v3] = w.mev(f0, v2, {0, 1, 0});
+  auto [e4, f1] = w.mef(f0, v3, v0);
+  CHECK(w.n_vertices() == 4 && w.n_edges() == 4 && w.n_faces() == 2);
+  w.check_invariants();
+  std::vector<uint32_t> corners;
+  for (hw_wvertex v : w.face_vertices(f1)) corners.push_back(v.idx);
+  CHECK(corners.size() == 4);
+  std::set<uint32_t> around_v0;
+  for (hw_wvertex v : w.vertex_vertices(v0)) around_v0.insert(v.idx);
+  CHECK((around_v0 == std::set<uint32_t>{v1.idx, v3.idx}));
+  std::size_t edges = 0, faces = 0;
+  for (hw_wedge e : w.face_edges(f0)) edges += e.idx != HW_INVALID_INDEX;
+  for (hw_wface f : w.face_faces(f0)) faces += f.idx == f1.idx;
+  CHECK(edges == 4 && faces == 4);
+  const hw_wedge_record r = w.edge(e4);
+  CHECK(r.start.idx == v3.idx && r.end.idx == v0.idx && r.left_face.idx == f1.idx);
+  CHECK(std::fabs(std::fabs(w.face_normal(f1)[2]) - 1) < 1e-12);
+
+  bool refused = false;
+  try {
+    w.mef(f0, v1, v1);
+  } catch (const hw::error& e) {
+    refused = e.status() == HW_ERR_REFUSED &&
+              std::string(e.what()).find("itself") != std::string::npos;
+  }
+  CHECK(refused);
+  CHECK(w.n_edges() == 4);
+  bool invalid = false;
+  try {
+    w.vertex_edge(hw_wvertex{99});
+  } catch (const hw::error& e) {
+    invalid = e.status() == HW_ERR_INVALID_HANDLE;
+  }
+  CHECK(invalid);
+
+  hw::mesh m = w.to_mesh();
+  CHECK(m.n_faces() == 2 && m.n_halfedges() == 8);
+  hw::winged back = hw::winged::from_mesh(m);
+  CHECK(back.n_edges() == 4 && back.table(HW_WTABLE_EDGES) == w.table(HW_WTABLE_EDGES));
+  const std::string faces_csv = w.table(HW_WTABLE_FACES, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_CSV);
+  CHECK(faces_csv.rfind("Id,Arista\n0,", 0) == 0 && faces_csv.find("\n1,3\n") != std::string::npos);
+  hw::winged moved = std::move(back);
+  CHECK(!back && moved.n_faces() == 2);
+  (void)e1;
+  (void)e2;
+  (void)e3;
+}
+
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
 
 int main() {
@@ -151,6 +206,7 @@ int main() {
   circulation_and_normals();
   editing();
   faces_and_attributes();
+  winged_kernel();
   version_string();
   return check_summary("test_hpp");
 }

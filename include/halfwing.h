@@ -89,6 +89,13 @@ typedef struct hw_mesh hw_mesh;
 typedef struct hw_soup hw_soup;
 
 /**
+ * A winged-edge (Baumgart) polygon mesh: one record per edge with its two vertices, its two
+ * faces and its four wings. Opaque; create it with hw_winged_new(), hw_winged_from_indexed() or
+ * hw_winged_from_mesh() and release it with hw_winged_free().
+ */
+typedef struct hw_winged hw_winged;
+
+/**
  * The result of a fallible C call. `HW_OK` (0) is success; every other value is an error whose
  * details `hw_last_error_message` gives.
  *
@@ -178,6 +185,100 @@ typedef uint32_t hw_normal_weighting;
  * Which internal array hw_mesh_view() shows.
  */
 typedef uint32_t hw_mesh_array;
+
+/**
+ * A vertex id of an ::hw_winged.
+ */
+typedef struct {
+  uint32_t idx;
+} hw_wvertex;
+
+/**
+ * An edge id of an ::hw_winged (one record per undirected edge).
+ */
+typedef struct {
+  uint32_t idx;
+} hw_wedge;
+
+/**
+ * A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
+ * (a boundary).
+ */
+typedef struct {
+  uint32_t idx;
+} hw_wface;
+
+/**
+ * Baumgart's edge record. An edge runs `start → end`; its **left** side is the loop that walks
+ * it `start → end`, its **right** side the loop that walks it `end → start`; each side has the
+ * previous and next edge of that loop (its wings). The same fields under the course notes'
+ * three naming conventions:
+ *
+ * | field        | seed 000 (Baumgart) | seed 003 (Granada) | seed 001 (Wikipedia) |
+ * |--------------|---------------------|--------------------|----------------------|
+ * | `start`      | VSTART              | Vi                 | vert_origin          |
+ * | `end`        | VEND                | Vf                 | vert_destination     |
+ * | `left_face`  | FCW                 | Cd                 | face_left            |
+ * | `right_face` | FCCW                | Ci                 | face_right           |
+ * | `left_prev`  | EPCW                | Ada                | edge_left_cw         |
+ * | `left_next`  | ENCW                | Ads                | edge_left_ccw        |
+ * | `right_prev` | EPCCW               | Aia                | edge_right_cw        |
+ * | `right_next` | ENCCW               | Ais                | edge_right_ccw       |
+ *
+ * A face id of `HW_INVALID_INDEX` is a hole; its wings still link the boundary loop.
+ */
+typedef struct {
+  hw_wvertex start;
+  hw_wvertex end;
+  hw_wface left_face;
+  hw_wface right_face;
+  hw_wedge left_prev;
+  hw_wedge left_next;
+  hw_wedge right_prev;
+  hw_wedge right_next;
+} hw_wedge_record;
+
+/**
+ * Which elements hw_winged_normals() gives normals of.
+ */
+typedef uint32_t hw_wnormals;
+
+/**
+ * Which table hw_winged_table() prints.
+ */
+typedef uint32_t hw_wtable;
+
+/**
+ * Which course notes' column names a table uses.
+ */
+typedef uint32_t hw_wnaming;
+
+/**
+ * How a table is written.
+ */
+typedef uint32_t hw_table_format;
+
+/**
+ * What a winged circulator yields.
+ */
+typedef uint32_t hw_wcirculator_kind;
+
+/**
+ * A winged circulator's state, kept on the caller's stack. Fill it with
+ * hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
+ * its kind. Treat the fields as private. It borrows the structure: do not modify the structure
+ * while walking.
+ */
+typedef struct {
+  const hw_winged *winged;
+  uint32_t start_edge;
+  uint32_t start_side;
+  uint32_t current_edge;
+  uint32_t current_side;
+  uint32_t remaining;
+  uint32_t center;
+  hw_wcirculator_kind kind;
+} hw_wcirculator;
 
 /**
  * `double`.
@@ -418,6 +519,82 @@ typedef uint32_t hw_mesh_array;
  * Per face: one of its half-edges.
  */
 #define HW_ARRAY_FACE_HALFEDGE 5
+
+/**
+ * Face normals (Newell), indexed by face id.
+ */
+#define HW_WNORMALS_FACES 0
+
+/**
+ * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
+ */
+#define HW_WNORMALS_VERTICES 1
+
+/**
+ * The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge" table).
+ */
+#define HW_WTABLE_VERTICES 0
+
+/**
+ * The face table: id, stored edge ("Face-Edge").
+ */
+#define HW_WTABLE_FACES 1
+
+/**
+ * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
+ */
+#define HW_WTABLE_EDGES 2
+
+/**
+ * The three tables, vertex, face and edge, separated by a blank line.
+ */
+#define HW_WTABLE_ALL 3
+
+/**
+ * Seed 000 (Baumgart's cube): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
+ * from 1 with a letter (V1, E1, F1).
+ */
+#define HW_WNAMING_CW_CCW 0
+
+/**
+ * Seed 003 (Granada): Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+ */
+#define HW_WNAMING_DIRECT_INVERSE 1
+
+/**
+ * Seed 001 (Wikipedia): vert_origin ... edge_right_ccw; elements numbered from 0.
+ */
+#define HW_WNAMING_LEFT_RIGHT 2
+
+/**
+ * Columns aligned with spaces; a hole is `∅` (UTF-8).
+ */
+#define HW_TABLE_TEXT 0
+
+/**
+ * A Markdown table; a hole is `∅`.
+ */
+#define HW_TABLE_MARKDOWN 1
+
+/**
+ * Comma-separated values with a header row; a hole is an empty field.
+ */
+#define HW_TABLE_CSV 2
+
+/**
+ * Edges: the edges of a face's loop, or the edges at a vertex.
+ */
+#define HW_WCIRC_EDGES 0
+
+/**
+ * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
+ */
+#define HW_WCIRC_VERTICES 1
+
+/**
+ * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
+ */
+#define HW_WCIRC_FACES 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -1305,6 +1482,411 @@ hw_status hw_mesh_view(const hw_mesh *mesh,
 hw_status hw_mesh_view_positions(const hw_mesh *mesh,
                                  const double **out_xyz,
                                  size_t *out_n_vertices);
+
+/**
+ * Creates an empty structure, to build with the Euler operators (hw_winged_mvfs() first).
+ * Returns NULL only if the allocation fails.
+ */
+hw_winged *hw_winged_new(void);
+
+/**
+ * Builds a winged-edge structure from an indexed polygon list, by the algorithm of the slide
+ * "Creación a partir de malla indexada" (seed 003) with a bulk edge lookup.
+ *
+ * The arrays, `policy`, the statuses and the diagnostic are exactly those of
+ * hw_mesh_from_indexed(): the same input is refused, skipped or repaired the same way by both
+ * kernels. Edges are numbered in order of first appearance walking the faces in order and
+ * point the way their first face walks them (that face is their left face); each face's loop
+ * starts at its first corner; input vertex `i` is vertex `i`.
+ *
+ * On success `*out_winged` receives a new structure to release with hw_winged_free(), and, when
+ * `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic to release with
+ * hw_diagnostic_free(). On failure neither is written.
+ *
+ * # Safety
+ * Array arguments must point to at least as many elements as their counts say (they may be NULL
+ * when the count is 0); `out_winged` must be writable; `out_diagnostic` NULL or writable.
+ */
+hw_status hw_winged_from_indexed(const double *positions,
+                                 size_t n_vertices,
+                                 const uint32_t *face_sizes,
+                                 size_t n_faces,
+                                 const uint32_t *indices,
+                                 size_t n_indices,
+                                 hw_build_policy policy,
+                                 hw_winged **out_winged,
+                                 hw_diagnostic **out_diagnostic);
+
+/**
+ * Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
+ * `edge_order` lists them: edge `i` runs from `edge_order[2 i]` to `edge_order[2 i + 1]`, and
+ * the face walking it that way is its left face. This reproduces tables whose edge numbering was
+ * made by hand, as the course notes' are. `n_edges` must be the edge count of the faces and
+ * every edge must be listed once, in either direction; otherwise `HW_ERR_INVALID_INPUT` with
+ * the first mismatch in the message.
+ *
+ * # Safety
+ * As for hw_winged_from_indexed(); `edge_order` must point to `2 * n_edges` indices (NULL
+ * when `n_edges` is 0).
+ */
+hw_status hw_winged_from_indexed_ordered(const double *positions,
+                                         size_t n_vertices,
+                                         const uint32_t *face_sizes,
+                                         size_t n_faces,
+                                         const uint32_t *indices,
+                                         size_t n_indices,
+                                         const uint32_t *edge_order,
+                                         size_t n_edges,
+                                         hw_winged **out_winged);
+
+/**
+ * Builds the winged-edge structure of a half-edge mesh, record for record: winged edge `e` is
+ * mesh edge `e`, directed as its half-edge `2e` (its left side; half-edge `2e + 1` is its right
+ * side); vertices and faces keep their ids and their stored edge. Deleted mesh elements are left
+ * out and the rest renumbered densely in order.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_winged` writable.
+ */
+hw_status hw_winged_from_mesh(const hw_mesh *mesh, hw_winged **out_winged);
+
+/**
+ * Converts to a half-edge mesh (the inverse of hw_winged_from_mesh()): edge `e`'s left side
+ * becomes half-edge `2e`, its right side `2e + 1`; ids are kept (deleted elements compacted
+ * away first). Converting a structure built by hw_winged_from_indexed() gives the mesh
+ * hw_mesh_from_indexed() builds from the same input.
+ *
+ * Returns `HW_ERR_REFUSED` when a face has no edges (a point face made by hw_winged_mvfs():
+ * a half-edge face needs a half-edge).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_mesh` writable.
+ */
+hw_status hw_winged_to_mesh(const hw_winged *winged, hw_mesh **out_mesh);
+
+/**
+ * Releases a structure. NULL is a no-op; a structure freed already is detected and refused (the
+ * last error says so).
+ *
+ * # Safety
+ * `winged` must be NULL or a structure from this library not in use by another thread.
+ */
+void hw_winged_free(hw_winged *winged);
+
+/**
+ * Number of vertices (deleted ones not counted); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_n_vertices(const hw_winged *winged);
+
+/**
+ * Number of edges (deleted ones not counted); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_n_edges(const hw_winged *winged);
+
+/**
+ * Number of faces (deleted ones not counted); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_n_faces(const hw_winged *winged);
+
+/**
+ * Size of the vertex id space: ids `0 .. capacity - 1`, deleted ones included until
+ * hw_winged_garbage_collect(); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_vertex_capacity(const hw_winged *winged);
+
+/**
+ * Size of the edge id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_edge_capacity(const hw_winged *winged);
+
+/**
+ * Size of the face id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+size_t hw_winged_face_capacity(const hw_winged *winged);
+
+/**
+ * Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
+
+/**
+ * Whether `e` names a live edge (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
+
+/**
+ * Whether `f` names a live face (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
+
+/**
+ * Copies the record of edge `e` (its vertices, faces and wings) into `*out_record`.
+ * `HW_ERR_INVALID_HANDLE` for an edge that does not exist or was deleted.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_record` writable.
+ */
+hw_status hw_winged_edge(const hw_winged *winged, hw_wedge e, hw_wedge_record *out_record);
+
+/**
+ * A zero-copy, read-only view of all edge records, indexed by edge id: `*out_records` (NULL when
+ * there are none) and `*out_len`. A deleted edge's record has `start.idx == HW_INVALID_INDEX`.
+ * Valid until the next call that modifies the structure.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_records` and `out_len` writable.
+ */
+hw_status hw_winged_edge_records(const hw_winged *winged,
+                                 const hw_wedge_record **out_records,
+                                 size_t *out_len);
+
+/**
+ * The edge vertex `v` stores: its ring starts there (for a boundary vertex, the edge whose side
+ * leaving `v` is a hole). Invalid for an isolated vertex, and (with the error recorded) for a
+ * vertex that does not exist.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
+
+/**
+ * The edge face `f` stores: its loop starts there. Invalid for a point face (made by
+ * hw_winged_mvfs()), and (with the error recorded) for a face that does not exist.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+hw_wedge hw_winged_face_edge(const hw_winged *winged, hw_wface f);
+
+/**
+ * Writes the position of `v` to `out_xyz[0..3]`.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_xyz` NULL or 3 writable doubles.
+ */
+hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
+
+/**
+ * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
+ * degenerate or point face), written to `out_normal[0..3]`.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+ */
+hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
+
+/**
+ * Unit normal of vertex `v` as seed 000 computes it: the normalised sum of the unit normals of
+ * the faces around it (holes left out; zero if none), written to `out_normal[0..3]`.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+ */
+hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+
+/**
+ * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
+ * ::HW_WNORMALS_VERTICES), indexed by id, as
+ * `3 * capacity` doubles (x, y, z per element; zero for deleted and degenerate elements) copied
+ * into `out_xyz`, which holds `len` doubles. `*needed` (when not NULL) always receives the number
+ * of doubles needed; `HW_ERR_BUFFER_TOO_SMALL` when `out_xyz` is NULL or too short.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_xyz` NULL or `len` writable doubles; `needed`
+ * NULL or writable.
+ */
+hw_status hw_winged_normals(const hw_winged *winged,
+                            hw_wnormals which,
+                            double *out_xyz,
+                            size_t len,
+                            size_t *needed);
+
+/**
+ * Checks every structural invariant (records in range, wings linking closed loops, stored
+ * edges incident, counts). `HW_OK`, or `HW_ERR_INVALID_INPUT` with the first broken invariant
+ * in the message. A structure made by this library always passes.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ */
+hw_status hw_winged_check(const hw_winged *winged);
+
+/**
+ * Prints a table of the structure in the course notes' layout (`which`: ::HW_WTABLE_VERTICES,
+ * ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_TEXT, ...) into `buf` (`len`
+ * bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL) always
+ * receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or
+ * shorter (call with `buf = NULL` to learn the size). Unknown enum values give
+ * `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `buf` NULL or `len` writable bytes; `needed` NULL
+ * or writable.
+ */
+hw_status hw_winged_table(const hw_winged *winged,
+                          hw_wtable which,
+                          hw_wnaming naming,
+                          hw_table_format format,
+                          char *buf,
+                          size_t len,
+                          size_t *needed);
+
+/**
+ * Starts a walk around face `f`: its edges or corners in loop order, or the faces across its
+ * edges (holes skipped). A point face (made by hw_winged_mvfs()) gives an empty walk.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out` writable.
+ */
+hw_status hw_wcirc_around_face(const hw_winged *winged,
+                               hw_wface f,
+                               hw_wcirculator_kind kind,
+                               hw_wcirculator *out);
+
+/**
+ * Starts a walk around vertex `v`: its edges or neighbours counter-clockwise, or the faces
+ * around it (holes skipped). An isolated vertex gives an empty walk.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out` writable.
+ */
+hw_status hw_wcirc_around_vertex(const hw_winged *winged,
+                                 hw_wvertex v,
+                                 hw_wcirculator_kind kind,
+                                 hw_wcirculator *out);
+
+/**
+ * Next edge of a ::HW_WCIRC_EDGES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ */
+bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
+
+/**
+ * Next vertex of a ::HW_WCIRC_VERTICES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ */
+bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
+
+/**
+ * Next face of a ::HW_WCIRC_FACES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ */
+bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
+
+/**
+ * **Make vertex, face, solid**: a new solid of one vertex at `position[0..3]` and one face
+ * without edges (a point face). Writes the vertex and the face.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call; `position`
+ * NULL or 3 readable doubles; `out_vertex` and `out_face` writable.
+ */
+hw_status hw_winged_mvfs(hw_winged *winged,
+                         const double *position,
+                         hw_wvertex *out_vertex,
+                         hw_wface *out_face);
+
+/**
+ * **Make edge, vertex**: a new vertex at `position[0..3]` joined to `vertex` by a new edge
+ * `vertex → new vertex` lying inside `face` (both its sides are `face`). `vertex` must occur
+ * exactly once on `face`'s loop, or be the vertex of a point face. Writes the edge and vertex.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call; `position`
+ * NULL or 3 readable doubles; `out_edge` and `out_vertex` writable.
+ */
+hw_status hw_winged_mev(hw_winged *winged,
+                        hw_wface face,
+                        hw_wvertex vertex,
+                        const double *position,
+                        hw_wedge *out_edge,
+                        hw_wvertex *out_vertex);
+
+/**
+ * **Make edge, face**: splits `face` with a new edge `v1 → v2`. The new face is the new edge's
+ * left side (the part of the loop from `v2` back to `v1`); `face` keeps the part from `v1` to
+ * `v2`. `v1` and `v2` must differ and each occur exactly once on `face`'s loop. Writes the edge
+ * and the new face.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call; `out_edge`
+ * and `out_face` writable.
+ */
+hw_status hw_winged_mef(hw_winged *winged,
+                        hw_wface face,
+                        hw_wvertex v1,
+                        hw_wvertex v2,
+                        hw_wedge *out_edge,
+                        hw_wface *out_face);
+
+/**
+ * **Kill edge, vertex** (inverse of MEV): removes `vertex` and `edge`, which must be its only
+ * edge. When `edge` was its solid's last edge, the face becomes a point face on the other vertex.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call.
+ */
+hw_status hw_winged_kev(hw_winged *winged, hw_wedge edge, hw_wvertex vertex);
+
+/**
+ * **Kill edge, face** (inverse of MEF): removes `edge` and the face `kill` on one of its sides,
+ * merging `kill` into the face on the other side. The two sides must be two different faces.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call.
+ */
+hw_status hw_winged_kef(hw_winged *winged, hw_wedge edge, hw_wface kill);
+
+/**
+ * **Kill vertex, face, solid** (inverse of MVFS): removes a point face and its vertex.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call.
+ */
+hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
+
+/**
+ * Drops the elements the kill operators deleted and renumbers the live ones densely, keeping
+ * their order. Every id held from before (and every view) is invalidated.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call.
+ */
+hw_status hw_winged_garbage_collect(hw_winged *winged);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -2,7 +2,8 @@
 //
 // Owning classes are move-only and free their object in the destructor; failures throw
 // hw::error, which carries the hw_status and the library's message. Element ids stay the C
-// structs (hw_vertex, hw_halfedge, hw_edge, hw_face).
+// structs (hw_vertex, hw_halfedge, hw_edge, hw_face; hw_wvertex, hw_wedge, hw_wface for the
+// winged-edge kernel).
 #ifndef HALFWING_HPP
 #define HALFWING_HPP
 
@@ -116,12 +117,13 @@ class values_view {
 };
 
 
-/// A range over a C circulator, for range-for loops: `for (hw_vertex w : m.vertices_around(v))`.
-/// It borrows the mesh: do not modify the mesh while iterating.
-template <class Id, bool (*Next)(hw_circulator*, Id*)>
-class circulation {
+/// A range over a C circulator (of either kernel), for range-for loops:
+/// `for (hw_vertex w : m.vertices_around(v))`. It borrows the mesh: do not modify the mesh while
+/// iterating.
+template <class Circulator, class Id, bool (*Next)(Circulator*, Id*)>
+class circulation_of {
  public:
-  explicit circulation(const hw_circulator& start) : start_(start) {}
+  explicit circulation_of(const Circulator& start) : start_(start) {}
 
   class iterator {
    public:
@@ -131,7 +133,7 @@ class circulation {
     using pointer = const Id*;
     using reference = const Id&;
     iterator() = default;
-    explicit iterator(const hw_circulator& c) : c_(c), live_(true) { ++*this; }
+    explicit iterator(const Circulator& c) : c_(c), live_(true) { ++*this; }
     const Id& operator*() const { return current_; }
     iterator& operator++() {
       live_ = live_ && Next(&c_, &current_);
@@ -142,7 +144,7 @@ class circulation {
     bool operator!=(const iterator& other) const { return !(*this == other); }
 
    private:
-    hw_circulator c_{};
+    Circulator c_{};
     Id current_{};
     bool live_ = false;
   };
@@ -151,8 +153,12 @@ class circulation {
   iterator end() const { return iterator(); }
 
  private:
-  hw_circulator start_;
+  Circulator start_;
 };
+
+/// A range over a half-edge circulator (see circulation_of).
+template <class Id, bool (*Next)(hw_circulator*, Id*)>
+using circulation = circulation_of<hw_circulator, Id, Next>;
 
 using halfedge_circulation = circulation<hw_halfedge, hw_circ_next_halfedge>;
 using vertex_circulation = circulation<hw_vertex, hw_circ_next_vertex>;
@@ -198,6 +204,8 @@ class diagnostic {
  private:
   detail::owned<hw_diagnostic, hw_diagnostic_free> raw_;
 };
+
+class winged;
 
 /// A half-edge polygon mesh (owns an hw_mesh). Const methods may run concurrently; the others
 /// need exclusive access. Failures throw hw::error.
@@ -433,6 +441,7 @@ class mesh {
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
 
  private:
+  friend class winged;  // hw::winged::to_mesh() hands over a new hw_mesh
   explicit mesh(hw_mesh* raw) : raw_(raw) {}
   hw_circulator around(hw_vertex v, hw_circulator_kind kind) const {
     hw_circulator c;
@@ -446,6 +455,173 @@ class mesh {
   }
   std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Winged-edge kernel
+
+/// A winged-edge (Baumgart) polygon mesh (owns an hw_winged). Ids are hw_wvertex, hw_wedge and
+/// hw_wface; the walks are ranges (`for (hw_wedge e : w.face_edges(f))`); the Euler operators
+/// throw hw::error (status HW_ERR_REFUSED when a precondition does not hold) and leave the
+/// structure unchanged when they refuse.
+class winged {
+ public:
+  using edge_range = circulation_of<hw_wcirculator, hw_wedge, hw_wcirc_next_edge>;
+  using vertex_range = circulation_of<hw_wcirculator, hw_wvertex, hw_wcirc_next_vertex>;
+  using face_range = circulation_of<hw_wcirculator, hw_wface, hw_wcirc_next_face>;
+  using point = std::array<double, 3>;
+
+  /// An empty structure, to build with the Euler operators (mvfs() first).
+  winged() : raw_(hw_winged_new()) {
+    if (!raw_) check(HW_ERR_PANIC);
+  }
+
+  /// Builds from positions (x, y, z per vertex), corners per face and the vertex index of every
+  /// corner; see hw_winged_from_indexed(). `report`, when given, receives the diagnostic.
+  static winged from_indexed(const std::vector<double>& positions,
+                             const std::vector<uint32_t>& face_sizes,
+                             const std::vector<uint32_t>& indices,
+                             hw_build_policy policy = HW_BUILD_STRICT,
+                             diagnostic* report = nullptr) {
+    if (positions.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    hw_winged* raw = nullptr;
+    hw_diagnostic* found = nullptr;
+    check(hw_winged_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
+                                 face_sizes.size(), indices.data(), indices.size(), policy, &raw,
+                                 report ? &found : nullptr));
+    if (report) *report = diagnostic(found);
+    return winged(raw);
+  }
+
+  /// The winged-edge structure of a half-edge mesh (same ids); see hw_winged_from_mesh().
+  static winged from_mesh(const hw::mesh& m) {
+    hw_winged* raw = nullptr;
+    check(hw_winged_from_mesh(m.get(), &raw));
+    return winged(raw);
+  }
+
+  /// The half-edge mesh of this structure (same ids); see hw_winged_to_mesh().
+  hw::mesh to_mesh() const {
+    hw_mesh* raw = nullptr;
+    check(hw_winged_to_mesh(get(), &raw));
+    return hw::mesh(raw);
+  }
+
+  std::size_t n_vertices() const { return hw_winged_n_vertices(get()); }
+  std::size_t n_edges() const { return hw_winged_n_edges(get()); }
+  std::size_t n_faces() const { return hw_winged_n_faces(get()); }
+  std::size_t vertex_capacity() const { return hw_winged_vertex_capacity(get()); }
+  std::size_t edge_capacity() const { return hw_winged_edge_capacity(get()); }
+  std::size_t face_capacity() const { return hw_winged_face_capacity(get()); }
+
+  /// The record of edge `e`: vertices, faces and the four wings.
+  hw_wedge_record edge(hw_wedge e) const {
+    hw_wedge_record record;
+    check(hw_winged_edge(get(), e, &record));
+    return record;
+  }
+  bool is_vertex(hw_wvertex v) const { return hw_winged_is_vertex(get(), v); }
+  bool is_edge(hw_wedge e) const { return hw_winged_is_edge(get(), e); }
+  bool is_face(hw_wface f) const { return hw_winged_is_face(get(), f); }
+
+  /// The edge `v` stores (where its ring starts); invalid for an isolated vertex. Throws for a
+  /// vertex that does not exist.
+  hw_wedge vertex_edge(hw_wvertex v) const {
+    if (!is_vertex(v)) check(HW_ERR_INVALID_HANDLE);
+    return hw_winged_vertex_edge(get(), v);
+  }
+  /// The edge `f` stores (where its loop starts); invalid for a point face. Throws for a face
+  /// that does not exist.
+  hw_wedge face_edge(hw_wface f) const {
+    if (!is_face(f)) check(HW_ERR_INVALID_HANDLE);
+    return hw_winged_face_edge(get(), f);
+  }
+
+  point position(hw_wvertex v) const { return triple(hw_winged_position, v); }
+  point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
+  point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
+
+  /// The edges of `f`'s loop, counter-clockwise from its stored edge.
+  edge_range face_edges(hw_wface f) const { return edge_range(around(f, HW_WCIRC_EDGES)); }
+  /// The corners of `f`, counter-clockwise from its first corner.
+  vertex_range face_vertices(hw_wface f) const {
+    return vertex_range(around(f, HW_WCIRC_VERTICES));
+  }
+  /// The faces across `f`'s edges (holes skipped).
+  face_range face_faces(hw_wface f) const { return face_range(around(f, HW_WCIRC_FACES)); }
+  /// The edges at `v`, counter-clockwise.
+  edge_range vertex_edges(hw_wvertex v) const { return edge_range(around(v, HW_WCIRC_EDGES)); }
+  /// The neighbours of `v`, counter-clockwise.
+  vertex_range vertex_vertices(hw_wvertex v) const {
+    return vertex_range(around(v, HW_WCIRC_VERTICES));
+  }
+  /// The faces around `v`, counter-clockwise (holes skipped).
+  face_range vertex_faces(hw_wvertex v) const { return face_range(around(v, HW_WCIRC_FACES)); }
+
+  /// Make vertex, face, solid: returns the new vertex and (point) face.
+  std::pair<hw_wvertex, hw_wface> mvfs(const point& p) {
+    std::pair<hw_wvertex, hw_wface> made;
+    check(hw_winged_mvfs(get(), p.data(), &made.first, &made.second));
+    return made;
+  }
+  /// Make edge, vertex: returns the new edge and vertex.
+  std::pair<hw_wedge, hw_wvertex> mev(hw_wface f, hw_wvertex v, const point& p) {
+    std::pair<hw_wedge, hw_wvertex> made;
+    check(hw_winged_mev(get(), f, v, p.data(), &made.first, &made.second));
+    return made;
+  }
+  /// Make edge, face: returns the new edge and face.
+  std::pair<hw_wedge, hw_wface> mef(hw_wface f, hw_wvertex v1, hw_wvertex v2) {
+    std::pair<hw_wedge, hw_wface> made;
+    check(hw_winged_mef(get(), f, v1, v2, &made.first, &made.second));
+    return made;
+  }
+  void kev(hw_wedge e, hw_wvertex v) { check(hw_winged_kev(get(), e, v)); }
+  void kef(hw_wedge e, hw_wface kill) { check(hw_winged_kef(get(), e, kill)); }
+  void kvfs(hw_wface f) { check(hw_winged_kvfs(get(), f)); }
+  void garbage_collect() { check(hw_winged_garbage_collect(get())); }
+
+  /// Throws hw::error naming the first broken invariant, if any.
+  void check_invariants() const { check(hw_winged_check(get())); }
+
+  /// A table in the course notes' layout; see hw_winged_table().
+  std::string table(hw_wtable which, hw_wnaming naming = HW_WNAMING_CW_CCW,
+                    hw_table_format format = HW_TABLE_TEXT) const {
+    std::size_t needed = 0;
+    hw_winged_table(get(), which, naming, format, nullptr, 0, &needed);
+    std::string text(needed, '\0');
+    check(hw_winged_table(get(), which, naming, format, &text[0], text.size(), &needed));
+    text.resize(needed - 1);
+    return text;
+  }
+
+  /// The C object, for calls the wrapper does not cover. Still owned by this structure.
+  hw_winged* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  explicit winged(hw_winged* raw) : raw_(raw) {}
+
+  hw_wcirculator around(hw_wface f, hw_wcirculator_kind kind) const {
+    hw_wcirculator c;
+    check(hw_wcirc_around_face(get(), f, kind, &c));
+    return c;
+  }
+  hw_wcirculator around(hw_wvertex v, hw_wcirculator_kind kind) const {
+    hw_wcirculator c;
+    check(hw_wcirc_around_vertex(get(), v, kind, &c));
+    return c;
+  }
+
+  template <class Id>
+  point triple(hw_status (*call)(const hw_winged*, Id, double*), Id id) const {
+    point p;
+    check(call(get(), id, p.data()));
+    return p;
+  }
+
+  detail::owned<hw_winged, hw_winged_free> raw_;
 };
 
 }  // namespace hw

@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use halfwing::soup::{FaceList, PolygonSoup};
+use halfwing::soup::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, PolygonSoup};
 use halfwing::winged::{EdgeId, FaceId, Side, VertexId, Winged, WingedError};
 use proptest::prelude::*;
 
@@ -41,7 +41,7 @@ fn grid(cols: u32, rows: u32, holes: &[u32]) -> PolygonSoup {
 }
 
 fn assert_round_trip(input: &PolygonSoup) -> Winged {
-    let w = Winged::from_soup(input).expect("builds");
+    let (w, _) = Winged::from_soup(input, BuildPolicy::Strict).expect("builds");
     w.check().expect("valid");
     let output = w.to_soup();
     assert_eq!(output.positions, input.positions);
@@ -224,15 +224,21 @@ fn mixed_polygons_and_unreferenced_vertices_round_trip() {
 #[test]
 fn uniform_triangle_lists_build() {
     let g = grid(2, 2, &[]);
-    let w = Winged::from_face_list(&FaceList::triangles(&g.positions, &g.indices)).unwrap();
+    let (w, diagnostic) = Winged::from_face_list(
+        &FaceList::triangles(&g.positions, &g.indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap();
+    assert!(diagnostic.is_clean(), "{diagnostic}");
     w.check().unwrap();
     assert_eq!(w.to_soup().indices, g.indices);
 }
 
 // --- bad input -------------------------------------------------------------------------------
 
-fn build_err(positions: &[[f64; 3]], faces: &[&[u32]]) -> WingedError {
-    Winged::from_soup(&soup(positions.to_vec(), faces)).expect_err("must be refused")
+fn build_err(positions: &[[f64; 3]], faces: &[&[u32]]) -> BuildError {
+    Winged::from_soup(&soup(positions.to_vec(), faces), BuildPolicy::Strict)
+        .expect_err("must be refused")
 }
 
 const SQUARE: [[f64; 3]; 5] = [
@@ -243,67 +249,84 @@ const SQUARE: [[f64; 3]; 5] = [
     [0.5, 0.5, 1.0],
 ];
 
+/// The shared diagnostic names every defect by index, exactly as for the half-edge kernel.
 #[test]
-fn bad_input_gets_a_typed_error() {
-    assert_eq!(
-        build_err(&SQUARE, &[&[0, 1, 7]]),
-        WingedError::IndexOutOfRange {
-            face: 0,
-            vertex: 7,
-            n_vertices: 5
-        }
-    );
-    assert_eq!(
-        build_err(&SQUARE, &[&[0, 1, 2], &[0, 2, 1, 2]]),
-        WingedError::RepeatedVertex { face: 1, vertex: 2 }
-    );
-    assert_eq!(
-        build_err(&SQUARE, &[&[0, 1]]),
-        WingedError::FaceTooSmall { face: 0, size: 2 }
-    );
-    assert_eq!(
-        build_err(&SQUARE, &[&[0, 1, 4], &[1, 0, 2], &[0, 1, 3]]),
-        WingedError::NonManifoldEdge {
-            a: 0,
-            b: 1,
-            faces: vec![0, 1, 2]
-        }
-    );
-    assert_eq!(
-        build_err(&SQUARE, &[&[0, 1, 2], &[0, 1, 3]]),
-        WingedError::InconsistentOrientation {
-            a: 0,
-            b: 1,
-            faces: [0, 1]
-        }
-    );
+fn bad_input_gets_the_shared_diagnostic() {
+    let invalid = |e: BuildError| match e {
+        BuildError::InvalidInput(d) => *d,
+        other => panic!("expected invalid input, got {other:?}"),
+    };
+    let non_manifold = |e: BuildError| match e {
+        BuildError::NonManifold(d) => *d,
+        other => panic!("expected non-manifold, got {other:?}"),
+    };
+    let d = invalid(build_err(
+        &SQUARE,
+        &[&[0, 1, 7], &[0, 1, 2], &[0, 2, 1, 2], &[0, 1]],
+    ));
+    assert_eq!(d.faces_out_of_range, [0]);
+    assert_eq!(d.faces_repeated_vertex, [2]);
+    assert_eq!(d.faces_too_small, [3]);
+
+    let d = non_manifold(build_err(&SQUARE, &[&[0, 1, 4], &[1, 0, 2], &[0, 1, 3]]));
+    let book = EdgeReport {
+        vertices: [0, 1],
+        faces: vec![0, 1, 2],
+    };
+    assert_eq!(d.non_manifold_edges, [book]);
+    let d = non_manifold(build_err(&SQUARE, &[&[0, 1, 2], &[0, 1, 3]]));
+    let flipped = EdgeReport {
+        vertices: [0, 1],
+        faces: vec![0, 1],
+    };
+    assert_eq!(d.inconsistent_edges, [flipped]);
+
     let mut nan = SQUARE;
     nan[3][1] = f64::NAN;
+    nan[4][0] = f64::INFINITY;
     assert_eq!(
-        build_err(&nan, &[&[0, 1, 2]]),
-        WingedError::NonFinitePosition { vertex: 3 }
-    );
-    nan[3][1] = f64::INFINITY;
-    assert_eq!(
-        build_err(&nan, &[&[0, 1, 2]]),
-        WingedError::NonFinitePosition { vertex: 3 }
+        invalid(build_err(&nan, &[&[0, 1, 2]])).non_finite_vertices,
+        [3, 4]
     );
 
     // Sizes and indices that disagree, including sizes whose sum overflows 32 bits.
     let idx = [0, 1, 2];
     let sizes = [u32::MAX, u32::MAX, 3];
-    assert!(matches!(
-        Winged::from_face_list(&FaceList::polygons(&SQUARE, &sizes, &idx)),
-        Err(WingedError::CornerCountMismatch { actual: 3, .. })
-    ));
-    assert!(matches!(
-        Winged::from_face_list(&FaceList::triangles(&SQUARE, &[0, 1, 2, 3])),
-        Err(WingedError::CornerCountMismatch { actual: 4, .. })
-    ));
-    assert!(matches!(
-        Winged::from_face_list(&FaceList::polygons(&SQUARE, &[3, 0], &idx)),
-        Err(WingedError::FaceTooSmall { face: 1, size: 0 })
-    ));
+    let list_problem = |list: FaceList<'_>| {
+        invalid(Winged::from_face_list(&list, BuildPolicy::Repair).unwrap_err()).list_problem
+    };
+    assert!(list_problem(FaceList::polygons(&SQUARE, &sizes, &idx)).is_some());
+    assert!(list_problem(FaceList::triangles(&SQUARE, &[0, 1, 2, 3])).is_some());
+    let d = invalid(
+        Winged::from_face_list(
+            &FaceList::polygons(&SQUARE, &[3, 0], &idx),
+            BuildPolicy::Strict,
+        )
+        .unwrap_err(),
+    );
+    assert_eq!(d.faces_too_small, [1]);
+}
+
+/// Skip and repair build what strict refuses, with the same meaning as for the half-edge
+/// kernel: the same faces survive, the same vertices are copied, and the two kernels agree.
+#[test]
+fn skip_and_repair_match_the_half_edge_kernel() {
+    let faces: &[&[u32]] = &[&[0, 1, 4], &[1, 0, 2], &[0, 1, 3], &[1, 2, 4], &[0, 3, 2]];
+    let input = soup(SQUARE.to_vec(), faces);
+    for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+        let (w, diagnostic) = Winged::from_soup(&input, policy).unwrap();
+        let (mesh, mesh_diagnostic) =
+            halfwing::mesh::Mesh::from_face_list(&input.as_face_list(), policy).unwrap();
+        assert_eq!(diagnostic, mesh_diagnostic, "{policy:?}");
+        w.check().unwrap();
+        assert_eq!(w.to_soup(), mesh.to_soup(), "{policy:?}");
+        assert_eq!(w.n_vertices() as usize, mesh.n_vertices());
+        assert_eq!(w.n_edges() as usize, mesh.n_edges());
+    }
+    let (_, skipped) = Winged::from_soup(&input, BuildPolicy::Skip).unwrap();
+    assert_eq!(skipped.skipped_faces, [2]);
+    let (_, repaired) = Winged::from_soup(&input, BuildPolicy::Repair).unwrap();
+    assert!(!repaired.vertex_copies.is_empty());
 }
 
 #[test]
@@ -312,9 +335,20 @@ fn long_polygons_with_a_repeat_are_refused() {
     let mut face: Vec<u32> = (0..100).collect();
     face[70] = 3;
     assert_eq!(
-        build_err(&positions, &[&face]),
-        WingedError::RepeatedVertex { face: 0, vertex: 3 }
+        build_err(&positions, &[&face])
+            .diagnostic()
+            .faces_repeated_vertex,
+        [0]
     );
+}
+
+#[test]
+fn edge_order_builds_refuse_bad_faces_with_the_diagnostic() {
+    let list = FaceList::triangles(&SQUARE, &[0, 1, 9]);
+    match Winged::from_face_list_with_edge_order(&list, &[[0, 1], [1, 9], [9, 0]]) {
+        Err(WingedError::InvalidFaceList(e)) => assert_eq!(e.diagnostic().faces_out_of_range, [0]),
+        other => panic!("expected the shared diagnostic, got {other:?}"),
+    }
 }
 
 #[test]
@@ -346,7 +380,7 @@ fn explicit_edge_order_must_be_a_permutation() {
 
 #[test]
 fn invalid_handles_are_errors() {
-    let w = Winged::from_soup(&grid(1, 1, &[])).unwrap();
+    let (w, _) = Winged::from_soup(&grid(1, 1, &[]), BuildPolicy::Strict).unwrap();
     assert_eq!(
         w.edge(EdgeId(99)).unwrap_err(),
         WingedError::InvalidEdge(EdgeId(99))
@@ -381,83 +415,44 @@ fn invalid_handles_are_errors() {
 
 /// A minimal OFF reader for the test models (positions and polygons; colours ignored). The
 /// crate's readers live in `crate::io`; this keeps the kernel's tests independent of them.
-fn read_off(path: &Path) -> Option<PolygonSoup> {
-    let text = std::fs::read_to_string(path).ok()?;
-    let mut tokens = text
-        .lines()
-        .map(|l| l.split('#').next().unwrap_or(""))
-        .flat_map(str::split_whitespace);
-    let header = tokens.next()?;
-    if !header.ends_with("OFF") {
-        return None;
-    }
-    let n_v: usize = tokens.next()?.parse().ok()?;
-    let n_f: usize = tokens.next()?.parse().ok()?;
-    let _n_e = tokens.next()?;
-    let per_vertex = if header.starts_with('N') { 6 } else { 3 };
-    let mut positions = Vec::with_capacity(n_v);
-    for _ in 0..n_v {
-        let values: Vec<f64> = (0..per_vertex)
-            .map(|_| tokens.next()?.parse().ok())
-            .collect::<Option<_>>()?;
-        positions.push([values[0], values[1], values[2]]);
-    }
-    // Faces are one per line; read them by line so trailing colours are skipped.
-    let mut lines = text
-        .lines()
-        .map(|l| l.split('#').next().unwrap_or("").trim())
-        .filter(|l| !l.is_empty());
-    let mut seen = 0;
-    let mut skip = 2 + n_v; // header line, counts line, vertex lines
-    if header.len() < text.trim_start().lines().next()?.trim().len() {
-        skip -= 1; // counts on the header line
-    }
-    let mut face_sizes = Vec::new();
-    let mut indices = Vec::new();
-    for line in lines.by_ref() {
-        if seen < skip {
-            seen += 1;
-            continue;
-        }
-        let mut fields = line.split_whitespace().map(|t| t.parse::<u32>());
-        let size = fields.next()?.ok()?;
-        face_sizes.push(size);
-        for _ in 0..size {
-            indices.push(fields.next()?.ok()?);
-        }
-        if face_sizes.len() == n_f {
-            break;
-        }
-    }
-    Some(PolygonSoup {
-        positions,
-        face_sizes,
-        indices,
-        corner_normals: None,
-        corner_uvs: None,
-    })
-}
-
-fn off_files(dir: &str) -> Vec<std::path::PathBuf> {
+/// Every model file of `../shared/data/meshes/<dir>`, read with the crate's reader (files the
+/// reader refuses are left out: the readers have their own tests).
+fn models(dir: &str) -> Vec<(std::path::PathBuf, PolygonSoup)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../shared/data/meshes")
         .join(dir);
     let mut files: Vec<_> = std::fs::read_dir(root)
         .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
         .unwrap_or_default();
-    files.retain(|p| p.extension().is_some_and(|e| e == "off"));
     files.sort();
     files
+        .into_iter()
+        .filter_map(|path| halfwing::io::read_path(&path).ok().map(|soup| (path, soup)))
+        .collect()
+}
+
+/// Positions and faces only (the readers also keep per-corner normals and uvs, which a
+/// winged-edge structure has no place for).
+fn geometry(soup: PolygonSoup) -> PolygonSoup {
+    PolygonSoup {
+        corner_normals: None,
+        corner_uvs: None,
+        ..soup
+    }
 }
 
 #[test]
 fn manifold_models_round_trip() {
     let mut built = 0;
     for dir in ["closed", "open", "polygonal"] {
-        for path in off_files(dir) {
-            let Some(input) = read_off(&path) else {
-                continue;
+        for (path, input) in models(dir) {
+            let input = geometry(input);
+            let Ok((_, diagnostic)) = Winged::from_soup(&input, BuildPolicy::Strict) else {
+                continue; // not manifold: left to the broken-model test
             };
+            if !diagnostic.non_manifold_vertices.is_empty() {
+                continue;
+            }
             let w = assert_round_trip(&input);
             assert_walks_cover_everything(&w);
             if dir == "closed" {
@@ -469,24 +464,33 @@ fn manifold_models_round_trip() {
             built += 1;
         }
     }
-    // The data folder is shared and read-only; when it is present it has OFF models.
+    // The data folder is shared and read-only; when it is present it has many manifold models.
     if Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../shared/data")
         .exists()
     {
-        assert!(built >= 5, "only {built} OFF models read");
+        assert!(built >= 30, "only {built} manifold models built");
     }
 }
 
+/// Every policy either refuses a broken model with a diagnostic or builds a valid structure
+/// that agrees with the half-edge kernel's on the same input.
 #[test]
 fn broken_models_never_panic() {
-    for path in off_files("broken") {
-        let Some(input) = read_off(&path) else {
-            continue;
-        };
-        if let Ok(w) = Winged::from_soup(&input) {
-            w.check().unwrap_or_else(|e| panic!("{path:?}: {e}"));
-            assert_eq!(w.to_soup().indices, input.indices);
+    for (path, input) in models("broken") {
+        for policy in [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair] {
+            let winged = Winged::from_soup(&input, policy);
+            let mesh = halfwing::mesh::Mesh::from_face_list(&input.as_face_list(), policy);
+            match (winged, mesh) {
+                (Ok((w, d)), Ok((m, md))) => {
+                    w.check()
+                        .unwrap_or_else(|e| panic!("{path:?} {policy:?}: {e}"));
+                    assert_eq!(d, md, "{path:?} {policy:?}");
+                    assert_eq!(w.to_soup(), geometry(m.to_soup()), "{path:?} {policy:?}");
+                }
+                (Err(e), Err(me)) => assert_eq!(e, me, "{path:?} {policy:?}"),
+                (w, m) => panic!("{path:?} {policy:?}: kernels disagree: {w:?} / {m:?}"),
+            }
         }
     }
 }
@@ -513,7 +517,7 @@ proptest! {
     ) {
         let positions: Vec<[f64; 3]> = (0..n_vertices).map(|i| [i as f64, (i * i) as f64, 0.0]).collect();
         let list = FaceList::polygons(&positions, &sizes, &indices);
-        if let Ok(w) = Winged::from_face_list(&list) {
+        if let Ok((w, _)) = Winged::from_face_list(&list, BuildPolicy::Strict) {
             prop_assert!(w.check().is_ok());
             let back = w.to_soup();
             prop_assert_eq!(&back.indices, &indices);
@@ -523,36 +527,23 @@ proptest! {
 }
 
 #[test]
-fn large_meshes_pair_the_same_and_report_the_first_error() {
-    // Big enough for the parallel pairing to split the vertices into several blocks.
+fn large_meshes_report_every_defect() {
     let mut input = grid(160, 160, &[]);
     assert_round_trip(&input);
-    // Two defects far apart: a face walking the last grid edge (last -> last - 1) again, in
-    // the last vertices' buckets, and one walking grid edge 0 -> 1 again, in vertex 0's bucket.
+    // Two defects far apart: a face walking the last grid edge (last -> last - 1) again, and
+    // one walking grid edge 0 -> 1 again. Both are reported, in vertex order.
     let n = input.positions.len() as u32;
     let last = n - 1;
     input
         .positions
         .extend([[0.5, -1.0, 0.0], [160.5, 161.0, 1.0]]);
-    input.face_sizes.push(3);
-    input.indices.extend([last, last - 1, n + 1]);
-    assert_eq!(
-        Winged::from_soup(&input).unwrap_err(),
-        WingedError::InconsistentOrientation {
-            a: last,
-            b: last - 1,
-            faces: [51199, 51200]
-        }
-    );
-    // With both, the first in vertex order is reported, however the blocks were scheduled.
-    input.face_sizes.push(3);
-    input.indices.extend([0, 1, n]);
-    assert_eq!(
-        Winged::from_soup(&input).unwrap_err(),
-        WingedError::InconsistentOrientation {
-            a: 0,
-            b: 1,
-            faces: [0, 51201]
-        }
-    );
+    input.face_sizes.extend([3, 3]);
+    input.indices.extend([last, last - 1, n + 1, 0, 1, n]);
+    let d: Diagnostic = match Winged::from_soup(&input, BuildPolicy::Strict).unwrap_err() {
+        BuildError::NonManifold(d) => *d,
+        other => panic!("{other:?}"),
+    };
+    let edges: Vec<[u32; 2]> = d.inconsistent_edges.iter().map(|r| r.vertices).collect();
+    assert_eq!(edges, [[0, 1], [last - 1, last]]);
+    assert_eq!(d.inconsistent_edges[1].faces, [51199, 51200]);
 }

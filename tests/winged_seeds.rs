@@ -3,7 +3,7 @@
 //! The faces are derived from each seed's own edge table (vertex and face columns only); the
 //! structure built from them must then reproduce every column, wings included.
 
-use halfwing::soup::FaceList;
+use halfwing::soup::{BuildPolicy, FaceList};
 use halfwing::winged::{EdgeId, FaceId, Naming, TableFormat, VertexId, Winged};
 
 /// One edge row: start, end, face walking it forward, face walking it backward, and the wings
@@ -387,8 +387,12 @@ fn slide_algorithm_numbers_edges_as_the_slide_fills_its_table() {
         .collect();
     let sizes: Vec<u32> = reordered.iter().map(|f| f.len() as u32).collect();
     let indices = reordered.concat();
-    let w =
-        Winged::from_face_list(&FaceList::polygons(&WEDGE_POSITIONS, &sizes, &indices)).unwrap();
+    let w = Winged::from_face_list(
+        &FaceList::polygons(&WEDGE_POSITIONS, &sizes, &indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap()
+    .0;
     w.check().unwrap();
     let position_of = |f: u32| slide_order.iter().position(|&s| s as u32 == f).unwrap() as u32;
     for (e, row) in rows.iter().enumerate() {

@@ -1,6 +1,6 @@
 //! Table output: the three namings and three formats, on a mesh with a boundary.
 
-use halfwing::soup::FaceList;
+use halfwing::soup::{BuildPolicy, FaceList};
 use halfwing::winged::{Naming, TableFormat, Winged};
 
 /// Two triangles sharing edge 1-2: five edges, four of them on the boundary.
@@ -12,7 +12,12 @@ fn two_triangles() -> Winged {
         [1.0, 1.0, 0.5],
     ];
     let indices = [0, 1, 2, 2, 1, 3];
-    Winged::from_face_list(&FaceList::triangles(&positions, &indices)).unwrap()
+    Winged::from_face_list(
+        &FaceList::triangles(&positions, &indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap()
+    .0
 }
 
 #[test]

@@ -61,7 +61,7 @@ pub(crate) fn element_kind(raw: hw_element_kind) -> Result<ElementKind, FfiError
     }
 }
 
-/// Pairs each C id struct with its Rust id.
+/// Pairs each C id struct with its Rust id (also used by the winged-edge ids).
 macro_rules! id_conversions {
     ($($c:ident <=> $rust:ident),*) => {$(
         impl From<$c> for $rust {
@@ -71,10 +71,13 @@ macro_rules! id_conversions {
             fn from(id: $rust) -> Self { $c { idx: id.0 } }
         }
         impl $c {
-            pub(crate) const INVALID: $c = $c { idx: HW_INVALID_INDEX };
+            // Not every kind has a call that returns "none".
+            #[allow(dead_code)]
+            pub(crate) const INVALID: $c = $c { idx: $crate::ffi::elements::HW_INVALID_INDEX };
         }
     )*};
 }
+pub(crate) use id_conversions;
 
 id_conversions!(hw_vertex <=> VertexId, hw_halfedge <=> HalfedgeId, hw_edge <=> EdgeId, hw_face <=> FaceId);
 

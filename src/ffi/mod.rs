@@ -28,6 +28,9 @@ pub mod threads;
 pub mod topology;
 pub mod version;
 pub mod views;
+pub mod winged;
+pub mod winged_circulator;
+pub mod winged_euler;
 
 pub use attributes::*;
 pub use circulator::*;
@@ -45,3 +48,6 @@ pub use threads::*;
 pub use topology::*;
 pub use version::*;
 pub use views::*;
+pub use winged::*;
+pub use winged_circulator::*;
+pub use winged_euler::*;

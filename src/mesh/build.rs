@@ -8,8 +8,9 @@
 //! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
 //!    (walking the fan only at vertices with several boundary gaps).
 
-use crate::geom::is_degenerate_polygon;
-use crate::soup::{BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, resolve};
+use crate::soup::{
+    BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, degenerate_faces, resolve,
+};
 
 use super::Mesh;
 use super::connectivity::Deletions;
@@ -163,32 +164,6 @@ impl Mesh {
             h = rotated;
         }
         unreachable!("a fan opened by a boundary half-edge is closed by one")
-    }
-}
-
-/// Input indices of the faces whose area is negligible (non-finite positions are not degenerate
-/// but non-finite, reported apart).
-fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u32> {
-    let is_degenerate = |f: usize| {
-        let points = table.face(f).iter().map(|&v| positions[v as usize]);
-        is_degenerate_polygon(points)
-    };
-    #[cfg(feature = "parallel")]
-    {
-        use rayon::prelude::*;
-        (0..table.n_faces())
-            .into_par_iter()
-            .with_min_len(4096)
-            .filter(|&f| is_degenerate(f))
-            .map(|f| table.input_face(f))
-            .collect()
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        (0..table.n_faces())
-            .filter(|&f| is_degenerate(f))
-            .map(|f| table.input_face(f))
-            .collect()
     }
 }
 

@@ -18,6 +18,7 @@ mod export;
 mod from_soup;
 mod ids;
 mod navigation;
+mod raw_parts;
 mod vertex_fans;
 
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
@@ -29,3 +30,4 @@ pub use connectivity::Mesh;
 pub use edit::{EditError, IndexMaps};
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};
+pub(crate) use raw_parts::MeshArrays;

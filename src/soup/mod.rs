@@ -7,6 +7,7 @@
 //! ([`pair_edges`]), and refuses, skips or repairs until every corner has a partner corner or is
 //! on the boundary. The [`Diagnostic`] lists everything found, by input index.
 
+mod degenerate;
 mod diagnostic;
 mod face_list;
 mod orient;
@@ -15,6 +16,7 @@ mod policy;
 mod resolve;
 mod table;
 
+pub use degenerate::degenerate_faces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};

@@ -1,12 +1,13 @@
 //! Construction from an indexed face list: the "Creación a partir de malla indexada" algorithm
-//! of seed `003_52f8c4a27ca793d7.txt`, with the per-edge lookup done by bucketing.
+//! of seed `003_52f8c4a27ca793d7.txt`, on the shared face-list analysis of [`crate::soup`].
 //!
 //! The slide reads the faces in order and, for every consecutive corner pair `(a, b)`, either
 //! finds the edge `(b, a)` already made (the face becomes its inverse face, `Ci`) or appends a
 //! new edge `a → b` (the face becomes its direct face, `Cd`); then it fills the wings. The
-//! "does `(b, a)` exist" lookup is the expensive part; here every corner is bucketed by its
-//! smaller vertex (a counting sort) and paired within its bucket, in O(corners). Edges are then
-//! numbered in the order the slide would create them, so the result is exactly the slide's table.
+//! "does `(b, a)` exist" lookup is the expensive part; [`resolve`] answers it for every corner at
+//! once by bucketing (and applies the [`BuildPolicy`]), so the slide's loop runs here in one
+//! linear pass with the answer at hand. Edges are numbered in the order the slide would create
+//! them, so the result is exactly the slide's table.
 
 use std::collections::HashMap;
 
@@ -14,36 +15,48 @@ use super::error::WingedError;
 use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 use super::record::EdgeRecord;
 use super::structure::Winged;
-use super::validate::validate_face_list;
-use crate::soup::FaceList;
-
-/// Marks a corner with no partner (its edge is on the boundary).
-const UNPAIRED: u32 = u32::MAX;
+use crate::soup::{
+    BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, degenerate_faces, resolve,
+};
 
 impl Winged {
-    /// Builds the structure from an indexed face list.
+    /// Builds the structure from an indexed face list under `policy`, with the same analysis,
+    /// policies and [`Diagnostic`] as [`Mesh::from_face_list`](crate::mesh::Mesh::from_face_list)
+    /// (see [`BuildPolicy`]): refused input gives a [`BuildError`] carrying the diagnostic.
     ///
+    /// Input vertex `i` is vertex `i` (repair's copies follow, see
+    /// [`Diagnostic::vertex_copies`]); face `f` is input face `f` unless faces were skipped.
     /// Edges are numbered in order of first appearance walking the faces in order (face 0's
     /// corners first); an edge points the way its first face walks it, so that face is its left
     /// face (seed 003's `Cd`) and the second face its right face (`Ci`). A face stores the edge
     /// leaving its first corner, so its loop starts where the input's face started. A vertex
     /// stores, by preference: an edge whose side leaving it is a hole (boundary vertices), else
     /// the lowest-numbered edge starting at it, else the lowest-numbered edge ending at it.
-    /// Unreferenced vertices are kept, without edges.
-    ///
-    /// Refuses (strict policy; the shared `Skip`/`Repair` policies come with `crate::soup`'s
-    /// analysis) faces with fewer than 3 corners, out-of-range indices, a vertex twice in one
-    /// face, non-finite positions, edges shared by more than two faces, and two faces walking
-    /// their shared edge the same way (inconsistent orientation).
-    /// On bad input the error reported is the first in vertex order (of the edge's smaller
-    /// vertex).
-    pub fn from_face_list(list: &FaceList<'_>) -> Result<Self, WingedError> {
-        let offsets = validate_face_list(list)?;
-        let mate = pair_corners(list.indices, &offsets, list.positions.len())?;
-        let mut w = assemble(list, &offsets, &mate);
+    /// Unreferenced vertices are kept, without edges, and reported as isolated; vertices where
+    /// several fans of faces touch are kept and reported as non-manifold.
+    pub fn from_face_list(
+        list: &FaceList<'_>,
+        policy: BuildPolicy,
+    ) -> Result<(Self, Diagnostic), BuildError> {
+        let resolved = resolve(list, policy)?;
+        let mut diagnostic = resolved.diagnostic;
+        let mut w = assemble(
+            &resolved.table,
+            &resolved.pairing.partner,
+            resolved.positions.into_owned(),
+        );
         w.link_boundary_loops();
         w.choose_vertex_edges();
-        Ok(w)
+        diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
+        diagnostic.isolated_vertices = w
+            .vertex_edge
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| !e.is_valid())
+            .map(|(v, _)| v as u32)
+            .collect();
+        diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &w.positions);
+        Ok((w, diagnostic))
     }
 
     /// Builds the structure from an indexed face list, numbering and directing the edges as
@@ -51,12 +64,14 @@ impl Winged {
     ///
     /// This reproduces tables whose edge numbering was made by hand (as the course notes'
     /// tables are). `edge_order` must list every edge of the faces exactly once, in either
-    /// direction; the face that walks an edge `start → end` becomes its left face.
+    /// direction; the face that walks an edge `start → end` becomes its left face. The faces
+    /// are built under [`BuildPolicy::Strict`] (a hand-made numbering names the input's own
+    /// edges); refused input gives [`WingedError::InvalidFaceList`] with the diagnostic.
     pub fn from_face_list_with_edge_order(
         list: &FaceList<'_>,
         edge_order: &[[u32; 2]],
     ) -> Result<Self, WingedError> {
-        let mut w = Self::from_face_list(list)?;
+        let (mut w, _) = Self::from_face_list(list, BuildPolicy::Strict)?;
         w.renumber_edges(edge_order)?;
         w.choose_vertex_edges();
         Ok(w)
@@ -187,96 +202,22 @@ impl Winged {
     }
 }
 
-/// Calls `visit(corner, next corner of the same face)` for every corner, face by face.
-fn for_each_corner(offsets: &[u32], mut visit: impl FnMut(usize, usize)) {
-    for bounds in offsets.windows(2) {
-        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
-        for c in first..end {
-            visit(c, if c + 1 == end { first } else { c + 1 });
-        }
-    }
-}
-
-/// The face a corner belongs to (for error messages only).
-fn face_of_corner(offsets: &[u32], corner: u32) -> u32 {
-    (offsets.partition_point(|&o| o <= corner) - 1) as u32
-}
-
-/// Finds, for every corner `c` (the edge from its vertex to the next corner's), the corner of
-/// another face walking the same edge the other way, or [`UNPAIRED`] on a boundary.
-///
-/// Corners are bucketed by the smaller endpoint of their edge (a counting sort), then sorted by
-/// the larger endpoint inside each bucket, which groups equal edges together.
-fn pair_corners(
-    indices: &[u32],
-    offsets: &[u32],
-    n_vertices: usize,
-) -> Result<Vec<u32>, WingedError> {
-    let mut bucket_start = vec![0u32; n_vertices + 1];
-    for_each_corner(offsets, |c, next| {
-        bucket_start[indices[c].min(indices[next]) as usize + 1] += 1;
-    });
-    for v in 0..n_vertices {
-        bucket_start[v + 1] += bucket_start[v];
-    }
-    let mut cursor = bucket_start[..n_vertices].to_vec();
-    // Key: larger endpoint in the high half, corner in the low half.
-    let mut keyed = vec![0u64; indices.len()];
-    for_each_corner(offsets, |c, next| {
-        let (a, b) = (indices[c], indices[next]);
-        let slot = &mut cursor[a.min(b) as usize];
-        keyed[*slot as usize] = (u64::from(a.max(b)) << 32) | c as u64;
-        *slot += 1;
-    });
-
-    let mut mate = vec![UNPAIRED; indices.len()];
-    for v in 0..n_vertices {
-        let bucket = &mut keyed[bucket_start[v] as usize..bucket_start[v + 1] as usize];
-        bucket.sort_unstable();
-        for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
-            let corner = |k: usize| (group[k] & u64::from(u32::MAX)) as u32;
-            let (low, high) = (v as u32, (group[0] >> 32) as u32);
-            match group.len() {
-                1 => {}
-                2 => {
-                    let (c1, c2) = (corner(0), corner(1));
-                    let a = indices[c1 as usize];
-                    if a == indices[c2 as usize] {
-                        return Err(WingedError::InconsistentOrientation {
-                            a,
-                            b: if a == low { high } else { low },
-                            faces: [face_of_corner(offsets, c1), face_of_corner(offsets, c2)],
-                        });
-                    }
-                    mate[c1 as usize] = c2;
-                    mate[c2 as usize] = c1;
-                }
-                n => {
-                    return Err(WingedError::NonManifoldEdge {
-                        a: low,
-                        b: high,
-                        faces: (0..n).map(|k| face_of_corner(offsets, corner(k))).collect(),
-                    });
-                }
-            }
-        }
-    }
-    Ok(mate)
-}
-
 /// Creates the edge records in the slide's order and fills faces and wings of the face sides,
-/// in one pass over the faces.
-fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
-    let indices = list.indices;
+/// in one pass over the faces. `partner[c]` is the corner walking corner `c`'s edge the other
+/// way, or [`BOUNDARY`].
+fn assemble(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) -> Winged {
+    let indices = table.corners();
     // Filled in corner order, so it grows by pushes (no up-front fill of the whole array).
     let mut edge_of_corner: Vec<EdgeId> = Vec::with_capacity(indices.len());
     let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
-    for (f, bounds) in offsets.windows(2).enumerate() {
-        let (first, end) = (bounds[0] as usize, bounds[1] as usize);
+    let mut face_edge = Vec::with_capacity(table.n_faces());
+    for f in 0..table.n_faces() {
+        let corners = table.face_range(f);
+        let (first, end) = (corners.start, corners.end);
         let face = FaceId(f as u32);
         for c in first..end {
-            let partner = mate[c];
-            if partner == UNPAIRED || partner as usize > c {
+            let mate = partner[c];
+            if mate == BOUNDARY || mate as usize > c {
                 // First face to walk this edge: a new edge, walked forward (the slide's Cd).
                 edge_of_corner.push(EdgeId(edges.len() as u32));
                 let next = if c + 1 == end { first } else { c + 1 };
@@ -285,7 +226,7 @@ fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
                 edges.push(r);
             } else {
                 // The edge exists: this face walks it backward (the slide's Ci).
-                let e = edge_of_corner[partner as usize];
+                let e = edge_of_corner[mate as usize];
                 edge_of_corner.push(e);
                 edges[e.index()].right_face = face;
             }
@@ -303,18 +244,16 @@ fn assemble(list: &FaceList<'_>, offsets: &[u32], mate: &[u32]) -> Winged {
             r.set_prev(side, edge_of_corner[prev]);
             r.set_next(side, edge_of_corner[next]);
         }
+        face_edge.push(edge_of_corner[first]);
     }
 
-    let n_faces = offsets.len() - 1;
-    let n_vertices = list.positions.len();
+    let n_faces = table.n_faces();
+    let n_vertices = positions.len();
     Winged {
-        positions: list.positions.to_vec(),
+        positions,
         vertex_edge: vec![EdgeId::INVALID; n_vertices],
         vertex_alive: vec![true; n_vertices],
-        face_edge: offsets[..n_faces]
-            .iter()
-            .map(|&c| edge_of_corner[c as usize])
-            .collect(),
+        face_edge,
         face_alive: vec![true; n_faces],
         n_live_vertices: n_vertices as u32,
         n_live_edges: edges.len() as u32,

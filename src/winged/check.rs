@@ -194,7 +194,7 @@ impl Winged {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::soup::FaceList;
+    use crate::soup::{BuildPolicy, FaceList};
     use crate::winged::{FaceId, VertexId};
 
     /// A tetrahedron, faces counter-clockwise from outside.
@@ -206,7 +206,9 @@ mod tests {
             [0.0, 0.0, 1.0],
         ];
         let idx = [0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2];
-        Winged::from_face_list(&FaceList::triangles(&p, &idx)).unwrap()
+        Winged::from_face_list(&FaceList::triangles(&p, &idx), BuildPolicy::Strict)
+            .unwrap()
+            .0
     }
 
     fn reason(w: &Winged) -> &'static str {

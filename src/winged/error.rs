@@ -1,6 +1,7 @@
 //! Errors of the winged-edge kernel.
 
 use super::ids::{EdgeId, FaceId, VertexId};
+use crate::soup::BuildError;
 
 /// Everything that can go wrong building, querying or editing a [`Winged`](super::Winged).
 ///
@@ -9,65 +10,15 @@ use super::ids::{EdgeId, FaceId, VertexId};
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum WingedError {
     // --- face-list input ---
-    /// A face has fewer than three corners.
-    #[error("face {face} has {size} corners; a polygon needs at least 3")]
-    FaceTooSmall {
-        /// The face.
-        face: u32,
-        /// Its corner count.
-        size: u32,
-    },
-    /// The face sizes do not add up to the number of corner indices.
-    #[error("the face sizes add up to {expected} corners but {actual} indices were given")]
-    CornerCountMismatch {
-        /// Sum of the face sizes.
-        expected: u64,
-        /// Length of the index array.
-        actual: u64,
-    },
-    /// A corner refers to a vertex that does not exist.
-    #[error("face {face} refers to vertex {vertex}, but there are only {n_vertices} vertices")]
-    IndexOutOfRange {
-        /// The face.
-        face: u32,
-        /// The bad vertex index.
-        vertex: u32,
-        /// Number of vertices.
-        n_vertices: u32,
-    },
-    /// A face visits the same vertex twice.
-    #[error("face {face} visits vertex {vertex} more than once")]
-    RepeatedVertex {
-        /// The face.
-        face: u32,
-        /// The repeated vertex.
-        vertex: u32,
-    },
-    /// A vertex position is NaN or infinite.
+    /// The face list was refused by the shared analysis (see [`BuildError`]: it carries the
+    /// [`Diagnostic`](crate::soup::Diagnostic) of everything found).
+    #[error(transparent)]
+    InvalidFaceList(#[from] BuildError),
+    /// A vertex position is NaN or infinite (a new position given to an editing call).
     #[error("vertex {vertex} has a non-finite coordinate")]
     NonFinitePosition {
         /// The vertex.
         vertex: u32,
-    },
-    /// More than two faces share an edge.
-    #[error("edge ({a}, {b}) is shared by {} faces: {faces:?}", faces.len())]
-    NonManifoldEdge {
-        /// One endpoint.
-        a: u32,
-        /// The other endpoint.
-        b: u32,
-        /// Every face using the edge.
-        faces: Vec<u32>,
-    },
-    /// Two faces walk their shared edge in the same direction.
-    #[error("faces {faces:?} both walk edge {a} -> {b}; their orientations disagree")]
-    InconsistentOrientation {
-        /// Start of the edge as both faces walk it.
-        a: u32,
-        /// End of the edge as both faces walk it.
-        b: u32,
-        /// The two faces.
-        faces: [u32; 2],
     },
     /// An element count does not fit the `u32` ids (`u32::MAX` is reserved for "invalid").
     #[error("too many {what}: {count} does not fit a 32-bit id")]
@@ -138,6 +89,11 @@ pub enum WingedError {
     /// KVFS needs a face without edges (a solid reduced to one vertex).
     #[error("face {0:?} has edges; only a point face can be killed with its solid")]
     NotAPointFace(FaceId),
+
+    // --- conversion ---
+    /// The structure holds something the half-edge mesh cannot (a face without edges).
+    #[error("cannot convert to a half-edge mesh: {0}")]
+    NotConvertible(String),
 
     // --- validation ---
     /// [`Winged::check`](super::Winged::check) found a broken invariant.

@@ -8,7 +8,9 @@ use super::error::WingedError;
 use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 use super::record::EdgeRecord;
 use super::structure::Winged;
-use super::validate::{MAX_ELEMENTS, check_count};
+
+/// Largest element count a `u32` id can name (`u32::MAX` is the invalid id).
+const MAX_ELEMENTS: u64 = u32::MAX as u64 - 1;
 
 impl Winged {
     /// **Make vertex, face, solid**: a new solid made of one vertex at `position` and one face
@@ -251,8 +253,9 @@ impl Winged {
             ("edges", self.edges.len(), edges),
             ("faces", self.face_edge.len(), faces),
         ] {
-            if have as u64 + add > MAX_ELEMENTS {
-                check_count(what, (have as u64 + add) as usize)?;
+            let count = have as u64 + add;
+            if count > MAX_ELEMENTS {
+                return Err(WingedError::TooManyElements { what, count });
             }
         }
         Ok(())

@@ -48,20 +48,33 @@
 //! # Building and converting
 //!
 //! [`Winged::from_face_list`] follows the slide "Creación a partir de malla indexada" (seed
-//! 003) with a bucketed edge lookup; [`Winged::to_soup`] converts back losslessly (same faces,
-//! same first corner, same order). [`Winged::from_face_list_with_edge_order`] takes a hand-made
-//! edge numbering, as the course tables use.
+//! 003) on the shared face-list analysis of [`crate::soup`]: the same [`BuildPolicy`]
+//! (strict, skip, repair), the same [`Diagnostic`] and the same [`BuildError`] as the
+//! half-edge kernel's [`Mesh::from_face_list`](crate::mesh::Mesh::from_face_list), so both
+//! kernels refuse, skip or repair the same input the same way. [`Winged::to_soup`] converts
+//! back losslessly (same faces, same first corner, same order).
+//! [`Winged::from_face_list_with_edge_order`] takes a hand-made edge numbering, as the course
+//! tables use.
+//!
+//! [`Winged::from_mesh`] and [`Winged::to_mesh`] convert record for record, without a face
+//! list: edge `e` is mesh edge `e`, its left use half-edge `2e`, its right use half-edge
+//! `2e + 1`. Both builders number edges the same way, so building either kernel from a face
+//! list and converting gives the other kernel's own build.
 //!
 //! # Memory
 //!
-//! 32 bytes per edge record, 5 bytes per face, 29 bytes per vertex: about 68 bytes per face
-//! for a triangle mesh (E ≈ 1.5 F, V ≈ 0.5 F).
+//! 32 bytes per edge record, 5 bytes per face, 29 bytes per vertex: about 67.5 bytes per face
+//! for a closed triangle mesh (E = 1.5 F, V ≈ 0.5 F), against 66 for the half-edge mesh
+//! ([`Winged::memory_bytes`]; `cargo bench --bench winged` prints both).
 //!
 //! # Editing
 //!
 //! The Euler operators [`Winged::mvfs`], [`Winged::mev`], [`Winged::mef`] and their inverses
-//! [`Winged::kvfs`], [`Winged::kev`], [`Winged::kef`] check their preconditions and leave the structure untouched when they refuse.
+//! [`Winged::kvfs`], [`Winged::kev`], [`Winged::kef`] check their preconditions and leave the
+//! structure untouched when they refuse.
 //! Deleted elements keep their ids (marked) until [`Winged::garbage_collect`] compacts them.
+
+pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
 
 mod build;
 mod check;
@@ -69,18 +82,18 @@ mod compact;
 mod error;
 mod euler;
 mod ids;
+mod mesh_conversion;
 mod navigation;
 mod normals;
 mod record;
 mod soup_conversion;
 mod structure;
 mod table;
-mod validate;
 
 pub use compact::Compaction;
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
-pub use navigation::Walk;
+pub use navigation::{Step, Walk, WalkState};
 pub use record::EdgeRecord;
 pub use structure::Winged;
 pub use table::{Naming, TableFormat};

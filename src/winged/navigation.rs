@@ -6,8 +6,8 @@ use super::ids::{EdgeId, EdgeUse, FaceId, VertexId};
 use super::structure::Winged;
 
 /// How a [`Walk`] steps from one use to the next.
-#[derive(Clone, Copy, Debug)]
-enum Step {
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Step {
     /// Along a loop: `use_next`.
     Loop,
     /// Counter-clockwise about the tail vertex: `twin(use_prev(u))` (seed 000's
@@ -50,6 +50,32 @@ impl Iterator for Walk<'_> {
 
 impl std::iter::FusedIterator for Walk<'_> {}
 
+/// Where a [`Walk`] stands: enough to pause it and resume it later with
+/// [`Winged::resume_walk`] (the C circulators keep this on the caller's stack).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WalkState {
+    /// The use the walk started from (it ends on coming back to it).
+    pub start: Option<EdgeUse>,
+    /// The use the walk yields next; `None` when it is over.
+    pub current: Option<EdgeUse>,
+    /// How it steps.
+    pub step: Step,
+    /// Steps left before the bound stops it.
+    pub remaining: usize,
+}
+
+impl Walk<'_> {
+    /// The walk's state, to resume it later.
+    pub fn state(&self) -> WalkState {
+        WalkState {
+            start: self.start,
+            current: self.current,
+            step: self.step,
+            remaining: self.remaining,
+        }
+    }
+}
+
 impl Winged {
     fn walk(&self, start: Option<EdgeUse>, step: Step) -> Walk<'_> {
         Walk {
@@ -58,6 +84,20 @@ impl Winged {
             current: start,
             step,
             remaining: self.walk_bound(),
+        }
+    }
+
+    /// Resumes a walk paused with [`Walk::state`]. A state naming an edge that is not live
+    /// ends the walk at once (the structure changed since it was paused).
+    pub fn resume_walk(&self, state: WalkState) -> Walk<'_> {
+        let live = |u: Option<EdgeUse>| u.is_none_or(|u| self.is_edge(u.edge));
+        let usable = live(state.start) && live(state.current);
+        Walk {
+            winged: self,
+            start: state.start,
+            current: if usable { state.current } else { None },
+            step: state.step,
+            remaining: state.remaining.min(self.walk_bound()),
         }
     }
 

@@ -1,16 +1,18 @@
 //! Conversion to and from [`PolygonSoup`], lossless both ways for the faces.
 
-use super::error::WingedError;
 use super::structure::Winged;
-use crate::soup::PolygonSoup;
+use crate::soup::{BuildError, BuildPolicy, Diagnostic, PolygonSoup};
 
 impl Winged {
-    /// Builds from an owned face list (see [`Winged::from_face_list`]).
+    /// Builds from an owned face list under `policy` (see [`Winged::from_face_list`]).
     ///
     /// Per-corner normals and texture coordinates are not kept: the winged-edge structure has
     /// one record per edge and no place for per-corner data (the limitation seed 003 names).
-    pub fn from_soup(soup: &PolygonSoup) -> Result<Self, WingedError> {
-        Self::from_face_list(&soup.as_face_list())
+    pub fn from_soup(
+        soup: &PolygonSoup,
+        policy: BuildPolicy,
+    ) -> Result<(Self, Diagnostic), BuildError> {
+        Self::from_face_list(&soup.as_face_list(), policy)
     }
 
     /// The indexed face list of the live faces, in face id order, each starting at the tail of

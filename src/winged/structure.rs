@@ -62,6 +62,17 @@ impl Winged {
         self.face_edge.len() as u32
     }
 
+    /// Bytes held by the structure's arrays (their lengths, deleted slots included): 32 per edge
+    /// record, 29 per vertex (position, stored edge, live flag), 5 per face (stored edge, live
+    /// flag), plus the point faces.
+    pub fn memory_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.edges.len() * size_of::<EdgeRecord>()
+            + self.positions.len() * (size_of::<[f64; 3]>() + size_of::<EdgeId>() + 1)
+            + self.face_edge.len() * (size_of::<EdgeId>() + 1)
+            + self.point_faces.len() * size_of::<(FaceId, VertexId)>()
+    }
+
     /// V − E + F over the live elements (2 per closed genus-0 solid).
     pub fn euler_characteristic(&self) -> i64 {
         i64::from(self.n_live_vertices) - i64::from(self.n_live_edges)

@@ -1,0 +1,30 @@
+//! Zero-area faces of a resolved face table, reported by every builder.
+
+use super::FaceTable;
+use crate::geom::is_degenerate_polygon;
+
+/// Input indices of the faces whose area is negligible (non-finite positions are not degenerate
+/// but non-finite, reported apart).
+pub fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u32> {
+    let is_degenerate = |f: usize| {
+        let points = table.face(f).iter().map(|&v| positions[v as usize]);
+        is_degenerate_polygon(points)
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        (0..table.n_faces())
+            .into_par_iter()
+            .with_min_len(4096)
+            .filter(|&f| is_degenerate(f))
+            .map(|f| table.input_face(f))
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (0..table.n_faces())
+            .filter(|&f| is_degenerate(f))
+            .map(|f| table.input_face(f))
+            .collect()
+    }
+}
