@@ -1,8 +1,8 @@
 //! The C ABI: a thin layer over the Rust API that holds no algorithm.
 //!
 //! Conventions (see `include/halfwing.h` for the C view):
-//! - every exported function goes through [`boundary`]: panics are caught, pointers are checked,
-//!   errors become an [`hw_status`](status::hw_status) and a thread-local message;
+//! - every exported function goes through the guards of `boundary.rs`: panics are caught, pointers are checked,
+//!   errors become an [`hw_status`] and a thread-local message;
 //! - outputs (`out_*`) are written only when the call returns `HW_OK`;
 //! - objects are created by `_new`/`_build`/`_from_*` and released by `_free`; `_free(NULL)` is a
 //!   no-op and freeing twice is detected and refused.

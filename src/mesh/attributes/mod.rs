@@ -1,14 +1,14 @@
 //! Attributes: named columns of plain numeric values (`f64`, `f32`, `i32`, `u32`; 1 to
 //! [`MAX_COMPONENTS`] per element) on vertices, half-edges, edges or faces, plus halfwing's own
-//! per-corner normals and texture coordinates ([`Mesh::CORNER_NORMALS`], [`Mesh::CORNER_UVS`]),
+//! per-corner normals and texture coordinates ([`Mesh::CORNER_NORMALS`](super::Mesh::CORNER_NORMALS), [`Mesh::CORNER_UVS`](super::Mesh::CORNER_UVS)),
 //! which are half-edge attributes: the corner of vertex `v` in face `f` lives on the half-edge of
 //! `f` leaving `v`.
 //!
 //! A column has one entry per element slot, deleted slots included, and follows the mesh through
 //! every edit by these rules:
-//! - **New elements** start at zero: [`Mesh::add_vertex`], and in [`Mesh::add_face`] the face,
+//! - **New elements** start at zero: [`Mesh::add_vertex`](super::Mesh::add_vertex), and in [`Mesh::add_face`](super::Mesh::add_face) the face,
 //!   its new edges and all its corners (boundary half-edges it takes over lose their values).
-//! - **Edge split** ([`Mesh::split_edge`] of `a → b` at `p`): with `t` the position of `p`
+//! - **Edge split** ([`Mesh::split_edge`](super::Mesh::split_edge) of `a → b` at `p`): with `t` the position of `p`
 //!   projected on the segment (clamped to `[0, 1]`; `0.5` for a zero-length edge), the new
 //!   vertex and, in each face beside the edge, the new corner are the blend of the values at `a`
 //!   and `b` a fraction `t` of the way (linear for floats — corner normals renormalised —, the
@@ -23,11 +23,11 @@
 //!   moved from the removed vertex keep the removed vertex's corner values; where a vanishing
 //!   triangle merges two edges, the surviving edge keeps its values and its half-edge takes the
 //!   corner value of the half-edge it replaces.
-//! - **Deletion** only marks elements; [`Mesh::garbage_collect`] drops their values and compacts
+//! - **Deletion** only marks elements; [`Mesh::garbage_collect`](super::Mesh::garbage_collect) drops their values and compacts
 //!   the columns with the returned index maps.
 //!
-//! Building with [`Mesh::from_soup`] keeps a soup's corner normals and texture coordinates on the
-//! half-edges, and [`Mesh::to_soup`] exports them, so per-corner OBJ data round-trips.
+//! Building with [`Mesh::from_soup`](super::Mesh::from_soup) keeps a soup's corner normals and texture coordinates on the
+//! half-edges, and [`Mesh::to_soup`](super::Mesh::to_soup) exports them, so per-corner OBJ data round-trips.
 
 mod access;
 mod column;
