@@ -113,7 +113,7 @@ impl Mesh {
         let n_h = self.origin.len();
         let counted = |marks: &[bool]| marks.iter().filter(|&&m| m).count();
         let marks_fit = |marks: &[bool], len: usize| marks.is_empty() || marks.len() == len;
-        let ok = n_h % 2 == 0
+        let ok = n_h.is_multiple_of(2)
             && u32::try_from(n_h).is_ok_and(|n| n != INVALID_INDEX)
             && [self.next.len(), self.prev.len(), self.face.len()]
                 .iter()

@@ -381,7 +381,7 @@ fn face_ranges(faces: &FaceList<'_>) -> Result<Vec<std::ops::Range<usize>>, Tria
     let got = faces.indices.len();
     match faces.sizes {
         FaceSizes::Uniform(0) if got == 0 => Ok(Vec::new()),
-        FaceSizes::Uniform(size) if size > 0 && got % size as usize == 0 => {
+        FaceSizes::Uniform(size) if size > 0 && got.is_multiple_of(size as usize) => {
             let size = size as usize;
             Ok((0..got / size).map(|f| f * size..(f + 1) * size).collect())
         }

@@ -45,7 +45,7 @@ impl<'a> FaceTable<'a> {
         }
         let layout = match list.sizes {
             FaceSizes::Uniform(size) => {
-                if size == 0 || n_corners % u64::from(size) != 0 {
+                if size == 0 || !n_corners.is_multiple_of(u64::from(size)) {
                     if n_corners == 0 {
                         Layout::Offsets(Vec::from([0]))
                     } else {

@@ -197,11 +197,11 @@ impl Voronoi {
                 let next_start = cell_pieces[(i + 1) % count][0];
                 // A piece ending on the boundary is followed by the boundary up to where the
                 // next piece starts (nothing when the next piece starts right there).
-                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
-                    if end != next_start {
-                        indices.push(end);
-                        b.corners_between(exit, entry, &mut indices);
-                    }
+                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
+                    && end != next_start
+                {
+                    indices.push(end);
+                    b.corners_between(exit, entry, &mut indices);
                 }
             }
             ranges[s as usize] = [first, indices.len() as u32 - first];

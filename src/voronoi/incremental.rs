@@ -27,7 +27,7 @@ pub(crate) fn next_edge(e: u32) -> u32 {
 /// Previous half-edge of the same triangle.
 #[inline(always)]
 pub(crate) fn prev_edge(e: u32) -> u32 {
-    if e % 3 == 0 { e + 2 } else { e - 1 }
+    if e.is_multiple_of(3) { e + 2 } else { e - 1 }
 }
 
 /// A triangulation under construction (or finished), ghosts included.
