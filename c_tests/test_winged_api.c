@@ -362,7 +362,7 @@ static void euler_cube(void) {
       for (i = 0; i < n_on; i++) on |= on_f0[i].idx == id;
       if (!on) far.idx = id;
     }
-    CHECK_STATUS(hw_winged_mvfs(w, nowhere, &v_out, &f_out), HW_ERR_INVALID_INPUT, "non-finite");
+    CHECK_STATUS(hw_winged_mvfs(w, nowhere, &v_out, &f_out), HW_ERR_INVALID_INPUT, "not finite");
     CHECK_STATUS(hw_winged_mev(w, f0, far, origin, &e_out, &v_out), HW_ERR_REFUSED,
                  "is not on the loop");
     CHECK_STATUS(hw_winged_mev(w, missing_face, square[0], origin, &e_out, &v_out),
@@ -388,7 +388,23 @@ static void euler_cube(void) {
   CHECK(hw_winged_kef(w, made_edge, made_face) == HW_OK);
   CHECK(hw_winged_n_faces(w) == 5 && hw_winged_n_edges(w) == 11);
   CHECK(hw_winged_edge_capacity(w) == 12);
-  CHECK(hw_winged_garbage_collect(w) == HW_OK);
+  {
+    hw_index_maps *maps = NULL;
+    const uint32_t *edge_map = NULL;
+    size_t n_map = 0;
+    hw_wvertex first = {0};
+    const double moved[3] = {0.25, 0.25, 0.25}, nowhere[3] = {0.0, 1.0 / 0.0 * 0.0, 0.0};
+    double at[3];
+    CHECK(hw_winged_garbage_collect(w, &maps) == HW_OK);
+    CHECK(hw_index_maps_view(maps, HW_ELEMENT_EDGE, &edge_map, &n_map) == HW_OK);
+    /* The killed edge maps to nothing; the other eleven keep their order. */
+    CHECK(n_map == 12 && edge_map[made_edge.idx] == HW_INVALID_INDEX);
+    hw_index_maps_free(maps);
+    CHECK(hw_winged_set_position(w, first, moved) == HW_OK);
+    CHECK(hw_winged_position(w, first, at) == HW_OK && at[0] == 0.25 && at[2] == 0.25);
+    CHECK_STATUS(hw_winged_set_position(w, first, nowhere), HW_ERR_INVALID_INPUT, "not finite");
+    CHECK_STATUS(hw_winged_set_position(NULL, first, moved), HW_ERR_NULL_ARGUMENT, "winged");
+  }
   CHECK(hw_winged_edge_capacity(w) == 11 && hw_winged_check(w) == HW_OK);
   hw_winged_free(w);
 }
@@ -430,7 +446,7 @@ static void null_and_freed_handles(void) {
   CHECK_STATUS(hw_winged_kev(NULL, e, v), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_kef(NULL, e, f), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_kvfs(NULL, f), HW_ERR_NULL_ARGUMENT, "winged");
-  CHECK_STATUS(hw_winged_garbage_collect(NULL), HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_garbage_collect(NULL, NULL), HW_ERR_NULL_ARGUMENT, "winged");
 
   w = seed_cube();
   CHECK_STATUS(hw_winged_edge(w, e, NULL), HW_ERR_NULL_ARGUMENT, "out_record");

@@ -1881,12 +1881,24 @@ hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
 
 /**
  * Drops the elements the kill operators deleted and renumbers the live ones densely, keeping
- * their order. Every id held from before (and every view) is invalidated.
+ * their order. Every id held from before (and every view) is invalidated. When `out_maps` is not
+ * NULL it receives the old-to-new maps (read with hw_index_maps_view(): vertices, edges and
+ * faces; the half-edge map is empty; deleted → `HW_INVALID_INDEX`).
  *
  * # Safety
- * `winged` must be NULL or a live structure used by no one else during the call.
+ * `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
+ * NULL or writable.
  */
-hw_status hw_winged_garbage_collect(hw_winged *winged);
+hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps);
+
+/**
+ * Moves vertex `v` to `xyz[0..3]` (finite).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
+ * doubles.
+ */
+hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *xyz);
 
 #ifdef __cplusplus
 }  // extern "C"

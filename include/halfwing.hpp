@@ -580,7 +580,7 @@ class winged {
   void kev(hw_wedge e, hw_wvertex v) { check(hw_winged_kev(get(), e, v)); }
   void kef(hw_wedge e, hw_wface kill) { check(hw_winged_kef(get(), e, kill)); }
   void kvfs(hw_wface f) { check(hw_winged_kvfs(get(), f)); }
-  void garbage_collect() { check(hw_winged_garbage_collect(get())); }
+  void garbage_collect() { check(hw_winged_garbage_collect(get(), nullptr)); }
 
   /// Throws hw::error naming the first broken invariant, if any.
   void check_invariants() const { check(hw_winged_check(get())); }

@@ -208,3 +208,18 @@ pub(crate) unsafe fn write_view<T>(out_data: Out<*const T>, out_len: Out<usize>,
         out_len.write(data.len());
     }
 }
+
+/// Reads a position argument: 3 finite doubles (NaN or infinity is refused, naming the argument).
+///
+/// # Safety
+/// `xyz` must be NULL or point to 3 readable doubles.
+pub(crate) unsafe fn point_arg(xyz: *const f64, name: &str) -> Result<[f64; 3], FfiError> {
+    // SAFETY: forwarded from the caller.
+    let point = *unsafe { arg_ref(xyz.cast::<[f64; 3]>(), name) }?;
+    if point.iter().any(|c| !c.is_finite()) {
+        return Err(FfiError::invalid_input(format!(
+            "argument `{name}` = {point:?} is not finite"
+        )));
+    }
+    Ok(point)
+}

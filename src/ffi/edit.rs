@@ -7,7 +7,7 @@
 
 use crate::mesh::{EditError, IndexMaps, VertexId};
 
-use super::boundary::{Out, arg_mut, arg_ref, arg_slice, guard, guard_void, write_view};
+use super::boundary::{Out, arg_mut, arg_ref, arg_slice, guard, guard_void, point_arg, write_view};
 use super::elements::*;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -22,21 +22,6 @@ impl From<EditError> for FfiError {
         };
         FfiError::new(status, error.to_string())
     }
-}
-
-/// Reads a finite `xyz[0..3]` argument.
-///
-/// # Safety
-/// `xyz` must be NULL or point to 3 doubles.
-unsafe fn point_arg(xyz: *const f64) -> Result<[f64; 3], FfiError> {
-    // SAFETY: forwarded from the caller.
-    let point = *unsafe { arg_ref(xyz.cast::<[f64; 3]>(), "xyz") }?;
-    if point.iter().any(|c| !c.is_finite()) {
-        return Err(FfiError::invalid_input(format!(
-            "position {point:?} is not finite"
-        )));
-    }
-    Ok(point)
 }
 
 /// Runs an edit on a `hw_mesh *` argument.
@@ -65,7 +50,7 @@ pub unsafe extern "C" fn hw_mesh_add_vertex(
     unsafe {
         edit(mesh, |mesh| {
             let out = Out::new(out_vertex, "out_vertex")?;
-            let point = point_arg(xyz)?;
+            let point = point_arg(xyz, "xyz")?;
             let v = mesh
                 .add_vertex(point)
                 .ok_or_else(|| FfiError::new(HW_ERR_REFUSED, "the mesh is full (32-bit ids)"))?;
@@ -176,7 +161,7 @@ pub unsafe extern "C" fn hw_mesh_split_edge(
     unsafe {
         edit(mesh, |mesh| {
             let out = Out::new(out_vertex, "out_vertex")?;
-            let v = mesh.split_edge(e.into(), point_arg(xyz)?)?;
+            let v = mesh.split_edge(e.into(), point_arg(xyz, "xyz")?)?;
             out.write(v.into());
             Ok(())
         })

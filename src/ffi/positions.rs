@@ -1,8 +1,7 @@
 //! Reading and moving vertex positions.
 
-use super::boundary::{Out, arg_mut, arg_ref, guard};
+use super::boundary::{Out, arg_mut, guard, point_arg};
 use super::elements::hw_vertex;
-use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
 use super::status::hw_status;
 
@@ -38,17 +37,7 @@ pub unsafe extern "C" fn hw_mesh_set_vertex_position(
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
-        let (mesh, xyz) = unsafe {
-            (
-                arg_mut(mesh, "mesh")?,
-                *arg_ref(xyz.cast::<[f64; 3]>(), "xyz")?,
-            )
-        };
-        if xyz.iter().any(|c| !c.is_finite()) {
-            return Err(FfiError::invalid_input(format!(
-                "position {xyz:?} is not finite"
-            )));
-        }
+        let (mesh, xyz) = unsafe { (arg_mut(mesh, "mesh")?, point_arg(xyz, "xyz")?) };
         let v = mesh.mesh.check_vertex(v.into())?;
         mesh.mesh.positions_mut()[v.idx()] = xyz;
         Ok(())

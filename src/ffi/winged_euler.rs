@@ -14,20 +14,11 @@
 //! hw_winged_mef(w, f, v3, v0, &e, &top);   // an edge closing a new face
 //! ```
 
-use super::boundary::{Out, arg_slice, guard};
-use super::error::FfiError;
+use super::boundary::{Out, guard, point_arg};
+use super::edit::hw_index_maps;
+use super::handle::into_handle;
 use super::status::hw_status;
 use super::winged::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_mut};
-
-/// Reads a position argument: 3 doubles.
-///
-/// # Safety
-/// `xyz` must be NULL or point to 3 readable doubles.
-unsafe fn position_arg(xyz: *const f64) -> Result<[f64; 3], FfiError> {
-    // SAFETY: forwarded from the caller.
-    let xyz = unsafe { arg_slice(xyz, 3, "position") }?;
-    Ok([xyz[0], xyz[1], xyz[2]])
-}
 
 /// **Make vertex, face, solid**: a new solid of one vertex at `position[0..3]` and one face
 /// without edges (a point face). Writes the vertex and the face.
@@ -48,7 +39,7 @@ pub unsafe extern "C" fn hw_winged_mvfs(
             Out::new(out_face, "out_face")?,
         );
         // SAFETY: forwarded from the caller.
-        let (w, p) = unsafe { (winged_mut(winged)?, position_arg(position)?) };
+        let (w, p) = unsafe { (winged_mut(winged)?, point_arg(position, "position")?) };
         let (v, f) = w.mvfs(p)?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe {
@@ -81,7 +72,7 @@ pub unsafe extern "C" fn hw_winged_mev(
             Out::new(out_vertex, "out_vertex")?,
         );
         // SAFETY: forwarded from the caller.
-        let (w, p) = unsafe { (winged_mut(winged)?, position_arg(position)?) };
+        let (w, p) = unsafe { (winged_mut(winged)?, point_arg(position, "position")?) };
         let (e, v) = w.mev(face.into(), vertex.into(), p)?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe {
@@ -167,15 +158,50 @@ pub unsafe extern "C" fn hw_winged_kvfs(winged: *mut hw_winged, face: hw_wface) 
 }
 
 /// Drops the elements the kill operators deleted and renumbers the live ones densely, keeping
-/// their order. Every id held from before (and every view) is invalidated.
+/// their order. Every id held from before (and every view) is invalidated. When `out_maps` is not
+/// NULL it receives the old-to-new maps (read with hw_index_maps_view(): vertices, edges and
+/// faces; the half-edge map is empty; deleted → `HW_INVALID_INDEX`).
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure used by no one else during the call.
+/// `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
+/// NULL or writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_garbage_collect(winged: *mut hw_winged) -> hw_status {
+pub unsafe extern "C" fn hw_winged_garbage_collect(
+    winged: *mut hw_winged,
+    out_maps: *mut *mut hw_index_maps,
+) -> hw_status {
+    guard(|| {
+        let out = Out::optional(out_maps);
+        // SAFETY: forwarded from the caller.
+        let compaction = unsafe { winged_mut(winged) }?.garbage_collect();
+        if let Some(out) = out {
+            let maps = crate::mesh::IndexMaps {
+                vertices: compaction.vertices.iter().map(|id| id.0).collect(),
+                halfedges: Vec::new(),
+                edges: compaction.edges.iter().map(|id| id.0).collect(),
+                faces: compaction.faces.iter().map(|id| id.0).collect(),
+            };
+            // SAFETY: checked non-NULL, writable per the caller.
+            unsafe { out.write(into_handle(hw_index_maps { maps })) };
+        }
+        Ok(())
+    })
+}
+
+/// Moves vertex `v` to `xyz[0..3]` (finite).
+///
+/// # Safety
+/// `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
+/// doubles.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_winged_set_position(
+    winged: *mut hw_winged,
+    v: hw_wvertex,
+    xyz: *const f64,
+) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
-        unsafe { winged_mut(winged) }?.garbage_collect();
-        Ok(())
+        let (w, p) = unsafe { (winged_mut(winged)?, point_arg(xyz, "xyz")?) };
+        Ok(w.set_position(v.into(), p)?)
     })
 }
