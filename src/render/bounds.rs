@@ -27,9 +27,9 @@ impl Bounds {
         let mut bounds = Self::EMPTY;
         for point in xyz.chunks_exact(3) {
             if point.iter().all(|c| c.is_finite()) {
-                for axis in 0..3 {
-                    bounds.min[axis] = bounds.min[axis].min(point[axis]);
-                    bounds.max[axis] = bounds.max[axis].max(point[axis]);
+                for (axis, &c) in point.iter().enumerate() {
+                    bounds.min[axis] = bounds.min[axis].min(c);
+                    bounds.max[axis] = bounds.max[axis].max(c);
                 }
             }
         }
