@@ -2,6 +2,7 @@
 //! diagram, or any set of regions. Each polygon owns its corners (neighbours do not share
 //! vertices), so each can get its own colour from [`PolygonBuffer::vertex_polygons`].
 
+use crate::geom::newell_vector;
 use crate::soup::FaceList;
 
 use super::error::RenderError;
@@ -23,6 +24,9 @@ pub struct PolygonList<'a> {
 pub struct PolygonBuffer {
     /// x y z per corner (z = 0 for 2D input): the fill's vertex array.
     pub positions: Vec<f32>,
+    /// Unit nx ny nz per corner: its polygon's Newell normal (+z for counter-clockwise 2D
+    /// polygons; zero for polygons without area), so fills can be lit like a mesh.
+    pub normals: Vec<f32>,
     /// Per corner, the polygon it belongs to (for per-polygon colours).
     pub vertex_polygons: Vec<u32>,
     /// Three corner indices per fill triangle (ear clipped, so non-convex polygons work).
@@ -58,14 +62,17 @@ pub fn polygon_buffer(polygons: &PolygonList<'_>) -> Result<PolygonBuffer, Rende
         triangle_polygons: triangulated.source_faces,
         fallbacks: triangulated.fallbacks,
         positions: Vec::with_capacity(3 * n),
+        normals: Vec::with_capacity(3 * n),
         vertex_polygons: Vec::with_capacity(n),
         ..PolygonBuffer::default()
     };
     let mut start = 0usize;
     for (polygon, &size) in polygons.sizes.iter().enumerate() {
         let ring = &polygons.corners[start..start + size as usize];
+        let normal = unit(newell_vector(ring.iter().copied()));
         for (k, &corner) in ring.iter().enumerate() {
             push_point(&mut buffer.positions, corner);
+            push_point(&mut buffer.normals, normal);
             buffer.vertex_polygons.push(polygon as u32);
             if ring.len() >= 2 {
                 buffer
@@ -77,6 +84,16 @@ pub fn polygon_buffer(polygons: &PolygonList<'_>) -> Result<PolygonBuffer, Rende
     }
     buffer.bounds = Bounds::of_points(&buffer.positions);
     Ok(buffer)
+}
+
+/// `v` scaled to unit length, or zero when it has none (or is not finite).
+fn unit(v: [f64; 3]) -> [f64; 3] {
+    let length = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    if length > 0.0 && length.is_finite() {
+        v.map(|c| c / length)
+    } else {
+        [0.0; 3]
+    }
 }
 
 /// [`polygon_buffer`] for polygons in the plane z = 0, given by x y (a Voronoi diagram's cells).
@@ -117,6 +134,7 @@ mod tests {
         let buffer = polygon_buffer_2d(&corners, &[4, 6]).unwrap();
         assert_eq!(buffer.positions.len(), 30);
         assert!(buffer.positions.chunks_exact(3).all(|p| p[2] == 0.0));
+        assert!(buffer.normals.chunks_exact(3).all(|n| n == [0.0, 0.0, 1.0]));
         assert_eq!(buffer.vertex_polygons, vec![0, 0, 0, 0, 1, 1, 1, 1, 1, 1]);
         assert_eq!(buffer.triangle_polygons, vec![0, 0, 1, 1, 1, 1]);
         assert!(buffer.fallbacks.is_empty());
