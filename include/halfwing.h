@@ -1445,7 +1445,7 @@ hw_status hw_surface_revolution(const double *profile,
                                 bool full_turn,
                                 double angle,
                                 uint32_t steps,
-                                hw_caps caps_kind,
+                                hw_caps caps,
                                 hw_cell_faces faces,
                                 hw_mesh **out_mesh);
 

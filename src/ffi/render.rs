@@ -72,7 +72,7 @@ pub extern "C" fn hw_render_options_default() -> hw_render_options {
 /// What a render-buffer object was built from.
 enum Contents {
     Mesh(Box<MeshBuffers>),
-    Polygons(PolygonBuffer),
+    Polygons(Box<PolygonBuffer>),
 }
 
 /// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build() or
@@ -316,7 +316,7 @@ pub unsafe extern "C" fn hw_render_buffers_from_polygons(
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_render_buffers {
-                contents: Contents::Polygons(buffer),
+                contents: Contents::Polygons(Box::new(buffer)),
             }))
         };
         Ok(())

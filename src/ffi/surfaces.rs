@@ -49,7 +49,7 @@ fn cell_faces(raw: hw_cell_faces) -> Result<CellFaces, FfiError> {
     }
 }
 
-fn caps(raw: hw_caps) -> Result<Caps, FfiError> {
+fn caps_arg(raw: hw_caps) -> Result<Caps, FfiError> {
     match raw {
         HW_CAPS_NONE => Ok(Caps::None),
         HW_CAPS_POLYGON => Ok(Caps::Polygon),
@@ -251,7 +251,7 @@ pub unsafe extern "C" fn hw_surface_revolution(
     full_turn: bool,
     angle: f64,
     steps: u32,
-    caps_kind: hw_caps,
+    caps: hw_caps,
     faces: hw_cell_faces,
     out_mesh: *mut *mut hw_mesh,
 ) -> hw_status {
@@ -276,7 +276,7 @@ pub unsafe extern "C" fn hw_surface_revolution(
                 Turn::Partial(angle)
             },
             steps,
-            caps: caps(caps_kind)?,
+            caps: caps_arg(caps)?,
             faces: cell_faces(faces)?,
         };
         // SAFETY: forwarded from the caller.
