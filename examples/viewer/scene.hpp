@@ -1,0 +1,41 @@
+// scene.hpp — what the viewer shows: something that draws itself for a camera, reacts to keys and
+// clicks, and lists its keys. The mesh scene is one; the Voronoi scene (clicks add sites, a key
+// runs Lloyd steps, cells filled from hw_render_buffers_from_polygons()) plugs in here once the
+// Voronoi kernel lands.
+#ifndef HALFWING_VIEWER_SCENE_HPP
+#define HALFWING_VIEWER_SCENE_HPP
+
+#include <array>
+#include <string>
+#include <utility>
+
+#include "gl_core.h"
+
+namespace viewer {
+
+/// Per-frame uniforms shared by every scene.
+struct frame {
+  float mvp[16];
+  std::array<float, 3> light_dir;  // unit, towards the viewer (a headlight)
+};
+
+class scene {
+ public:
+  virtual ~scene() = default;
+  /// Draws with `program` (the shared mesh shader) already in use and its uniforms set.
+  virtual void draw(GLuint program, const frame& f) const = 0;
+  /// Handles a key press; returns true when it changed what is drawn.
+  virtual bool on_key(int key) = 0;
+  /// Handles a left click at window pixel (x, y); returns true when it changed what is drawn.
+  virtual bool on_click(double x, double y) = 0;
+  /// One line per key the scene understands.
+  virtual std::string help() const = 0;
+  /// What is shown right now (mode, toggles), for the console.
+  virtual std::string status() const = 0;
+  /// The box to frame: {min, max}.
+  virtual std::pair<std::array<float, 3>, std::array<float, 3>> bounds() const = 0;
+};
+
+}  // namespace viewer
+
+#endif
