@@ -3,11 +3,14 @@
 // boundary loops and non-manifold edges from the build diagnostic, vertex and face normals.
 // Everything drawn comes from hw::render_buffers. GLFW + OpenGL 3.3 core, no other library.
 //
-//   halfwing_viewer [model] [--screenshot out.png] [--size WxH]
+//   halfwing_viewer [model] [--screenshot out.png] [--size WxH] [--keys KEYS]
 //
 // --screenshot renders one frame offscreen, writes the PNG and exits (headless under Xvfb).
+// --keys presses keys before the first frame, as if typed (e.g. "1WN": flat shading, no
+// wireframe, vertex normals), so every mode can be shot from a script.
 #include "gl_core.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -125,7 +128,8 @@ void on_glfw_error(int code, const char* message) {
 }
 
 int usage(const char* argv0) {
-  std::fprintf(stderr, "usage: %s [model.obj|.off|.ply] [--screenshot out.png] [--size WxH]\n", argv0);
+  std::fprintf(stderr, "usage: %s [model.obj|.off|.ply] [--screenshot out.png] [--size WxH] [--keys KEYS]\n",
+               argv0);
   return 2;
 }
 
@@ -145,21 +149,29 @@ GLFWwindow* open_window(int width, int height, bool visible) {
   return window;
 }
 
+/// Presses the keys of `keys` in order. GLFW's key codes of letters, digits and brackets are their
+/// upper-case ASCII codes.
+void press_keys(GLFWwindow* window, const std::string& keys) {
+  for (char key : keys)
+    on_key(window, std::toupper(static_cast<unsigned char>(key)), 0, GLFW_PRESS, 0);
+}
+
 int run(GLFWwindow* window, viewer_state& state, const std::string& model, const char* shot, int width,
-        int height) {
+        int height, const std::string& keys) {
   state.program = gl_program_build(mesh_vertex_shader, mesh_fragment_shader);
   if (state.program == 0) return 1;
   auto scene = std::make_unique<viewer::mesh_scene>(model);
   std::printf("%s\n", scene->summary().c_str());
   state.scene = std::move(scene);
   frame_scene(state);
+  glfwSetWindowUserPointer(window, &state);
+  press_keys(window, keys);
   if (shot) {
     if (offscreen_png(shot, width, height, draw, &state) != 0) return 1;
     std::printf("halfwing_viewer: wrote %s (%dx%d) with %s\n", shot, width, height,
                 reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     return 0;
   }
-  glfwSetWindowUserPointer(window, &state);
   glfwSetKeyCallback(window, on_key);
   glfwSetMouseButtonCallback(window, on_button);
   glfwSetCursorPosCallback(window, on_cursor);
@@ -180,6 +192,7 @@ int run(GLFWwindow* window, viewer_state& state, const std::string& model, const
 int main(int argc, char** argv) {
   std::string model = HALFWING_EXAMPLE_MODEL;
   const char* shot = nullptr;
+  std::string keys;
   int width = 1024, height = 768;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--screenshot") && i + 1 < argc) {
@@ -188,6 +201,8 @@ int main(int argc, char** argv) {
       if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 ||
           width > 8192 || height > 8192)
         return usage(argv[0]);
+    } else if (!std::strcmp(argv[i], "--keys") && i + 1 < argc) {
+      keys = argv[++i];
     } else if (argv[i][0] != '-') {
       model = argv[i];
     } else {
@@ -206,7 +221,7 @@ int main(int argc, char** argv) {
   {
     viewer_state state;  // its GL objects go before the context does
     try {
-      rc = run(window, state, model, shot, width, height);
+      rc = run(window, state, model, shot, width, height, keys);
     } catch (const std::exception& failure) {
       std::fprintf(stderr, "halfwing_viewer: %s\n", failure.what());
     }
