@@ -88,7 +88,7 @@ static int upload_lines(gpu_lines *gpu, const hw_render_buffers *buffers, hw_ren
 /* ---- drawing ------------------------------------------------------------------------------- */
 
 typedef struct {
-    GLuint program;
+    GLuint surface_program, line_program;
     gpu_surface surface;
     gpu_lines wireframe, boundary;
     orbit_camera camera;
@@ -97,8 +97,9 @@ typedef struct {
     double last_x, last_y;
 } view_state;
 
-static void draw_lines(const view_state *s, const gpu_lines *lines, float r, float g, float b) {
-    glUniform4f(glGetUniformLocation(s->program, "flat_color"), r, g, b, 1.0f);
+static void draw_lines(const view_state *s, const gpu_lines *lines, float width, float r, float g, float b) {
+    glUniform1f(glGetUniformLocation(s->line_program, "line_width"), width);
+    glUniform3f(glGetUniformLocation(s->line_program, "line_color"), r, g, b);
     glBindVertexArray(lines->vao);
     glDrawArrays(GL_LINES, 0, lines->n_points);
 }
@@ -114,21 +115,26 @@ static void draw(void *context, int width, int height) {
     glClearColor(0.12f, 0.13f, 0.16f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    glUseProgram(s->program);
-    glUniformMatrix4fv(glGetUniformLocation(s->program, "mvp"), 1, GL_FALSE, mvp);
-    glUniform3f(glGetUniformLocation(s->program, "light_dir"), light[0] / length, light[1] / length, light[2] / length);
 
-    /* Push the fill back a little so the lines on top are not lost to depth fighting. */
+    /* The surface, pushed back a little so the lines on top are not lost to depth fighting. */
+    glUseProgram(s->surface_program);
+    glUniformMatrix4fv(glGetUniformLocation(s->surface_program, "mvp"), 1, GL_FALSE, mvp);
+    glUniform3f(glGetUniformLocation(s->surface_program, "light_dir"), light[0] / length, light[1] / length,
+                light[2] / length);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glUniform4f(glGetUniformLocation(s->program, "flat_color"), 0, 0, 0, 0);
     glBindVertexArray(s->surface.vao);
     glDrawElements(GL_TRIANGLES, s->surface.n_indices, GL_UNSIGNED_INT, (void *)0);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    if (s->show_wireframe) draw_lines(s, &s->wireframe, 0.08f, 0.08f, 0.08f);
+
+    /* The lines, widened to pixels by the geometry shader. */
+    glUseProgram(s->line_program);
+    glUniformMatrix4fv(glGetUniformLocation(s->line_program, "mvp"), 1, GL_FALSE, mvp);
+    glUniform2f(glGetUniformLocation(s->line_program, "viewport"), (float)width, (float)height);
+    if (s->show_wireframe) draw_lines(s, &s->wireframe, 1.2f, 0.08f, 0.08f, 0.08f);
     /* The boundary edges are wireframe edges too: LEQUAL lets the highlight win the depth tie. */
     glDepthFunc(GL_LEQUAL);
-    draw_lines(s, &s->boundary, 1.0f, 0.0f, 1.0f);
+    draw_lines(s, &s->boundary, 3.0f, 1.0f, 0.0f, 1.0f);
     glDepthFunc(GL_LESS);
     glBindVertexArray(0);
 }
@@ -179,7 +185,8 @@ static void release(view_state *s) {
     glDeleteBuffers(1, &s->surface.vertices);
     glDeleteBuffers(1, &s->surface.triangles);
     glDeleteVertexArrays(1, &s->surface.vao);
-    glDeleteProgram(s->program);
+    glDeleteProgram(s->surface_program);
+    glDeleteProgram(s->line_program);
 }
 
 /* ---- window and input ------------------------------------------------------------------------ */
@@ -255,8 +262,9 @@ int main(int argc, char **argv) {
     glfwSetWindowUserPointer(window, &state);
 
     int rc = 1;
-    state.program = gl_program_build(mesh_vertex_shader, mesh_fragment_shader);
-    if (state.program && load(&state, path) == 0) {
+    state.surface_program = gl_program_build(surface_vertex_shader, NULL, surface_fragment_shader);
+    state.line_program = gl_program_build(line_vertex_shader, line_geometry_shader, line_fragment_shader);
+    if (state.surface_program && state.line_program && load(&state, path) == 0) {
         if (shot) {
             rc = offscreen_png(shot, width, height, draw, &state) == 0 ? 0 : 1;
             if (rc == 0) printf("glfw_view: wrote %s (%dx%d) with %s\n", shot, width, height, glGetString(GL_RENDERER));

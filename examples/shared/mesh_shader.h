@@ -1,4 +1,5 @@
-/* mesh_shader.h — the GLSL 3.30 shader pair the GLFW programs draw meshes and lines with. */
+/* mesh_shader.h — the GLSL 3.30 shaders the GLFW programs draw with: a lit surface program and a
+ * wide-line program. */
 #ifndef HALFWING_EXAMPLES_MESH_SHADER_H
 #define HALFWING_EXAMPLES_MESH_SHADER_H
 
@@ -6,11 +7,17 @@
 extern "C" {
 #endif
 
-/* Attributes: location 0 = position, 1 = normal. Uniforms: `mvp` (mat4), `light_dir` (unit
- * vec3, towards the light), `flat_color` (vec4: alpha > 0 draws everything in that colour, for
- * lines; alpha = 0 lights the surface, front faces warm, back faces seen through holes cool). */
-extern const char *const mesh_vertex_shader;
-extern const char *const mesh_fragment_shader;
+/* Surface: attributes 0 = position, 1 = normal; uniforms `mvp` (mat4) and `light_dir` (unit
+ * vec3 towards the light). Front faces are warm, back faces seen through holes cool. */
+extern const char *const surface_vertex_shader;
+extern const char *const surface_fragment_shader;
+
+/* Lines of any width: a core profile draws GL_LINES one pixel wide only, so the geometry shader
+ * turns each segment into a screen-space quad. Attribute 0 = position; uniforms `mvp`,
+ * `viewport` (vec2, pixels), `line_width` (pixels) and `line_color` (vec3). */
+extern const char *const line_vertex_shader;
+extern const char *const line_geometry_shader;
+extern const char *const line_fragment_shader;
 
 #ifdef __cplusplus
 }

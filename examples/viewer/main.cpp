@@ -33,7 +33,7 @@ namespace {
 
 struct viewer_state {
   std::unique_ptr<viewer::scene> scene;
-  GLuint program = 0;
+  viewer::programs programs{0, 0};
   orbit_camera camera{};
   bool dragging = false;
   double press_x = 0, press_y = 0, last_x = 0, last_y = 0;
@@ -58,24 +58,26 @@ void print_help(const viewer_state& state) {
 
 void draw(void* context, int width, int height) {
   const auto& state = *static_cast<const viewer_state*>(context);
-  viewer::frame f{};
-  float eye[3];
-  orbit_camera_mvp(&state.camera, float(width) / float(height > 0 ? height : 1), f.mvp, eye);
-  float length = 0;
+  float mvp[16], eye[3], light[3], length = 0;
+  orbit_camera_mvp(&state.camera, float(width) / float(height > 0 ? height : 1), mvp, eye);
   for (int axis = 0; axis < 3; ++axis) {
-    f.light_dir[axis] = eye[axis] - state.camera.target[axis];
-    length += f.light_dir[axis] * f.light_dir[axis];
+    light[axis] = eye[axis] - state.camera.target[axis];
+    length += light[axis] * light[axis];
   }
-  for (float& c : f.light_dir) c /= std::sqrt(length);
+  for (float& c : light) c /= std::sqrt(length);
 
   glViewport(0, 0, width, height);
   glClearColor(0.12f, 0.13f, 0.16f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
-  glUseProgram(state.program);
-  glUniformMatrix4fv(glGetUniformLocation(state.program, "mvp"), 1, GL_FALSE, f.mvp);
-  glUniform3fv(glGetUniformLocation(state.program, "light_dir"), 1, f.light_dir.data());
-  state.scene->draw(state.program, f);
+  const GLuint surface = state.programs.surface, lines = state.programs.lines;
+  glUseProgram(surface);
+  glUniformMatrix4fv(glGetUniformLocation(surface, "mvp"), 1, GL_FALSE, mvp);
+  glUniform3fv(glGetUniformLocation(surface, "light_dir"), 1, light);
+  glUseProgram(lines);
+  glUniformMatrix4fv(glGetUniformLocation(lines, "mvp"), 1, GL_FALSE, mvp);
+  glUniform2f(glGetUniformLocation(lines, "viewport"), float(width), float(height));
+  state.scene->draw(state.programs);
 }
 
 viewer_state& state_of(GLFWwindow* window) {
@@ -158,8 +160,9 @@ void press_keys(GLFWwindow* window, const std::string& keys) {
 
 int run(GLFWwindow* window, viewer_state& state, const std::string& model, const char* shot, int width,
         int height, const std::string& keys) {
-  state.program = gl_program_build(mesh_vertex_shader, mesh_fragment_shader);
-  if (state.program == 0) return 1;
+  state.programs.surface = gl_program_build(surface_vertex_shader, nullptr, surface_fragment_shader);
+  state.programs.lines = gl_program_build(line_vertex_shader, line_geometry_shader, line_fragment_shader);
+  if (state.programs.surface == 0 || state.programs.lines == 0) return 1;
   auto scene = std::make_unique<viewer::mesh_scene>(model);
   std::printf("%s\n", scene->summary().c_str());
   state.scene = std::move(scene);
@@ -225,7 +228,8 @@ int main(int argc, char** argv) {
     } catch (const std::exception& failure) {
       std::fprintf(stderr, "halfwing_viewer: %s\n", failure.what());
     }
-    if (state.program) glDeleteProgram(state.program);
+    glDeleteProgram(state.programs.surface);  // 0 is ignored
+    glDeleteProgram(state.programs.lines);
   }
   glfwDestroyWindow(window);
   glfwTerminate();

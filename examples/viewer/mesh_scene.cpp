@@ -26,8 +26,9 @@ const char* weighting_name(hw_normal_weighting weighting) {
   }
 }
 
-void draw_lines(GLuint program, const std::array<float, 3>& rgb, const gpu_lines& lines) {
-  glUniform4f(glGetUniformLocation(program, "flat_color"), rgb[0], rgb[1], rgb[2], 1.0f);
+void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines) {
+  glUniform3fv(glGetUniformLocation(program, "line_color"), 1, style.color.data());
+  glUniform1f(glGetUniformLocation(program, "line_width"), style.width);
   lines.draw();
 }
 
@@ -49,20 +50,21 @@ void mesh_scene::rebuild() {
   face_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FACE_NORMALS);
 }
 
-void mesh_scene::draw(GLuint program, const frame&) const {
+void mesh_scene::draw(const programs& with) const {
   // Push the fill back a little so the lines on top are not lost to depth fighting.
+  glUseProgram(with.surface);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  glUniform4f(glGetUniformLocation(program, "flat_color"), 0, 0, 0, 0);
   surface_->draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
-  if (show_wireframe_) draw_lines(program, colors::wireframe, *wireframe_);
-  if (show_vertex_normals_) draw_lines(program, colors::vertex_normals, *vertex_normals_);
-  if (show_face_normals_) draw_lines(program, colors::face_normals, *face_normals_);
-  // Highlights last, so they win ties in the depth test against the wireframe on the same edge.
+  glUseProgram(with.lines);
+  if (show_wireframe_) draw_lines(with.lines, styles::wireframe, *wireframe_);
+  if (show_vertex_normals_) draw_lines(with.lines, styles::vertex_normals, *vertex_normals_);
+  if (show_face_normals_) draw_lines(with.lines, styles::face_normals, *face_normals_);
+  // Highlights last, and LEQUAL so they win depth ties against the wireframe on the same edges.
   glDepthFunc(GL_LEQUAL);
-  if (show_boundary_) draw_lines(program, colors::boundary, *boundary_);
-  if (show_non_manifold_) draw_lines(program, colors::non_manifold, *non_manifold_);
+  if (show_boundary_) draw_lines(with.lines, styles::boundary, *boundary_);
+  if (show_non_manifold_) draw_lines(with.lines, styles::non_manifold, *non_manifold_);
   glDepthFunc(GL_LESS);
   glBindVertexArray(0);
 }

@@ -13,15 +13,19 @@
 
 namespace viewer {
 
-/// The colours of the line sets (boundary and non-manifold edges are highlights: the tests look
-/// for them in screenshots).
-namespace colors {
-constexpr std::array<float, 3> wireframe{0.08f, 0.08f, 0.08f};
-constexpr std::array<float, 3> boundary{1.0f, 0.0f, 1.0f};      // magenta
-constexpr std::array<float, 3> non_manifold{0.0f, 1.0f, 1.0f};  // cyan
-constexpr std::array<float, 3> vertex_normals{0.2f, 0.9f, 0.2f};
-constexpr std::array<float, 3> face_normals{1.0f, 0.85f, 0.1f};
-}  // namespace colors
+/// How a line set looks. Boundary and non-manifold edges are highlights, wide and in colours the
+/// surface never takes: the tests look for them in screenshots.
+struct line_style {
+  std::array<float, 3> color;
+  float width;  // pixels
+};
+namespace styles {
+constexpr line_style wireframe{{0.08f, 0.08f, 0.08f}, 1.2f};
+constexpr line_style boundary{{1.0f, 0.0f, 1.0f}, 3.0f};      // magenta
+constexpr line_style non_manifold{{0.0f, 1.0f, 1.0f}, 4.0f};  // cyan
+constexpr line_style vertex_normals{{0.2f, 0.9f, 0.2f}, 1.5f};
+constexpr line_style face_normals{{1.0f, 0.85f, 0.1f}, 1.5f};
+}  // namespace styles
 
 class mesh_scene : public scene {
  public:
@@ -29,7 +33,7 @@ class mesh_scene : public scene {
   /// diagnostic keeps the non-manifold edges to highlight. Throws hw::error.
   explicit mesh_scene(const std::string& path);
 
-  void draw(GLuint program, const frame& f) const override;
+  void draw(const programs& with) const override;
   bool on_key(int key) override;
   bool on_click(double, double) override { return false; }
   std::string help() const override;

@@ -13,17 +13,18 @@
 
 namespace viewer {
 
-/// Per-frame uniforms shared by every scene.
-struct frame {
-  float mvp[16];
-  std::array<float, 3> light_dir;  // unit, towards the viewer (a headlight)
+/// The shader programs of ../shared/mesh_shader.h, with the per-frame uniforms (mvp, light,
+/// viewport) already set.
+struct programs {
+  GLuint surface;
+  GLuint lines;
 };
 
 class scene {
  public:
   virtual ~scene() = default;
-  /// Draws with `program` (the shared mesh shader) already in use and its uniforms set.
-  virtual void draw(GLuint program, const frame& f) const = 0;
+  /// Draws the scene; it selects the program of each pass itself.
+  virtual void draw(const programs& with) const = 0;
   /// Handles a key press; returns true when it changed what is drawn.
   virtual bool on_key(int key) = 0;
   /// Handles a left click at window pixel (x, y); returns true when it changed what is drawn.
