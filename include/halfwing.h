@@ -256,7 +256,7 @@ typedef struct {
 } hw_render_options;
 
 /**
- * The `f32` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
+ * The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
  * floats.
  */
 typedef uint32_t hw_render_floats;

@@ -88,7 +88,7 @@ impl From<RenderError> for FfiError {
     }
 }
 
-/// The `f32` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
+/// The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
 /// floats.
 pub type hw_render_floats = u32;
 /// x y z per vertex (separate layout; empty when interleaved).
