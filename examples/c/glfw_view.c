@@ -274,6 +274,7 @@ int main(int argc, char **argv) {
             glfwSetCursorPosCallback(window, on_cursor);
             glfwSetScrollCallback(window, on_scroll);
             printf("glfw_view: drag = orbit, scroll = zoom, W = wireframe, Esc = quit\n");
+            fflush(stdout); /* shown now, also when stdout is a pipe */
             while (!glfwWindowShouldClose(window)) {
                 int fb_width, fb_height;
                 glfwGetFramebufferSize(window, &fb_width, &fb_height);

@@ -54,6 +54,7 @@ void print_help(const viewer_state& state) {
       "  H          this help\n"
       "  Esc / Q    quit\n",
       state.scene->help().c_str());
+  std::fflush(stdout);  // shown now, also when stdout is a pipe
 }
 
 void draw(void* context, int width, int height) {
@@ -95,7 +96,10 @@ void on_key(GLFWwindow* window, int key, int, int action, int) {
     frame_scene(state);
   } else {
     try {
-      if (state.scene->on_key(key)) std::printf("%s\n", state.scene->status().c_str());
+      if (state.scene->on_key(key)) {
+        std::printf("%s\n", state.scene->status().c_str());
+        std::fflush(stdout);
+      }
     } catch (const hw::error& failure) {
       std::fprintf(stderr, "halfwing_viewer: %s\n", failure.what());
     }
