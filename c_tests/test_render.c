@@ -111,6 +111,42 @@ static void interleaved_layout_with_corner_attributes(void) {
   hw_mesh_free(mesh);
 }
 
+/* The mesh's own corner normals and uvs (a file's vn/vt) are honoured unless the options say not. */
+static void mesh_corner_attributes_are_honoured(void) {
+  hw_mesh *mesh = unit_cube();
+  hw_render_options options = hw_render_options_default();
+  double normals[24 * 3], uvs[24 * 2];
+  const float *data = NULL;
+  size_t h, n = 0;
+  hw_render_buffers *buffers;
+  for (h = 0; h < 24; ++h) {
+    normals[3 * h] = 1, normals[3 * h + 1] = 0, normals[3 * h + 2] = 0;
+    uvs[2 * h] = 0.5, uvs[2 * h + 1] = 0.75;
+  }
+  CHECK(hw_mesh_corner_normals_set(mesh, normals, 24) == HW_OK);
+  CHECK(hw_mesh_corner_uvs_set(mesh, uvs, 24) == HW_OK);
+  CHECK(options.mesh_corner_normals && options.mesh_corner_uvs);
+
+  /* One normal and one uv for every corner: a vertex per mesh vertex, all facing +x. */
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 8);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, &n) == HW_OK && n == 24);
+  CHECK(data != NULL && data[0] == 1.0f && data[1] == 0.0f && data[23] == 0.0f);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_UVS, &data, &n) == HW_OK && n == 16);
+  CHECK(data != NULL && data[0] == 0.5f && data[15] == 0.75f);
+  hw_render_buffers_free(buffers);
+
+  /* Declined: the shading's normals (flat: 24 vertices) and no uvs. */
+  options.mesh_corner_normals = false;
+  options.mesh_corner_uvs = false;
+  options.shading = HW_SHADING_FLAT;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
+  hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+}
+
 static void boundary_bounds_and_non_manifold_edges(void) {
   /* A 2 x 1 grid of quads: 8 boundary edges around 7 edges inside and out. */
   hw_mesh *mesh = NULL;
@@ -329,6 +365,7 @@ static void bad_generator_parameters(void) {
 int main(void) {
   shading_modes_split_vertices();
   interleaved_layout_with_corner_attributes();
+  mesh_corner_attributes_are_honoured();
   boundary_bounds_and_non_manifold_edges();
   polygon_lists();
   bad_render_arguments();

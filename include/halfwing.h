@@ -35,37 +35,6 @@
 #include <stdint.h>
 
 /**
- * The index that means "no element" (`u32::MAX`), as in the C API's `HW_INVALID_INDEX`.
- */
-#define INVALID_INDEX UINT32_MAX
-
-/**
- * `partner` value of a corner whose edge no other face uses.
- */
-#define BOUNDARY UINT32_MAX
-
-/**
- * `partner` value of a corner on a [`ProblemEdge`].
- */
-#define UNPAIRED (UINT32_MAX - 1)
-
-/**
- * Largest number of corners a table may hold: every corner may need two half-edges and
- * half-edge ids must stay below `u32::MAX`.
- */
-#define MAX_CORNERS (((uint64_t)UINT32_MAX - 1) / 2)
-
-/**
- * Largest number of vertices (ids must stay below `u32::MAX`).
- */
-#define MAX_VERTICES ((uint64_t)UINT32_MAX - 1)
-
-/**
- * Deepest subdivision accepted: level 10 already has 20·4¹⁰ ≈ 21 million triangles.
- */
-#define MAX_ICOSPHERE_LEVEL 10
-
-/**
  * The raw value of "no element": an id whose `idx` is this is invalid.
  */
 #define HW_INVALID_INDEX UINT32_MAX
@@ -136,6 +105,16 @@ typedef struct hw_soup hw_soup;
 typedef uint32_t hw_status;
 
 /**
+ * An element kind, to pick one of several per-kind arrays.
+ */
+typedef uint32_t hw_element_kind;
+
+/**
+ * The numeric type of an attribute column.
+ */
+typedef uint32_t hw_scalar_type;
+
+/**
  * A vertex id.
  */
 typedef struct {
@@ -193,11 +172,6 @@ typedef uint32_t hw_diagnostic_list;
 typedef uint32_t hw_diagnostic_edges;
 
 /**
- * An element kind, to pick one of several per-kind arrays.
- */
-typedef uint32_t hw_element_kind;
-
-/**
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
  */
 typedef uint32_t hw_build_policy;
@@ -238,6 +212,16 @@ typedef struct {
    * Length of the normal glyphs; 0 takes the mesh's mean edge length.
    */
   double normal_length;
+  /**
+   * Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
+   * of the shading's, when it has them and `corner_normals` is NULL.
+   */
+  bool mesh_corner_normals;
+  /**
+   * Give the vertices the mesh's own corner texture coordinates, when it has them and
+   * `corner_uvs` is NULL.
+   */
+  bool mesh_corner_uvs;
   /**
    * NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
    * half-edge's origin), used instead of the shading's normals.
@@ -280,6 +264,26 @@ typedef uint32_t hw_caps;
  * Which internal array hw_mesh_view() shows.
  */
 typedef uint32_t hw_mesh_array;
+
+/**
+ * `double`.
+ */
+#define HW_SCALAR_F64 0
+
+/**
+ * `float`.
+ */
+#define HW_SCALAR_F32 1
+
+/**
+ * `int32_t`.
+ */
+#define HW_SCALAR_I32 2
+
+/**
+ * `uint32_t`.
+ */
+#define HW_SCALAR_U32 3
 
 /**
  * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
@@ -553,6 +557,11 @@ typedef uint32_t hw_mesh_array;
 #define HW_ERR_PANIC 9
 
 /**
+ * A named item (an attribute) does not exist.
+ */
+#define HW_ERR_NOT_FOUND 10
+
+/**
  * One quadrilateral per cell (a triangle where a pole collapses a side).
  */
 #define HW_CELLS_QUADS 0
@@ -610,6 +619,144 @@ typedef uint32_t hw_mesh_array;
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Adds a zero-filled attribute `name` of `components` (1 to 16) values of type `scalar` per
+ * element of `kind`. `HW_ERR_INVALID_INPUT` when the name is taken, empty, not UTF-8 or starts
+ * with `hw:` (reserved), or the kind, type or count is out of range.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ */
+hw_status hw_mesh_attribute_add(hw_mesh *mesh,
+                                hw_element_kind kind,
+                                const char *name,
+                                hw_scalar_type scalar,
+                                size_t components);
+
+/**
+ * Removes attribute `name` of `kind` (`"hw:corner_normal"` and `"hw:corner_uv"` included).
+ * `HW_ERR_NOT_FOUND` when there is none.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ */
+hw_status hw_mesh_attribute_remove(hw_mesh *mesh, hw_element_kind kind, const char *name);
+
+/**
+ * The type and component count of attribute `name` of `kind` (`HW_ERR_NOT_FOUND` when there is
+ * none; a way to test for one). Either output may be NULL.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; outputs NULL or writable.
+ */
+hw_status hw_mesh_attribute_info(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type *out_scalar,
+                                 size_t *out_components);
+
+/**
+ * A read-only view of attribute `name` of `kind`, which must hold `scalar` values:
+ * `*out_data` (cast it to `const double *`, `const float *`, ...; NULL when empty) holds
+ * `*out_len` scalars, `components` per element slot. `HW_ERR_NOT_FOUND` for an unknown name,
+ * `HW_ERR_INVALID_INPUT` for another type.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; `out_data`, `out_len`
+ * writable.
+ */
+hw_status hw_mesh_attribute_view(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type scalar,
+                                 const void **out_data,
+                                 size_t *out_len);
+
+/**
+ * Writable access to attribute `name` of `kind` (layout as hw_mesh_attribute_view()): write
+ * through `*out_data` until the next call that modifies the mesh.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
+ * `out_data`, `out_len` writable.
+ */
+hw_status hw_mesh_attribute_data(hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 const char *name,
+                                 hw_scalar_type scalar,
+                                 void **out_data,
+                                 size_t *out_len);
+
+/**
+ * Number of attributes of `kind` (halfwing's own `hw:` ones included).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_count` writable.
+ */
+hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
+
+/**
+ * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
+ * `kind` NUL-terminated into `buf` of `len` bytes; `*needed` (when not NULL) receives the size
+ * needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND` when `index` is
+ * past the last.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
+ * writable.
+ */
+hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
+                                 hw_element_kind kind,
+                                 size_t index,
+                                 char *buf,
+                                 size_t len,
+                                 size_t *needed);
+
+/**
+ * A read-only view of the corner normals: `*out_xyz` holds `3 * *out_n_halfedges` doubles (x,
+ * y, z per half-edge slot, boundary ones included; NULL when empty). `HW_ERR_NOT_FOUND` when
+ * the mesh has none (a mesh read from a file with normals, or given them with
+ * hw_mesh_corner_normals_set(), has them).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
+ */
+hw_status hw_mesh_corner_normals_view(const hw_mesh *mesh,
+                                      const double **out_xyz,
+                                      size_t *out_n_halfedges);
+
+/**
+ * Sets the corner normals (adding them when the mesh has none) from `3 * n_halfedges` finite
+ * doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_slot_count()). Writing single
+ * values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`
+ * doubles.
+ */
+hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_halfedges);
+
+/**
+ * A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
+ * doubles (u, v per half-edge slot). `HW_ERR_NOT_FOUND` when the mesh has none.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
+ */
+hw_status hw_mesh_corner_uvs_view(const hw_mesh *mesh,
+                                  const double **out_uv,
+                                  size_t *out_n_halfedges);
+
+/**
+ * Sets the corner texture coordinates (adding them when needed) from `2 * n_halfedges` finite
+ * doubles, `n_halfedges` being the half-edge slot count.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `uv` NULL or `2 * n_halfedges`
+ * doubles.
+ */
+hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfedges);
 
 /**
  * Starts a walk around vertex `v`. An isolated vertex gives an empty walk.
@@ -766,6 +913,20 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
  * writable.
  */
 hw_status hw_mesh_add_vertex(hw_mesh *mesh, const double *xyz, hw_vertex *out_vertex);
+
+/**
+ * Adds the face with corners `vertices[0..n]` (counter-clockwise seen from outside; at least 3,
+ * distinct, live) and gives its id in `*out_face`; its loop starts at `vertices[0]`. Existing
+ * boundary sides are reused, missing edges created; the face and its corners have zero
+ * attributes. `HW_ERR_INVALID_HANDLE` for a bad vertex id; `HW_ERR_REFUSED`, with the mesh
+ * unchanged, for fewer than 3 or repeated corners, a side that has a face on this side already
+ * (complex edge), or a corner with no gap for the face (complex vertex).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `vertices` NULL (when `n` is 0) or
+ * `n` ids; `out_face` writable.
+ */
+hw_status hw_mesh_add_face(hw_mesh *mesh, const hw_vertex *vertices, size_t n, hw_face *out_face);
 
 /**
  * Deletes face `f`; its edges with no face left go too, and, when `delete_isolated_vertices`,
@@ -925,7 +1086,9 @@ void hw_soup_free(hw_soup *soup);
 
 /**
  * Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
- * would (same policies, same diagnostic; `out_diagnostic` may be NULL).
+ * would (same policies, same diagnostic; `out_diagnostic` may be NULL), keeping the file's
+ * normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
+ * hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
  *
  * # Safety
  * `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
@@ -1238,7 +1401,8 @@ hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *
 
 /**
  * The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
- * glyphs as long as the mean edge, no per-corner attributes.
+ * glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
+ * them, no other per-corner attributes.
  */
 hw_render_options hw_render_options_default(void);
 

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -83,7 +84,41 @@ class owned {
   T* raw_ = nullptr;
 };
 
+/// The hw_scalar_type of each C++ type an attribute column can hold.
+template <class T>
+struct scalar_type;
+template <>
+struct scalar_type<double> : std::integral_constant<hw_scalar_type, HW_SCALAR_F64> {};
+template <>
+struct scalar_type<float> : std::integral_constant<hw_scalar_type, HW_SCALAR_F32> {};
+template <>
+struct scalar_type<int32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_I32> {};
+template <>
+struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_U32> {};
+
 }  // namespace detail
+
+/// A borrowed run of values inside a mesh (an attribute column: valid until the next call that
+/// modifies the mesh) or a render-buffer object (valid while it lives). `T` is const for
+/// read-only views.
+template <class T>
+class values_view {
+ public:
+  values_view(T* data, std::size_t size) noexcept : data_(data), size_(size) {}
+  T* begin() const noexcept { return data_; }
+  T* end() const noexcept { return data_ + size_; }
+  T& operator[](std::size_t i) const noexcept { return data_[i]; }
+  T* data() const noexcept { return data_; }
+  std::size_t size() const noexcept { return size_; }
+  bool empty() const noexcept { return size_ == 0; }
+  /// Bytes, for glBufferData.
+  std::size_t size_bytes() const noexcept { return size_ * sizeof(T); }
+
+ private:
+  T* data_;
+  std::size_t size_;
+};
+
 
 /// A range over a C circulator, for range-for loops: `for (hw_vertex w : m.vertices_around(v))`.
 /// It borrows the mesh: do not modify the mesh while iterating.
@@ -306,6 +341,97 @@ class mesh {
   }
   void garbage_collect() { check(hw_mesh_garbage_collect(get(), nullptr)); }
 
+  /// Adds an isolated vertex.
+  hw_vertex add_vertex(double x, double y, double z) { return add_vertex({x, y, z}); }
+
+  /// Adds the face with these corners (counter-clockwise); throws hw::error (HW_ERR_REFUSED,
+  /// mesh unchanged) for a complex edge or vertex, repeated or too few corners.
+  hw_face add_face(const std::vector<hw_vertex>& corners) {
+    hw_face f;
+    check(hw_mesh_add_face(get(), corners.data(), corners.size(), &f));
+    return f;
+  }
+
+  /// Adds a zero-filled attribute of `components` values of type `T` (double, float, int32_t,
+  /// uint32_t) per element of `kind`.
+  template <class T>
+  void add_attribute(hw_element_kind kind, const std::string& name, std::size_t components = 1) {
+    check(hw_mesh_attribute_add(get(), kind, name.c_str(), detail::scalar_type<T>::value,
+                                components));
+  }
+
+  /// The values of attribute `name` (element `i` owns `components` values from `i *
+  /// components`); throws when it does not exist or holds another type.
+  template <class T>
+  values_view<const T> attribute(hw_element_kind kind, const std::string& name) const {
+    const void* data = nullptr;
+    std::size_t size = 0;
+    check(hw_mesh_attribute_view(get(), kind, name.c_str(), detail::scalar_type<T>::value, &data,
+                                 &size));
+    return values_view<const T>(static_cast<const T*>(data), size);
+  }
+
+  /// The values of attribute `name`, writable.
+  template <class T>
+  values_view<T> attribute_data(hw_element_kind kind, const std::string& name) {
+    void* data = nullptr;
+    std::size_t size = 0;
+    check(hw_mesh_attribute_data(get(), kind, name.c_str(), detail::scalar_type<T>::value, &data,
+                                 &size));
+    return values_view<T>(static_cast<T*>(data), size);
+  }
+
+  /// Removes attribute `name` of `kind`.
+  void remove_attribute(hw_element_kind kind, const std::string& name) {
+    check(hw_mesh_attribute_remove(get(), kind, name.c_str()));
+  }
+
+  /// Names of the attributes of `kind`, in the order they were added.
+  std::vector<std::string> attribute_names(hw_element_kind kind) const {
+    std::size_t count = 0;
+    check(hw_mesh_attribute_count(get(), kind, &count));
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < count; ++i) {
+      std::size_t needed = 0;
+      hw_mesh_attribute_name(get(), kind, i, nullptr, 0, &needed);
+      std::string name(needed, '\0');
+      check(hw_mesh_attribute_name(get(), kind, i, name.data(), name.size(), &needed));
+      name.resize(needed - 1);
+      names.push_back(std::move(name));
+    }
+    return names;
+  }
+
+  /// Corner normals, x y z per half-edge slot; throws HW_ERR_NOT_FOUND when there are none.
+  values_view<const double> corner_normals() const {
+    const double* xyz = nullptr;
+    std::size_t n = 0;
+    check(hw_mesh_corner_normals_view(get(), &xyz, &n));
+    return values_view<const double>(xyz, 3 * n);
+  }
+
+  /// Sets the corner normals from x y z per half-edge slot.
+  void set_corner_normals(const std::vector<double>& xyz) {
+    if (xyz.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "corner normals: size is not a multiple of 3 (x, y, z)");
+    check(hw_mesh_corner_normals_set(get(), xyz.data(), xyz.size() / 3));
+  }
+
+  /// Corner texture coordinates, u v per half-edge slot; throws HW_ERR_NOT_FOUND when none.
+  values_view<const double> corner_uvs() const {
+    const double* uv = nullptr;
+    std::size_t n = 0;
+    check(hw_mesh_corner_uvs_view(get(), &uv, &n));
+    return values_view<const double>(uv, 2 * n);
+  }
+
+  /// Sets the corner texture coordinates from u v per half-edge slot.
+  void set_corner_uvs(const std::vector<double>& uv) {
+    if (uv.size() % 2 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "corner uvs: size is not a multiple of 2 (u, v)");
+    check(hw_mesh_corner_uvs_set(get(), uv.data(), uv.size() / 2));
+  }
+
   /// Takes ownership of a mesh made by a C call (a generator, a builder).
   static mesh adopt(hw_mesh* raw) { return mesh(raw); }
 
@@ -327,26 +453,6 @@ class mesh {
   }
   std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
-};
-
-/// A read-only view of an array owned by a halfwing object (valid while the object lives).
-template <class T>
-class array_view {
- public:
-  array_view() = default;
-  array_view(const T* data, std::size_t size) : data_(data), size_(size) {}
-  const T* data() const noexcept { return data_; }
-  std::size_t size() const noexcept { return size_; }
-  bool empty() const noexcept { return size_ == 0; }
-  const T* begin() const noexcept { return data_; }
-  const T* end() const noexcept { return data_ + size_; }
-  const T& operator[](std::size_t i) const noexcept { return data_[i]; }
-  /// Bytes, for glBufferData.
-  std::size_t size_bytes() const noexcept { return size_ * sizeof(T); }
-
- private:
-  const T* data_ = nullptr;
-  std::size_t size_ = 0;
 };
 
 /// GPU-ready arrays of a mesh or a polygon list (owns an hw_render_buffers); see
@@ -374,17 +480,19 @@ class render_buffers {
     return render_buffers(raw);
   }
 
-  array_view<float> floats(hw_render_floats which) const {
+  /// One float array (see hw_render_buffers_floats()), valid while this object lives.
+  values_view<const float> floats(hw_render_floats which) const {
     const float* data = nullptr;
     std::size_t n = 0;
     check(hw_render_buffers_floats(get(), which, &data, &n));
-    return {data, n};
+    return values_view<const float>(data, n);
   }
-  array_view<uint32_t> indices(hw_render_indices which) const {
+  /// One index array (see hw_render_buffers_indices()), valid while this object lives.
+  values_view<const uint32_t> indices(hw_render_indices which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
     check(hw_render_buffers_indices(get(), which, &data, &n));
-    return {data, n};
+    return values_view<const uint32_t>(data, n);
   }
   std::size_t n_vertices() const { return hw_render_buffers_n_vertices(get()); }
   /// Floats per interleaved vertex (0 for separate arrays).

@@ -37,7 +37,7 @@ using gl_vertex_array = gl_name<glGenVertexArrays, glDeleteVertexArrays>;
 
 /// Copies a view into a new GL_ARRAY_BUFFER bound to attribute `location` (`size` floats each).
 template <class T>
-inline void upload_attribute(const gl_buffer& buffer, const hw::array_view<T>& data, GLuint location,
+inline void upload_attribute(const gl_buffer& buffer, const hw::values_view<const T>& data, GLuint location,
                              GLint size) {
   glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size_bytes()), data.data(),

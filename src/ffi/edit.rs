@@ -5,9 +5,9 @@
 //! was. Deletions only mark elements (ids stay stable); hw_mesh_garbage_collect() compacts.
 //! Every edit invalidates views taken with hw_mesh_view() and running circulators.
 
-use crate::mesh::{EditError, IndexMaps};
+use crate::mesh::{EditError, IndexMaps, VertexId};
 
-use super::boundary::{Out, arg_mut, arg_ref, guard, guard_void, write_view};
+use super::boundary::{Out, arg_mut, arg_ref, arg_slice, guard, guard_void, write_view};
 use super::elements::*;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -70,6 +70,37 @@ pub unsafe extern "C" fn hw_mesh_add_vertex(
                 .add_vertex(point)
                 .ok_or_else(|| FfiError::new(HW_ERR_REFUSED, "the mesh is full (32-bit ids)"))?;
             out.write(v.into());
+            Ok(())
+        })
+    }
+}
+
+/// Adds the face with corners `vertices[0..n]` (counter-clockwise seen from outside; at least 3,
+/// distinct, live) and gives its id in `*out_face`; its loop starts at `vertices[0]`. Existing
+/// boundary sides are reused, missing edges created; the face and its corners have zero
+/// attributes. `HW_ERR_INVALID_HANDLE` for a bad vertex id; `HW_ERR_REFUSED`, with the mesh
+/// unchanged, for fewer than 3 or repeated corners, a side that has a face on this side already
+/// (complex edge), or a corner with no gap for the face (complex vertex).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `vertices` NULL (when `n` is 0) or
+/// `n` ids; `out_face` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_add_face(
+    mesh: *mut hw_mesh,
+    vertices: *const hw_vertex,
+    n: usize,
+    out_face: *mut hw_face,
+) -> hw_status {
+    unsafe {
+        edit(mesh, |mesh| {
+            let out = Out::new(out_face, "out_face")?;
+            let corners: Vec<VertexId> = arg_slice(vertices, n, "vertices")?
+                .iter()
+                .map(|&v| v.into())
+                .collect();
+            let f = mesh.add_face(&corners)?;
+            out.write(f.into());
             Ok(())
         })
     }

@@ -1,7 +1,7 @@
 //! Element ids as small by-value C structs, so the compiler keeps vertices, half-edges, edges and
 //! faces apart (`hw_vertex v = hw_mesh_he_origin(mesh, h);`).
 
-use crate::mesh::{EdgeId, FaceId, HalfedgeId, HandleError, VertexId};
+use crate::mesh::{EdgeId, ElementKind, FaceId, HalfedgeId, HandleError, VertexId};
 
 use super::error::FfiError;
 use super::status::HW_ERR_INVALID_HANDLE;
@@ -47,6 +47,19 @@ pub const HW_ELEMENT_HALFEDGE: hw_element_kind = 1;
 pub const HW_ELEMENT_EDGE: hw_element_kind = 2;
 /// Faces.
 pub const HW_ELEMENT_FACE: hw_element_kind = 3;
+
+/// The Rust element kind of a C one.
+pub(crate) fn element_kind(raw: hw_element_kind) -> Result<ElementKind, FfiError> {
+    match raw {
+        HW_ELEMENT_VERTEX => Ok(ElementKind::Vertex),
+        HW_ELEMENT_HALFEDGE => Ok(ElementKind::Halfedge),
+        HW_ELEMENT_EDGE => Ok(ElementKind::Edge),
+        HW_ELEMENT_FACE => Ok(ElementKind::Face),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown element kind {other}"
+        ))),
+    }
+}
 
 /// Pairs each C id struct with its Rust id.
 macro_rules! id_conversions {

@@ -137,7 +137,9 @@ pub unsafe extern "C" fn hw_soup_free(soup: *mut hw_soup) {
 }
 
 /// Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
-/// would (same policies, same diagnostic; `out_diagnostic` may be NULL).
+/// would (same policies, same diagnostic; `out_diagnostic` may be NULL), keeping the file's
+/// normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
+/// hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
 ///
 /// # Safety
 /// `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
@@ -154,8 +156,7 @@ pub unsafe extern "C" fn hw_mesh_read(
         let policy = build_policy(policy)?;
         // SAFETY: forwarded from the caller.
         let soup = read_path(unsafe { path_arg(path) }?)?;
-        let (mesh, diagnostic) =
-            with_threads(|| Mesh::from_face_list(&soup.as_face_list(), policy))?;
+        let (mesh, diagnostic) = with_threads(|| Mesh::from_soup(&soup, policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_mesh { mesh }));

@@ -9,6 +9,7 @@
 
 #![allow(non_camel_case_types)]
 
+pub mod attributes;
 pub(crate) mod boundary;
 pub mod circulator;
 pub mod diagnostic;
@@ -30,6 +31,7 @@ pub mod topology;
 pub mod version;
 pub mod views;
 
+pub use attributes::*;
 pub use circulator::*;
 pub use diagnostic::*;
 pub use edit::*;

@@ -42,6 +42,12 @@ pub struct hw_render_options {
     pub interleaved: bool,
     /// Length of the normal glyphs; 0 takes the mesh's mean edge length.
     pub normal_length: f64,
+    /// Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
+    /// of the shading's, when it has them and `corner_normals` is NULL.
+    pub mesh_corner_normals: bool,
+    /// Give the vertices the mesh's own corner texture coordinates, when it has them and
+    /// `corner_uvs` is NULL.
+    pub mesh_corner_uvs: bool,
     /// NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
     /// half-edge's origin), used instead of the shading's normals.
     pub corner_normals: *const f64,
@@ -54,7 +60,8 @@ pub struct hw_render_options {
 }
 
 /// The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
-/// glyphs as long as the mean edge, no per-corner attributes.
+/// glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
+/// them, no other per-corner attributes.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_render_options_default() -> hw_render_options {
     hw_render_options {
@@ -63,6 +70,8 @@ pub extern "C" fn hw_render_options_default() -> hw_render_options {
         crease_angle: 30f64.to_radians(),
         interleaved: false,
         normal_length: 0.0,
+        mesh_corner_normals: true,
+        mesh_corner_uvs: true,
         corner_normals: std::ptr::null(),
         corner_uvs: std::ptr::null(),
         n_corners: 0,
@@ -225,6 +234,15 @@ pub unsafe extern "C" fn hw_render_buffers_build(
                 corner_array::<2>(options.corner_uvs, options.n_corners, "corner_uvs")?,
             )
         };
+        // Explicit arrays first, then the mesh's own attributes when asked for.
+        let corner_normals = corner_normals.or_else(|| {
+            options
+                .mesh_corner_normals
+                .then(|| mesh.corner_normals())
+                .flatten()
+        });
+        let corner_uvs =
+            corner_uvs.or_else(|| options.mesh_corner_uvs.then(|| mesh.corner_uvs()).flatten());
         let glyph_weighting: VertexNormalWeighting = weighting(options.weighting)?;
         let mesh_options = MeshBufferOptions {
             surface: SurfaceOptions {

@@ -33,9 +33,11 @@ pub const HW_ERR_REFUSED: hw_status = 8;
 /// A Rust panic was caught at the C boundary: a bug in halfwing. The object passed in is left
 /// as it was before the call only if the call does not mutate it.
 pub const HW_ERR_PANIC: hw_status = 9;
+/// A named item (an attribute) does not exist.
+pub const HW_ERR_NOT_FOUND: hw_status = 10;
 
 /// Static text for every status.
-const STATUS_TEXT: [&str; 10] = [
+const STATUS_TEXT: [&str; 11] = [
     "ok\0",
     "a required pointer argument was NULL\0",
     "invalid or deleted handle\0",
@@ -46,6 +48,7 @@ const STATUS_TEXT: [&str; 10] = [
     "parse error\0",
     "operation refused: precondition does not hold\0",
     "internal error (panic caught at the C boundary)\0",
+    "not found\0",
 ];
 
 /// A short, static, NUL-terminated English description of `status`. Unknown values give
@@ -66,7 +69,7 @@ mod tests {
 
     #[test]
     fn every_status_has_text_and_unknown_values_are_safe() {
-        for status in HW_OK..=HW_ERR_PANIC {
+        for status in HW_OK..=HW_ERR_NOT_FOUND {
             let text = unsafe { CStr::from_ptr(hw_status_str(status)) };
             assert!(!text.to_bytes().is_empty());
         }

@@ -116,6 +116,7 @@ impl Mesh {
             face_halfedge,
             deleted: Deletions::default(),
             may_have_pinched_vertices: true,
+            attributes: Default::default(),
         };
         mesh.link_boundary(&boundary);
         mesh

@@ -9,7 +9,7 @@ use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Invariant {
     /// The per-half-edge arrays have one even length; per-vertex and per-face arrays agree;
-    /// deletion counts match the marks.
+    /// deletion counts match the marks; attribute columns have one entry per element slot.
     ArrayLengths,
     /// A live half-edge's origin, next, prev and face are in range and live.
     HalfedgeReferences,
@@ -124,7 +124,13 @@ impl Mesh {
             && marks_fit(&self.deleted.faces, self.face_halfedge.len())
             && counted(&self.deleted.vertices) == self.deleted.n_vertices
             && counted(&self.deleted.edges) == self.deleted.n_edges
-            && counted(&self.deleted.faces) == self.deleted.n_faces;
+            && counted(&self.deleted.faces) == self.deleted.n_faces
+            && self.attributes.fit([
+                self.vertex_halfedge.len(),
+                n_h,
+                n_h / 2,
+                self.face_halfedge.len(),
+            ]);
         if ok {
             Ok(())
         } else {

@@ -1,5 +1,6 @@
 //! The half-edge mesh's struct-of-arrays storage.
 
+use super::attributes::Attributes;
 use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 
 /// A half-edge polygon mesh (general polygons), stored as struct-of-arrays of `u32` indices.
@@ -31,6 +32,9 @@ pub struct Mesh {
     /// collection); deleting faces may pinch vertices, so it sets this. Operators that must see a
     /// vertex's every half-edge check the slow way while it is set.
     pub(super) may_have_pinched_vertices: bool,
+    /// Named per-element columns, corner normals and texture coordinates (see
+    /// [`attributes`](super::attributes)); empty sets cost nothing.
+    pub(super) attributes: Attributes,
 }
 
 /// Deletion marks. The flag vectors stay empty until something is deleted, so a freshly built
@@ -160,7 +164,7 @@ impl Mesh {
         &mut self.positions
     }
 
-    /// Adds an isolated vertex. `None` when the vertex count would reach `u32::MAX`.
+    /// Adds an isolated vertex (its attributes are zero). `None` when the vertex count would reach `u32::MAX`.
     pub fn add_vertex(&mut self, position: [f64; 3]) -> Option<VertexId> {
         let id = u32::try_from(self.vertex_halfedge.len())
             .ok()
@@ -170,6 +174,7 @@ impl Mesh {
         if !self.deleted.vertices.is_empty() {
             self.deleted.vertices.push(false);
         }
+        self.grow_attributes();
         Some(VertexId(id))
     }
 }

@@ -6,6 +6,7 @@
 //! fast accessors or their checked `try_*` forms; circulate with the iterators of
 //! [`circulators`]; validate with [`Mesh::check`].
 
+pub mod attributes;
 mod build;
 mod check;
 pub mod circulators;
@@ -14,11 +15,13 @@ mod connectivity;
 mod diagnose;
 mod edit;
 mod export;
+mod from_soup;
 mod ids;
 mod navigation;
 mod vertex_fans;
 
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
+pub use attributes::{AttributeError, AttributeInfo, Scalar, ScalarType};
 pub use check::{Element, Invariant, InvariantError};
 pub use circulators::{HalfedgeWalk, Step, WalkProgress};
 pub use components::Components;

@@ -32,6 +32,16 @@ pub enum ListProblem {
         /// Length of the index array.
         indices: u64,
     },
+    /// A per-corner attribute array (`what`: "corner normals", "corner uvs") does not have one
+    /// entry per index.
+    CornerAttributeMismatch {
+        /// Which attribute.
+        what: &'static str,
+        /// Number of indices (corners).
+        expected: u64,
+        /// Length of the attribute array.
+        actual: u64,
+    },
     /// A count does not fit the `u32` ids the kernels use (indices must stay below `u32::MAX`,
     /// and every corner may need two half-edges).
     TooManyElements {
@@ -55,6 +65,11 @@ impl fmt::Display for ListProblem {
                     "{indices} indices do not split into faces of {size} corners"
                 )
             }
+            ListProblem::CornerAttributeMismatch {
+                what,
+                expected,
+                actual,
+            } => write!(f, "{actual} {what} given for {expected} corners"),
             ListProblem::TooManyElements { what, count } => {
                 write!(f, "{count} {what} exceed the 32-bit index range")
             }

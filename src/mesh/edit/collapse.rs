@@ -108,7 +108,7 @@ impl Mesh {
 
     /// `true` when some live half-edge leaves `v` outside the fan of its stored half-edge (a scan
     /// of all half-edges: only needed while the mesh may have pinched vertices).
-    fn fan_misses_halfedges(&self, v: VertexId) -> bool {
+    pub(super) fn fan_misses_halfedges(&self, v: VertexId) -> bool {
         let in_fan = self.outgoing_halfedges(v).count();
         let leaving = (0..self.halfedge_capacity())
             .filter(|&h| self.origin[h] == v.0 && !self.is_halfedge_deleted(HalfedgeId(h as u32)))
@@ -153,6 +153,7 @@ impl Mesh {
         self.link(h1, o0_next);
         self.link(o0_prev, h1);
         self.face[h1.idx()] = fo.0;
+        self.copy_halfedge_attributes(o0, h1);
         self.vertex_halfedge[v0.idx()] = h1.0;
         self.adjust_outgoing_halfedge(v0);
         self.vertex_halfedge[v1.idx()] = o1.0;

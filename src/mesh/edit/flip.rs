@@ -52,6 +52,9 @@ impl Mesh {
         self.face[a1.idx()] = f1.0;
         self.face_halfedge[f0.idx()] = h0.0;
         self.face_halfedge[f1.idx()] = h1.0;
+        // The new diagonal's ends take the corners of d (from f1) and c (from f0).
+        self.copy_halfedge_attributes(b2, h0);
+        self.copy_halfedge_attributes(a2, h1);
         if self.vertex_halfedge[a.idx()] == h0.0 {
             self.vertex_halfedge[a.idx()] = b1.0;
         }

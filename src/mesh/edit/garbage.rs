@@ -54,7 +54,7 @@ fn compact<T: Copy>(values: &[T], map: &[u32]) -> Vec<T> {
 
 impl Mesh {
     /// Removes every deleted element, renumbering the live ones in order, and returns the maps
-    /// from old to new ids. A mesh with nothing deleted is left as it is (identity maps).
+    /// from old to new ids. Attribute columns are compacted with the same maps. A mesh with nothing deleted is left as it is (identity maps).
     pub fn garbage_collect(&mut self) -> IndexMaps {
         let vertices = compaction_map(self.vertex_halfedge.len(), &self.deleted.vertices);
         let edges = compaction_map(self.origin.len() / 2, &self.deleted.edges);
@@ -102,6 +102,7 @@ impl Mesh {
             .map(|h| remap(h, &halfedges))
             .collect();
 
+        self.compact_attributes(&vertices, &halfedges, &edges, &faces);
         *self = Mesh {
             origin,
             next,
@@ -112,6 +113,7 @@ impl Mesh {
             face_halfedge,
             deleted: Deletions::default(),
             may_have_pinched_vertices: true,
+            attributes: std::mem::take(&mut self.attributes),
         };
         self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
         IndexMaps {

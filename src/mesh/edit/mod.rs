@@ -3,6 +3,7 @@
 //! Deletions only mark elements; [`Mesh::garbage_collect`](super::Mesh::garbage_collect)
 //! compacts the arrays and returns the old-to-new index maps.
 
+mod add_face;
 mod collapse;
 mod delete;
 mod flip;
@@ -49,7 +50,8 @@ impl Mesh {
             .find(|&h| self.target(h) == to)
     }
 
-    /// Appends a pair of half-edges (fields to be set by the caller); returns the even one.
+    /// Appends a pair of half-edges (fields to be set by the caller; attributes zero); returns the
+    /// even one.
     pub(super) fn push_edge(&mut self, operation: &'static str) -> Result<HalfedgeId, EditError> {
         let h = self.origin.len();
         if h as u64 + 2 >= u64::from(INVALID_INDEX) {
@@ -66,10 +68,12 @@ impl Mesh {
         if !self.deleted.edges.is_empty() {
             self.deleted.edges.push(false);
         }
+        self.grow_attributes();
         Ok(HalfedgeId(h as u32))
     }
 
-    /// Appends a face whose loop starts at `h` (face ids of the loop set by the caller).
+    /// Appends a face whose loop starts at `h` (face ids of the loop set by the caller; attributes
+    /// zero).
     pub(super) fn push_face(
         &mut self,
         h: HalfedgeId,
@@ -83,6 +87,7 @@ impl Mesh {
         if !self.deleted.faces.is_empty() {
             self.deleted.faces.push(false);
         }
+        self.grow_attributes();
         Ok(FaceId(f as u32))
     }
 

@@ -22,7 +22,8 @@ impl Mesh {
             operation: SPLIT_EDGE,
         })?;
         let (h0, h1) = (e.halfedge(0), e.halfedge(1));
-        let b = self.target(h0);
+        let (a, b) = (self.origin(h0), self.target(h0));
+        let t = segment_parameter(self.position(a), self.position(b), position);
         let n = self.push_edge(SPLIT_EDGE)?; // n: w → b beside h0; twin(n): b → w beside h1
         let (h0_next, h1_prev) = (self.next(h0), self.prev(h1));
         self.origin[n.idx()] = w.0;
@@ -42,6 +43,13 @@ impl Mesh {
         if self.vertex_halfedge[b.idx()] == h1.0 {
             self.vertex_halfedge[b.idx()] = n.twin().0;
         }
+        // Corners: beside h0, n is the new corner at w; beside h1, the corner at b moves from h1
+        // to twin(n) and h1 becomes the new corner at w.
+        self.blend_vertex_attributes(a, b, t, w);
+        self.copy_edge_attributes(e, n.edge());
+        self.blend_halfedge_attributes(h0, h0_next, t, n);
+        self.copy_halfedge_attributes(h1, n.twin());
+        self.blend_halfedge_attributes(self.next(h1), n.twin(), t, h1);
         Ok(w)
     }
 
@@ -81,10 +89,28 @@ impl Mesh {
         self.face[a.idx()] = f.0;
         self.face_halfedge[f.idx()] = a.0;
         let g = self.push_face(b, SPLIT_FACE)?;
+        // The corners at v0 and v1 now have a half-edge on each side of the new edge.
+        self.copy_face_attributes(f, g);
+        self.copy_halfedge_attributes(h0_next, a);
+        self.copy_halfedge_attributes(h1_next, b);
         let side: Vec<HalfedgeId> = self.halfedge_loop(b).collect();
         for h in side {
             self.face[h.idx()] = g.0;
         }
         Ok(a)
+    }
+}
+
+/// Where `p` projects on the segment `a`–`b`, as a fraction of the way from `a` (clamped to
+/// `[0, 1]`); the middle when the segment has no length or the numbers are not finite.
+fn segment_parameter(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> f64 {
+    let ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let ap = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+    let length_squared = ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2];
+    let t = (ap[0] * ab[0] + ap[1] * ab[1] + ap[2] * ab[2]) / length_squared;
+    if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.5
     }
 }

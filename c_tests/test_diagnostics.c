@@ -1,0 +1,151 @@
+/* Diagnostics through the C API: what a bulk build reports on broken input under each policy,
+ * the analysis without a build, the views and summary with their bad arguments; plus the calls
+ * no other test reaches (edge circulation, face components, deleting an edge, writing a file). */
+#include <stdlib.h>
+
+#include "check.h"
+
+/* Three triangles on the edge 0-1 (non-manifold), a fourth face with a repeated vertex and a
+ * NaN-free isolated vertex 6. */
+static const double positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 2, 2, 2, 5, 5, 5};
+static const uint32_t sizes[] = {3, 3, 3, 3};
+static const uint32_t indices[] = {0, 1, 2, 1, 0, 3, 0, 1, 4, 2, 5, 2};
+
+static void diagnose_without_building(void) {
+  hw_diagnostic *d = NULL;
+  const uint32_t *ids = NULL, *faces = NULL;
+  size_t n = 0, n_faces = 0, needed = 0;
+  uint32_t ends[2] = {0, 0};
+  char *text;
+  CHECK(hw_diagnose_indexed(positions, 7, sizes, 4, indices, 12, &d) == HW_OK);
+  CHECK(!hw_diagnostic_is_clean(d));
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
+  CHECK(n == 1 && ids[0] == 3);
+  /* Vertex findings are those of the faces a Skip build keeps: vertex 4 is only in the third face
+   * on the edge, vertex 5 only in the malformed face, vertex 6 in none. */
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_ISOLATED_VERTICES, &ids, &n) == HW_OK);
+  CHECK(n == 3 && ids[0] == 4 && ids[1] == 5 && ids[2] == 6);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(n == 2 && ids[0] == 2 && ids[1] == 3);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 1);
+  CHECK(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, &n_faces) == HW_OK);
+  CHECK(ends[0] == 0 && ends[1] == 1 && n_faces == 3);
+  CHECK(faces[0] == 0 && faces[1] == 1 && faces[2] == 2);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_INCONSISTENT_EDGES, &n) == HW_OK);
+
+  /* The summary, with the copy-into-buffer protocol. */
+  CHECK(hw_diagnostic_summary(d, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL && needed > 1);
+  text = (char *)malloc(needed);
+  CHECK(text != NULL && hw_diagnostic_summary(d, text, needed, NULL) == HW_OK);
+  if (text) {
+    CHECK(strstr(text, "non-manifold edges") != NULL);
+    CHECK(strstr(text, "(v0-v1 in faces f0 f1 f2)") != NULL);
+    CHECK(strstr(text, "repeated vertex: f3") != NULL);
+    free(text);
+  }
+
+  /* Bad arguments. */
+  CHECK_STATUS(hw_diagnostic_ids(d, 99u, &ids, &n), HW_ERR_INVALID_INPUT, "list 99");
+  CHECK_STATUS(hw_diagnostic_ids(NULL, HW_DIAG_SKIPPED_FACES, &ids, &n), HW_ERR_NULL_ARGUMENT,
+               "diagnostic");
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, NULL, &n), HW_ERR_NULL_ARGUMENT,
+               "out_ids");
+  CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 5, ends, &faces, &n_faces),
+               HW_ERR_INVALID_INPUT, "edge 5");
+  CHECK_STATUS(hw_diagnostic_edge(d, 7u, 0, ends, &faces, &n_faces), HW_ERR_INVALID_INPUT,
+               "edge list 7");
+  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_count");
+  CHECK_STATUS(hw_diagnostic_summary(NULL, NULL, 0, NULL), HW_ERR_NULL_ARGUMENT, "diagnostic");
+  CHECK(!hw_diagnostic_is_clean(NULL));
+  CHECK_STATUS(hw_diagnose_indexed(NULL, 7, sizes, 4, indices, 12, &d), HW_ERR_NULL_ARGUMENT,
+               "positions");
+  CHECK_STATUS(hw_diagnose_indexed(positions, 7, sizes, 4, indices, 12, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_diagnostic");
+  hw_diagnostic_free(d);
+  hw_diagnostic_free(d);
+  CHECK(last_error_contains("already freed"));
+  hw_diagnostic_free(NULL);
+}
+
+static void policies_report_what_they_did(void) {
+  hw_mesh *mesh = NULL;
+  hw_diagnostic *d = NULL;
+  const uint32_t *ids = NULL;
+  size_t n = 0;
+  /* Skip: the malformed face and the third face on the edge go; the diagnostic says which. */
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_SKIP, &mesh, &d) ==
+        HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 2);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(n == 2 && ids[0] == 2 && ids[1] == 3);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  hw_diagnostic_free(d);
+  hw_mesh_free(mesh);
+  /* Repair keeps every face it can: it cannot keep a face whose corners collapse below three. */
+  mesh = NULL;
+  d = NULL;
+  CHECK_STATUS(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_REPAIR, &mesh,
+                                    &d),
+               HW_ERR_INVALID_INPUT, "fewer than 3");
+  CHECK(mesh == NULL && d == NULL);
+  /* Without the malformed face, Repair keeps all three faces by copying the edge's vertices. */
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh, &d) ==
+        HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 3 && hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_VERTEX_COPIES, &ids, &n) == HW_OK && n >= 1);
+  CHECK(hw_mesh_n_vertices(mesh) == 7 + n);
+  hw_diagnostic_free(d);
+  hw_mesh_free(mesh);
+}
+
+static void remaining_calls(void) {
+  /* Two quads side by side. */
+  static const double quad_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  static const uint32_t quad_sizes[] = {4, 4};
+  static const uint32_t quad_indices[] = {0, 1, 4, 3, 1, 2, 5, 4};
+  hw_mesh *mesh = NULL, *again = NULL;
+  hw_circulator c;
+  hw_edge e, middle = {0};
+  hw_face f0 = {0}, bad_face = {9};
+  hw_vertex v1 = {1};
+  uint32_t components[2];
+  size_t n = 0, count = 0;
+  char path[512];
+  CHECK(hw_mesh_from_indexed(quad_positions, 6, quad_sizes, 2, quad_indices, 8, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v1, HW_CIRC_EDGES, &c) == HW_OK);
+  while (hw_circ_next_edge(&c, &e)) {
+    if (!hw_mesh_edge_is_boundary(mesh, e)) middle = e;
+    ++count;
+  }
+  CHECK(count == 3);
+  CHECK(hw_mesh_face_is_boundary(mesh, f0));
+  CHECK(!hw_mesh_face_is_boundary(mesh, bad_face) && last_error_contains("face id 9"));
+  CHECK(hw_mesh_face_components(mesh, components, 2, &n) == HW_OK && n == 2);
+  CHECK(components[0] == 0 && components[1] == 0);
+  CHECK_STATUS(hw_mesh_face_components(mesh, components, 1, &n), HW_ERR_BUFFER_TOO_SMALL,
+               "2 are needed");
+
+  /* Write, read back, same counts. */
+  snprintf(path, sizeof path, "%s/halfwing_test_diagnostics.off", TEST_TMP_DIR);
+  CHECK(hw_mesh_write(mesh, path) == HW_OK);
+  CHECK(hw_mesh_read(path, HW_BUILD_STRICT, &again, NULL) == HW_OK);
+  CHECK(again != NULL && hw_mesh_n_faces(again) == 2 && hw_mesh_n_vertices(again) == 6);
+  hw_mesh_free(again);
+  CHECK_STATUS(hw_mesh_write(mesh, NULL), HW_ERR_NULL_ARGUMENT, "path");
+  CHECK_STATUS(hw_mesh_write(mesh, "/nonexistent/dir/x.off"), HW_ERR_IO, "I/O");
+
+  /* Deleting the shared edge takes both faces with it. */
+  CHECK(hw_mesh_delete_edge(mesh, middle, true) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 0 && hw_mesh_check(mesh) == HW_OK);
+  CHECK_STATUS(hw_mesh_delete_edge(mesh, middle, true), HW_ERR_INVALID_HANDLE, "deleted");
+  hw_mesh_free(mesh);
+}
+
+int main(void) {
+  diagnose_without_building();
+  policies_report_what_they_did();
+  remaining_calls();
+  return check_summary("test_diagnostics");
+}

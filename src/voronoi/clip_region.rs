@@ -1,0 +1,218 @@
+//! Convex clip regions for Voronoi cells.
+
+use super::error::VoronoiError;
+use super::predicates::orient2d;
+
+/// A convex polygon, stored counter-clockwise, that Voronoi cells are clipped to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipPolygon {
+    vertices: Vec<[f64; 2]>,
+    area: f64,
+}
+
+impl ClipPolygon {
+    /// The axis-aligned rectangle `[min.x, max.x] × [min.y, max.y]`; refused when it has zero
+    /// area, is inverted, or has a non-finite corner.
+    pub fn rectangle(min: [f64; 2], max: [f64; 2]) -> Result<Self, VoronoiError> {
+        if !(min.iter().chain(&max).all(|c| c.is_finite())) {
+            return Err(VoronoiError::DegenerateClip("non-finite rectangle corner"));
+        }
+        if !(min[0] < max[0] && min[1] < max[1]) {
+            return Err(VoronoiError::DegenerateClip(
+                "rectangle has zero or negative extent",
+            ));
+        }
+        Self::convex(&[min, [max[0], min[1]], max, [min[0], max[1]]])
+    }
+
+    /// A convex polygon given in either orientation. Vertices lying exactly on the segment
+    /// between their neighbours (and exact repeats) are dropped; the rest must turn the same way
+    /// at every vertex and wind once. Exact orientation tests decide convexity.
+    pub fn convex(vertices: &[[f64; 2]]) -> Result<Self, VoronoiError> {
+        if vertices
+            .iter()
+            .any(|p| !(p[0].is_finite() && p[1].is_finite()))
+        {
+            return Err(VoronoiError::DegenerateClip("non-finite vertex"));
+        }
+        let mut v: Vec<[f64; 2]> = Vec::with_capacity(vertices.len());
+        for &p in vertices {
+            if v.last() != Some(&p) {
+                v.push(p);
+            }
+        }
+        while v.len() > 1 && v.first() == v.last() {
+            v.pop();
+        }
+        if v.len() < 3 {
+            return Err(VoronoiError::DegenerateClip(
+                "fewer than three distinct vertices",
+            ));
+        }
+        let signed_area = shoelace(&v);
+        if signed_area == 0.0 || !signed_area.is_finite() {
+            return Err(VoronoiError::DegenerateClip("zero area"));
+        }
+        if signed_area < 0.0 {
+            v.reverse();
+        }
+        // Drop vertices that do not turn (straight continuation); refuse any right turn or
+        // reversal.
+        let mut i = 0;
+        while i < v.len() && v.len() >= 3 {
+            let n = v.len();
+            let (a, b, c) = (v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+            let o = orient2d(a, b, c);
+            if o < 0.0 || (o == 0.0 && !super::incremental::strictly_between(a, c, b)) {
+                return Err(VoronoiError::NonConvexClip { vertex: i });
+            }
+            if o == 0.0 {
+                v.remove(i);
+                i = i.saturating_sub(1);
+            } else {
+                i += 1;
+            }
+        }
+        if v.len() < 3 {
+            return Err(VoronoiError::DegenerateClip("all vertices collinear"));
+        }
+        // Left turns everywhere still allow a star that winds twice: total turning must be 2π.
+        let n = v.len();
+        let turning: f64 = (0..n)
+            .map(|i| {
+                let (a, b, c) = (v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+                let (u, w) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+                (u[0] * w[1] - u[1] * w[0]).atan2(u[0] * w[0] + u[1] * w[1])
+            })
+            .sum();
+        if turning > 3.0 * std::f64::consts::PI {
+            return Err(VoronoiError::NonConvexClip { vertex: 0 });
+        }
+        let area = shoelace(&v);
+        Ok(ClipPolygon { vertices: v, area })
+    }
+
+    /// Vertices, counter-clockwise. Edge `i` runs from vertex `i` to vertex `i + 1`.
+    pub fn vertices(&self) -> &[[f64; 2]] {
+        &self.vertices
+    }
+
+    /// Area (positive).
+    pub fn area(&self) -> f64 {
+        self.area
+    }
+
+    /// Is `p` inside or on the boundary (floating-point test)?
+    pub fn contains(&self, p: [f64; 2]) -> bool {
+        (0..self.vertices.len()).all(|i| self.edge_function(i, p) >= 0.0)
+    }
+
+    /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side.
+    #[inline(always)]
+    pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
+        let (a, e) = (self.vertices[i], self.edge_vector(i));
+        e[0] * (p[1] - a[1]) - e[1] * (p[0] - a[0])
+    }
+
+    /// Cross product of edge `i` with direction `d`: how fast `edge_function` grows along `d`.
+    #[inline(always)]
+    pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
+        let e = self.edge_vector(i);
+        e[0] * d[1] - e[1] * d[0]
+    }
+
+    #[inline(always)]
+    pub(crate) fn edge_vector(&self, i: usize) -> [f64; 2] {
+        let j = if i + 1 == self.vertices.len() {
+            0
+        } else {
+            i + 1
+        };
+        let (a, b) = (self.vertices[i], self.vertices[j]);
+        [b[0] - a[0], b[1] - a[1]]
+    }
+
+    /// Centroid of the polygon.
+    pub fn centroid(&self) -> [f64; 2] {
+        polygon_area_centroid(&self.vertices).1
+    }
+}
+
+fn shoelace(v: &[[f64; 2]]) -> f64 {
+    polygon_area_centroid(v).0
+}
+
+/// Signed area and centroid of a simple polygon (shoelace, relative to the first vertex for
+/// precision). The centroid of a zero-area polygon is its first vertex.
+pub fn polygon_area_centroid(v: &[[f64; 2]]) -> (f64, [f64; 2]) {
+    let Some(&o) = v.first() else {
+        return (0.0, [f64::NAN; 2]);
+    };
+    let (mut a2, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    for w in v.windows(2).skip(1) {
+        let (p, q) = (
+            [w[0][0] - o[0], w[0][1] - o[1]],
+            [w[1][0] - o[0], w[1][1] - o[1]],
+        );
+        let cross = p[0] * q[1] - q[0] * p[1];
+        a2 += cross;
+        cx += (p[0] + q[0]) * cross;
+        cy += (p[1] + q[1]) * cross;
+    }
+    if a2 == 0.0 {
+        return (0.0, o);
+    }
+    (0.5 * a2, [o[0] + cx / (3.0 * a2), o[1] + cy / (3.0 * a2)])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rectangle_is_counter_clockwise_with_its_area() {
+        let r = ClipPolygon::rectangle([0.0, 0.0], [2.0, 3.0]).unwrap();
+        assert_eq!(r.area(), 6.0);
+        assert_eq!(r.centroid(), [1.0, 1.5]);
+        assert!(r.contains([1.0, 1.0]) && r.contains([0.0, 3.0]) && !r.contains([-0.1, 1.0]));
+    }
+
+    #[test]
+    fn clockwise_input_is_reversed_and_collinear_vertices_dropped() {
+        let p = ClipPolygon::convex(&[[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.5], [1.0, 0.0]])
+            .unwrap();
+        assert_eq!(p.vertices().len(), 4);
+        assert_eq!(p.area(), 1.0);
+    }
+
+    #[test]
+    fn bad_regions_are_refused() {
+        assert!(matches!(
+            ClipPolygon::rectangle([0.0, 0.0], [0.0, 1.0]),
+            Err(VoronoiError::DegenerateClip(_))
+        ));
+        assert!(matches!(
+            ClipPolygon::rectangle([0.0, f64::NAN], [1.0, 1.0]),
+            Err(VoronoiError::DegenerateClip(_))
+        ));
+        assert!(matches!(
+            ClipPolygon::convex(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]),
+            Err(VoronoiError::DegenerateClip(_))
+        ));
+        let dart = [[0.0, 0.0], [2.0, 1.0], [4.0, 0.0], [2.0, 3.0]];
+        assert!(matches!(
+            ClipPolygon::convex(&dart),
+            Err(VoronoiError::NonConvexClip { .. })
+        ));
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|k| {
+                let a = (2 * k) as f64 * 2.0 * std::f64::consts::PI / 5.0;
+                [a.cos(), a.sin()]
+            })
+            .collect();
+        assert!(matches!(
+            ClipPolygon::convex(&star),
+            Err(VoronoiError::NonConvexClip { .. })
+        ));
+    }
+}

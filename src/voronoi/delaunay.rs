@@ -1,0 +1,518 @@
+//! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
+
+use super::error::VoronoiError;
+use super::incremental::{GHOST, GhostTriangulation, next_edge, prev_edge};
+use super::predicates::{normalising_scale, orient2d};
+use super::spatial_sort::brio_hilbert_order;
+
+/// Invalid index (no half-edge, no twin, no site).
+pub const INVALID: u32 = u32::MAX;
+
+/// Largest number of sites. Triangulation half-edges (`< 6n`), Voronoi half-edges (`< 6n`) and
+/// clipped-cell corners (`< 6n` plus the region's corners and boundary crossings) are all `u32`
+/// indices below [`INVALID`]; `8n` leaves room for all of them.
+pub const MAX_SITES: usize = (u32::MAX as usize - 16) / 8;
+// Compile-time check of that headroom.
+const _: () = assert!((MAX_SITES as u64) * 8 < INVALID as u64);
+
+/// Dimension of the triangulated site set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimension {
+    /// No sites.
+    Empty,
+    /// One distinct site (possibly repeated).
+    Point,
+    /// Two or more distinct sites, all on one line: no triangles, edges join neighbours along it.
+    Line,
+    /// Sites span the plane: at least one triangle.
+    Plane,
+}
+
+/// A Delaunay triangulation as a compact half-edge structure over triangles.
+///
+/// * Vertices are **site indices** into the input (`0..n_sites()`); a duplicated site is
+///   represented by the smallest index of its group ([`Delaunay::representative`]); other copies
+///   have no incident half-edge.
+/// * Triangle `t` owns half-edges `3t, 3t+1, 3t+2`, counter-clockwise; half-edge `e` starts at
+///   [`Delaunay::origin`]`(e)` and ends at the origin of `next(e)`, with its triangle on its left.
+/// * [`Delaunay::twin`] is the opposite half-edge, [`INVALID`] on the convex hull.
+/// * [`Delaunay::vertex_edge`] is an outgoing half-edge of each vertex — the outgoing hull edge for
+///   hull vertices, so that circulating counter-clockwise with `twin(prev(e))` visits every
+///   incident triangle and stops at [`INVALID`].
+/// * Where four or more sites are cocircular the split into triangles is arbitrary (but exact and
+///   deterministic); the Voronoi diagram merges those triangles into one vertex.
+///
+/// For 1-dimensional input (all sites collinear) there are no triangles and the Delaunay edges
+/// join consecutive sites of [`Delaunay::hull`], which then lists the distinct sites in order
+/// along the line. For a single distinct site the hull is that site; for none it is empty.
+#[derive(Clone, Debug)]
+pub struct Delaunay {
+    pub(crate) sites: Vec<[f64; 2]>,
+    /// Sites multiplied by `scale` (a power of two) for exact predicates.
+    pub(crate) scaled: Vec<[f64; 2]>,
+    pub(crate) scale: f64,
+    pub(crate) representative: Vec<u32>,
+    pub(crate) n_unique: usize,
+    pub(crate) triangles: Vec<u32>,
+    pub(crate) twins: Vec<u32>,
+    pub(crate) vertex_edge: Vec<u32>,
+    pub(crate) hull: Vec<u32>,
+    pub(crate) dimension: Dimension,
+    /// Scaled coordinates in insertion order, and the insertion rank of every triangle corner:
+    /// passes over the triangles read coordinates through these, sequentially in memory.
+    pub(crate) ranked: Vec<[f64; 2]>,
+    pub(crate) corner_ranks: Vec<u32>,
+    /// Sites in insertion order (spatially coherent): per-site passes follow it so that they
+    /// touch memory in the order the triangles were created.
+    pub(crate) insertion_order: Vec<u32>,
+}
+
+impl Delaunay {
+    /// Triangulates `sites`. NaN or infinite coordinates are refused; duplicates are merged.
+    ///
+    /// Construction: exact predicates (`robust`), biased randomised insertion order along a
+    /// Hilbert curve, walking point location from the previous insertion, Bowyer–Watson cavities.
+    pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
+        let n = sites.len();
+        if n > MAX_SITES {
+            return Err(VoronoiError::TooManySites {
+                count: n,
+                max: MAX_SITES,
+            });
+        }
+        if let Some((i, p)) = sites
+            .iter()
+            .enumerate()
+            .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
+        {
+            return Err(VoronoiError::NonFiniteSite {
+                site: i,
+                x: p[0],
+                y: p[1],
+            });
+        }
+        let scale = normalising_scale(sites);
+        let scaled: Vec<[f64; 2]> = sites.iter().map(|p| [p[0] * scale, p[1] * scale]).collect();
+        let mut representative: Vec<u32> = (0..n as u32).collect();
+        let order = brio_hilbert_order(&scaled);
+
+        let mut result = Delaunay {
+            sites: sites.to_vec(),
+            scaled,
+            scale,
+            representative: Vec::new(),
+            n_unique: 0,
+            triangles: Vec::new(),
+            twins: Vec::new(),
+            vertex_edge: vec![INVALID; n],
+            hull: Vec::new(),
+            dimension: Dimension::Empty,
+            insertion_order: Vec::new(),
+            ranked: Vec::new(),
+            corner_ranks: Vec::new(),
+        };
+        // The triangulation is built on vertices numbered by insertion rank, with coordinates
+        // stored in that (space-filling-curve) order: walks and cavities then touch memory
+        // sequentially instead of jumping across the input. Ranks map back to sites at the end.
+        let sorted: Vec<[f64; 2]> = order.iter().map(|&s| result.scaled[s as usize]).collect();
+        let ranks: Vec<u32> = (0..n as u32).collect();
+        let mut rank_representative = ranks.clone();
+        match find_initial_triangle(&sorted, &ranks, &mut rank_representative) {
+            Seed::Empty => {}
+            Seed::Degenerate => result.build_collinear(&mut representative),
+            Seed::Triangle { a, b, c, position } => {
+                let mut tri = GhostTriangulation::new(&sorted, a, b, c, 6 * n + 12);
+                // Sites skipped while looking for the seed triangle come first, then the rest.
+                for k in (0..n as u32).filter(|&k| k as usize != position) {
+                    if k == a || k == b || rank_representative[k as usize] != k {
+                        continue;
+                    }
+                    if let Some(existing) = tri.insert(k) {
+                        rank_representative[k as usize] = existing;
+                    }
+                }
+                for (k, &r) in rank_representative.iter().enumerate() {
+                    representative[order[k] as usize] = order[r as usize];
+                }
+                let (origin, twin) = (tri.origin, tri.twin);
+                result.finish_planar(origin, twin, &order);
+                result.ranked = sorted;
+            }
+        }
+        result.canonicalise_representatives(representative);
+        result.insertion_order = order;
+        Ok(result)
+    }
+
+    /// Copies the real triangles out of the ghost triangulation and walks the hull.
+    /// `to_site` maps the builder's vertex numbers (insertion ranks) to site indices.
+    fn finish_planar(&mut self, origin: Vec<u32>, twin: Vec<u32>, to_site: &[u32]) {
+        let n_all = origin.len() / 3;
+        let is_ghost = |t: usize| {
+            origin[3 * t] == GHOST || origin[3 * t + 1] == GHOST || origin[3 * t + 2] == GHOST
+        };
+        // Real triangles are renumbered by their newest corner (a counting sort on insertion
+        // rank): slot reuse during construction scatters neighbours across the array, and every
+        // later pass (Voronoi vertices, links, clipping) walks neighbours, so the output order is
+        // made spatially coherent once here.
+        let mut start = vec![0u32; to_site.len() + 1];
+        let newest =
+            |t: usize| origin[3 * t].max(origin[3 * t + 1]).max(origin[3 * t + 2]) as usize;
+        let mut some_ghost = INVALID;
+        for t in 0..n_all {
+            if is_ghost(t) {
+                some_ghost = t as u32;
+            } else {
+                start[newest(t) + 1] += 1;
+            }
+        }
+        for k in 1..start.len() {
+            start[k] += start[k - 1];
+        }
+        let count = start[to_site.len()] as usize;
+        let mut new_index = vec![INVALID; n_all];
+        for (t, slot) in new_index.iter_mut().enumerate() {
+            if !is_ghost(t) {
+                let key = newest(t);
+                *slot = start[key];
+                start[key] += 1;
+            }
+        }
+        let mut triangles = vec![0u32; 3 * count];
+        let mut corner_ranks = vec![0u32; 3 * count];
+        let mut twins = vec![INVALID; 3 * count];
+        for t in 0..n_all {
+            let nt = new_index[t];
+            if nt == INVALID {
+                continue;
+            }
+            for k in 0..3 {
+                let (e, ne) = (3 * t + k, 3 * nt as usize + k);
+                triangles[ne] = to_site[origin[e] as usize];
+                corner_ranks[ne] = origin[e];
+                let o = twin[e] as usize;
+                let no = new_index[o / 3];
+                if no != INVALID {
+                    twins[ne] = 3 * no + (o % 3) as u32;
+                }
+            }
+        }
+        // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
+        // is across its edge ∞ → u.
+        let mut hull = Vec::new();
+        let start = some_ghost;
+        let mut g = start;
+        loop {
+            let base = 3 * g;
+            let k = (0..3)
+                .find(|&k| origin[(base + k) as usize] == GHOST)
+                .expect("ghost has the infinite vertex");
+            let finite = base + (k + 1) % 3; // u → v
+            let from_infinity = base + k; // ∞ → u
+            let v = origin[next_edge(finite) as usize];
+            hull.push(to_site[v as usize]);
+            g = twin[from_infinity as usize] / 3;
+            if g == start || hull.len() > n_all {
+                break;
+            }
+        }
+        // Vertex edges: any outgoing edge, then the outgoing hull edge for hull vertices.
+        for (e, &v) in triangles.iter().enumerate() {
+            self.vertex_edge[v as usize] = e as u32;
+        }
+        for (e, &v) in triangles.iter().enumerate() {
+            if twins[e] == INVALID {
+                self.vertex_edge[v as usize] = e as u32;
+            }
+        }
+        self.triangles = triangles;
+        self.corner_ranks = corner_ranks;
+        self.twins = twins;
+        self.hull = hull;
+        self.dimension = Dimension::Plane;
+    }
+
+    /// All distinct sites are collinear (or there is only one): order them along the line.
+    fn build_collinear(&mut self, representative: &mut [u32]) {
+        let mut order: Vec<u32> = (0..self.sites.len() as u32).collect();
+        // Lexicographic order is the order along any line.
+        let pts = &self.scaled;
+        order.sort_unstable_by(|&i, &j| {
+            pts[i as usize]
+                .partial_cmp(&pts[j as usize])
+                .unwrap_or(std::cmp::Ordering::Equal)
+                .then(i.cmp(&j))
+        });
+        let mut chain: Vec<u32> = Vec::new();
+        for &s in &order {
+            match chain.last() {
+                Some(&last) if pts[last as usize] == pts[s as usize] => {
+                    representative[s as usize] = last
+                }
+                _ => chain.push(s),
+            }
+        }
+        self.dimension = if chain.len() == 1 {
+            Dimension::Point
+        } else {
+            Dimension::Line
+        };
+        self.hull = chain;
+    }
+
+    /// Makes the smallest index of every duplicate group its representative and renames vertices.
+    fn canonicalise_representatives(&mut self, mut representative: Vec<u32>) {
+        let n = representative.len();
+        let mut smallest: Vec<u32> = (0..n as u32).collect();
+        for (i, &r) in representative.iter().enumerate() {
+            smallest[r as usize] = smallest[r as usize].min(i as u32);
+        }
+        let renamed = (0..n).any(|r| representative[r] == r as u32 && smallest[r] != r as u32);
+        for r in representative.iter_mut() {
+            *r = smallest[*r as usize];
+        }
+        if renamed {
+            for v in self.triangles.iter_mut().chain(self.hull.iter_mut()) {
+                *v = smallest[*v as usize];
+            }
+            let mut vertex_edge = vec![INVALID; n];
+            for (old, &e) in self.vertex_edge.iter().enumerate() {
+                if e != INVALID {
+                    vertex_edge[smallest[old] as usize] = e;
+                }
+            }
+            self.vertex_edge = vertex_edge;
+        }
+        self.n_unique = (0..n).filter(|&i| representative[i] == i as u32).count();
+        self.representative = representative;
+    }
+
+    /// Number of input sites (duplicates included).
+    pub fn n_sites(&self) -> usize {
+        self.sites.len()
+    }
+
+    /// Number of distinct sites.
+    pub fn n_unique_sites(&self) -> usize {
+        self.n_unique
+    }
+
+    /// The input sites, as given.
+    pub fn sites(&self) -> &[[f64; 2]] {
+        &self.sites
+    }
+
+    /// Dimension of the site set.
+    pub fn dimension(&self) -> Dimension {
+        self.dimension
+    }
+
+    /// Site → representative map: `representative()[i] == i` for distinct sites; a duplicate maps
+    /// to the smallest index with the same coordinates.
+    pub fn representative(&self) -> &[u32] {
+        &self.representative
+    }
+
+    /// `(duplicate, representative)` pairs for every site that was merged into another.
+    pub fn duplicates(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        self.representative
+            .iter()
+            .enumerate()
+            .filter(|&(i, &r)| r != i as u32)
+            .map(|(i, &r)| (i as u32, r))
+    }
+
+    /// Number of triangles.
+    pub fn n_triangles(&self) -> usize {
+        self.triangles.len() / 3
+    }
+
+    /// Vertex (site) indices of all triangles, three per triangle, counter-clockwise.
+    pub fn triangles(&self) -> &[u32] {
+        &self.triangles
+    }
+
+    /// Opposite half-edge of every half-edge ([`INVALID`] on the hull).
+    pub fn twins(&self) -> &[u32] {
+        &self.twins
+    }
+
+    /// Start vertex of half-edge `e` ([`INVALID`] for an invalid half-edge; so for all accessors).
+    pub fn origin(&self, e: u32) -> u32 {
+        self.triangles.get(e as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Opposite half-edge of `e`, or [`INVALID`] for a hull edge.
+    pub fn twin(&self, e: u32) -> u32 {
+        self.twins.get(e as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Next half-edge counter-clockwise in the same triangle.
+    pub fn next(&self, e: u32) -> u32 {
+        if (e as usize) < self.triangles.len() {
+            next_edge(e)
+        } else {
+            INVALID
+        }
+    }
+
+    /// Previous half-edge in the same triangle.
+    pub fn prev(&self, e: u32) -> u32 {
+        if (e as usize) < self.triangles.len() {
+            prev_edge(e)
+        } else {
+            INVALID
+        }
+    }
+
+    /// An outgoing half-edge of site `v` (the hull one for hull vertices), [`INVALID`] for
+    /// duplicates and when there are no triangles.
+    pub fn vertex_edge(&self, v: u32) -> u32 {
+        self.vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Convex hull, counter-clockwise, as site indices. Collinear sites on hull edges are kept
+    /// as hull vertices. See the type documentation for lower dimensions.
+    pub fn hull(&self) -> &[u32] {
+        &self.hull
+    }
+
+    /// Every undirected Delaunay edge once, as `(a, b)` site pairs.
+    pub fn edges(&self) -> Vec<(u32, u32)> {
+        match self.dimension {
+            Dimension::Plane => (0..self.triangles.len() as u32)
+                .filter(|&e| {
+                    let t = self.twins[e as usize];
+                    t == INVALID || e < t
+                })
+                .map(|e| (self.origin(e), self.origin(next_edge(e))))
+                .collect(),
+            Dimension::Line => self.hull.windows(2).map(|w| (w[0], w[1])).collect(),
+            Dimension::Empty | Dimension::Point => Vec::new(),
+        }
+    }
+
+    /// Outgoing half-edges of `v`, counter-clockwise (starting at the hull edge for hull vertices).
+    pub fn outgoing(&self, v: u32) -> OutgoingEdges<'_> {
+        let start = self.vertex_edge(v);
+        OutgoingEdges {
+            delaunay: self,
+            start,
+            current: start,
+        }
+    }
+
+    /// The triangulation as a polygon soup (z = 0), one triangle per face, positions for every
+    /// input site (duplicates are unreferenced vertices), ready for the half-edge mesh builder.
+    pub fn to_polygon_soup(&self) -> crate::soup::PolygonSoup {
+        crate::soup::PolygonSoup {
+            positions: self.sites.iter().map(|p| [p[0], p[1], 0.0]).collect(),
+            face_sizes: vec![3; self.n_triangles()],
+            indices: self.triangles.clone(),
+            corner_normals: None,
+            corner_uvs: None,
+        }
+    }
+
+    /// Scaled coordinates of the start of half-edge `e` (read in triangle order, coherently).
+    #[inline(always)]
+    pub(crate) fn corner_point(&self, e: u32) -> [f64; 2] {
+        self.ranked[self.corner_ranks[e as usize] as usize]
+    }
+
+    /// Scaled coordinates used by the exact predicates.
+    #[cfg(test)]
+    #[inline(always)]
+    pub(crate) fn scaled_point(&self, v: u32) -> [f64; 2] {
+        self.scaled[v as usize]
+    }
+
+    /// Exact orientation in the triangulation's own (scaled) coordinates.
+    #[cfg(test)]
+    pub(crate) fn orient(&self, a: u32, b: u32, c: u32) -> f64 {
+        orient2d(
+            self.scaled_point(a),
+            self.scaled_point(b),
+            self.scaled_point(c),
+        )
+    }
+}
+
+/// Counter-clockwise circulator over the outgoing half-edges of a vertex.
+pub struct OutgoingEdges<'a> {
+    delaunay: &'a Delaunay,
+    start: u32,
+    current: u32,
+}
+
+impl Iterator for OutgoingEdges<'_> {
+    type Item = u32;
+
+    fn next(&mut self) -> Option<u32> {
+        if self.current == INVALID {
+            return None;
+        }
+        let e = self.current;
+        let back = self.delaunay.twins[prev_edge(e) as usize];
+        self.current = if back == INVALID || back == self.start {
+            INVALID
+        } else {
+            back
+        };
+        Some(e)
+    }
+}
+
+enum Seed {
+    Empty,
+    Degenerate,
+    Triangle {
+        a: u32,
+        b: u32,
+        c: u32,
+        position: usize,
+    },
+}
+
+/// First non-degenerate triangle in insertion order; duplicates of the first two sites met on
+/// the way are recorded. `position` is the index in `order` of the third corner.
+fn find_initial_triangle(points: &[[f64; 2]], order: &[u32], representative: &mut [u32]) -> Seed {
+    let Some(&a) = order.first() else {
+        return Seed::Empty;
+    };
+    let pa = points[a as usize];
+    let mut b = None;
+    for (position, &s) in order.iter().enumerate().skip(1) {
+        let ps = points[s as usize];
+        match b {
+            None if ps == pa => representative[s as usize] = a,
+            None => b = Some(s),
+            Some(b) => {
+                let pb = points[b as usize];
+                let o = orient2d(pa, pb, ps);
+                if o > 0.0 {
+                    return Seed::Triangle {
+                        a,
+                        b,
+                        c: s,
+                        position,
+                    };
+                }
+                if o < 0.0 {
+                    return Seed::Triangle {
+                        a: b,
+                        b: a,
+                        c: s,
+                        position,
+                    };
+                }
+            }
+        }
+    }
+    // No seed triangle: the duplicates recorded so far are redone by the collinear builder.
+    representative
+        .iter_mut()
+        .enumerate()
+        .for_each(|(i, r)| *r = i as u32);
+    Seed::Degenerate
+}

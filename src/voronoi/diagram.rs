@@ -1,0 +1,494 @@
+//! The Voronoi diagram as a DCEL, dual to the Delaunay triangulation.
+
+use super::delaunay::{Delaunay, Dimension, INVALID};
+use super::error::VoronoiError;
+use super::incremental::{next_edge, prev_edge};
+use super::predicates::incircle;
+
+/// Geometry of an undirected Voronoi edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeGeometry {
+    /// Both ends are Voronoi vertices.
+    Segment {
+        /// Start point (origin of the half-edge asked about).
+        from: [f64; 2],
+        /// End point.
+        to: [f64; 2],
+    },
+    /// One end at infinity: the points `origin + t·direction`, `t ≥ 0`.
+    Ray {
+        /// The finite end (a Voronoi vertex).
+        origin: [f64; 2],
+        /// Unit-free direction towards infinity (perpendicular to the hull edge, pointing out).
+        direction: [f64; 2],
+    },
+    /// Both ends at infinity (collinear sites): the points `point + t·direction`, `t ∈ ℝ`,
+    /// `direction` oriented like the half-edge asked about.
+    Line {
+        /// The midpoint of the two sites.
+        point: [f64; 2],
+        /// Direction, with the half-edge's cell on its left.
+        direction: [f64; 2],
+    },
+}
+
+/// A Voronoi diagram: one cell (face) per distinct site, vertices at circumcentres, half-edges in
+/// twin pairs (`twin(h) = h ^ 1`).
+///
+/// Conventions:
+/// * Half-edge `h` bounds the cell of [`Voronoi::site`]`(h)`, which lies on its **left**; its twin
+///   bounds the cell of [`Voronoi::opposite_site`]`(h)`. Every edge is the perpendicular bisector
+///   piece between those two sites, dual to the Delaunay edge joining them.
+/// * `next` circulates **counter-clockwise** around the cell. An unbounded cell's cycle passes
+///   through infinity: the half-edge running out to infinity ([`Voronoi::origin`] of its twin is
+///   [`INVALID`]) is followed by the one coming back (its own origin is [`INVALID`]).
+/// * Cocircular sites give one vertex of degree > 3 (Delaunay triangles with the same
+///   circumcircle, decided exactly with the in-circle predicate, are merged). Adjacent triangles
+///   whose circumcentres round to the same floating-point point are merged too, so no edge has
+///   zero length in the output.
+/// * Cells are indexed by site; duplicates (see [`Delaunay::representative`]) have no cell of
+///   their own.
+#[derive(Clone, Debug)]
+pub struct Voronoi {
+    pub(crate) delaunay: Delaunay,
+    pub(crate) vertices: Vec<[f64; 2]>,
+    pub(crate) vertex_edge: Vec<u32>,
+    pub(crate) triangle_vertex: Vec<u32>,
+    pub(crate) origin: Vec<u32>,
+    pub(crate) next: Vec<u32>,
+    pub(crate) prev: Vec<u32>,
+    pub(crate) site: Vec<u32>,
+    pub(crate) cell_edge: Vec<u32>,
+}
+
+impl Voronoi {
+    /// The Voronoi diagram of `sites` (see [`Delaunay::new`] for the accepted input).
+    pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
+        Ok(Self::from_delaunay(Delaunay::new(sites)?))
+    }
+
+    /// The dual of an existing triangulation.
+    pub fn from_delaunay(delaunay: Delaunay) -> Self {
+        let n = delaunay.n_sites();
+        let mut v = Voronoi {
+            vertices: Vec::new(),
+            vertex_edge: Vec::new(),
+            triangle_vertex: Vec::new(),
+            origin: Vec::new(),
+            next: Vec::new(),
+            prev: Vec::new(),
+            site: Vec::new(),
+            cell_edge: vec![INVALID; n],
+            delaunay,
+        };
+        match v.delaunay.dimension() {
+            Dimension::Plane => v.build_planar(),
+            Dimension::Line => v.build_parallel(),
+            Dimension::Empty | Dimension::Point => {}
+        }
+        v
+    }
+
+    /// Groups triangles with one circumcircle, places vertices, and links the half-edges.
+    fn build_planar(&mut self) {
+        let d = &self.delaunay;
+        let n_tri = d.n_triangles();
+        let centres: Vec<[f64; 2]> = (0..n_tri as u32).map(|t| self.circumcentre(t)).collect();
+        // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
+        // point is exactly cocircular, and also when their circumcentres round to the same point
+        // (so that no edge has zero length in the floating-point output either).
+        let mut parent: Vec<u32> = (0..n_tri as u32).collect();
+        let mut internal = vec![false; d.triangles.len()];
+        for e in 0..d.triangles.len() as u32 {
+            let t = d.twins[e as usize];
+            if t == INVALID || t < e {
+                continue;
+            }
+            let merge = centres[(e / 3) as usize] == centres[(t / 3) as usize] || {
+                let base = 3 * (e / 3);
+                let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
+            };
+            if merge {
+                internal[e as usize] = true;
+                internal[t as usize] = true;
+                let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
+                if ra != rb {
+                    parent[ra.max(rb) as usize] = ra.min(rb);
+                }
+            }
+        }
+        let (triangle_vertex, vertices) = if internal.iter().any(|&i| i) {
+            let mut triangle_vertex = vec![INVALID; n_tri];
+            let mut vertices = Vec::with_capacity(n_tri);
+            for t in 0..n_tri as u32 {
+                let root = find(&mut parent, t);
+                if triangle_vertex[root as usize] == INVALID {
+                    triangle_vertex[root as usize] = vertices.len() as u32;
+                    vertices.push(centres[root as usize]);
+                }
+                triangle_vertex[t as usize] = triangle_vertex[root as usize];
+            }
+            (triangle_vertex, vertices)
+        } else {
+            // No cocircular or coincident pair (the usual case): one vertex per triangle.
+            ((0..n_tri as u32).collect(), centres)
+        };
+        // Half-edges: a pair per kept Delaunay edge; the even one is dual to the Delaunay
+        // half-edge `e` (cell of origin(e)), the odd one to its twin (or the hull's outer side).
+        let mut dual = vec![INVALID; d.triangles.len()];
+        let n_half = internal.iter().filter(|&&i| !i).count() * 2; // upper bound, exact below
+        let mut origin = Vec::with_capacity(n_half);
+        let mut site = Vec::with_capacity(n_half);
+        for e in 0..d.triangles.len() as u32 {
+            let t = d.twins[e as usize];
+            if internal[e as usize] || (t != INVALID && t < e) {
+                continue;
+            }
+            let h = origin.len() as u32;
+            let here = triangle_vertex[(e / 3) as usize];
+            let there = if t == INVALID {
+                INVALID
+            } else {
+                triangle_vertex[(t / 3) as usize]
+            };
+            origin.push(there);
+            site.push(d.origin(e));
+            origin.push(here);
+            site.push(d.origin(next_edge(e)));
+            dual[e as usize] = h;
+            // The outer side of a hull edge is simply the pair `dual[e] ^ 1`.
+            if t != INVALID {
+                dual[t as usize] = h + 1;
+            }
+        }
+        // Links, one Delaunay half-edge at a time (memory-coherent, no per-site circulation):
+        // after dual(e) comes the dual of the next kept edge counter-clockwise around origin(e),
+        // or, past the hull, the ray out to infinity; after that ray, the cell's in-ray.
+        let mut next = vec![INVALID; origin.len()];
+        for e in 0..d.triangles.len() as u32 {
+            let h = dual[e as usize];
+            if h == INVALID {
+                continue;
+            }
+            let mut cur = e;
+            next[h as usize] = loop {
+                let p = prev_edge(cur);
+                let t = d.twins[p as usize];
+                if t == INVALID {
+                    let out_ray = dual[p as usize] ^ 1;
+                    let a = d.origin(e);
+                    next[out_ray as usize] = dual[d.vertex_edge[a as usize] as usize];
+                    break out_ray;
+                }
+                if !internal[t as usize] {
+                    break dual[t as usize];
+                }
+                cur = t;
+            };
+        }
+        // A cell starts at the dual of its site's vertex edge: the outgoing hull edge for hull
+        // sites, whose dual is the in-ray. (One read per site instead of a write per half-edge.)
+        for site in 0..d.n_sites() as u32 {
+            let first = d.vertex_edge[site as usize];
+            if first != INVALID {
+                self.cell_edge[site as usize] = d
+                    .outgoing(site)
+                    .map(|e| dual[e as usize])
+                    .find(|&h| h != INVALID)
+                    .unwrap_or(INVALID);
+                debug_assert!(
+                    dual[first as usize] != INVALID || d.twins[first as usize] != INVALID
+                );
+            }
+        }
+        self.vertices = vertices;
+        self.triangle_vertex = triangle_vertex;
+        self.origin = origin;
+        self.site = site;
+        self.finish_links(next);
+    }
+
+    /// All sites on a line: the cells are slabs between parallel bisectors.
+    fn build_parallel(&mut self) {
+        let chain = self.delaunay.hull.clone();
+        let m = chain.len() - 1;
+        self.origin = vec![INVALID; 2 * m];
+        self.site = Vec::with_capacity(2 * m);
+        for w in chain.windows(2) {
+            self.site.push(w[0]);
+            self.site.push(w[1]);
+        }
+        let mut next = vec![INVALID; 2 * m];
+        for k in 0..m {
+            // Cell of chain[k+1] holds 2k+1 (towards chain[k]) and 2k+2 (towards chain[k+2]).
+            let left_of_next = 2 * k as u32 + 1;
+            let right_of_next = if k + 1 < m {
+                2 * k as u32 + 2
+            } else {
+                left_of_next
+            };
+            next[left_of_next as usize] = right_of_next;
+            next[right_of_next as usize] = left_of_next;
+            self.cell_edge[chain[k + 1] as usize] = left_of_next;
+        }
+        next[0] = 0;
+        self.cell_edge[chain[0] as usize] = 0;
+        self.finish_links(next);
+    }
+
+    fn finish_links(&mut self, next: Vec<u32>) {
+        let mut prev = vec![INVALID; next.len()];
+        for (h, &n) in next.iter().enumerate() {
+            if n != INVALID {
+                prev[n as usize] = h as u32;
+            }
+        }
+        let mut vertex_edge = vec![INVALID; self.vertices.len()];
+        for (h, &o) in self.origin.iter().enumerate() {
+            if o != INVALID {
+                vertex_edge[o as usize] = h as u32;
+            }
+        }
+        self.next = next;
+        self.prev = prev;
+        self.vertex_edge = vertex_edge;
+    }
+
+    /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
+    /// scaled frame and mapped back (dividing by a power of two is exact).
+    fn circumcentre(&self, t: u32) -> [f64; 2] {
+        let d = &self.delaunay;
+        let base = 3 * t;
+        let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+        let (bx, by) = (b[0] - a[0], b[1] - a[1]);
+        let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+        let naive = bx * cy - by * cx;
+        let (a, det, ux, uy) = if naive.abs() >= 1e-6 * ((bx * cy).abs() + (by * cx).abs()) {
+            let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
+            (a, 2.0 * naive, cy * bl - by * cl, bx * cl - cx * bl)
+        } else {
+            sliver_circumcentre_offset(a, b, c)
+        };
+        let (ux, uy) = (ux / det, uy / det);
+        [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
+    }
+
+    /// The underlying Delaunay triangulation.
+    pub fn delaunay(&self) -> &Delaunay {
+        &self.delaunay
+    }
+
+    /// Number of Voronoi vertices.
+    pub fn n_vertices(&self) -> usize {
+        self.vertices.len()
+    }
+
+    /// Positions of all Voronoi vertices.
+    pub fn vertices(&self) -> &[[f64; 2]] {
+        &self.vertices
+    }
+
+    /// An outgoing half-edge of vertex `v`.
+    pub fn vertex_edge(&self, v: u32) -> u32 {
+        self.vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Number of half-edges (twice the number of edges).
+    pub fn n_halfedges(&self) -> usize {
+        self.origin.len()
+    }
+
+    /// Start vertex of `h`, [`INVALID`] when it comes from infinity (or `h` is invalid).
+    pub fn origin(&self, h: u32) -> u32 {
+        self.origin.get(h as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// End vertex of `h`, [`INVALID`] when it runs to infinity.
+    pub fn target(&self, h: u32) -> u32 {
+        self.origin(h ^ 1)
+    }
+
+    /// The opposite half-edge (`h ^ 1`).
+    pub fn twin(&self, h: u32) -> u32 {
+        h ^ 1
+    }
+
+    /// Next half-edge counter-clockwise around the same cell.
+    pub fn next(&self, h: u32) -> u32 {
+        self.next.get(h as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// Previous half-edge around the same cell.
+    pub fn prev(&self, h: u32) -> u32 {
+        self.prev.get(h as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// The site whose cell `h` bounds (on its left).
+    pub fn site(&self, h: u32) -> u32 {
+        self.site.get(h as usize).copied().unwrap_or(INVALID)
+    }
+
+    /// The site across `h`.
+    pub fn opposite_site(&self, h: u32) -> u32 {
+        self.site(h ^ 1)
+    }
+
+    /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
+    /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
+    pub fn cell_edge(&self, site: u32) -> u32 {
+        self.cell_edge
+            .get(site as usize)
+            .copied()
+            .unwrap_or(INVALID)
+    }
+
+    /// Half-edges of the cell of `site`, counter-clockwise (in-ray first for unbounded cells).
+    pub fn cell_halfedges(&self, site: u32) -> Vec<u32> {
+        let start = self.cell_edge(site);
+        let mut out = Vec::new();
+        if start == INVALID {
+            return out;
+        }
+        let mut h = start;
+        loop {
+            out.push(h);
+            h = self.next[h as usize];
+            if h == start || out.len() > self.origin.len() {
+                break;
+            }
+        }
+        out
+    }
+
+    /// Is the cell of `site` bounded?
+    pub fn is_bounded(&self, site: u32) -> bool {
+        let h = self.cell_edge(site);
+        h != INVALID && self.origin[h as usize] != INVALID
+    }
+
+    /// Sites whose cells share an edge with the cell of `site` (Delaunay neighbours not merged
+    /// away by cocircularity), counter-clockwise.
+    pub fn neighbours(&self, site: u32) -> Vec<u32> {
+        self.cell_halfedges(site)
+            .into_iter()
+            .map(|h| self.opposite_site(h))
+            .collect()
+    }
+
+    /// The half-edge of the cell of `a` separating it from the cell of `b`, if they share an edge.
+    pub fn edge_between(&self, a: u32, b: u32) -> Option<u32> {
+        let (a, b) = (self.canonical(a)?, self.canonical(b)?);
+        self.cell_halfedges(a)
+            .into_iter()
+            .find(|&h| self.opposite_site(h) == b)
+    }
+
+    fn canonical(&self, s: u32) -> Option<u32> {
+        self.delaunay.representative.get(s as usize).copied()
+    }
+
+    /// Sites equidistant from vertex `v` (all corners of its merged Delaunay triangles),
+    /// counter-clockwise.
+    pub fn vertex_sites(&self, v: u32) -> Vec<u32> {
+        let start = self.vertex_edge(v);
+        let mut out = Vec::new();
+        if start == INVALID {
+            return out;
+        }
+        let mut h = start;
+        loop {
+            out.push(self.site[h as usize]);
+            // Next outgoing half-edge around v: twin of the previous edge of this cell.
+            h = self.prev[h as usize] ^ 1;
+            if h == start || out.len() > self.origin.len() {
+                break;
+            }
+        }
+        out
+    }
+
+    /// Geometry of the edge of half-edge `h`, `None` for an invalid half-edge.
+    pub fn edge_geometry(&self, h: u32) -> Option<EdgeGeometry> {
+        if h as usize >= self.origin.len() {
+            return None;
+        }
+        Some(self.geometry(h))
+    }
+
+    pub(crate) fn geometry(&self, h: u32) -> EdgeGeometry {
+        let (o, t) = (self.origin(h), self.target(h));
+        if o != INVALID && t != INVALID {
+            return EdgeGeometry::Segment {
+                from: self.vertices[o as usize],
+                to: self.vertices[t as usize],
+            };
+        }
+        let sites = self.delaunay.sites();
+        let (a, b) = (
+            sites[self.site(h) as usize],
+            sites[self.opposite_site(h) as usize],
+        );
+        // Left site a: moving along the bisector with a on the left is direction rot90(b - a).
+        let along = [a[1] - b[1], b[0] - a[0]];
+        match (o == INVALID, t == INVALID) {
+            (true, false) => EdgeGeometry::Ray {
+                origin: self.vertices[t as usize],
+                direction: [-along[0], -along[1]],
+            },
+            (false, true) => EdgeGeometry::Ray {
+                origin: self.vertices[o as usize],
+                direction: along,
+            },
+            _ => EdgeGeometry::Line {
+                point: [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+                direction: along,
+            },
+        }
+    }
+}
+
+/// Circumcentre of a nearly degenerate triangle as `(origin, 2·det, x·det, y·det)` offsets.
+///
+/// The origin is an endpoint of the shortest edge: then the short edge vector is exact and small,
+/// its squared length cannot cancel against the other's, and the fused-multiply-add differences
+/// of products keep the few significant digits that decide where the centre lies.
+#[cold]
+fn sliver_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> ([f64; 2], f64, f64, f64) {
+    let length2 = |p: [f64; 2], q: [f64; 2]| (q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2);
+    let (ab, bc, ca) = (length2(a, b), length2(b, c), length2(c, a));
+    let (a, b, c) = if ab <= bc && ab <= ca {
+        (a, b, c)
+    } else if bc <= ca {
+        (b, c, a)
+    } else {
+        (c, a, b)
+    };
+    let (bx, by) = (b[0] - a[0], b[1] - a[1]);
+    let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+    let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
+    (
+        a,
+        2.0 * difference_of_products(bx, cy, by, cx),
+        difference_of_products(cy, bl, by, cl),
+        difference_of_products(bx, cl, cx, bl),
+    )
+}
+
+/// `a·b − c·d` to within about one ulp (Kahan's algorithm with fused multiply-adds).
+#[inline]
+fn difference_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let cd = c * d;
+    let cd_error = (-c).mul_add(d, cd);
+    a.mul_add(b, -cd) + cd_error
+}
+
+/// Union-find root with path halving.
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let grand = parent[parent[x as usize] as usize];
+        parent[x as usize] = grand;
+        x = grand;
+    }
+    x
+}

@@ -1,0 +1,264 @@
+//! Degenerate inputs: integer grids, collinear and duplicate sites, cocircular points, extreme
+//! magnitudes, sites outside the clip region, and bad arguments.
+
+mod voronoi_common;
+
+use halfwing::voronoi::{ClipPolygon, Delaunay, Dimension, Metric, Voronoi, VoronoiError};
+use voronoi_common::*;
+
+fn grid(nx: usize, ny: usize, step: f64) -> Vec<[f64; 2]> {
+    (0..nx * ny)
+        .map(|i| [(i % nx) as f64 * step, (i / nx) as f64 * step])
+        .collect()
+}
+
+#[test]
+fn integer_grids_merge_cocircular_vertices() {
+    for (nx, ny) in [(2, 2), (3, 7), (25, 25), (60, 3)] {
+        let pts = grid(nx, ny, 1.0);
+        let d = Delaunay::new(&pts).unwrap();
+        check_delaunay(&d, pts.len() <= 700);
+        let v = Voronoi::from_delaunay(d);
+        check_voronoi(&v);
+        assert_eq!(
+            v.n_vertices(),
+            (nx - 1) * (ny - 1),
+            "one vertex per grid square"
+        );
+        let clip =
+            ClipPolygon::rectangle([-0.5, -0.5], [nx as f64 - 0.5, ny as f64 - 0.5]).unwrap();
+        check_clipped(&v, &clip);
+        let cells = v.clip(&clip);
+        for s in 0..pts.len() as u32 {
+            assert_eq!(cells.cell(s).unwrap().len(), 4);
+            assert!((cells.cell_area(s).unwrap() - 1.0).abs() < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn all_collinear_sites() {
+    // Horizontal, vertical, diagonal, and with duplicates.
+    for pts in [
+        (0..50).map(|i| [i as f64, 3.0]).collect::<Vec<_>>(),
+        (0..50).map(|i| [-2.0, (49 - i) as f64 * 0.5]).collect(),
+        (0..50)
+            .map(|i| [(i % 17) as f64, (i % 17) as f64 * 2.0])
+            .collect(),
+    ] {
+        let d = Delaunay::new(&pts).unwrap();
+        assert_eq!(d.dimension(), Dimension::Line);
+        assert_eq!(d.n_triangles(), 0);
+        assert_eq!(d.edges().len(), d.n_unique_sites() - 1);
+        let v = Voronoi::from_delaunay(d);
+        check_voronoi(&v);
+        check_clipped(&v, &bounding_clip(&pts, 0.2));
+        assert!(v.n_vertices() == 0);
+        let q = [pts[7][0] + 0.01, pts[7][1]];
+        assert_eq!(
+            v.nearest_site(q, None).unwrap(),
+            Some(v.delaunay().representative()[7])
+        );
+    }
+}
+
+#[test]
+fn all_duplicates() {
+    let pts = vec![[0.25, -4.0]; 1000];
+    let d = Delaunay::new(&pts).unwrap();
+    assert_eq!(d.dimension(), Dimension::Point);
+    assert_eq!(d.n_unique_sites(), 1);
+    assert_eq!(d.duplicates().count(), 999);
+    assert!(d.representative().iter().all(|&r| r == 0));
+    let v = Voronoi::from_delaunay(d);
+    let clip = ClipPolygon::rectangle([-1.0, -5.0], [1.0, -3.0]).unwrap();
+    let total = check_clipped(&v, &clip);
+    assert_eq!(total, 4.0);
+    assert_eq!(v.clip(&clip).cell_area(0).unwrap(), 4.0);
+}
+
+#[test]
+fn tiny_inputs() {
+    for n in 0..=3 {
+        let pts: Vec<[f64; 2]> = uniform(n, 4);
+        let v = Voronoi::new(&pts).unwrap();
+        eprintln!("n = {n}: {:?}", v.delaunay().dimension());
+        check_voronoi(&v);
+        check_clipped(
+            &v,
+            &ClipPolygon::rectangle([-1.0, -1.0], [2.0, 2.0]).unwrap(),
+        );
+    }
+    let two = Voronoi::new(&[[0.0, 0.0], [1.0, 0.0]]).unwrap();
+    assert_eq!(two.n_halfedges(), 2);
+    assert_eq!(two.neighbours(0), vec![1]);
+    let cells = two.clip(&ClipPolygon::rectangle([-1.0, -1.0], [2.0, 1.0]).unwrap());
+    assert_eq!(cells.cell_area(0).unwrap(), 3.0);
+    assert_eq!(cells.cell_area(1).unwrap(), 3.0);
+}
+
+#[test]
+fn points_on_a_circle_give_one_vertex() {
+    // Exactly cocircular: the 4k points (±r, 0), (0, ±r) and the Pythagorean points of r = 65.
+    let r = 65.0;
+    let mut pts = vec![[r, 0.0], [-r, 0.0], [0.0, r], [0.0, -r]];
+    for (a, b) in [(16.0, 63.0), (33.0, 56.0), (39.0, 52.0), (25.0, 60.0)] {
+        for (sx, sy) in [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)] {
+            pts.push([sx * a, sy * b]);
+            pts.push([sx * b, sy * a]);
+        }
+    }
+    let v = Voronoi::new(&pts).unwrap();
+    check_voronoi(&v);
+    assert_eq!(v.n_vertices(), 1);
+    assert_eq!(v.vertices()[0], [0.0, 0.0]);
+    assert_eq!(v.vertex_sites(0).len(), pts.len());
+    check_clipped(
+        &v,
+        &ClipPolygon::rectangle([-100.0, -100.0], [100.0, 100.0]).unwrap(),
+    );
+    // Approximately cocircular (rounded trigonometry) must still be exact and valid.
+    let ring: Vec<[f64; 2]> = (0..500)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / 500.0;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let d = Delaunay::new(&ring).unwrap();
+    check_delaunay(&d, true);
+    let v = Voronoi::from_delaunay(d);
+    check_voronoi(&v);
+    check_clipped(
+        &v,
+        &ClipPolygon::rectangle([-2.0, -2.0], [2.0, 2.0]).unwrap(),
+    );
+}
+
+#[test]
+fn extreme_magnitudes_keep_the_topology() {
+    let base = uniform(3000, 8);
+    let reference = Delaunay::new(&base).unwrap();
+    // Power-of-two scalings are exact, so the triangulation must be the same, triangle for
+    // triangle; 2^-997 ≈ 1e-300 and 2^664 ≈ 1e+200.
+    for exponent in [-997, -500, 300, 664, 1000] {
+        let factor = 2f64.powi(exponent);
+        let scaled: Vec<[f64; 2]> = base
+            .iter()
+            .map(|p| [p[0] * factor, p[1] * factor])
+            .collect();
+        let d = Delaunay::new(&scaled).unwrap();
+        assert_eq!(d.triangles(), reference.triangles(), "scale 2^{exponent}");
+        assert_eq!(d.hull(), reference.hull());
+        let v = Voronoi::from_delaunay(d);
+        for (k, p) in v.vertices().iter().enumerate().take(50) {
+            let sites = v.vertex_sites(k as u32);
+            let dist = |i: u32| (p[0] - scaled[i as usize][0]).hypot(p[1] - scaled[i as usize][1]);
+            let r0 = dist(sites[0]);
+            assert!(
+                sites.iter().all(|&i| (dist(i) - r0).abs() <= 1e-9 * r0),
+                "scale 2^{exponent}"
+            );
+        }
+    }
+    // Grid and grid-with-jitter at 1e-300 and 1e+200 (not powers of two): still exact.
+    for factor in [1e-300, 1e200] {
+        let pts: Vec<[f64; 2]> = grid(20, 20, factor);
+        let d = Delaunay::new(&pts).unwrap();
+        assert_eq!(d.n_triangles() + d.hull().len() + 2, 2 * d.n_unique_sites());
+        let v = Voronoi::from_delaunay(d);
+        assert!(v.n_vertices() >= 19 * 19);
+        assert_eq!(
+            v.nearest_site([5.2 * factor, 7.9 * factor], None).unwrap(),
+            Some(8 * 20 + 5)
+        );
+    }
+}
+
+#[test]
+fn sites_outside_the_clip_region() {
+    let mut pts = uniform(500, 9);
+    for p in pts.iter_mut().step_by(3) {
+        p[0] = p[0] * 3.0 - 1.0;
+    }
+    pts.extend([[1e6, 1e6], [-1e6, 0.5]]);
+    let v = Voronoi::new(&pts).unwrap();
+    let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap();
+    check_clipped(&v, &clip);
+    let cells = v.clip(&clip);
+    assert!(cells.cell(500).unwrap().is_empty());
+    assert!(cells.cell(501).unwrap().is_empty());
+    let triangle = ClipPolygon::convex(&[[0.1, 0.1], [0.9, 0.2], [0.4, 0.8]]).unwrap();
+    check_clipped(&v, &triangle);
+    // A clip region far away from every site lies in one cell.
+    let far = ClipPolygon::rectangle([5e6, 5e6], [6e6, 6e6]).unwrap();
+    let cells = v.clip(&far);
+    assert_eq!(cells.cell_area(500).unwrap(), far.area());
+}
+
+#[test]
+fn bad_input_is_refused_with_a_clear_error() {
+    assert!(matches!(
+        Voronoi::new(&[[0.0, 0.0], [1.0, f64::NAN]]),
+        Err(VoronoiError::NonFiniteSite { site: 1, .. })
+    ));
+    assert!(matches!(
+        Delaunay::new(&[[f64::NEG_INFINITY, 0.0]]),
+        Err(VoronoiError::NonFiniteSite { site: 0, .. })
+    ));
+    assert!(matches!(
+        ClipPolygon::rectangle([0.0, 0.0], [0.0, 0.0]),
+        Err(VoronoiError::DegenerateClip(_))
+    ));
+    assert!(matches!(
+        ClipPolygon::convex(&[[0.0, 0.0], [1.0, 0.0], [0.2, 0.2], [0.0, 1.0]]),
+        Err(VoronoiError::NonConvexClip { .. })
+    ));
+    assert!(matches!(
+        ClipPolygon::convex(&[]),
+        Err(VoronoiError::DegenerateClip(_))
+    ));
+    let v = Voronoi::new(&uniform(10, 1)).unwrap();
+    let cells = v.clip(&ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap());
+    assert!(matches!(
+        cells.cell(10),
+        Err(VoronoiError::InvalidSite { site: 10, .. })
+    ));
+    assert!(v.nearest_site([f64::INFINITY, 0.0], None).is_err());
+    assert_eq!(v.cell_edge(u32::MAX), halfwing::voronoi::INVALID);
+    assert!(v.edge_between(0, 99).is_none());
+    assert!(
+        v.delaunay()
+            .label_image(
+                Metric::Euclidean,
+                [0.0, 0.0],
+                [1.0, 1.0],
+                u32::MAX,
+                u32::MAX
+            )
+            .is_err()
+    );
+    println!("{}", VoronoiError::NonConvexClip { vertex: 3 });
+}
+
+#[test]
+fn invalid_element_ids_give_invalid_not_panics() {
+    let v = Voronoi::new(&uniform(30, 2)).unwrap();
+    let bad = v.n_halfedges() as u32 + 7;
+    let inv = halfwing::voronoi::INVALID;
+    assert_eq!(
+        (v.origin(bad), v.target(bad), v.next(bad), v.prev(bad)),
+        (inv, inv, inv, inv)
+    );
+    assert_eq!((v.site(bad), v.opposite_site(bad)), (inv, inv));
+    assert!(v.edge_geometry(bad).is_none() && v.edge_geometry(u32::MAX).is_none());
+    assert!(v.vertex_sites(u32::MAX).is_empty() && v.cell_halfedges(u32::MAX).is_empty());
+    let d = v.delaunay();
+    let bad = d.triangles().len() as u32;
+    assert_eq!(
+        (d.origin(bad), d.twin(bad), d.next(bad), d.prev(bad)),
+        (inv, inv, inv, inv)
+    );
+    assert_eq!(d.vertex_edge(u32::MAX), inv);
+    assert_eq!(d.outgoing(u32::MAX).count(), 0);
+    assert!(d.neighbours(u32::MAX).is_empty());
+}
