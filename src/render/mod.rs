@@ -5,8 +5,8 @@
 //! - [`wireframe_lines`], [`boundary_lines`], [`non_manifold_lines`], [`vertex_normal_glyphs`],
 //!   [`face_normal_glyphs`]: [`LineBuffer`]s for `GL_LINES`;
 //! - [`mesh_buffers`]: all of the above in one call;
-//! - [`polygon_buffer`], [`polygon_buffer_2d`]: fills and outlines of a polygon list (Voronoi
-//!   cells).
+//! - [`polygon_buffer`], [`polygon_buffer_2d`]: fills and outlines of a polygon list;
+//!   [`voronoi_cell_buffer`]: those of a Voronoi diagram's clipped cells.
 
 mod bounds;
 mod error;
@@ -18,6 +18,7 @@ mod polygon_buffer;
 mod shading;
 mod surface;
 mod triangulate;
+mod voronoi_cells;
 
 pub use bounds::Bounds;
 pub use error::RenderError;
@@ -32,3 +33,4 @@ pub use triangulate::{
     EarClipper, FallbackReason, PolygonOutcome, TriangleBuffer, TriangulateError,
     triangulate_faces, triangulate_polygon,
 };
+pub use voronoi_cells::voronoi_cell_buffer;
