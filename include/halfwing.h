@@ -82,6 +82,13 @@ typedef struct hw_index_maps hw_index_maps;
 typedef struct hw_mesh hw_mesh;
 
 /**
+ * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build() or
+ * hw_render_buffers_from_polygons(); release with hw_render_buffers_free(). Immutable: its
+ * views stay valid until it is freed, also after the mesh it came from changes or is freed.
+ */
+typedef struct hw_render_buffers hw_render_buffers;
+
+/**
  * An indexed face list read from a file, exactly as the file numbers its vertices (nothing
  * welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
  * release with hw_soup_free().
@@ -180,6 +187,85 @@ typedef uint32_t hw_build_policy;
  * How a vertex normal weighs the faces around it.
  */
 typedef uint32_t hw_normal_weighting;
+
+/**
+ * Where the normals of hw_render_buffers_build() come from.
+ */
+typedef uint32_t hw_shading;
+
+/**
+ * How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
+ */
+typedef struct {
+  /**
+   * ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or ::HW_SHADING_CREASE.
+   */
+  hw_shading shading;
+  /**
+   * Weighting of smooth shading and of the vertex-normal glyphs (::HW_WEIGHT_UNIFORM,
+   * ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+   */
+  hw_normal_weighting weighting;
+  /**
+   * For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
+   */
+  double crease_angle;
+  /**
+   * `true`: one ::HW_RENDER_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
+   * separate ::HW_RENDER_POSITIONS, ::HW_RENDER_NORMALS and ::HW_RENDER_UVS arrays.
+   */
+  bool interleaved;
+  /**
+   * Length of the normal glyphs; 0 takes the mesh's mean edge length.
+   */
+  double normal_length;
+  /**
+   * Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
+   * of the shading's, when it has them and `corner_normals` is NULL.
+   */
+  bool mesh_corner_normals;
+  /**
+   * Give the vertices the mesh's own corner texture coordinates, when it has them and
+   * `corner_uvs` is NULL.
+   */
+  bool mesh_corner_uvs;
+  /**
+   * NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
+   * half-edge's origin), used instead of the shading's normals.
+   */
+  const double *corner_normals;
+  /**
+   * NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
+   * then carry uvs.
+   */
+  const double *corner_uvs;
+  /**
+   * Half-edge slots in `corner_normals` and `corner_uvs`: must be
+   * `hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE)` when either is given.
+   */
+  size_t n_corners;
+} hw_render_options;
+
+/**
+ * The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
+ * floats.
+ */
+typedef uint32_t hw_render_floats;
+
+/**
+ * The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
+ */
+typedef uint32_t hw_render_indices;
+
+/**
+ * How the cells of a parametric surface become faces.
+ */
+typedef uint32_t hw_cell_faces;
+
+/**
+ * How hw_surface_revolution() closes the profile's ends that are off the axis.
+ */
+typedef uint32_t hw_caps;
 
 /**
  * Which internal array hw_mesh_view() shows.
@@ -433,6 +519,92 @@ typedef struct {
 #define HW_WEIGHT_ANGLE 2
 
 /**
+ * Face normals: faceted; every vertex is split per face.
+ */
+#define HW_SHADING_FLAT 0
+
+/**
+ * Vertex normals with the options' weighting: one render vertex per mesh vertex.
+ */
+#define HW_SHADING_SMOOTH 1
+
+/**
+ * Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
+ * split along those edges only.
+ */
+#define HW_SHADING_CREASE 2
+
+/**
+ * x y z per vertex (separate layout; empty when interleaved).
+ */
+#define HW_RENDER_POSITIONS 0
+
+/**
+ * Unit nx ny nz per vertex (separate layout; empty when interleaved).
+ */
+#define HW_RENDER_NORMALS 1
+
+/**
+ * u v per vertex (separate layout with corner uvs; empty otherwise).
+ */
+#define HW_RENDER_UVS 2
+
+/**
+ * hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
+ */
+#define HW_RENDER_INTERLEAVED 3
+
+/**
+ * `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
+ */
+#define HW_RENDER_WIREFRAME 4
+
+/**
+ * `GL_LINES` points of the boundary edges (edges with a face on one side only).
+ */
+#define HW_RENDER_BOUNDARY 5
+
+/**
+ * `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
+ */
+#define HW_RENDER_NON_MANIFOLD 6
+
+/**
+ * `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
+ */
+#define HW_RENDER_VERTEX_NORMALS 7
+
+/**
+ * `GL_LINES` glyphs of the face normals, from each face's centroid.
+ */
+#define HW_RENDER_FACE_NORMALS 8
+
+/**
+ * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
+ */
+#define HW_RENDER_TRIANGLES 0
+
+/**
+ * Per triangle, the mesh face (or polygon) it comes from.
+ */
+#define HW_RENDER_TRIANGLE_FACES 1
+
+/**
+ * Per vertex, the mesh vertex (or polygon) it shows.
+ */
+#define HW_RENDER_VERTEX_SOURCES 2
+
+/**
+ * Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+ */
+#define HW_RENDER_WIREFRAME_SOURCES 3
+
+/**
+ * Per ::HW_RENDER_BOUNDARY segment, its edge id.
+ */
+#define HW_RENDER_BOUNDARY_SOURCES 4
+
+/**
  * Success.
  */
 #define HW_OK 0
@@ -489,6 +661,31 @@ typedef struct {
  * A named item (an attribute) does not exist.
  */
 #define HW_ERR_NOT_FOUND 10
+
+/**
+ * One quadrilateral per cell (a triangle where a pole collapses a side).
+ */
+#define HW_CELLS_QUADS 0
+
+/**
+ * Two triangles per cell.
+ */
+#define HW_CELLS_TRIANGLES 1
+
+/**
+ * Leave them open.
+ */
+#define HW_CAPS_NONE 0
+
+/**
+ * One planar polygon per end.
+ */
+#define HW_CAPS_POLYGON 1
+
+/**
+ * A fan of triangles from a new vertex on the axis.
+ */
+#define HW_CAPS_FAN 2
 
 /**
  * Per half-edge: the vertex it leaves.
@@ -1380,10 +1577,233 @@ hw_status hw_mesh_vertex_position(const hw_mesh *mesh, hw_vertex v, double *out_
 hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *xyz);
 
 /**
+ * The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
+ * glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
+ * them, no other per-corner attributes.
+ */
+hw_render_options hw_render_options_default(void);
+
+/**
+ * Builds the render buffers of a mesh: the triangulated surface (polygons ear clipped), its
+ * vertex attributes as `float`, the wireframe, the boundary, the non-manifold edges of
+ * `diagnostic` and the normal glyphs.
+ *
+ * `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
+ * mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
+ * edges of a file). `options` may be NULL for hw_render_options_default(). Bad options (an
+ * unknown shading or weighting, a negative or non-finite crease angle or glyph length, corner
+ * arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
+ *
+ * Draw the surface with `glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, 0)` after uploading
+ * ::HW_RENDER_TRIANGLES as the element buffer, and each line set with
+ * `glDrawArrays(GL_LINES, 0, len / 3)`.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `diagnostic` NULL or live; `options` NULL or readable, with its
+ * corner arrays NULL or as long as it says; `out_buffers` writable.
+ */
+hw_status hw_render_buffers_build(const hw_mesh *mesh,
+                                  const hw_diagnostic *diagnostic,
+                                  const hw_render_options *options,
+                                  hw_render_buffers **out_buffers);
+
+/**
+ * Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
+ * ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
+ * coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
+ * ::HW_RENDER_TRIANGLES (ear clipped) with ::HW_RENDER_TRIANGLE_FACES and
+ * ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
+ * other arrays are empty, and the layout is always separate.
+ *
+ * `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
+ * 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
+ * up to `n_corners` (`HW_ERR_INVALID_INPUT` otherwise).
+ *
+ * # Safety
+ * `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either
+ * may be NULL when its count is 0); `out_buffers` writable.
+ */
+hw_status hw_render_buffers_from_polygons(const double *corners,
+                                          uint32_t dimension,
+                                          size_t n_corners,
+                                          const uint32_t *sizes,
+                                          size_t n_polygons,
+                                          hw_render_buffers **out_buffers);
+
+/**
+ * Releases render buffers (their views die with them). NULL is a no-op; freeing twice is
+ * detected and refused.
+ *
+ * # Safety
+ * `buffers` must be NULL or from this library, not in use by another thread.
+ */
+void hw_render_buffers_free(hw_render_buffers *buffers);
+
+/**
+ * A zero-copy view of one `float` array: `*out_data` (NULL when empty) and its length in floats
+ * `*out_len`, ready for `glBufferData(GL_ARRAY_BUFFER, *out_len * sizeof(float), *out_data, ...)`.
+ *
+ * # Safety
+ * `buffers` must be NULL or live; `out_data` and `out_len` writable.
+ */
+hw_status hw_render_buffers_floats(const hw_render_buffers *buffers,
+                                   hw_render_floats which,
+                                   const float **out_data,
+                                   size_t *out_len);
+
+/**
+ * A zero-copy view of one `uint32_t` array: `*out_data` (NULL when empty) and its length
+ * `*out_len` in elements (three per triangle for ::HW_RENDER_TRIANGLES).
+ *
+ * # Safety
+ * `buffers` must be NULL or live; `out_data` and `out_len` writable.
+ */
+hw_status hw_render_buffers_indices(const hw_render_buffers *buffers,
+                                    hw_render_indices which,
+                                    const uint32_t **out_data,
+                                    size_t *out_len);
+
+/**
+ * Number of render vertices (entries of the per-vertex arrays); 0 for NULL.
+ *
+ * # Safety
+ * `buffers` must be NULL or live.
+ */
+size_t hw_render_buffers_n_vertices(const hw_render_buffers *buffers);
+
+/**
+ * Floats per vertex of ::HW_RENDER_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
+ * arrays are separate; 0 for NULL. The byte stride of `glVertexAttribPointer` is this times
+ * `sizeof(float)`; normals start at float 3 and uvs at float 6.
+ *
+ * # Safety
+ * `buffers` must be NULL or live.
+ */
+size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
+
+/**
+ * The box around the vertices, to frame a camera: `out_min` and `out_max` receive x y z each.
+ * With no vertex, min is +infinity and max -infinity.
+ *
+ * # Safety
+ * `buffers` must be NULL or live; `out_min` and `out_max` NULL or 3 writable floats each.
+ */
+hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
+                                   float *out_min,
+                                   float *out_max);
+
+/**
  * A short, static, NUL-terminated English description of `status`. Unknown values give
  * `"unknown status"`. Never returns NULL; the string must not be freed.
  */
 const char *hw_status_str(hw_status status);
+
+/**
+ * The tetrahedron of seed `000_…`, with its exact coordinates and faces.
+ *
+ * # Safety
+ * `out_mesh` must be writable.
+ */
+hw_status hw_surface_tetrahedron(hw_mesh **out_mesh);
+
+/**
+ * An axis-aligned cube of six quads centred at the origin, `side` long (positive, finite).
+ *
+ * # Safety
+ * `out_mesh` must be writable.
+ */
+hw_status hw_surface_cube(double side, hw_mesh **out_mesh);
+
+/**
+ * A sphere of triangles centred at the origin: an icosahedron subdivided `level` times (each
+ * level splits every triangle in four), projected onto the sphere of `radius`.
+ *
+ * # Safety
+ * `out_mesh` must be writable.
+ */
+hw_status hw_surface_icosphere(double radius, uint32_t level, hw_mesh **out_mesh);
+
+/**
+ * A closed torus about the z axis: `major_steps` segments around the axis (≥ 3) and
+ * `minor_steps` around the tube (≥ 3); `minor_radius` below `major_radius`.
+ *
+ * # Safety
+ * `out_mesh` must be writable.
+ */
+hw_status hw_surface_torus(double major_radius,
+                           double minor_radius,
+                           uint32_t major_steps,
+                           uint32_t minor_steps,
+                           hw_cell_faces faces,
+                           hw_mesh **out_mesh);
+
+/**
+ * A flat grid in the plane z = 0 centred at the origin, facing +z: `cells_x` by `cells_y` cells
+ * (≥ 1 each) over `width` by `height`. Open, one boundary loop.
+ *
+ * # Safety
+ * `out_mesh` must be writable.
+ */
+hw_status hw_surface_grid(double width,
+                          double height,
+                          uint32_t cells_x,
+                          uint32_t cells_y,
+                          hw_cell_faces faces,
+                          hw_mesh **out_mesh);
+
+/**
+ * A cylindrical surface: the polyline `profile` (`n_points` points, x y z each; closed joins the
+ * last point to the first) swept along the vector `direction` (3 doubles) in `steps` rows (≥ 1).
+ * Faces follow `P'(u) × direction`.
+ *
+ * # Safety
+ * `profile` must hold `3 * n_points` doubles; `direction` 3 doubles; `out_mesh` writable.
+ */
+hw_status hw_surface_sweep(const double *profile,
+                           size_t n_points,
+                           bool closed,
+                           const double *direction,
+                           uint32_t steps,
+                           hw_cell_faces faces,
+                           hw_mesh **out_mesh);
+
+/**
+ * A surface of revolution: `profile` (`n_points` points) turned about the axis through
+ * `axis_origin` along `axis_direction` (3 doubles each), right-handed. `full_turn` welds the
+ * last column to the first; otherwise the turn is `angle` radians, in (0, 2π). `steps` angular
+ * steps (≥ 3 for a full turn, ≥ 1 otherwise). Profile points on the axis become poles; `caps`
+ * closes the ends that are off it.
+ *
+ * # Safety
+ * `profile` must hold `3 * n_points` doubles; `axis_origin` and `axis_direction` 3 doubles
+ * each; `out_mesh` writable.
+ */
+hw_status hw_surface_revolution(const double *profile,
+                                size_t n_points,
+                                bool closed,
+                                const double *axis_origin,
+                                const double *axis_direction,
+                                bool full_turn,
+                                double angle,
+                                uint32_t steps,
+                                hw_caps caps,
+                                hw_cell_faces faces,
+                                hw_mesh **out_mesh);
+
+/**
+ * A ruled surface joining `first[i]` to `second[i]` (both `n_points` points, x y z each) with
+ * straight rulings, `steps` rows (≥ 1) between them; `closed` joins the curves' ends.
+ *
+ * # Safety
+ * `first` and `second` must hold `3 * n_points` doubles each; `out_mesh` writable.
+ */
+hw_status hw_surface_ruled(const double *first,
+                           const double *second,
+                           size_t n_points,
+                           bool closed,
+                           uint32_t steps,
+                           hw_cell_faces faces,
+                           hw_mesh **out_mesh);
 
 /**
  * Sets how many threads bulk construction and normal computation use from now on, for every

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # Makes sure what the demo or the tests need is installed (Debian 12 with a Rust toolchain).
 # As root it installs what is missing; otherwise it prints the exact command and stops.
-#   scripts/setup.sh demo   cmake and a C/C++ compiler
-#   scripts/setup.sh test   also CGAL, OpenMesh, GLFW, Xvfb, Mesa, pkg-config and cbindgen
+#   scripts/setup.sh demo   cmake, a C/C++ compiler, GLFW, OpenGL headers, Xvfb and Mesa (the viewer)
+#   scripts/setup.sh test   also CGAL, OpenMesh, libpng (screenshot checks), pkg-config and cbindgen
 set -euo pipefail
 
 what=${1:-test}
 cbindgen_version="0.29.4"
-packages=(cmake pkg-config g++ make)
+packages=(cmake pkg-config g++ make libglfw3-dev libgl-dev xvfb xauth libgl1-mesa-dri)
 if [ "$what" = "test" ]; then
-  packages+=(libcgal-dev libopenmesh-dev libglfw3-dev xvfb libgl1-mesa-dri)
+  packages+=(libcgal-dev libopenmesh-dev libpng-dev)
 fi
 
 missing=()

@@ -34,3 +34,15 @@ add_test(NAME consumer_pkg_config
           -DSOURCE=${_consumer_src}/main.c -DWORK=${CMAKE_BINARY_DIR}/consumer-pkg-config
           -P "${_consumer_src}/pkg_config_consumer.cmake")
 set_tests_properties(consumer_pkg_config PROPERTIES FIXTURES_REQUIRED halfwing_installed)
+
+# The examples (C, C++ and, with GLFW, the OpenGL programs) build on their own against the
+# installed package too, and their tests pass there.
+add_test(NAME consumer_examples
+  COMMAND "${CMAKE_CTEST_COMMAND}" --build-and-test "${PROJECT_SOURCE_DIR}/examples"
+          "${CMAKE_BINARY_DIR}/consumer-examples"
+          --build-generator "${CMAKE_GENERATOR}"
+          --build-options "-DCMAKE_PREFIX_PATH=${HALFWING_TEST_PREFIX}"
+                          "-DCMAKE_C_COMPILER=${CMAKE_C_COMPILER}"
+                          "-DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}"
+          --test-command "${CMAKE_CTEST_COMMAND}" --output-on-failure)
+set_tests_properties(consumer_examples PROPERTIES FIXTURES_REQUIRED halfwing_installed)

@@ -1,7 +1,15 @@
 # Source lists of the OpenGL/GLFW examples, for include() from the CMakeLists that builds them.
 # Paths are absolute, so the including file may live anywhere.
 set(HALFWING_EXAMPLES_SHARED_DIR "${CMAKE_CURRENT_LIST_DIR}/../shared")
-# Dependency-free PNG writer (stored deflate blocks, CRC-32 and Adler-32 computed in the file).
-set(HALFWING_PNG_WRITE_SOURCES "${HALFWING_EXAMPLES_SHARED_DIR}/png_write.c")
-# The small C GLFW program: OpenGL 3.3 core, Lambert + wireframe, orbit camera, --screenshot.
-set(HALFWING_GLFW_VIEW_SOURCES "${CMAKE_CURRENT_LIST_DIR}/../c/glfw_view.c" ${HALFWING_PNG_WRITE_SOURCES})
+# Helpers of both GLFW programs: shader build, mesh shaders, orbit camera, offscreen screenshots,
+# and the dependency-free PNG writer (stored deflate blocks, CRC-32 and Adler-32 in the file).
+set(HALFWING_EXAMPLE_GL_SOURCES
+  "${HALFWING_EXAMPLES_SHARED_DIR}/gl_program.c"
+  "${HALFWING_EXAMPLES_SHARED_DIR}/mesh_shader.c"
+  "${HALFWING_EXAMPLES_SHARED_DIR}/orbit_camera.c"
+  "${HALFWING_EXAMPLES_SHARED_DIR}/offscreen.c"
+  "${HALFWING_EXAMPLES_SHARED_DIR}/png_write.c")
+# The C++ viewer: a scene interface, the mesh scene, GL object owners, and the window loop.
+set(HALFWING_VIEWER_SOURCES
+  "${CMAKE_CURRENT_LIST_DIR}/main.cpp"
+  "${CMAKE_CURRENT_LIST_DIR}/mesh_scene.cpp")

@@ -22,7 +22,7 @@ pub const HW_WEIGHT_AREA: hw_normal_weighting = 1;
 /// Unit face normals weighted by the face's angle at the vertex: pmp's default.
 pub const HW_WEIGHT_ANGLE: hw_normal_weighting = 2;
 
-fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
+pub(crate) fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
     match raw {
         HW_WEIGHT_UNIFORM => Ok(VertexNormalWeighting::Uniform),
         HW_WEIGHT_AREA => Ok(VertexNormalWeighting::Area),

@@ -1,9 +1,36 @@
-//! Rendering buffers: what `glBufferData` wants (the seed's VBO/EBO slide). Polygon faces become
-//! triangle index buffers here by ear clipping.
+//! Rendering buffers: what `glBufferData` wants (the seed's VBO/EBO slide).
+//!
+//! - [`surface_buffer`]: a mesh's triangles (`u32` indices, ear clipped) and `f32` vertex
+//!   attributes, flat, smooth or crease shaded, separate or interleaved;
+//! - [`wireframe_lines`], [`boundary_lines`], [`non_manifold_lines`], [`vertex_normal_glyphs`],
+//!   [`face_normal_glyphs`]: [`LineBuffer`]s for `GL_LINES`;
+//! - [`mesh_buffers`]: all of the above in one call;
+//! - [`polygon_buffer`], [`polygon_buffer_2d`]: fills and outlines of a polygon list;
+//!   [`voronoi_cell_buffer`]: those of a Voronoi diagram's clipped cells.
 
+mod bounds;
+mod error;
+mod line_buffer;
+mod mesh_buffers;
+mod mesh_lines;
+mod normal_glyphs;
+mod polygon_buffer;
+mod shading;
+mod surface;
 mod triangulate;
+mod voronoi_cells;
 
+pub use bounds::Bounds;
+pub use error::RenderError;
+pub use line_buffer::LineBuffer;
+pub use mesh_buffers::{MeshBufferOptions, MeshBuffers, mesh_buffers};
+pub use mesh_lines::{boundary_lines, non_manifold_lines, wireframe_lines};
+pub use normal_glyphs::{face_normal_glyphs, mean_edge_length, vertex_normal_glyphs};
+pub use polygon_buffer::{PolygonBuffer, PolygonList, polygon_buffer, polygon_buffer_2d};
+pub use shading::{Shading, VertexLayout};
+pub use surface::{SurfaceBuffer, SurfaceOptions, surface_buffer};
 pub use triangulate::{
     EarClipper, FallbackReason, PolygonOutcome, TriangleBuffer, TriangulateError,
     triangulate_faces, triangulate_polygon,
 };
+pub use voronoi_cells::voronoi_cell_buffer;

@@ -1,0 +1,375 @@
+/* Render buffers and surface generators through the C API: the arrays a GL program uploads, every
+ * shading and layout, polygon lists, and the refusal of every bad argument. */
+#include <math.h>
+#include <stdint.h>
+
+#include "check.h"
+
+#define MESH_SENTINEL ((hw_mesh *)(uintptr_t)0x1234)
+#define BUFFERS_SENTINEL ((hw_render_buffers *)(uintptr_t)0x5678)
+
+static hw_mesh *unit_cube(void) {
+  hw_mesh *mesh = NULL;
+  CHECK(hw_surface_cube(1.0, &mesh) == HW_OK);
+  return mesh;
+}
+
+static hw_render_buffers *build(const hw_mesh *mesh, const hw_render_options *options) {
+  hw_render_buffers *buffers = NULL;
+  CHECK(hw_render_buffers_build(mesh, NULL, options, &buffers) == HW_OK);
+  return buffers;
+}
+
+static size_t float_count(const hw_render_buffers *buffers, hw_render_floats which) {
+  const float *data = NULL;
+  size_t n = SIZE_MAX;
+  CHECK(hw_render_buffers_floats(buffers, which, &data, &n) == HW_OK);
+  CHECK((n == 0) == (data == NULL));
+  return n;
+}
+
+static size_t index_count(const hw_render_buffers *buffers, hw_render_indices which) {
+  const uint32_t *data = NULL;
+  size_t n = SIZE_MAX;
+  CHECK(hw_render_buffers_indices(buffers, which, &data, &n) == HW_OK);
+  return n;
+}
+
+static void shading_modes_split_vertices(void) {
+  hw_mesh *mesh = unit_cube();
+  hw_render_options options = hw_render_options_default();
+  hw_render_buffers *buffers;
+
+  CHECK(options.shading == HW_SHADING_SMOOTH && options.corner_normals == NULL);
+  buffers = build(mesh, NULL); /* NULL options: the defaults */
+  CHECK(hw_render_buffers_n_vertices(buffers) == 8);
+  CHECK(float_count(buffers, HW_RENDER_POSITIONS) == 24);
+  CHECK(float_count(buffers, HW_RENDER_NORMALS) == 24);
+  CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
+  CHECK(float_count(buffers, HW_RENDER_INTERLEAVED) == 0);
+  CHECK(hw_render_buffers_stride(buffers) == 0);
+  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 36);
+  CHECK(index_count(buffers, HW_RENDER_TRIANGLE_FACES) == 12);
+  CHECK(index_count(buffers, HW_RENDER_VERTEX_SOURCES) == 8);
+  /* Lines: 12 edges, no boundary, no diagnostic given; glyphs for 8 vertices and 6 faces. */
+  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 12 * 6);
+  CHECK(index_count(buffers, HW_RENDER_WIREFRAME_SOURCES) == 12);
+  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 0);
+  CHECK(index_count(buffers, HW_RENDER_BOUNDARY_SOURCES) == 0);
+  CHECK(float_count(buffers, HW_RENDER_NON_MANIFOLD) == 0);
+  CHECK(float_count(buffers, HW_RENDER_VERTEX_NORMALS) == 8 * 6);
+  CHECK(float_count(buffers, HW_RENDER_FACE_NORMALS) == 6 * 6);
+  hw_render_buffers_free(buffers);
+
+  options.shading = HW_SHADING_FLAT;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  hw_render_buffers_free(buffers);
+
+  options.shading = HW_SHADING_CREASE;
+  options.crease_angle = 0.5; /* the cube's 90 degree edges are sharper */
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  hw_render_buffers_free(buffers);
+  options.crease_angle = 3.2;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 8);
+  hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+}
+
+static void interleaved_layout_with_corner_attributes(void) {
+  hw_mesh *mesh = unit_cube();
+  hw_render_options options = hw_render_options_default();
+  size_t slots = hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE), h;
+  double normals[24 * 3], uvs[24 * 2];
+  const float *data = NULL;
+  size_t n = 0, r;
+  hw_render_buffers *buffers;
+
+  CHECK(slots == 24);
+  /* One normal for all corners and a uv per face: the cube splits along every face border. */
+  for (h = 0; h < slots; ++h) {
+    hw_halfedge he = {(uint32_t)h};
+    normals[3 * h] = 0, normals[3 * h + 1] = 0, normals[3 * h + 2] = 1;
+    uvs[2 * h] = (double)hw_mesh_he_face(mesh, he).idx, uvs[2 * h + 1] = 0.25;
+  }
+  options.interleaved = true;
+  options.corner_normals = normals;
+  options.corner_uvs = uvs;
+  options.n_corners = slots;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_stride(buffers) == 8);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  CHECK(float_count(buffers, HW_RENDER_POSITIONS) == 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_INTERLEAVED, &data, &n) == HW_OK && n == 24 * 8);
+  for (r = 0; data != NULL && r < 24; ++r) {
+    CHECK(data[8 * r + 5] == 1.0f && data[8 * r + 7] == 0.25f);
+    CHECK(fabsf(data[8 * r]) == 0.5f); /* the unit cube spans -0.5 .. 0.5 */
+  }
+  hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+}
+
+/* The mesh's own corner normals and uvs (a file's vn/vt) are honoured unless the options say not. */
+static void mesh_corner_attributes_are_honoured(void) {
+  hw_mesh *mesh = unit_cube();
+  hw_render_options options = hw_render_options_default();
+  double normals[24 * 3], uvs[24 * 2];
+  const float *data = NULL;
+  size_t h, n = 0;
+  hw_render_buffers *buffers;
+  for (h = 0; h < 24; ++h) {
+    normals[3 * h] = 1, normals[3 * h + 1] = 0, normals[3 * h + 2] = 0;
+    uvs[2 * h] = 0.5, uvs[2 * h + 1] = 0.75;
+  }
+  CHECK(hw_mesh_corner_normals_set(mesh, normals, 24) == HW_OK);
+  CHECK(hw_mesh_corner_uvs_set(mesh, uvs, 24) == HW_OK);
+  CHECK(options.mesh_corner_normals && options.mesh_corner_uvs);
+
+  /* One normal and one uv for every corner: a vertex per mesh vertex, all facing +x. */
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 8);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, &n) == HW_OK && n == 24);
+  CHECK(data != NULL && data[0] == 1.0f && data[1] == 0.0f && data[23] == 0.0f);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_UVS, &data, &n) == HW_OK && n == 16);
+  CHECK(data != NULL && data[0] == 0.5f && data[15] == 0.75f);
+  hw_render_buffers_free(buffers);
+
+  /* Declined: the shading's normals (flat: 24 vertices) and no uvs. */
+  options.mesh_corner_normals = false;
+  options.mesh_corner_uvs = false;
+  options.shading = HW_SHADING_FLAT;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
+  hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+}
+
+static void boundary_bounds_and_non_manifold_edges(void) {
+  /* A 2 x 1 grid of quads: 8 boundary edges around 7 edges inside and out. */
+  hw_mesh *mesh = NULL;
+  hw_render_buffers *buffers;
+  float lo[3], hi[3];
+  CHECK(hw_surface_grid(2.0, 1.0, 2, 1, HW_CELLS_QUADS, &mesh) == HW_OK);
+  buffers = build(mesh, NULL);
+  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 12);
+  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 6 * 6);
+  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 7 * 6);
+  CHECK(hw_render_buffers_bounds(buffers, lo, hi) == HW_OK);
+  CHECK(lo[0] == -1.0f && hi[0] == 1.0f && lo[1] == -0.5f && hi[1] == 0.5f && hi[2] == 0.0f);
+  hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+
+  {
+    /* Three triangles on the edge 0-1, repaired: the diagnostic reports the edge. */
+    static const double positions[] = {0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0};
+    static const uint32_t sizes[] = {3, 3, 3};
+    static const uint32_t indices[] = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+    hw_diagnostic *diagnostic = NULL;
+    const float *line = NULL;
+    size_t n = 0;
+    CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh,
+                               &diagnostic) == HW_OK);
+    CHECK(hw_render_buffers_build(mesh, diagnostic, NULL, &buffers) == HW_OK);
+    CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NON_MANIFOLD, &line, &n) == HW_OK && n == 6);
+    CHECK(line != NULL && line[2] == 0.0f && line[5] == 1.0f);
+    hw_render_buffers_free(buffers);
+    hw_diagnostic_free(diagnostic);
+    hw_mesh_free(mesh);
+  }
+}
+
+static void polygon_lists(void) {
+  /* A square and a triangle in the plane, then the same in 3D. */
+  static const double planar[] = {0, 0, 1, 0, 1, 1, 0, 1, 1, 0, 2, 0, 1, 1};
+  static const double spatial[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 2, 0, 0, 1, 1, 0};
+  static const uint32_t sizes[] = {4, 3};
+  static const uint32_t bad_sizes[] = {4, 4};
+  hw_render_buffers *buffers = BUFFERS_SENTINEL;
+  const uint32_t *polygon_of = NULL;
+  const float *normals = NULL;
+  size_t n = 0;
+  CHECK(hw_render_buffers_from_polygons(planar, 2, 7, sizes, 2, &buffers) == HW_OK);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 7);
+  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 9);
+  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 7 * 6);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_VERTEX_SOURCES, &polygon_of, &n) == HW_OK);
+  CHECK(n == 7 && polygon_of[3] == 0 && polygon_of[4] == 1);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &normals, &n) == HW_OK && n == 21);
+  CHECK(normals[2] == 1.0f && normals[20] == 1.0f);
+  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 0);
+  hw_render_buffers_free(buffers);
+  CHECK(hw_render_buffers_from_polygons(spatial, 3, 7, sizes, 2, &buffers) == HW_OK);
+  CHECK(index_count(buffers, HW_RENDER_TRIANGLE_FACES) == 3);
+  hw_render_buffers_free(buffers);
+
+  buffers = BUFFERS_SENTINEL;
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, bad_sizes, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "8 corners");
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 4, 7, sizes, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "dimension");
+  CHECK_STATUS(hw_render_buffers_from_polygons(NULL, 2, 7, sizes, 2, &buffers),
+               HW_ERR_NULL_ARGUMENT, "corners");
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, NULL, 2, &buffers),
+               HW_ERR_NULL_ARGUMENT, "sizes");
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, sizes, 2, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_buffers");
+  CHECK(buffers == BUFFERS_SENTINEL);
+}
+
+static void bad_render_arguments(void) {
+  hw_mesh *mesh = unit_cube();
+  hw_render_buffers *buffers = BUFFERS_SENTINEL, *good = build(mesh, NULL);
+  hw_render_options options = hw_render_options_default();
+  const float *floats = NULL;
+  const uint32_t *indices = NULL;
+  double normals[3 * 4] = {0};
+  size_t n = 0;
+  float lo[3], hi[3];
+
+  CHECK_STATUS(hw_render_buffers_build(NULL, NULL, NULL, &buffers), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, NULL, NULL), HW_ERR_NULL_ARGUMENT, "out_buffers");
+  options.shading = 7;
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "shading");
+  options = hw_render_options_default();
+  options.weighting = 9;
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "weighting");
+  options = hw_render_options_default();
+  options.shading = HW_SHADING_CREASE;
+  options.crease_angle = -1.0;
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "crease");
+  options.crease_angle = nan("");
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "crease");
+  options = hw_render_options_default();
+  options.normal_length = -2.0;
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "glyph");
+  options = hw_render_options_default();
+  options.corner_normals = normals;
+  options.n_corners = 4; /* the cube has 24 half-edge slots */
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "24 half-edge slots");
+  options.corner_normals = NULL;
+  options.corner_uvs = normals;
+  CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "uvs");
+  CHECK(buffers == BUFFERS_SENTINEL);
+
+  CHECK_STATUS(hw_render_buffers_floats(NULL, HW_RENDER_POSITIONS, &floats, &n), HW_ERR_NULL_ARGUMENT, "buffers");
+  CHECK_STATUS(hw_render_buffers_floats(good, 99, &floats, &n), HW_ERR_INVALID_INPUT, "99");
+  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_POSITIONS, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_data");
+  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_POSITIONS, &floats, NULL), HW_ERR_NULL_ARGUMENT, "out_len");
+  CHECK_STATUS(hw_render_buffers_indices(NULL, HW_RENDER_TRIANGLES, &indices, &n), HW_ERR_NULL_ARGUMENT, "buffers");
+  CHECK_STATUS(hw_render_buffers_indices(good, 99, &indices, &n), HW_ERR_INVALID_INPUT, "99");
+  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_TRIANGLES, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_data");
+  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_TRIANGLES, &indices, NULL), HW_ERR_NULL_ARGUMENT, "out_len");
+  CHECK(hw_render_buffers_n_vertices(NULL) == 0 && last_error_contains("buffers"));
+  CHECK(hw_render_buffers_stride(NULL) == 0 && last_error_contains("buffers"));
+  CHECK_STATUS(hw_render_buffers_bounds(NULL, lo, hi), HW_ERR_NULL_ARGUMENT, "buffers");
+  CHECK_STATUS(hw_render_buffers_bounds(good, NULL, hi), HW_ERR_NULL_ARGUMENT, "out_min");
+  CHECK_STATUS(hw_render_buffers_bounds(good, lo, NULL), HW_ERR_NULL_ARGUMENT, "out_max");
+
+  hw_render_buffers_free(NULL); /* a no-op */
+  hw_render_buffers_free(good);
+  hw_render_buffers_free(good); /* refused, not freed twice */
+  CHECK(last_error_contains("already freed"));
+  hw_mesh_free(mesh);
+}
+
+/* Euler characteristic V - E + F and the number of boundary loops of a generated mesh. */
+static void check_topology(hw_mesh *mesh, long euler, size_t loops) {
+  size_t n_loops = SIZE_MAX;
+  CHECK(mesh != NULL && mesh != MESH_SENTINEL);
+  CHECK((long)hw_mesh_n_vertices(mesh) - (long)hw_mesh_n_edges(mesh) + (long)hw_mesh_n_faces(mesh) == euler);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_n_boundary_loops(mesh, &n_loops) == HW_OK && n_loops == loops);
+  hw_mesh_free(mesh);
+}
+
+static void generators(void) {
+  static const double square[] = {1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0};
+  static const double lifted[] = {1, 0, 1, 0, 1, 1, -1, 0, 1, 0, -1, 1};
+  static const double half_circle[] = {0, 0, -1, 1, 0, 0, 0, 0, 1}; /* pole to pole */
+  static const double up[] = {0, 0, 1}, origin[] = {0, 0, 0};
+  hw_mesh *mesh = NULL;
+
+  CHECK(hw_surface_tetrahedron(&mesh) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 4 && hw_mesh_n_faces(mesh) == 4);
+  check_topology(mesh, 2, 0);
+  CHECK(hw_surface_cube(2.0, &mesh) == HW_OK);
+  check_topology(mesh, 2, 0);
+  CHECK(hw_surface_icosphere(1.0, 2, &mesh) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 20 * 16);
+  check_topology(mesh, 2, 0);
+  CHECK(hw_surface_torus(2.0, 0.5, 12, 8, HW_CELLS_TRIANGLES, &mesh) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 2 * 12 * 8);
+  check_topology(mesh, 0, 0);
+  CHECK(hw_surface_grid(1.0, 1.0, 3, 2, HW_CELLS_QUADS, &mesh) == HW_OK);
+  check_topology(mesh, 1, 1);
+  CHECK(hw_surface_sweep(square, 4, true, up, 2, HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 8);
+  check_topology(mesh, 0, 2);
+  CHECK(hw_surface_revolution(half_circle, 3, false, origin, up, true, 0.0, 6, HW_CAPS_NONE,
+                              HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 2 + 6);
+  check_topology(mesh, 2, 0);
+  CHECK(hw_surface_revolution(square, 2, false, origin, up, false, 1.5, 4, HW_CAPS_NONE,
+                              HW_CELLS_TRIANGLES, &mesh) == HW_OK);
+  check_topology(mesh, 1, 1);
+  CHECK(hw_surface_ruled(square, lifted, 4, true, 1, HW_CELLS_QUADS, &mesh) == HW_OK);
+  check_topology(mesh, 0, 2);
+}
+
+static void bad_generator_parameters(void) {
+  static const double line[] = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+  static const double nan_line[] = {0, 0, 0, 1, NAN, 0};
+  static const double up[] = {0, 0, 1}, zero[] = {0, 0, 0}, along_x[] = {1, 0, 0};
+  hw_mesh *mesh = MESH_SENTINEL;
+
+  CHECK_STATUS(hw_surface_tetrahedron(NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
+  CHECK_STATUS(hw_surface_cube(-1.0, &mesh), HW_ERR_INVALID_INPUT, "side");
+  CHECK_STATUS(hw_surface_cube(nan(""), &mesh), HW_ERR_INVALID_INPUT, "side");
+  CHECK_STATUS(hw_surface_cube(1.0, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
+  CHECK_STATUS(hw_surface_icosphere(0.0, 1, &mesh), HW_ERR_INVALID_INPUT, "radius");
+  CHECK_STATUS(hw_surface_icosphere(1.0, 99, &mesh), HW_ERR_INVALID_INPUT, "level");
+  CHECK_STATUS(hw_surface_torus(1.0, 2.0, 8, 8, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "minor radius");
+  CHECK_STATUS(hw_surface_torus(2.0, 1.0, 2, 8, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "major_steps");
+  CHECK_STATUS(hw_surface_torus(2.0, 1.0, 8, 8, 5, &mesh), HW_ERR_INVALID_INPUT, "cell faces");
+  CHECK_STATUS(hw_surface_grid(1.0, 1.0, 0, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "cells_x");
+  CHECK_STATUS(hw_surface_grid(1.0, -1.0, 1, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "height");
+  CHECK_STATUS(hw_surface_sweep(NULL, 3, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "profile");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, NULL, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "direction");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, zero, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "zero length");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, along_x, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "parallel");
+  CHECK_STATUS(hw_surface_sweep(line, 1, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "at least 2");
+  CHECK_STATUS(hw_surface_sweep(nan_line, 2, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "non-finite");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 0, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "steps");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 1, HW_CELLS_QUADS, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, along_x, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "lies on the axis");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, false, 7.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "outside (0, 2");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 2, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "steps");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 8, 9, HW_CELLS_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "caps");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, NULL, up, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+               HW_ERR_NULL_ARGUMENT, "axis_origin");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, NULL, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+               HW_ERR_NULL_ARGUMENT, "axis_direction");
+  CHECK_STATUS(hw_surface_ruled(line, NULL, 3, false, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "second");
+  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "collapses");
+  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 0, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "steps");
+  CHECK(mesh == MESH_SENTINEL);
+}
+
+int main(void) {
+  shading_modes_split_vertices();
+  interleaved_layout_with_corner_attributes();
+  mesh_corner_attributes_are_honoured();
+  boundary_bounds_and_non_manifold_edges();
+  polygon_lists();
+  bad_render_arguments();
+  generators();
+  bad_generator_parameters();
+  return check_summary("test_render");
+}

@@ -1,0 +1,133 @@
+#include "mesh_scene.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace viewer {
+
+namespace {
+
+constexpr double degrees = 3.14159265358979323846 / 180.0;
+
+const char* shading_name(hw_shading shading) {
+  switch (shading) {
+    case HW_SHADING_FLAT: return "flat";
+    case HW_SHADING_SMOOTH: return "smooth";
+    default: return "crease";
+  }
+}
+
+const char* weighting_name(hw_normal_weighting weighting) {
+  switch (weighting) {
+    case HW_WEIGHT_UNIFORM: return "uniform";
+    case HW_WEIGHT_AREA: return "area";
+    default: return "angle";
+  }
+}
+
+void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines) {
+  glUniform3fv(glGetUniformLocation(program, "line_color"), 1, style.color.data());
+  glUniform1f(glGetUniformLocation(program, "line_width"), style.width);
+  lines.draw();
+}
+
+}  // namespace
+
+mesh_scene::mesh_scene(const std::string& path)
+    : path_(path), mesh_(hw::mesh::read(path, HW_BUILD_REPAIR, &report_)) {
+  options_.shading = HW_SHADING_CREASE;
+  rebuild();
+}
+
+void mesh_scene::rebuild() {
+  buffers_ = std::make_unique<hw::render_buffers>(mesh_, options_, &report_);
+  surface_ = std::make_unique<gpu_surface>(*buffers_);
+  wireframe_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_WIREFRAME);
+  boundary_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_BOUNDARY);
+  non_manifold_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_NON_MANIFOLD);
+  vertex_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_VERTEX_NORMALS);
+  face_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FACE_NORMALS);
+}
+
+void mesh_scene::draw(const programs& with) const {
+  // Push the fill back a little so the lines on top are not lost to depth fighting.
+  glUseProgram(with.surface);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  surface_->draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glUseProgram(with.lines);
+  if (show_wireframe_) draw_lines(with.lines, styles::wireframe, *wireframe_);
+  if (show_vertex_normals_) draw_lines(with.lines, styles::vertex_normals, *vertex_normals_);
+  if (show_face_normals_) draw_lines(with.lines, styles::face_normals, *face_normals_);
+  // Highlights last, and LEQUAL so they win depth ties against the wireframe on the same edges.
+  glDepthFunc(GL_LEQUAL);
+  if (show_boundary_) draw_lines(with.lines, styles::boundary, *boundary_);
+  if (show_non_manifold_) draw_lines(with.lines, styles::non_manifold, *non_manifold_);
+  glDepthFunc(GL_LESS);
+  glBindVertexArray(0);
+}
+
+bool mesh_scene::on_key(int key) {
+  switch (key) {
+    case GLFW_KEY_1: options_.shading = HW_SHADING_FLAT; break;
+    case GLFW_KEY_2: options_.shading = HW_SHADING_SMOOTH; break;
+    case GLFW_KEY_3: options_.shading = HW_SHADING_CREASE; break;
+    case GLFW_KEY_G: options_.weighting = (options_.weighting + 1) % 3; break;
+    case GLFW_KEY_LEFT_BRACKET:
+      options_.crease_angle = std::fmax(options_.crease_angle - 5 * degrees, 0.0);
+      break;
+    case GLFW_KEY_RIGHT_BRACKET:
+      options_.crease_angle = std::fmin(options_.crease_angle + 5 * degrees, 180 * degrees);
+      break;
+    case GLFW_KEY_W: show_wireframe_ = !show_wireframe_; return true;
+    case GLFW_KEY_B: show_boundary_ = !show_boundary_; return true;
+    case GLFW_KEY_M: show_non_manifold_ = !show_non_manifold_; return true;
+    case GLFW_KEY_N: show_vertex_normals_ = !show_vertex_normals_; return true;
+    case GLFW_KEY_F: show_face_normals_ = !show_face_normals_; return true;
+    default: return false;
+  }
+  rebuild();  // the shading changed: new normals, maybe new vertex splits
+  return true;
+}
+
+std::string mesh_scene::help() const {
+  return "  1 / 2 / 3  shading: flat / smooth / crease angle\n"
+         "  [ / ]      crease angle -5 / +5 degrees\n"
+         "  G          vertex-normal weighting: uniform / area / angle\n"
+         "  W          wireframe\n"
+         "  B          boundary loops (magenta)\n"
+         "  M          non-manifold edges from the diagnostic (cyan)\n"
+         "  N / F      vertex / face normal glyphs (green / yellow)\n";
+}
+
+std::string mesh_scene::status() const {
+  std::ostringstream out;
+  out << shading_name(options_.shading);
+  if (options_.shading == HW_SHADING_CREASE)
+    out << " " << std::lround(options_.crease_angle / degrees) << " deg";
+  if (options_.shading == HW_SHADING_SMOOTH) out << " (" << weighting_name(options_.weighting) << ")";
+  out << ", " << buffers_->n_vertices() << " render vertices; wireframe "
+      << (show_wireframe_ ? "on" : "off") << ", boundary " << (show_boundary_ ? "on" : "off")
+      << ", non-manifold " << (show_non_manifold_ ? "on" : "off") << ", normals "
+      << (show_vertex_normals_ ? "V" : "") << (show_face_normals_ ? "F" : "")
+      << (show_vertex_normals_ || show_face_normals_ ? "" : "off");
+  return out.str();
+}
+
+std::string mesh_scene::summary() const {
+  std::ostringstream out;
+  out << path_ << ": " << mesh_.n_vertices() << " vertices, " << mesh_.n_edges() << " edges, "
+      << mesh_.n_faces() << " faces, " << mesh_.boundary_loops().size() << " boundary loops ("
+      << boundary_->n_segments() << " edges), " << non_manifold_->n_segments()
+      << " non-manifold edges\n"
+      << "diagnostic: " << (report_.is_clean() ? std::string("clean") : report_.summary());
+  return out.str();
+}
+
+std::pair<std::array<float, 3>, std::array<float, 3>> mesh_scene::bounds() const {
+  return buffers_->bounds();
+}
+
+}  // namespace viewer

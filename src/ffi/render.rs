@@ -1,0 +1,476 @@
+//! `hw_render_buffers`: a mesh (or a polygon list) as arrays ready for `glBufferData`, with
+//! zero-copy views of each array.
+
+use crate::geom::VertexNormalWeighting;
+use crate::render::{
+    Bounds, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
+    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer,
+};
+
+use super::boundary::{Out, arg_ref, arg_slice, guard, guard_value, guard_void, write_view};
+use super::diagnostic::hw_diagnostic;
+use super::error::FfiError;
+use super::handle::{free_handle, into_handle};
+use super::mesh::{hw_mesh, mesh_ref};
+use super::normals::{HW_WEIGHT_ANGLE, hw_normal_weighting, weighting};
+use super::status::*;
+use super::threads::with_threads;
+
+/// Where the normals of hw_render_buffers_build() come from.
+pub type hw_shading = u32;
+/// Face normals: faceted; every vertex is split per face.
+pub const HW_SHADING_FLAT: hw_shading = 0;
+/// Vertex normals with the options' weighting: one render vertex per mesh vertex.
+pub const HW_SHADING_SMOOTH: hw_shading = 1;
+/// Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
+/// split along those edges only.
+pub const HW_SHADING_CREASE: hw_shading = 2;
+
+/// How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct hw_render_options {
+    /// ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or ::HW_SHADING_CREASE.
+    pub shading: hw_shading,
+    /// Weighting of smooth shading and of the vertex-normal glyphs (::HW_WEIGHT_UNIFORM,
+    /// ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+    pub weighting: hw_normal_weighting,
+    /// For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
+    pub crease_angle: f64,
+    /// `true`: one ::HW_RENDER_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
+    /// separate ::HW_RENDER_POSITIONS, ::HW_RENDER_NORMALS and ::HW_RENDER_UVS arrays.
+    pub interleaved: bool,
+    /// Length of the normal glyphs; 0 takes the mesh's mean edge length.
+    pub normal_length: f64,
+    /// Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
+    /// of the shading's, when it has them and `corner_normals` is NULL.
+    pub mesh_corner_normals: bool,
+    /// Give the vertices the mesh's own corner texture coordinates, when it has them and
+    /// `corner_uvs` is NULL.
+    pub mesh_corner_uvs: bool,
+    /// NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
+    /// half-edge's origin), used instead of the shading's normals.
+    pub corner_normals: *const f64,
+    /// NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
+    /// then carry uvs.
+    pub corner_uvs: *const f64,
+    /// Half-edge slots in `corner_normals` and `corner_uvs`: must be
+    /// `hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE)` when either is given.
+    pub n_corners: usize,
+}
+
+/// The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
+/// glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
+/// them, no other per-corner attributes.
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_render_options_default() -> hw_render_options {
+    hw_render_options {
+        shading: HW_SHADING_SMOOTH,
+        weighting: HW_WEIGHT_ANGLE,
+        crease_angle: 30f64.to_radians(),
+        interleaved: false,
+        normal_length: 0.0,
+        mesh_corner_normals: true,
+        mesh_corner_uvs: true,
+        corner_normals: std::ptr::null(),
+        corner_uvs: std::ptr::null(),
+        n_corners: 0,
+    }
+}
+
+/// What a render-buffer object was built from.
+enum Contents {
+    Mesh(Box<MeshBuffers>),
+    Polygons(Box<PolygonBuffer>),
+}
+
+/// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build() or
+/// hw_render_buffers_from_polygons(); release with hw_render_buffers_free(). Immutable: its
+/// views stay valid until it is freed, also after the mesh it came from changes or is freed.
+pub struct hw_render_buffers {
+    contents: Contents,
+}
+
+impl From<RenderError> for FfiError {
+    fn from(error: RenderError) -> Self {
+        FfiError::invalid_input(error.to_string())
+    }
+}
+
+/// The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
+/// floats.
+pub type hw_render_floats = u32;
+/// x y z per vertex (separate layout; empty when interleaved).
+pub const HW_RENDER_POSITIONS: hw_render_floats = 0;
+/// Unit nx ny nz per vertex (separate layout; empty when interleaved).
+pub const HW_RENDER_NORMALS: hw_render_floats = 1;
+/// u v per vertex (separate layout with corner uvs; empty otherwise).
+pub const HW_RENDER_UVS: hw_render_floats = 2;
+/// hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
+pub const HW_RENDER_INTERLEAVED: hw_render_floats = 3;
+/// `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
+pub const HW_RENDER_WIREFRAME: hw_render_floats = 4;
+/// `GL_LINES` points of the boundary edges (edges with a face on one side only).
+pub const HW_RENDER_BOUNDARY: hw_render_floats = 5;
+/// `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
+pub const HW_RENDER_NON_MANIFOLD: hw_render_floats = 6;
+/// `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
+pub const HW_RENDER_VERTEX_NORMALS: hw_render_floats = 7;
+/// `GL_LINES` glyphs of the face normals, from each face's centroid.
+pub const HW_RENDER_FACE_NORMALS: hw_render_floats = 8;
+
+/// The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
+pub type hw_render_indices = u32;
+/// Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
+pub const HW_RENDER_TRIANGLES: hw_render_indices = 0;
+/// Per triangle, the mesh face (or polygon) it comes from.
+pub const HW_RENDER_TRIANGLE_FACES: hw_render_indices = 1;
+/// Per vertex, the mesh vertex (or polygon) it shows.
+pub const HW_RENDER_VERTEX_SOURCES: hw_render_indices = 2;
+/// Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+pub const HW_RENDER_WIREFRAME_SOURCES: hw_render_indices = 3;
+/// Per ::HW_RENDER_BOUNDARY segment, its edge id.
+pub const HW_RENDER_BOUNDARY_SOURCES: hw_render_indices = 4;
+
+fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], FfiError> {
+    if which > HW_RENDER_FACE_NORMALS {
+        return Err(FfiError::invalid_input(format!(
+            "unknown render float array {which}"
+        )));
+    }
+    Ok(match contents {
+        Contents::Mesh(buffers) => match which {
+            HW_RENDER_POSITIONS => &buffers.surface.positions,
+            HW_RENDER_NORMALS => &buffers.surface.normals,
+            HW_RENDER_UVS => &buffers.surface.uvs,
+            HW_RENDER_INTERLEAVED => &buffers.surface.interleaved,
+            HW_RENDER_WIREFRAME => &buffers.wireframe.positions,
+            HW_RENDER_BOUNDARY => &buffers.boundary.positions,
+            HW_RENDER_NON_MANIFOLD => &buffers.non_manifold.positions,
+            HW_RENDER_VERTEX_NORMALS => &buffers.vertex_normals.positions,
+            _ => &buffers.face_normals.positions,
+        },
+        Contents::Polygons(polygons) => match which {
+            HW_RENDER_POSITIONS => &polygons.positions,
+            HW_RENDER_NORMALS => &polygons.normals,
+            HW_RENDER_WIREFRAME => &polygons.outline.positions,
+            _ => &[],
+        },
+    })
+}
+
+fn index_array(contents: &Contents, which: hw_render_indices) -> Result<&[u32], FfiError> {
+    if which > HW_RENDER_BOUNDARY_SOURCES {
+        return Err(FfiError::invalid_input(format!(
+            "unknown render index array {which}"
+        )));
+    }
+    Ok(match contents {
+        Contents::Mesh(buffers) => match which {
+            HW_RENDER_TRIANGLES => &buffers.surface.triangles,
+            HW_RENDER_TRIANGLE_FACES => &buffers.surface.triangle_faces,
+            HW_RENDER_VERTEX_SOURCES => &buffers.surface.vertex_sources,
+            HW_RENDER_WIREFRAME_SOURCES => &buffers.wireframe.sources,
+            _ => &buffers.boundary.sources,
+        },
+        Contents::Polygons(polygons) => match which {
+            HW_RENDER_TRIANGLES => &polygons.triangles,
+            HW_RENDER_TRIANGLE_FACES => &polygons.triangle_polygons,
+            HW_RENDER_VERTEX_SOURCES => &polygons.vertex_polygons,
+            HW_RENDER_WIREFRAME_SOURCES => &polygons.outline.sources,
+            _ => &[],
+        },
+    })
+}
+
+fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
+    match options.shading {
+        HW_SHADING_FLAT => Ok(Shading::Flat),
+        HW_SHADING_SMOOTH => Ok(Shading::Smooth(weighting(options.weighting)?)),
+        HW_SHADING_CREASE => Ok(Shading::Crease(options.crease_angle)),
+        other => Err(FfiError::invalid_input(format!("unknown shading {other}"))),
+    }
+}
+
+/// Builds the render buffers of a mesh: the triangulated surface (polygons ear clipped), its
+/// vertex attributes as `float`, the wireframe, the boundary, the non-manifold edges of
+/// `diagnostic` and the normal glyphs.
+///
+/// `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
+/// mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
+/// edges of a file). `options` may be NULL for hw_render_options_default(). Bad options (an
+/// unknown shading or weighting, a negative or non-finite crease angle or glyph length, corner
+/// arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
+///
+/// Draw the surface with `glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, 0)` after uploading
+/// ::HW_RENDER_TRIANGLES as the element buffer, and each line set with
+/// `glDrawArrays(GL_LINES, 0, len / 3)`.
+///
+/// # Safety
+/// `mesh` must be NULL or live; `diagnostic` NULL or live; `options` NULL or readable, with its
+/// corner arrays NULL or as long as it says; `out_buffers` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_build(
+    mesh: *const hw_mesh,
+    diagnostic: *const hw_diagnostic,
+    options: *const hw_render_options,
+    out_buffers: *mut *mut hw_render_buffers,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_buffers, "out_buffers")?;
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        // SAFETY: NULL or live per the caller.
+        let diagnostic = unsafe { diagnostic.as_ref() }.map(|d| &d.diagnostic);
+        // SAFETY: NULL or readable per the caller.
+        let options = unsafe { options.as_ref() }
+            .copied()
+            .unwrap_or_else(|| hw_render_options_default());
+        let glyph_length = (options.normal_length != 0.0).then_some(options.normal_length);
+        // SAFETY: the arrays hold `n_corners` entries per the caller.
+        let (corner_normals, corner_uvs) = unsafe {
+            (
+                corner_array::<3>(options.corner_normals, options.n_corners, "corner_normals")?,
+                corner_array::<2>(options.corner_uvs, options.n_corners, "corner_uvs")?,
+            )
+        };
+        // Explicit arrays first, then the mesh's own attributes when asked for.
+        let corner_normals = corner_normals.or_else(|| {
+            options
+                .mesh_corner_normals
+                .then(|| mesh.corner_normals())
+                .flatten()
+        });
+        let corner_uvs =
+            corner_uvs.or_else(|| options.mesh_corner_uvs.then(|| mesh.corner_uvs()).flatten());
+        let glyph_weighting: VertexNormalWeighting = weighting(options.weighting)?;
+        let mesh_options = MeshBufferOptions {
+            surface: SurfaceOptions {
+                shading: shading(&options)?,
+                layout: if options.interleaved {
+                    VertexLayout::Interleaved
+                } else {
+                    VertexLayout::Separate
+                },
+                corner_normals,
+                corner_uvs,
+            },
+            glyph_weighting,
+            glyph_length,
+        };
+        let buffers = with_threads(|| mesh_buffers(mesh, diagnostic, &mesh_options))?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe {
+            out.write(into_handle(hw_render_buffers {
+                contents: Contents::Mesh(Box::new(buffers)),
+            }))
+        };
+        Ok(())
+    })
+}
+
+/// Borrows an optional per-corner array of `N` doubles per corner.
+///
+/// # Safety
+/// `data` must be NULL or point to `N * n_corners` doubles.
+unsafe fn corner_array<'a, const N: usize>(
+    data: *const f64,
+    n_corners: usize,
+    name: &str,
+) -> Result<Option<&'a [[f64; N]]>, FfiError> {
+    if data.is_null() {
+        return Ok(None);
+    }
+    // SAFETY: forwarded from the caller; `[f64; N]` has the alignment of `f64`.
+    Ok(Some(unsafe {
+        arg_slice(data.cast::<[f64; N]>(), n_corners, name)
+    }?))
+}
+
+/// Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
+/// ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
+/// coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
+/// ::HW_RENDER_TRIANGLES (ear clipped) with ::HW_RENDER_TRIANGLE_FACES and
+/// ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
+/// other arrays are empty, and the layout is always separate.
+///
+/// `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
+/// 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
+/// up to `n_corners` (`HW_ERR_INVALID_INPUT` otherwise).
+///
+/// # Safety
+/// `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either
+/// may be NULL when its count is 0); `out_buffers` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_from_polygons(
+    corners: *const f64,
+    dimension: u32,
+    n_corners: usize,
+    sizes: *const u32,
+    n_polygons: usize,
+    out_buffers: *mut *mut hw_render_buffers,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_buffers, "out_buffers")?;
+        if !(2..=3).contains(&dimension) {
+            return Err(FfiError::invalid_input(format!(
+                "dimension must be 2 or 3, got {dimension}"
+            )));
+        }
+        // SAFETY: forwarded from the caller; the point arrays have the alignment of `f64`.
+        let sizes = unsafe { arg_slice(sizes, n_polygons, "sizes") }?;
+        let points: Vec<[f64; 3]> = if dimension == 2 {
+            // SAFETY: as above.
+            let planar = unsafe { arg_slice(corners.cast::<[f64; 2]>(), n_corners, "corners") }?;
+            planar.iter().map(|&[x, y]| [x, y, 0.0]).collect()
+        } else {
+            // SAFETY: as above.
+            unsafe { arg_slice(corners.cast::<[f64; 3]>(), n_corners, "corners") }?.to_vec()
+        };
+        let buffer = polygon_buffer(&PolygonList {
+            corners: &points,
+            sizes,
+        })?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe {
+            out.write(into_handle(hw_render_buffers {
+                contents: Contents::Polygons(Box::new(buffer)),
+            }))
+        };
+        Ok(())
+    })
+}
+
+/// Releases render buffers (their views die with them). NULL is a no-op; freeing twice is
+/// detected and refused.
+///
+/// # Safety
+/// `buffers` must be NULL or from this library, not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_free(buffers: *mut hw_render_buffers) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(buffers, "hw_render_buffers") });
+}
+
+/// Borrows the contents of a `const hw_render_buffers *` argument.
+///
+/// # Safety
+/// `buffers` must be NULL or live.
+unsafe fn contents_ref<'a>(buffers: *const hw_render_buffers) -> Result<&'a Contents, FfiError> {
+    // SAFETY: forwarded from the caller.
+    Ok(&unsafe { arg_ref(buffers, "buffers") }?.contents)
+}
+
+/// A zero-copy view of one `float` array: `*out_data` (NULL when empty) and its length in floats
+/// `*out_len`, ready for `glBufferData(GL_ARRAY_BUFFER, *out_len * sizeof(float), *out_data, ...)`.
+///
+/// # Safety
+/// `buffers` must be NULL or live; `out_data` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_floats(
+    buffers: *const hw_render_buffers,
+    which: hw_render_floats,
+    out_data: *mut *const f32,
+    out_len: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let (out_data, out_len) = (
+            Out::new(out_data, "out_data")?,
+            Out::new(out_len, "out_len")?,
+        );
+        // SAFETY: forwarded from the caller.
+        let data = float_array(unsafe { contents_ref(buffers) }?, which)?;
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { write_view(out_data, out_len, data) };
+        Ok(())
+    })
+}
+
+/// A zero-copy view of one `uint32_t` array: `*out_data` (NULL when empty) and its length
+/// `*out_len` in elements (three per triangle for ::HW_RENDER_TRIANGLES).
+///
+/// # Safety
+/// `buffers` must be NULL or live; `out_data` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_indices(
+    buffers: *const hw_render_buffers,
+    which: hw_render_indices,
+    out_data: *mut *const u32,
+    out_len: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let (out_data, out_len) = (
+            Out::new(out_data, "out_data")?,
+            Out::new(out_len, "out_len")?,
+        );
+        // SAFETY: forwarded from the caller.
+        let data = index_array(unsafe { contents_ref(buffers) }?, which)?;
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { write_view(out_data, out_len, data) };
+        Ok(())
+    })
+}
+
+/// Number of render vertices (entries of the per-vertex arrays); 0 for NULL.
+///
+/// # Safety
+/// `buffers` must be NULL or live.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_n_vertices(buffers: *const hw_render_buffers) -> usize {
+    // SAFETY: forwarded from the caller.
+    guard_value(0, || {
+        Ok(match unsafe { contents_ref(buffers) }? {
+            Contents::Mesh(buffers) => buffers.surface.n_vertices(),
+            Contents::Polygons(polygons) => polygons.vertex_polygons.len(),
+        })
+    })
+}
+
+/// Floats per vertex of ::HW_RENDER_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
+/// arrays are separate; 0 for NULL. The byte stride of `glVertexAttribPointer` is this times
+/// `sizeof(float)`; normals start at float 3 and uvs at float 6.
+///
+/// # Safety
+/// `buffers` must be NULL or live.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_stride(buffers: *const hw_render_buffers) -> usize {
+    // SAFETY: forwarded from the caller.
+    guard_value(0, || {
+        Ok(match unsafe { contents_ref(buffers) }? {
+            Contents::Mesh(buffers) if !buffers.surface.interleaved.is_empty() => {
+                buffers.surface.stride
+            }
+            _ => 0,
+        })
+    })
+}
+
+/// The box around the vertices, to frame a camera: `out_min` and `out_max` receive x y z each.
+/// With no vertex, min is +infinity and max -infinity.
+///
+/// # Safety
+/// `buffers` must be NULL or live; `out_min` and `out_max` NULL or 3 writable floats each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_bounds(
+    buffers: *const hw_render_buffers,
+    out_min: *mut f32,
+    out_max: *mut f32,
+) -> hw_status {
+    guard(|| {
+        let (out_min, out_max) = (
+            Out::new(out_min.cast::<[f32; 3]>(), "out_min")?,
+            Out::new(out_max.cast::<[f32; 3]>(), "out_max")?,
+        );
+        // SAFETY: forwarded from the caller.
+        let bounds: Bounds = match unsafe { contents_ref(buffers) }? {
+            Contents::Mesh(buffers) => buffers.surface.bounds,
+            Contents::Polygons(polygons) => polygons.bounds,
+        };
+        // SAFETY: checked non-NULL; 3 writable floats per the caller (alignment of f32).
+        unsafe {
+            out_min.write(bounds.min);
+            out_max.write(bounds.max);
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,37 @@
+//! Why render buffers could not be built.
+
+use thiserror::Error;
+
+use super::TriangulateError;
+
+/// A refused render-buffer request; every variant names the offending input.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum RenderError {
+    /// A per-corner attribute array does not have one entry per half-edge slot.
+    #[error("{what}: {got} entries given, the mesh has {expected} half-edge slots")]
+    CornerAttributeLength {
+        /// Which attribute.
+        what: &'static str,
+        /// Half-edge slots of the mesh.
+        expected: usize,
+        /// Entries given.
+        got: usize,
+    },
+    /// The crease angle is NaN, infinite or negative.
+    #[error("crease angle {0} is not a finite angle of at least 0 radians")]
+    BadCreaseAngle(f64),
+    /// The normal glyph length is NaN, infinite, zero or negative.
+    #[error("normal glyph length {0} is not a positive finite length")]
+    BadGlyphLength(f64),
+    /// A diagnostic names a vertex the mesh does not have: it belongs to another mesh.
+    #[error("the diagnostic names vertex {vertex} but the mesh has {vertices} vertex slots")]
+    DiagnosticMismatch {
+        /// The vertex named.
+        vertex: u32,
+        /// Vertex slots of the mesh.
+        vertices: usize,
+    },
+    /// The polygons could not be triangulated (sizes or indices do not fit).
+    #[error(transparent)]
+    Polygons(#[from] TriangulateError),
+}
