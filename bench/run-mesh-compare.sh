@@ -4,8 +4,8 @@
 #
 #   bench/run-mesh-compare.sh [mesh_compare options] [model files...]
 #
-# Options go to mesh_compare (--quick, --warm, --repeats N). Model files given on the command line
-# replace the default real models. The build directory is build-bench/ (override with
+# Options go to mesh_compare (--quick, --warm, --repeats N, --only GENERATED-MODEL). Model files
+# given on the command line replace the default real models (--only alone runs no real model). The build directory is build-bench/ (override with
 # HALFWING_BENCH_BUILD_DIR).
 set -euo pipefail
 
@@ -21,12 +21,14 @@ options=()
 models=()
 while (($#)); do
   case "$1" in
-    --repeats) options+=("$1" "$2"); shift 2 ;;
+    --repeats | --only) options+=("$1" "$2"); shift 2 ;;
     -*) options+=("$1"); shift ;;
     *) models+=("$1"); shift ;;
   esac
 done
-if ((${#models[@]} == 0)); then
+only_generated=0
+for option in "${options[@]}"; do [[ "$option" == --only ]] && only_generated=1; done
+if ((${#models[@]} == 0 && !only_generated)); then
   # The largest closed and open real models (all manifold, so every library builds them).
   for model in closed/igl_armadillo.obj closed/c3d_nefertiti.obj closed/luke_dragon.obj \
     open/c3d_stanford-bunny.obj; do

@@ -8,7 +8,10 @@
 //! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
 //!    (walking the fan only at vertices with several boundary gaps).
 
+use std::borrow::Cow;
+
 use crate::geom::is_degenerate_polygon;
+use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, resolve};
 
 use super::Mesh;
@@ -32,7 +35,10 @@ impl Mesh {
         let mut mesh = Mesh::from_pairing(
             &resolved.table,
             resolved.pairing.partner,
-            resolved.positions.into_owned(),
+            match resolved.positions {
+                Cow::Borrowed(input) => large_arrays::copied(input),
+                Cow::Owned(repaired) => repaired,
+            },
         );
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
@@ -71,12 +77,12 @@ impl Mesh {
 
         // Pass 2: face loops. Zeroed allocations are cheap; every slot gets written below.
         let n_halfedges = 2 * n_edges as usize;
-        let mut origin = vec![0u32; n_halfedges];
-        let mut next = vec![0u32; n_halfedges];
-        let mut prev = vec![0u32; n_halfedges];
-        let mut face = vec![0u32; n_halfedges];
-        let mut vertex_halfedge = vec![INVALID_INDEX; positions.len()];
-        let mut face_halfedge = vec![0u32; table.n_faces()];
+        let mut origin = zeroed(n_halfedges);
+        let mut next = zeroed(n_halfedges);
+        let mut prev = zeroed(n_halfedges);
+        let mut face = zeroed(n_halfedges);
+        let mut vertex_halfedge = filled(positions.len(), INVALID_INDEX);
+        let mut face_halfedge = zeroed(table.n_faces());
         let mut boundary = Vec::with_capacity(boundary_corners.len());
         let mut next_boundary = boundary_corners.iter().copied().peekable();
         for (f, first_corner) in face_halfedge.iter_mut().enumerate() {

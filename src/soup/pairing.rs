@@ -8,6 +8,7 @@
 //! OpenMesh's and CGAL's `add_face` do.
 
 use super::FaceTable;
+use crate::large_arrays::{filled, zeroed};
 
 /// `partner` value of a corner whose edge no other face uses.
 pub const BOUNDARY: u32 = u32::MAX;
@@ -68,7 +69,7 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
         bucket_start[v + 1] += bucket_start[v];
     }
     // Entry = larger vertex in the high half, corner in the low half.
-    let mut entries = vec![0u64; bucket_start[n_vertices] as usize];
+    let mut entries = zeroed::<u64>(bucket_start[n_vertices] as usize);
     let mut problem_keys: Vec<u64> = Vec::new();
     {
         let mut cursor = bucket_start[..n_vertices].to_vec();
@@ -86,7 +87,7 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
         });
     }
 
-    let mut partner = vec![BOUNDARY; n_corners];
+    let mut partner = filled(n_corners, BOUNDARY);
     let mut unmatched_backward: Vec<(u64, u32)> = Vec::new();
     table.for_each_corner_edge(|_, c, n| {
         let (a, b) = (corners[c], corners[n]);
