@@ -7,7 +7,7 @@
 //! taken, the arrays are ordinary `Vec`s and nothing changes but speed.
 
 /// Arrays smaller than this are not worth a system call (and rarely span a whole huge page).
-const ADVICE_THRESHOLD_BYTES: usize = 4 << 20;
+const ADVICE_THRESHOLD_BYTES: usize = 2 << 20;
 
 /// `len` zeros, for arrays every slot of which is written later. For integers the standard
 /// library takes zeroed memory from the allocator (`calloc`), so fresh pages are not written

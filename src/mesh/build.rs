@@ -8,8 +8,6 @@
 //! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
 //!    (walking the fan only at vertices with several boundary gaps).
 
-use std::borrow::Cow;
-
 use crate::geom::is_degenerate_polygon;
 use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, resolve};
@@ -32,19 +30,21 @@ impl Mesh {
     ) -> Result<(Mesh, Diagnostic), BuildError> {
         let resolved = resolve(list, policy)?;
         let mut diagnostic = resolved.diagnostic;
-        let mut mesh = Mesh::from_pairing(
-            &resolved.table,
-            resolved.pairing.partner,
-            match resolved.positions {
-                Cow::Borrowed(input) => large_arrays::copied(input),
-                Cow::Owned(repaired) => repaired,
-            },
+        let (table, partner) = (&resolved.table, resolved.pairing.partner);
+        let positions = &resolved.positions;
+        // The geometric check reads only the table and the positions: with two threads it runs
+        // beside the connectivity passes. (Repaired positions are copied rather than moved so
+        // both sides can read them; repair is the rare path.)
+        let (mut mesh, degenerate) = join(
+            || Mesh::from_pairing(table, partner, large_arrays::copied(positions)),
+            || degenerate_faces(table, positions),
         );
+        drop(resolved.positions);
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         diagnostic.isolated_vertices = mesh.isolated_vertices();
-        diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &mesh.positions);
+        diagnostic.degenerate_faces = degenerate;
         Ok((mesh, diagnostic))
     }
 
@@ -171,12 +171,25 @@ impl Mesh {
     }
 }
 
+/// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
+fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::join(a, b)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (a(), b())
+    }
+}
+
 /// Input indices of the faces whose area is negligible (non-finite positions are not degenerate
 /// but non-finite, reported apart).
 fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u32> {
-    let is_degenerate = |f: usize| {
-        let points = table.face(f).iter().map(|&v| positions[v as usize]);
-        is_degenerate_polygon(points)
+    let is_degenerate = |f: usize| match *table.face(f) {
+        // Fixed-size corners for the common triangle: the same arithmetic, unrolled.
+        [a, b, c] => is_degenerate_polygon([a, b, c].map(|v| positions[v as usize])),
+        ref face => is_degenerate_polygon(face.iter().map(|&v| positions[v as usize])),
     };
     #[cfg(feature = "parallel")]
     {

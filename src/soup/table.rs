@@ -61,6 +61,18 @@ impl<'a> FaceTable<'a> {
                     }
                 }
             }
+            // Per-face sizes that are all equal (a triangle or quad mesh through the C API)
+            // need no offset array either: face ranges become arithmetic.
+            FaceSizes::PerFace(&[size, ref rest @ ..])
+                if size > 0
+                    && u64::from(size) * (rest.len() as u64 + 1) == n_corners
+                    && rest.iter().all(|&s| s == size) =>
+            {
+                Layout::Uniform {
+                    size,
+                    n_faces: rest.len() + 1,
+                }
+            }
             FaceSizes::PerFace(sizes) => {
                 let mut offsets = Vec::with_capacity(sizes.len() + 1);
                 let mut total: u64 = 0;
