@@ -300,11 +300,14 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-/// `v / |v|`, or zero when `v` is zero or not finite.
+/// `v / |v|`, or zero when `v` is zero or not finite. One division and three products (within
+/// an ulp of three divisions): this runs once per face and once per vertex in every normal pass.
 fn normalized(v: [f64; 3]) -> [f64; 3] {
     let length = dot(v, v).sqrt();
-    if length > 0.0 && length.is_finite() {
-        [v[0] / length, v[1] / length, v[2] / length]
+    // Also false for NaN.
+    if length > 0.0 && length < f64::INFINITY {
+        let inverse = 1.0 / length;
+        [v[0] * inverse, v[1] * inverse, v[2] * inverse]
     } else {
         [0.0; 3]
     }
