@@ -206,6 +206,17 @@ impl<'a> FaceTable<'a> {
     /// from `corners[c]` to `corners[next_corner]`.
     #[inline]
     pub fn for_each_corner_edge(&self, mut visit: impl FnMut(usize, usize, usize)) {
+        // Triangle lists (the usual input) get a loop with the face size known at compile time:
+        // every pairing pass runs through here.
+        if let Layout::Uniform { size: 3, n_faces } = self.layout {
+            for f in 0..n_faces {
+                let first = 3 * f;
+                visit(f, first, first + 1);
+                visit(f, first + 1, first + 2);
+                visit(f, first + 2, first);
+            }
+            return;
+        }
         for f in 0..self.n_faces() {
             let range = self.face_range(f);
             if range.is_empty() {
