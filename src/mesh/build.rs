@@ -8,6 +8,8 @@
 //! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
 //!    (walking the fan only at vertices with several boundary gaps).
 
+use std::borrow::Cow;
+
 use crate::geom::is_degenerate_polygon;
 use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, resolve};
@@ -28,18 +30,33 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        let resolved = resolve(list, policy)?;
+        // The mesh's copy of the input positions needs nothing from the checks and the pairing:
+        // with two threads it is made beside them. Repair, the rare path that adds positions,
+        // brings its own array and the copy goes unused.
+        let (resolved, input_positions) = join(
+            || resolve(list, policy),
+            || large_arrays::copied(list.positions),
+        );
+        let resolved = resolved?;
         let mut diagnostic = resolved.diagnostic;
         let (table, partner) = (&resolved.table, resolved.pairing.partner);
-        let positions = &resolved.positions;
+        // Positions the degenerate-face check reads while the mesh takes its own array.
+        let repaired_positions;
+        let (positions, mesh_positions): (&[[f64; 3]], _) = match resolved.positions {
+            Cow::Borrowed(input) => (input, input_positions),
+            Cow::Owned(repaired) => {
+                drop(input_positions);
+                repaired_positions = repaired;
+                let copy = large_arrays::copied(&repaired_positions);
+                (&repaired_positions, copy)
+            }
+        };
         // The geometric check reads only the table and the positions: with two threads it runs
-        // beside the connectivity passes. (Repaired positions are copied rather than moved so
-        // both sides can read them; repair is the rare path.)
+        // beside the connectivity passes.
         let (mut mesh, degenerate) = join(
-            || Mesh::from_pairing(table, partner, large_arrays::copied(positions)),
+            || Mesh::from_pairing(table, partner, mesh_positions),
             || degenerate_faces(table, positions),
         );
-        drop(resolved.positions);
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
