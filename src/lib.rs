@@ -16,5 +16,7 @@ pub mod winged;
 
 pub mod ffi;
 
+mod large_arrays;
+
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -8,6 +8,9 @@
 //! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
 //!    (walking the fan only at vertices with several boundary gaps).
 
+use std::borrow::Cow;
+
+use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{
     BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, degenerate_faces, resolve,
 };
@@ -28,18 +31,38 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        let resolved = resolve(list, policy)?;
+        // The mesh's copy of the input positions needs nothing from the checks and the pairing:
+        // with two threads it is made beside them. Repair, the rare path that adds positions,
+        // brings its own array and the copy goes unused.
+        let (resolved, input_positions) = join(
+            || resolve(list, policy),
+            || large_arrays::copied(list.positions),
+        );
+        let resolved = resolved?;
         let mut diagnostic = resolved.diagnostic;
-        let mut mesh = Mesh::from_pairing(
-            &resolved.table,
-            resolved.pairing.partner,
-            resolved.positions.into_owned(),
+        let (table, partner) = (&resolved.table, resolved.pairing.partner);
+        // Positions the degenerate-face check reads while the mesh takes its own array.
+        let repaired_positions;
+        let (positions, mesh_positions): (&[[f64; 3]], _) = match resolved.positions {
+            Cow::Borrowed(input) => (input, input_positions),
+            Cow::Owned(repaired) => {
+                drop(input_positions);
+                repaired_positions = repaired;
+                let copy = large_arrays::copied(&repaired_positions);
+                (&repaired_positions, copy)
+            }
+        };
+        // The geometric check reads only the table and the positions: with two threads it runs
+        // beside the connectivity passes.
+        let (mut mesh, degenerate) = join(
+            || Mesh::from_pairing(table, partner, mesh_positions),
+            || degenerate_faces(table, positions),
         );
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         diagnostic.isolated_vertices = mesh.isolated_vertices();
-        diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &mesh.positions);
+        diagnostic.degenerate_faces = degenerate;
         Ok((mesh, diagnostic))
     }
 
@@ -72,12 +95,12 @@ impl Mesh {
 
         // Pass 2: face loops. Zeroed allocations are cheap; every slot gets written below.
         let n_halfedges = 2 * n_edges as usize;
-        let mut origin = vec![0u32; n_halfedges];
-        let mut next = vec![0u32; n_halfedges];
-        let mut prev = vec![0u32; n_halfedges];
-        let mut face = vec![0u32; n_halfedges];
-        let mut vertex_halfedge = vec![INVALID_INDEX; positions.len()];
-        let mut face_halfedge = vec![0u32; table.n_faces()];
+        let mut origin = zeroed(n_halfedges);
+        let mut next = zeroed(n_halfedges);
+        let mut prev = zeroed(n_halfedges);
+        let mut face = zeroed(n_halfedges);
+        let mut vertex_halfedge = filled(positions.len(), INVALID_INDEX);
+        let mut face_halfedge = zeroed(table.n_faces());
         let mut boundary = Vec::with_capacity(boundary_corners.len());
         let mut next_boundary = boundary_corners.iter().copied().peekable();
         for (f, first_corner) in face_halfedge.iter_mut().enumerate() {
@@ -164,6 +187,18 @@ impl Mesh {
             h = rotated;
         }
         unreachable!("a fan opened by a boundary half-edge is closed by one")
+    }
+}
+
+/// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
+fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::join(a, b)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (a(), b())
     }
 }
 

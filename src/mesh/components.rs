@@ -1,7 +1,7 @@
 //! Connected components: faces reachable from each other across shared edges.
 
 use super::Mesh;
-use super::ids::{FaceId, INVALID_INDEX};
+use super::ids::{EdgeId, FaceId, INVALID_INDEX};
 
 /// The faces of a mesh split into edge-connected components.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -17,33 +17,71 @@ impl Mesh {
     /// Splits the faces into components connected across edges (as CGAL's
     /// `connected_components` and OpenMesh's do). Two fans that only touch at a non-manifold
     /// vertex are separate components; isolated vertices belong to none.
+    ///
+    /// Union-find over the faces, in one sequential pass over the edges (each edge joins the
+    /// faces of its two half-edges), instead of a search that hops from face to face: every
+    /// array is read in order except the forest itself. Roots are always the smallest face of
+    /// their set, so the forest turns into the component numbering in place, in one more pass.
     pub fn connected_components(&self) -> Components {
         let n_faces = self.face_capacity();
-        let mut face_component = vec![INVALID_INDEX; n_faces];
-        let mut stack = Vec::new();
-        let mut count = 0u32;
-        for seed in 0..n_faces {
-            if face_component[seed] != INVALID_INDEX || self.is_face_deleted(FaceId(seed as u32)) {
+        // parent[f] <= f; a root is its own parent.
+        let mut parent: Vec<u32> = (0..n_faces as u32).collect();
+        let check_deleted = self.has_deleted_elements();
+        for (e, faces) in self.face.chunks_exact(2).enumerate() {
+            let (a, b) = (faces[0], faces[1]);
+            if a == INVALID_INDEX
+                || b == INVALID_INDEX
+                || (check_deleted
+                    && (self.is_edge_deleted(EdgeId(e as u32))
+                        || self.is_face_deleted(FaceId(a))
+                        || self.is_face_deleted(FaceId(b))))
+            {
                 continue;
             }
-            face_component[seed] = count;
-            stack.push(seed as u32);
-            while let Some(f) = stack.pop() {
-                // The face loop is bounded, so a corrupt mesh cannot trap this search.
-                for h in self.face_loop(FaceId(f)) {
-                    let across = self.face[h.twin().idx()];
-                    if across != INVALID_INDEX && face_component[across as usize] == INVALID_INDEX {
-                        face_component[across as usize] = count;
-                        stack.push(across);
-                    }
-                }
+            union_towards_smaller(&mut parent, a, b);
+        }
+        // Ascending, every parent is smaller than its child, so it holds its component already.
+        let mut count = 0u32;
+        for f in 0..n_faces {
+            if check_deleted && self.is_face_deleted(FaceId(f as u32)) {
+                parent[f] = INVALID_INDEX;
+            } else if parent[f] as usize == f {
+                parent[f] = count;
+                count += 1;
+            } else {
+                parent[f] = parent[parent[f] as usize];
             }
-            count += 1;
         }
         Components {
             count: count as usize,
-            face_component,
+            face_component: parent,
         }
+    }
+}
+
+/// The root of `f`, halving the path on the way (each visited node skips to its grandparent).
+#[inline]
+fn find_root(parent: &mut [u32], mut f: u32) -> u32 {
+    loop {
+        let p = parent[f as usize];
+        if p == f {
+            return f;
+        }
+        let grandparent = parent[p as usize];
+        parent[f as usize] = grandparent;
+        f = grandparent;
+    }
+}
+
+/// Joins the sets of `a` and `b` under the smaller of their roots, which keeps every parent
+/// below its child.
+#[inline]
+fn union_towards_smaller(parent: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find_root(parent, a), find_root(parent, b));
+    if ra < rb {
+        parent[rb as usize] = ra;
+    } else if rb < ra {
+        parent[ra as usize] = rb;
     }
 }
 

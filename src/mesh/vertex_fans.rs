@@ -21,12 +21,25 @@ impl Mesh {
     /// vertex's half-edge add up to all live half-edges, no vertex has a second fan. Only
     /// otherwise are per-vertex out-degrees counted.
     pub fn non_manifold_vertices(&self) -> Vec<VertexId> {
+        // The fan walk on the raw arrays (`h = twin(prev(h))`): this runs after every build, over
+        // every half-edge. Bounded by the half-edge count, like the circulators.
+        let (prev, vertex_halfedge) = (&self.prev, &self.vertex_halfedge);
+        let max_steps = self.halfedge_capacity();
+        let check_deleted = self.has_deleted_elements();
         let fan_size = |v: usize| -> usize {
-            let h = self.vertex_halfedge[v];
-            if h == INVALID_INDEX || self.is_vertex_deleted(VertexId(v as u32)) {
-                0
-            } else {
-                self.outgoing_halfedges(VertexId(v as u32)).count()
+            let start = vertex_halfedge[v];
+            if start == INVALID_INDEX
+                || (check_deleted && self.is_vertex_deleted(VertexId(v as u32)))
+            {
+                return 0;
+            }
+            let (mut h, mut steps) = (start, 0);
+            loop {
+                steps += 1;
+                h = prev[h as usize] ^ 1;
+                if h == start || steps >= max_steps {
+                    return steps;
+                }
             }
         };
         #[cfg(feature = "parallel")]

@@ -8,6 +8,7 @@
 //! OpenMesh's and CGAL's `add_face` do.
 
 use super::FaceTable;
+use crate::large_arrays::{filled, zeroed};
 
 /// `partner` value of a corner whose edge no other face uses.
 pub const BOUNDARY: u32 = u32::MAX;
@@ -68,7 +69,7 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
         bucket_start[v + 1] += bucket_start[v];
     }
     // Entry = larger vertex in the high half, corner in the low half.
-    let mut entries = vec![0u64; bucket_start[n_vertices] as usize];
+    let mut entries = zeroed::<u64>(bucket_start[n_vertices] as usize);
     let mut problem_keys: Vec<u64> = Vec::new();
     {
         let mut cursor = bucket_start[..n_vertices].to_vec();
@@ -86,17 +87,22 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
         });
     }
 
-    let mut partner = vec![BOUNDARY; n_corners];
+    // A forward entry that a backward edge has taken is marked in the entry itself (corner ids
+    // are below 2^31, so bit 31 is free): the bucket is in cache already, while `partner` of the
+    // forward corner may be anywhere in memory.
+    const MATCHED: u64 = 1 << 31;
+    let mut partner = filled(n_corners, BOUNDARY);
     let mut unmatched_backward: Vec<(u64, u32)> = Vec::new();
     table.for_each_corner_edge(|_, c, n| {
         let (a, b) = (corners[c], corners[n]);
         if a > b {
-            let bucket =
-                &entries[bucket_start[b as usize] as usize..bucket_start[b as usize + 1] as usize];
-            match bucket.iter().find(|&&entry| (entry >> 32) as u32 == a) {
-                Some(&entry) => {
-                    let forward = (entry & u64::from(u32::MAX)) as usize;
-                    if partner[forward] == BOUNDARY {
+            let bucket = &mut entries
+                [bucket_start[b as usize] as usize..bucket_start[b as usize + 1] as usize];
+            match bucket.iter_mut().find(|entry| (**entry >> 32) as u32 == a) {
+                Some(entry) => {
+                    if *entry & MATCHED == 0 {
+                        let forward = (*entry & u64::from(u32::MAX)) as usize;
+                        *entry |= MATCHED;
                         partner[forward] = c as u32;
                         partner[c] = forward as u32;
                     } else {

@@ -61,6 +61,18 @@ impl<'a> FaceTable<'a> {
                     }
                 }
             }
+            // Per-face sizes that are all equal (a triangle or quad mesh through the C API)
+            // need no offset array either: face ranges become arithmetic.
+            FaceSizes::PerFace(&[size, ref rest @ ..])
+                if size > 0
+                    && u64::from(size) * (rest.len() as u64 + 1) == n_corners
+                    && rest.iter().all(|&s| s == size) =>
+            {
+                Layout::Uniform {
+                    size,
+                    n_faces: rest.len() + 1,
+                }
+            }
             FaceSizes::PerFace(sizes) => {
                 let mut offsets = Vec::with_capacity(sizes.len() + 1);
                 let mut total: u64 = 0;
@@ -194,6 +206,17 @@ impl<'a> FaceTable<'a> {
     /// from `corners[c]` to `corners[next_corner]`.
     #[inline]
     pub fn for_each_corner_edge(&self, mut visit: impl FnMut(usize, usize, usize)) {
+        // Triangle lists (the usual input) get a loop with the face size known at compile time:
+        // every pairing pass runs through here.
+        if let Layout::Uniform { size: 3, n_faces } = self.layout {
+            for f in 0..n_faces {
+                let first = 3 * f;
+                visit(f, first, first + 1);
+                visit(f, first + 1, first + 2);
+                visit(f, first + 2, first);
+            }
+            return;
+        }
         for f in 0..self.n_faces() {
             let range = self.face_range(f);
             if range.is_empty() {

@@ -1,0 +1,106 @@
+// Benchmark inputs: large indexed meshes generated deterministically on the fly (never committed),
+// and real models read through halfwing's own reader.
+#ifndef HALFWING_BENCH_MODELS_HPP
+#define HALFWING_BENCH_MODELS_HPP
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "halfwing.hpp"
+
+namespace bench {
+
+/// An indexed polygon list: x, y, z per vertex; corners per face; vertex index per corner.
+struct IndexedMesh {
+  std::string name;
+  std::vector<double> positions;
+  std::vector<uint32_t> face_sizes;
+  std::vector<uint32_t> indices;
+  std::size_t n_vertices() const { return positions.size() / 3; }
+  std::size_t n_faces() const { return face_sizes.size(); }
+  bool all_triangles() const {
+    for (uint32_t size : face_sizes)
+      if (size != 3) return false;
+    return true;
+  }
+};
+
+/// A torus of `rings x segments` quads, each split into two triangles when `triangles`:
+/// closed, genus 1.
+inline IndexedMesh torus(uint32_t rings, uint32_t segments, bool triangles) {
+  IndexedMesh m;
+  m.name = triangles ? "torus-tri" : "torus-quad";
+  const double pi = 3.14159265358979323846, big = 1.0, small = 0.35;
+  m.positions.reserve(3 * std::size_t(rings) * segments);
+  for (uint32_t i = 0; i < rings; ++i) {
+    const double u = 2 * pi * i / rings;
+    for (uint32_t j = 0; j < segments; ++j) {
+      const double v = 2 * pi * j / segments;
+      m.positions.insert(m.positions.end(), {(big + small * std::cos(v)) * std::cos(u),
+                                             (big + small * std::cos(v)) * std::sin(u),
+                                             small * std::sin(v)});
+    }
+  }
+  auto at = [&](uint32_t i, uint32_t j) { return (i % rings) * segments + (j % segments); };
+  for (uint32_t i = 0; i < rings; ++i) {
+    for (uint32_t j = 0; j < segments; ++j) {
+      // (i, j) -> (i + 1, j) -> (i + 1, j + 1) -> (i, j + 1) runs counter-clockwise seen from
+      // outside: u (around the axis) x v (around the tube) points out of the tube.
+      const uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if (triangles) {
+        m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+        m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+      } else {
+        m.face_sizes.push_back(4);
+        m.indices.insert(m.indices.end(), {a, b, c, d});
+      }
+    }
+  }
+  return m;
+}
+
+/// An open `n x n` grid of quads split into triangles, gently curved: one boundary loop.
+inline IndexedMesh open_grid(uint32_t n) {
+  IndexedMesh m;
+  m.name = "grid-tri";
+  for (uint32_t i = 0; i <= n; ++i)
+    for (uint32_t j = 0; j <= n; ++j) {
+      const double x = double(i) / n, y = double(j) / n;
+      m.positions.insert(m.positions.end(), {x, y, 0.1 * std::sin(6 * x) * std::cos(5 * y)});
+    }
+  auto at = [&](uint32_t i, uint32_t j) { return i * (n + 1) + j; };
+  for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t j = 0; j < n; ++j) {
+      const uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  return m;
+}
+
+/// A model file (OBJ, OFF, PLY) read with hw_soup_read(), named by its file name.
+inline IndexedMesh read_file(const std::string& path) {
+  hw_soup* soup = nullptr;
+  hw::check(hw_soup_read(path.c_str(), &soup));
+  const double* positions = nullptr;
+  const uint32_t *sizes = nullptr, *indices = nullptr;
+  std::size_t n_vertices = 0, n_faces = 0, n_indices = 0;
+  const hw_status viewed =
+      hw_soup_view(soup, &positions, &n_vertices, &sizes, &n_faces, &indices, &n_indices);
+  IndexedMesh m;
+  if (viewed == HW_OK) {
+    m.name = path.substr(path.find_last_of('/') + 1);
+    m.positions.assign(positions, positions + 3 * n_vertices);
+    m.face_sizes.assign(sizes, sizes + n_faces);
+    m.indices.assign(indices, indices + n_indices);
+  }
+  hw_soup_free(soup);
+  hw::check(viewed);
+  return m;
+}
+
+}  // namespace bench
+
+#endif

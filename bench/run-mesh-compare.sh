@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds the side-by-side benchmark (halfwing vs OpenMesh vs CGAL) in Release and runs it on the
+# generated ~1M-face models and the largest clean real models of ../shared/data/meshes.
+#
+#   bench/run-mesh-compare.sh [mesh_compare options] [model files...]
+#
+# Options go to mesh_compare (--quick, --warm, --repeats N, --only GENERATED-MODEL). Model files
+# given on the command line replace the default real models (--only alone runs no real model). The build directory is build-bench/ (override with
+# HALFWING_BENCH_BUILD_DIR).
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${HALFWING_BENCH_BUILD_DIR:-$root/build-bench}"
+data="$root/../shared/data/meshes"
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_BUILD_BENCHMARKS=ON \
+  -DHALFWING_BUILD_TESTS=OFF -DHALFWING_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$build" --target mesh_compare -j 2 >/dev/null
+
+options=()
+models=()
+while (($#)); do
+  case "$1" in
+    --repeats | --only) options+=("$1" "$2"); shift 2 ;;
+    -*) options+=("$1"); shift ;;
+    *) models+=("$1"); shift ;;
+  esac
+done
+only_generated=0
+for option in "${options[@]}"; do [[ "$option" == --only ]] && only_generated=1; done
+if ((${#models[@]} == 0 && !only_generated)); then
+  # The largest closed and open real models (all manifold, so every library builds them).
+  for model in closed/igl_armadillo.obj closed/c3d_nefertiti.obj closed/luke_dragon.obj \
+    open/c3d_stanford-bunny.obj; do
+    [[ -f "$data/$model" ]] && models+=("$data/$model")
+  done
+fi
+
+echo "machine: $(nproc) cores; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+"$build/bench/mesh_compare" "${options[@]}" "${models[@]}"
