@@ -15,6 +15,7 @@ mod pairing;
 mod policy;
 mod resolve;
 mod table;
+mod umbrellas;
 
 pub use degenerate::degenerate_faces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};

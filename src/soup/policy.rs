@@ -22,9 +22,11 @@ pub enum BuildPolicy {
     Skip,
     /// Keep every face: a vertex named twice in one face loses its consecutive repeats and gets a
     /// copy for a non-consecutive one; faces are reversed where that makes their neighbours agree
-    /// (listed in [`Diagnostic::reoriented_faces`]); faces that still cannot share a non-manifold or inconsistently
-    /// oriented edge get copies of that edge's vertices (recorded in
-    /// [`Diagnostic::vertex_copies`]), which cuts the surface there. Faces with an out-of-range
+    /// (listed in [`Diagnostic::reoriented_faces`]); then the surface is cut along the edges that
+    /// are still non-manifold or inconsistently oriented, and every fan of faces around their
+    /// endpoints gets a vertex of its own (as CGAL's polygon-soup orientation does: two cubes
+    /// sharing an edge become two closed cubes); faces that still cannot share an edge get copies
+    /// of its endpoints. Copies are recorded in [`Diagnostic::vertex_copies`]. Faces with an out-of-range
     /// index or fewer than 3 distinct corners cannot be kept, so the build fails instead of
     /// dropping them.
     Repair,

@@ -8,6 +8,7 @@ use std::collections::HashMap;
 use super::orient::{faces_to_flip, flip_faces};
 use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
 use super::table::{MAX_VERTICES, non_finite_vertices};
+use super::umbrellas::split_umbrellas;
 use super::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, FaceTable, ListProblem};
 
 /// Rounds of "copy the endpoints of the refused faces' edges" before repair gives each still
@@ -114,6 +115,9 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                     flip_faces(&mut table, &flips);
                     pairing = pair_edges(&table, copies.n_vertices());
                 }
+                if split_umbrellas(&mut table, &pairing, &mut copies)? {
+                    pairing = pair_edges(&table, copies.n_vertices());
+                }
                 pairing = repair_edges(&mut table, pairing, &mut copies)?;
             }
         }
@@ -142,7 +146,7 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
 }
 
 /// Vertices added by repair, each remembering the input vertex it copies.
-struct VertexCopies {
+pub(super) struct VertexCopies {
     n_input: usize,
     copied_from: Vec<u32>,
 }
@@ -155,12 +159,12 @@ impl VertexCopies {
         }
     }
 
-    fn n_vertices(&self) -> usize {
+    pub(super) fn n_vertices(&self) -> usize {
         self.n_input + self.copied_from.len()
     }
 
     /// A new vertex at the position of `vertex` (an input vertex or an earlier copy).
-    fn copy(&mut self, vertex: u32) -> Result<u32, BuildError> {
+    pub(super) fn copy(&mut self, vertex: u32) -> Result<u32, BuildError> {
         let id = self.n_vertices() as u64;
         if id > MAX_VERTICES {
             let diagnostic = Diagnostic {
