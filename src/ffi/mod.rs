@@ -28,6 +28,10 @@ pub mod threads;
 pub mod topology;
 pub mod version;
 pub mod views;
+pub mod voronoi;
+pub mod voronoi_cells;
+pub mod voronoi_images;
+pub mod voronoi_lloyd;
 
 pub use attributes::*;
 pub use circulator::*;
@@ -45,3 +49,7 @@ pub use threads::*;
 pub use topology::*;
 pub use version::*;
 pub use views::*;
+pub use voronoi::*;
+pub use voronoi_cells::*;
+pub use voronoi_images::*;
+pub use voronoi_lloyd::*;
