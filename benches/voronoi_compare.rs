@@ -4,7 +4,8 @@
 //!
 //! Prints one `RESULT <input> <library> <stage> <milliseconds>` line per measurement (best of
 //! several runs) for `bench/run-voronoi-compare.sh`, which adds CGAL's times measured on the same
-//! generated inputs and prints the table. Run alone: `cargo bench --bench voronoi_compare`.
+//! generated inputs and prints the table. Run alone: `cargo bench --bench voronoi_compare
+//! [input-filter]`; `VORONOI_COMPARE_LIBRARIES=halfwing,spade` limits the libraries timed.
 //!
 //! Stages: `delaunay` — the triangulation alone; `voronoi` — every cell as a closed polygon.
 //! halfwing and voronoice clip the cells to the unit square (the grid: its bounding box plus half
@@ -84,6 +85,12 @@ fn walk_spade_faces(t: &DelaunayTriangulation<Point2<f64>>) -> f64 {
 fn main() {
     // `cargo bench` passes `--bench`; a filter argument selects inputs by name.
     let filter: Option<String> = std::env::args().skip(1).find(|a| !a.starts_with("--"));
+    let libraries = std::env::var("VORONOI_COMPARE_LIBRARIES").ok();
+    let wanted = |library: &str| {
+        libraries
+            .as_ref()
+            .is_none_or(|list| list.split(',').any(|l| l == library))
+    };
     let unit = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).expect("unit square");
     let mut inputs: Vec<(String, Vec<[f64; 2]>, ClipPolygon, usize)> = [10_000, 100_000, 1_000_000]
         .iter()
@@ -100,9 +107,8 @@ fn main() {
             continue;
         }
         let runs = *runs;
-        let spade_points = || -> Vec<Point2<f64>> {
-            sites.iter().map(|p| Point2::new(p[0], p[1])).collect()
-        };
+        let spade_points =
+            || -> Vec<Point2<f64>> { sites.iter().map(|p| Point2::new(p[0], p[1])).collect() };
         let delaunator_points: Vec<delaunator::Point> = sites
             .iter()
             .map(|p| delaunator::Point { x: p[0], y: p[1] })
@@ -121,45 +127,54 @@ fn main() {
         };
         let bounding_box = voronoice::BoundingBox::new(centre, max[0] - min[0], max[1] - min[1]);
 
-        let time = guarded(|| best_of(runs, || (), |()| Delaunay::new(sites).expect("finite")));
-        report(name, "halfwing", "delaunay", time);
-        let time = guarded(|| {
-            best_of(
-                runs,
-                || (),
-                |()| Voronoi::new(sites).expect("finite").clip(clip),
-            )
-        });
-        report(name, "halfwing", "voronoi", time);
-
-        let time = guarded(|| {
-            best_of(runs, spade_points, |p| {
-                DelaunayTriangulation::<Point2<f64>>::bulk_load(p).expect("finite")
-            })
-        });
-        report(name, "spade", "delaunay", time);
-        let time = guarded(|| {
-            best_of(runs, spade_points, |p| {
-                let t = DelaunayTriangulation::<Point2<f64>>::bulk_load(p).expect("finite");
-                walk_spade_faces(&t)
-            })
-        });
-        report(name, "spade", "voronoi", time);
-
-        let time = guarded(|| {
-            best_of(runs, || (), |()| delaunator::triangulate(&delaunator_points))
-        });
-        report(name, "delaunator", "delaunay", time);
-
-        let time = guarded(|| {
-            best_of(runs, voronoice_points, |p| {
-                voronoice::VoronoiBuilder::default()
-                    .set_sites(p)
-                    .set_bounding_box(bounding_box.clone())
-                    .build()
-                    .expect("voronoice builds")
-            })
-        });
-        report(name, "voronoice", "voronoi", time);
+        if wanted("halfwing") {
+            let time = guarded(|| best_of(runs, || (), |()| Delaunay::new(sites).expect("finite")));
+            report(name, "halfwing", "delaunay", time);
+            let time = guarded(|| {
+                best_of(
+                    runs,
+                    || (),
+                    |()| Voronoi::new(sites).expect("finite").clip(clip),
+                )
+            });
+            report(name, "halfwing", "voronoi", time);
+        }
+        if wanted("spade") {
+            let time = guarded(|| {
+                best_of(runs, spade_points, |p| {
+                    DelaunayTriangulation::<Point2<f64>>::bulk_load(p).expect("finite")
+                })
+            });
+            report(name, "spade", "delaunay", time);
+            let time = guarded(|| {
+                best_of(runs, spade_points, |p| {
+                    let t = DelaunayTriangulation::<Point2<f64>>::bulk_load(p).expect("finite");
+                    walk_spade_faces(&t)
+                })
+            });
+            report(name, "spade", "voronoi", time);
+        }
+        if wanted("delaunator") {
+            let time = guarded(|| {
+                best_of(
+                    runs,
+                    || (),
+                    |()| delaunator::triangulate(&delaunator_points),
+                )
+            });
+            report(name, "delaunator", "delaunay", time);
+        }
+        if wanted("voronoice") {
+            let time = guarded(|| {
+                best_of(runs, voronoice_points, |p| {
+                    voronoice::VoronoiBuilder::default()
+                        .set_sites(p)
+                        .set_bounding_box(bounding_box.clone())
+                        .build()
+                        .expect("voronoice builds")
+                })
+            });
+            report(name, "voronoice", "voronoi", time);
+        }
     }
 }

@@ -94,6 +94,16 @@ impl Voronoi {
     fn build_planar(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
+        #[cfg(feature = "parallel")]
+        let centres: Vec<[f64; 2]> = {
+            use rayon::prelude::*;
+            (0..n_tri as u32)
+                .into_par_iter()
+                .with_min_len(1 << 14)
+                .map(|t| self.circumcentre(t))
+                .collect()
+        };
+        #[cfg(not(feature = "parallel"))]
         let centres: Vec<[f64; 2]> = (0..n_tri as u32).map(|t| self.circumcentre(t)).collect();
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
         // point is exactly cocircular, and also when their circumcentres round to the same point
@@ -105,11 +115,13 @@ impl Voronoi {
             if t == INVALID || t < e {
                 continue;
             }
-            let merge = centres[(e / 3) as usize] == centres[(t / 3) as usize] || {
-                let base = 3 * (e / 3);
-                let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
-                incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
-            };
+            let (here, there) = (centres[(e / 3) as usize], centres[(t / 3) as usize]);
+            let merge = here == there
+                || (may_be_cocircular(here, there, d.corner_point(e), d.scale) && {
+                    let base = 3 * (e / 3);
+                    let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                    incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
+                });
             if merge {
                 internal[e as usize] = true;
                 internal[t as usize] = true;
@@ -466,6 +478,21 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     } else {
         exact_circumcentre_offset(a, b, c)
     }
+}
+
+/// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres
+/// `here` and `there` and a shared corner (`scaled_corner` in the frame multiplied by `scale`)?
+///
+/// Cocircular triangles have the same exact centre, and [`circumcentre_offset`] places each
+/// within ~1.5e-10 of the radius of it, so centres farther apart than 1e-8 radii (a margin of
+/// about 50, measured in the L1 norm, which never underflows to zero for tiny sites) cannot be;
+/// only the rest go to the exact in-circle test, which decides.
+#[inline]
+fn may_be_cocircular(here: [f64; 2], there: [f64; 2], scaled_corner: [f64; 2], scale: f64) -> bool {
+    let corner = [scaled_corner[0] / scale, scaled_corner[1] / scale];
+    let apart = (here[0] - there[0]).abs() + (here[1] - there[1]).abs();
+    let radius = (here[0] - corner[0]).abs() + (here[1] - corner[1]).abs();
+    apart <= 1e-8 * radius
 }
 
 /// How much cancellation [`circumcentre_offset`] accepts in floating point: about 1e-10 relative
