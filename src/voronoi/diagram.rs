@@ -523,3 +523,36 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     }
     x
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circumcentres_of_flat_triangles_stay_accurate() {
+        // (0, 0), (1, 0), (2, h): the centre is (0.5, (2 + h²) / 2h) exactly; the fast formula
+        // would lose about log10(1/h) digits to cancellation.
+        for h in [1e-3, 1e-9, 1e-12, 3e-15] {
+            let [x, y] = circumcentre_offset([0.0, 0.0], [1.0, 0.0], [2.0, h]);
+            let exact_y = 1.0 / h + 0.5 * h;
+            assert!((x - 0.5).abs() <= 1e-12, "h = {h}: x = {x}");
+            assert!((y - exact_y).abs() <= 1e-12 * exact_y, "h = {h}: y = {y}");
+        }
+        // A corner far from the two others: the numerators cancel instead of the determinant.
+        let [x, y] = circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        assert!(
+            (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
+        );
+    }
+
+    #[test]
+    fn cocircular_filter_never_rejects_equal_centres() {
+        let centre = [0.25, -3.0];
+        assert!(may_be_cocircular(centre, centre, [2.0, 2.0], 2.0));
+        assert!(!may_be_cocircular(centre, [0.26, -3.0], [2.0, 2.0], 2.0));
+        // Tiny magnitudes: the L1 test does not underflow to "apart".
+        let tiny = [1e-300, 2e-300];
+        assert!(may_be_cocircular(tiny, tiny, [0.5, 0.5], 1e300));
+    }
+}
