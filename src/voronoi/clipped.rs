@@ -192,39 +192,26 @@ impl Voronoi {
             self.owner_of(clip.centroid())
         };
         let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
-        // What the cell walk reads, one record per half-edge (one cache line fetch per step):
-        // the next half-edge and the piece oriented along this half-edge.
-        let walk: Vec<[u32; 3]> = map_indexed(self.n_halfedges(), |h| {
-            let p = pieces[h >> 1];
-            let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
-            [self.next[h], a, b]
-        });
-        // Cells in the order of their first half-edge, which follows the (spatially coherent)
-        // triangle order, so that consecutive cells share cache lines.
-        let mut cell_at = vec![INVALID; self.n_halfedges()];
-        for (site, &h) in self.cell_edge.iter().enumerate() {
-            if h != INVALID {
-                cell_at[h as usize] = site as u32;
-            }
-        }
         if owner_of_everything != INVALID {
             ranges[owner_of_everything as usize] = [indices.len() as u32, m as u32];
             indices.extend(0..m as u32);
         }
-        for (start, &s) in cell_at.iter().enumerate() {
-            if s == INVALID || s == owner_of_everything {
+        // Cells in insertion order, which follows the Hilbert curve and so the (spatially
+        // coherent) order of the triangles and half-edges: consecutive cells share cache lines.
+        for &s in &self.delaunay.insertion_order {
+            let start = self.cell_edge[s as usize];
+            if start == INVALID || s == owner_of_everything {
                 continue;
             }
             let first = indices.len() as u32;
             cell_pieces.clear();
-            let start = start as u32;
             let mut h = start;
             loop {
-                let [next, a, b] = walk[h as usize];
-                if a != INVALID {
-                    cell_pieces.push([a, b]);
+                let p = pieces[(h >> 1) as usize];
+                if p[0] != INVALID {
+                    cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
                 }
-                h = next;
+                h = self.next[h as usize];
                 if h == start {
                     break;
                 }
