@@ -4,6 +4,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::parallel::map_indexed;
 use crate::soup::PolygonSoup;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
@@ -95,6 +96,10 @@ impl Builder<'_> {
     }
 }
 
+/// Marks a piece not decided by the parallel pass (never a position index: positions stay
+/// below [`INVALID`] − 1 by the site limit).
+const UNDECIDED: u32 = INVALID - 1;
+
 impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
@@ -107,20 +112,26 @@ impl Voronoi {
         };
         // Voronoi vertices inside (closed test) get a position; the same test decides every edge.
         // Those exactly on the boundary become perimeter points (or the corner they sit on), so
-        // that the walk along the boundary knows where they are.
+        // that the walk along the boundary knows where they are. The test runs in parallel; the
+        // numbering, a prefix count, in one sequential pass.
+        let lowest_edge_function: Vec<f64> = map_indexed(self.vertices.len(), |v| {
+            let p = self.vertices[v];
+            (0..m)
+                .map(|i| clip.edge_function(i, p))
+                .fold(f64::INFINITY, f64::min)
+        });
         let mut vertex_position = vec![INVALID; self.vertices.len()];
         let mut on_boundary = Vec::new();
-        for (v, p) in self.vertices.iter().enumerate() {
-            let lowest = (0..m)
-                .map(|i| clip.edge_function(i, *p))
-                .fold(f64::INFINITY, f64::min);
+        b.positions.reserve(self.vertices.len());
+        for (v, &lowest) in lowest_edge_function.iter().enumerate() {
             if lowest > 0.0 {
                 vertex_position[v] = b.positions.len() as u32;
-                b.positions.push(*p);
+                b.positions.push(self.vertices[v]);
             } else if lowest == 0.0 {
                 on_boundary.push(v);
             }
         }
+        drop(lowest_edge_function);
         b.first_crossing = b.positions.len();
         for &v in &on_boundary {
             let p = self.vertices[v];
@@ -134,14 +145,26 @@ impl Voronoi {
                 b.crossing(i, p)
             };
         }
-        // One clipped piece per undirected edge, oriented like its even half-edge.
+        // One clipped piece per undirected edge, oriented like its even half-edge. Edges with
+        // both ends inside (nearly all) are their own piece and are found in parallel; only the
+        // others, which may add boundary crossings, are clipped one after the other.
         let n_edges = self.n_halfedges() / 2;
-        let mut pieces: Vec<[u32; 2]> = Vec::with_capacity(n_edges);
+        let mut pieces: Vec<[u32; 2]> = map_indexed(n_edges, |k| {
+            let (o, t) = (self.origin[2 * k], self.origin[2 * k + 1]);
+            if o != INVALID && t != INVALID {
+                let (po, pt) = (vertex_position[o as usize], vertex_position[t as usize]);
+                if po != INVALID && pt != INVALID {
+                    return [po, pt];
+                }
+            }
+            [INVALID, UNDECIDED]
+        });
         let mut any_piece = false;
-        for k in 0..n_edges as u32 {
-            let piece = self.clip_edge(2 * k, &vertex_position, &mut b);
+        for (k, piece) in pieces.iter_mut().enumerate() {
+            if piece[1] == UNDECIDED {
+                *piece = self.clip_edge(2 * k as u32, &vertex_position, &mut b);
+            }
             any_piece |= piece[0] != INVALID;
-            pieces.push(piece);
         }
         let n_sites = self.delaunay.n_sites();
         let mut ranges = vec![[0u32, 0u32]; n_sites];
@@ -151,66 +174,89 @@ impl Voronoi {
         } else {
             self.owner_of(clip.centroid())
         };
-        let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
-        // What the cell walk reads, one record per half-edge (one cache line fetch per step):
-        // the next half-edge and the piece oriented along this half-edge.
-        let walk: Vec<[u32; 3]> = (0..self.n_halfedges())
-            .map(|h| {
-                let p = pieces[h >> 1];
-                let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
-                [self.next[h], a, b]
-            })
-            .collect();
-        // Cells in the order of their first half-edge, which follows the (spatially coherent)
-        // triangle order, so that consecutive cells share cache lines.
-        let mut cell_at = vec![INVALID; self.n_halfedges()];
-        for (site, &h) in self.cell_edge.iter().enumerate() {
-            if h != INVALID {
-                cell_at[h as usize] = site as u32;
-            }
-        }
         if owner_of_everything != INVALID {
             ranges[owner_of_everything as usize] = [indices.len() as u32, m as u32];
             indices.extend(0..m as u32);
         }
-        for (start, &s) in cell_at.iter().enumerate() {
-            if s == INVALID || s == owner_of_everything {
-                continue;
-            }
-            let first = indices.len() as u32;
-            cell_pieces.clear();
-            let start = start as u32;
-            let mut h = start;
-            loop {
-                let [next, a, b] = walk[h as usize];
-                if a != INVALID {
-                    cell_pieces.push([a, b]);
-                }
-                h = next;
-                if h == start {
-                    break;
-                }
-            }
-            let count = cell_pieces.len();
-            for (i, &[start, end]) in cell_pieces.iter().enumerate() {
-                indices.push(start);
-                let next_start = cell_pieces[(i + 1) % count][0];
-                // A piece ending on the boundary is followed by the boundary up to where the
-                // next piece starts (nothing when the next piece starts right there).
-                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
-                    && end != next_start
-                {
-                    indices.push(end);
-                    b.corners_between(exit, entry, &mut indices);
+        // Cells in insertion order, which follows the Hilbert curve and so the (spatially
+        // coherent) order of the triangles and half-edges: consecutive cells share cache lines.
+        // Cells are independent once the pieces exist: runs of them are assembled in parallel
+        // into local lists, then concatenated in order.
+        let order = &self.delaunay.insertion_order;
+        let assemble_run = |run: &[u32]| {
+            let mut local = Vec::with_capacity(7 * run.len());
+            let mut spans = Vec::with_capacity(run.len());
+            let mut cell_pieces = Vec::new();
+            for &s in run {
+                let start = self.cell_edge[s as usize];
+                if start != INVALID && s != owner_of_everything {
+                    let first = local.len() as u32;
+                    self.assemble_cell(start, &pieces, &b, &mut cell_pieces, &mut local);
+                    spans.push([s, first, local.len() as u32 - first]);
                 }
             }
-            ranges[s as usize] = [first, indices.len() as u32 - first];
+            (local, spans)
+        };
+        #[cfg(feature = "parallel")]
+        let runs: Vec<(Vec<u32>, Vec<[u32; 3]>)> = {
+            use rayon::prelude::*;
+            order.par_chunks(1 << 15).map(assemble_run).collect()
+        };
+        #[cfg(not(feature = "parallel"))]
+        let runs = vec![assemble_run(order)];
+        for (local, spans) in runs {
+            let offset = indices.len() as u32;
+            indices.extend_from_slice(&local);
+            for [s, first, len] in spans {
+                ranges[s as usize] = [offset + first, len];
+            }
         }
         ClippedCells {
             positions: b.positions,
             ranges,
             indices,
             clip: clip.clone(),
+        }
+    }
+
+    /// Appends to `out` the corners of the cell whose boundary cycle starts at half-edge
+    /// `start`: the clipped pieces of its edges in order and, where a piece ends on the region's
+    /// boundary, the region's corners up to where the next piece starts.
+    fn assemble_cell(
+        &self,
+        start: u32,
+        pieces: &[[u32; 2]],
+        b: &Builder,
+        cell_pieces: &mut Vec<[u32; 2]>,
+        out: &mut Vec<u32>,
+    ) {
+        cell_pieces.clear();
+        let mut h = start;
+        loop {
+            let p = pieces[(h >> 1) as usize];
+            if p[0] != INVALID {
+                cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
+            }
+            h = self.next[h as usize];
+            if h == start {
+                break;
+            }
+        }
+        let Some(&[first_start, _]) = cell_pieces.first() else {
+            return;
+        };
+        for (i, &[start, end]) in cell_pieces.iter().enumerate() {
+            out.push(start);
+            // The next piece's start, without a division per corner for the wrap-around.
+            let next_start = cell_pieces.get(i + 1).map_or(first_start, |p| p[0]);
+            // A piece ending on the boundary is followed by the boundary up to where the next
+            // piece starts (nothing when the next piece starts right there).
+            if end != next_start {
+                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
+                    out.push(end);
+                    b.corners_between(exit, entry, out);
+                }
+            }
         }
     }
 
