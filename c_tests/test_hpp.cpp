@@ -196,6 +196,7 @@ static void winged_kernel() {
   (void)e1;
   (void)e2;
   (void)e3;
+}
 
 static void voronoi_classes() {
   const std::vector<hw::point2> sites = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 2}, {4, 0}};
