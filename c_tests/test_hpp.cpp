@@ -196,6 +196,53 @@ static void winged_kernel() {
   (void)e1;
   (void)e2;
   (void)e3;
+static void voronoi_classes() {
+  const std::vector<hw::point2> sites = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 2}, {4, 0}};
+  const hw::voronoi diagram(sites);
+  CHECK(diagram.n_sites() == 6 && diagram.n_unique_sites() == 5);
+  CHECK(diagram.dimension() == HW_VORONOI_PLANE && diagram.n_triangles() == 4);
+  CHECK(diagram.view(HW_VORONOI_REPRESENTATIVE)[5] == 1);
+  CHECK(diagram.sites().size() == 6 && diagram.vertices().size() == diagram.n_vertices());
+  CHECK(diagram.nearest_site({1.2, 2.1}) == 4 && diagram.neighbours(4).size() == 4);
+  const uint32_t h = diagram.edge_between(0, 4);
+  CHECK(diagram.edge(h).site == 0 && diagram.edge(h).opposite_site == 4);
+  CHECK(diagram.delaunay_mesh().n_faces() == 4);
+
+  const hw::voronoi_cells cells = diagram.clip({-1, -1}, {5, 5});
+  double total = 0;
+  for (uint32_t s = 0; s < cells.size(); ++s) total += cells.area(s);
+  CHECK(std::fabs(total - 36) < 1e-12 && cells.polygon(5).empty());
+  CHECK(cells.polygon_points(4).size() == cells.polygon(4).size());
+  const hw::point2 c = cells.centroid(4);
+  CHECK(c[0] > 0 && c[0] < 4 && c[1] > 0 && c[1] < 4);
+  CHECK(cells.to_mesh().n_faces() == 5 && cells.face_sites().size() == 5);
+  const hw::voronoi_cells diamond = diagram.clip({{2, -1}, {5, 2}, {2, 5}, {-1, 2}});
+  CHECK(diamond.positions().size() >= 4);
+
+  const std::vector<uint32_t> labels = diagram.label_image(HW_METRIC_CHEBYSHEV, {0, 0}, {4, 4}, 8, 8);
+  CHECK(labels.size() == 64 && labels.front() == 3);
+  const std::string svg = diagram.svg(cells);
+  CHECK(svg.rfind("<svg", 0) == 0 && svg.find('\0') == std::string::npos);
+  diagram.write_svg(cells, TEST_TMP_DIR "/voronoi_hpp.svg");
+
+  const hw::lloyd_result relaxed = hw::lloyd(sites, {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, 20, 1e-9);
+  CHECK(relaxed.sites.size() == 6 && relaxed.iterations >= 1);
+
+  bool thrown = false;
+  try {
+    diagram.edge_between(0, 2);
+  } catch (const hw::error& e) {
+    thrown = e.status() == HW_ERR_NOT_FOUND;
+  }
+  CHECK(thrown);
+  thrown = false;
+  try {
+    hw::voronoi({{0, 0}, {NAN, 1}});
+  } catch (const hw::error& e) {
+    thrown = e.status() == HW_ERR_INVALID_INPUT &&
+             std::string(e.what()).find("site 1") != std::string::npos;
+  }
+  CHECK(thrown);
 }
 
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
@@ -207,6 +254,7 @@ int main() {
   editing();
   faces_and_attributes();
   winged_kernel();
+  voronoi_classes();
   version_string();
   return check_summary("test_hpp");
 }

@@ -210,6 +210,8 @@ class diagnostic {
 };
 
 class winged;
+class voronoi;
+class voronoi_cells;
 
 /// A half-edge polygon mesh (owns an hw_mesh). Const methods may run concurrently; the others
 /// need exclusive access. Failures throw hw::error.
@@ -449,6 +451,9 @@ class mesh {
 
  private:
   friend class winged;  // hw::winged::to_mesh() hands over a new hw_mesh
+  // The Voronoi classes hand out meshes they build.
+  friend class voronoi;
+  friend class voronoi_cells;
   explicit mesh(hw_mesh* raw) : raw_(raw) {}
   hw_circulator around(hw_vertex v, hw_circulator_kind kind) const {
     hw_circulator c;
@@ -599,6 +604,193 @@ class winged {
     hw_winged_table(get(), which, naming, format, nullptr, 0, &needed);
     std::string text(needed, '\0');
     check(hw_winged_table(get(), which, naming, format, &text[0], text.size(), &needed));
+/// A 2D point (x, y).
+using point2 = std::array<double, 2>;
+
+/// Clipped Voronoi cells (owns an hw_voronoi_cells): closed polygons tiling a convex region, with
+/// shared corners. Independent of the diagram they came from; immutable, so every method may run
+/// concurrently. Failures throw hw::error.
+class voronoi_cells {
+ public:
+  /// Number of cells (one per input site, empty ones included).
+  std::size_t size() const { return hw_voronoi_cells_count(get()); }
+
+  /// All cell corners (x, y each), shared between neighbouring cells.
+  values_view<const point2> positions() const {
+    const double* xy = nullptr;
+    std::size_t n = 0;
+    check(hw_voronoi_cells_positions(get(), &xy, &n));
+    return {reinterpret_cast<const point2*>(xy), n};
+  }
+
+  /// Indices into positions() of the cell of `site`, counter-clockwise (empty for duplicates
+  /// and cells outside the region).
+  values_view<const uint32_t> polygon(uint32_t site) const {
+    const uint32_t* indices = nullptr;
+    std::size_t n = 0;
+    check(hw_voronoi_cells_polygon(get(), site, &indices, &n));
+    return {indices, n};
+  }
+
+  /// The corners of the cell of `site`, counter-clockwise.
+  std::vector<point2> polygon_points(uint32_t site) const {
+    const values_view<const point2> all = positions();
+    std::vector<point2> out;
+    for (uint32_t i : polygon(site)) out.push_back(all[i]);
+    return out;
+  }
+
+  /// Area of the cell of `site` (0 when empty).
+  double area(uint32_t site) const {
+    double a = 0;
+    check(hw_voronoi_cells_area_centroid(get(), site, &a, nullptr));
+    return a;
+  }
+
+  /// Centroid of the cell of `site`; throws (HW_ERR_NOT_FOUND) for an empty cell.
+  point2 centroid(uint32_t site) const {
+    point2 c{};
+    check(hw_voronoi_cells_area_centroid(get(), site, nullptr, c.data()));
+    return c;
+  }
+
+  /// The cells as a half-edge mesh (z = 0); face k belongs to face_sites()[k].
+  hw::mesh to_mesh() const {
+    hw_mesh* raw = nullptr;
+    check(hw_voronoi_cells_mesh(get(), &raw));
+    return hw::mesh(raw);
+  }
+
+  /// The site of every face of to_mesh().
+  std::vector<uint32_t> face_sites() const {
+    std::size_t n = 0;
+    hw_voronoi_cells_face_sites(get(), nullptr, 0, &n);
+    std::vector<uint32_t> sites(n);
+    check(hw_voronoi_cells_face_sites(get(), sites.data(), sites.size(), &n));
+    return sites;
+  }
+
+  /// The C object, still owned by this wrapper.
+  hw_voronoi_cells* get() const noexcept { return raw_.get(); }
+
+ private:
+  friend class voronoi;
+  explicit voronoi_cells(hw_voronoi_cells* raw) : raw_(raw) {}
+  detail::owned<hw_voronoi_cells, hw_voronoi_cells_free> raw_;
+};
+
+/// A Voronoi diagram with its Delaunay triangulation (owns an hw_voronoi); immutable, so every
+/// method may run concurrently. Failures throw hw::error.
+class voronoi {
+ public:
+  /// Builds the diagram of `sites`; see hw_voronoi_build().
+  explicit voronoi(const std::vector<point2>& sites) {
+    hw_voronoi* raw = nullptr;
+    check(hw_voronoi_build(sites.empty() ? nullptr : sites.front().data(), sites.size(), &raw));
+    raw_ = detail::owned<hw_voronoi, hw_voronoi_free>(raw);
+  }
+
+  std::size_t n_sites() const { return hw_voronoi_n_sites(get()); }
+  std::size_t n_unique_sites() const { return hw_voronoi_n_unique_sites(get()); }
+  std::size_t n_triangles() const { return hw_voronoi_n_triangles(get()); }
+  std::size_t n_vertices() const { return hw_voronoi_n_vertices(get()); }
+  std::size_t n_halfedges() const { return hw_voronoi_n_halfedges(get()); }
+  hw_site_dimension dimension() const { return hw_voronoi_dimension(get()); }
+
+  /// One index array of the diagram; see hw_voronoi_view() and ::hw_voronoi_array.
+  values_view<const uint32_t> view(hw_voronoi_array which) const {
+    const uint32_t* data = nullptr;
+    std::size_t n = 0;
+    check(hw_voronoi_view(get(), which, &data, &n));
+    return {data, n};
+  }
+
+  /// The sites as given.
+  values_view<const point2> sites() const {
+    const double* xy = nullptr;
+    std::size_t n = 0;
+    check(hw_voronoi_sites(get(), &xy, &n));
+    return {reinterpret_cast<const point2*>(xy), n};
+  }
+
+  /// The Voronoi vertices (circumcentres).
+  values_view<const point2> vertices() const {
+    const double* xy = nullptr;
+    std::size_t n = 0;
+    check(hw_voronoi_vertices(get(), &xy, &n));
+    return {reinterpret_cast<const point2*>(xy), n};
+  }
+
+  /// The edge of half-edge `h`: its two sites and its segment, ray or line.
+  hw_voronoi_edge edge(uint32_t h) const {
+    hw_voronoi_edge e;
+    check(hw_voronoi_edge_describe(get(), h, &e));
+    return e;
+  }
+
+  /// The Delaunay triangulation as a half-edge mesh (z = 0, vertex i = site i).
+  hw::mesh delaunay_mesh() const {
+    hw_mesh* raw = nullptr;
+    check(hw_voronoi_delaunay_mesh(get(), &raw));
+    return hw::mesh(raw);
+  }
+
+  /// The site nearest to `p` (exact); `hint`, a nearby site, speeds the search up.
+  uint32_t nearest_site(point2 p, uint32_t hint = HW_INVALID_INDEX) const {
+    uint32_t s = HW_INVALID_INDEX;
+    check(hw_voronoi_nearest_site(get(), p[0], p[1], hint, &s));
+    return s;
+  }
+
+  /// Sites whose cells share an edge with the cell of `site`, counter-clockwise.
+  std::vector<uint32_t> neighbours(uint32_t site) const {
+    std::size_t n = 0;
+    check_or_size(hw_voronoi_neighbours(get(), site, nullptr, 0, &n));
+    std::vector<uint32_t> out(n);
+    check(hw_voronoi_neighbours(get(), site, out.data(), out.size(), &n));
+    return out;
+  }
+
+  /// The half-edge of the cell of `a` facing the cell of `b`; throws HW_ERR_NOT_FOUND when the
+  /// cells are not adjacent.
+  uint32_t edge_between(uint32_t a, uint32_t b) const {
+    uint32_t h = HW_INVALID_INDEX;
+    check(hw_voronoi_edge_between(get(), a, b, &h));
+    return h;
+  }
+
+  /// Every cell clipped to the rectangle [min, max].
+  voronoi_cells clip(point2 min, point2 max) const {
+    hw_voronoi_cells* raw = nullptr;
+    check(hw_voronoi_clip_rect(get(), min[0], min[1], max[0], max[1], &raw));
+    return voronoi_cells(raw);
+  }
+
+  /// Every cell clipped to a convex polygon (either orientation).
+  voronoi_cells clip(const std::vector<point2>& convex_polygon) const {
+    hw_voronoi_cells* raw = nullptr;
+    check(hw_voronoi_clip_convex(get(), convex_polygon.empty() ? nullptr : convex_polygon.front().data(),
+                                 convex_polygon.size(), &raw));
+    return voronoi_cells(raw);
+  }
+
+  /// Nearest-site labels of a width × height raster of [min, max] under `metric`, row-major,
+  /// row 0 at the top.
+  std::vector<uint32_t> label_image(hw_metric metric, point2 min, point2 max, uint32_t width,
+                                    uint32_t height) const {
+    std::vector<uint32_t> labels(static_cast<std::size_t>(width) * height);
+    check(hw_voronoi_label_image(get(), metric, min[0], min[1], max[0], max[1], width, height,
+                                 labels.data(), labels.size(), nullptr));
+    return labels;
+  }
+
+  /// An SVG drawing of `cells` (clipped from this diagram).
+  std::string svg(const voronoi_cells& cells,
+                  const hw_svg_options& options = hw_svg_options_default()) const {
+    std::size_t needed = 0;
+    check_or_size(hw_voronoi_svg(get(), cells.get(), &options, nullptr, 0, &needed));
+    std::string text(needed, '\0');
+    check(hw_voronoi_svg(get(), cells.get(), &options, &text[0], text.size(), &needed));
     text.resize(needed - 1);
     return text;
   }
@@ -756,6 +948,42 @@ inline mesh ruled(const std::vector<point>& first, const std::vector<point>& sec
 }
 
 }  // namespace surface
+
+  /// Writes an SVG drawing of `cells` (clipped from this diagram) to `path`.
+  void write_svg(const voronoi_cells& cells, const std::string& path,
+                 const hw_svg_options& options = hw_svg_options_default()) const {
+    check(hw_voronoi_svg_write(get(), cells.get(), &options, path.c_str()));
+  }
+
+  /// The C object, still owned by this wrapper.
+  hw_voronoi* get() const noexcept { return raw_.get(); }
+
+ private:
+  /// A size query fails with HW_ERR_BUFFER_TOO_SMALL by design; anything else is an error.
+  static void check_or_size(hw_status status) {
+    if (status != HW_ERR_BUFFER_TOO_SMALL) check(status);
+  }
+  detail::owned<hw_voronoi, hw_voronoi_free> raw_;
+};
+
+/// The outcome of hw::lloyd().
+struct lloyd_result {
+  std::vector<point2> sites;
+  uint32_t iterations = 0;
+  double max_displacement = 0;
+};
+
+/// Lloyd relaxation of `sites` inside the convex polygon `region`; see hw_voronoi_lloyd().
+inline lloyd_result lloyd(const std::vector<point2>& sites, const std::vector<point2>& region,
+                          uint32_t max_iterations, double tolerance = 0) {
+  lloyd_result r;
+  r.sites.resize(sites.size());
+  check(hw_voronoi_lloyd(sites.empty() ? nullptr : sites.front().data(), sites.size(),
+                         region.empty() ? nullptr : region.front().data(), region.size(),
+                         max_iterations, tolerance, sites.empty() ? nullptr : r.sites.front().data(),
+                         &r.iterations, &r.max_displacement));
+  return r;
+}
 
 }  // namespace hw
 

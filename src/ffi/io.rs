@@ -38,7 +38,7 @@ impl From<IoError> for FfiError {
 ///
 /// # Safety
 /// `path` must be NULL or a NUL-terminated string.
-unsafe fn path_arg(path: *const c_char) -> Result<PathBuf, FfiError> {
+pub(crate) unsafe fn path_arg(path: *const c_char) -> Result<PathBuf, FfiError> {
     // SAFETY: forwarded from the caller.
     let path = unsafe { CStr::from_ptr(arg_ref(path, "path")?) };
     #[cfg(unix)]

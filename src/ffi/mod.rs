@@ -33,6 +33,10 @@ pub mod views;
 pub mod winged;
 pub mod winged_circulator;
 pub mod winged_euler;
+pub mod voronoi;
+pub mod voronoi_cells;
+pub mod voronoi_images;
+pub mod voronoi_lloyd;
 
 pub use attributes::*;
 pub use circulator::*;
@@ -55,3 +59,7 @@ pub use views::*;
 pub use winged::*;
 pub use winged_circulator::*;
 pub use winged_euler::*;
+pub use voronoi::*;
+pub use voronoi_cells::*;
+pub use voronoi_images::*;
+pub use voronoi_lloyd::*;

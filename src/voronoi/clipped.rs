@@ -95,6 +95,28 @@ impl Builder<'_> {
     }
 }
 
+/// Marks a piece not decided by the parallel pass (never a position index: positions stay
+/// below [`INVALID`] − 1 by the site limit).
+const UNDECIDED: u32 = INVALID - 1;
+
+/// `(0..len).map(f).collect()`, in parallel when the `parallel` feature is on. Every pass it
+/// serves is a pure per-element function over millions of elements.
+fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        (0..len)
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .map(f)
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (0..len).map(f).collect()
+    }
+}
+
 impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
@@ -107,20 +129,26 @@ impl Voronoi {
         };
         // Voronoi vertices inside (closed test) get a position; the same test decides every edge.
         // Those exactly on the boundary become perimeter points (or the corner they sit on), so
-        // that the walk along the boundary knows where they are.
+        // that the walk along the boundary knows where they are. The test runs in parallel; the
+        // numbering, a prefix count, in one sequential pass.
+        let lowest_edge_function: Vec<f64> = map_indexed(self.vertices.len(), |v| {
+            let p = self.vertices[v];
+            (0..m)
+                .map(|i| clip.edge_function(i, p))
+                .fold(f64::INFINITY, f64::min)
+        });
         let mut vertex_position = vec![INVALID; self.vertices.len()];
         let mut on_boundary = Vec::new();
-        for (v, p) in self.vertices.iter().enumerate() {
-            let lowest = (0..m)
-                .map(|i| clip.edge_function(i, *p))
-                .fold(f64::INFINITY, f64::min);
+        b.positions.reserve(self.vertices.len());
+        for (v, &lowest) in lowest_edge_function.iter().enumerate() {
             if lowest > 0.0 {
                 vertex_position[v] = b.positions.len() as u32;
-                b.positions.push(*p);
+                b.positions.push(self.vertices[v]);
             } else if lowest == 0.0 {
                 on_boundary.push(v);
             }
         }
+        drop(lowest_edge_function);
         b.first_crossing = b.positions.len();
         for &v in &on_boundary {
             let p = self.vertices[v];
@@ -134,14 +162,26 @@ impl Voronoi {
                 b.crossing(i, p)
             };
         }
-        // One clipped piece per undirected edge, oriented like its even half-edge.
+        // One clipped piece per undirected edge, oriented like its even half-edge. Edges with
+        // both ends inside (nearly all) are their own piece and are found in parallel; only the
+        // others, which may add boundary crossings, are clipped one after the other.
         let n_edges = self.n_halfedges() / 2;
-        let mut pieces: Vec<[u32; 2]> = Vec::with_capacity(n_edges);
+        let mut pieces: Vec<[u32; 2]> = map_indexed(n_edges, |k| {
+            let (o, t) = (self.origin[2 * k], self.origin[2 * k + 1]);
+            if o != INVALID && t != INVALID {
+                let (po, pt) = (vertex_position[o as usize], vertex_position[t as usize]);
+                if po != INVALID && pt != INVALID {
+                    return [po, pt];
+                }
+            }
+            [INVALID, UNDECIDED]
+        });
         let mut any_piece = false;
-        for k in 0..n_edges as u32 {
-            let piece = self.clip_edge(2 * k, &vertex_position, &mut b);
+        for (k, piece) in pieces.iter_mut().enumerate() {
+            if piece[1] == UNDECIDED {
+                *piece = self.clip_edge(2 * k as u32, &vertex_position, &mut b);
+            }
             any_piece |= piece[0] != INVALID;
-            pieces.push(piece);
         }
         let n_sites = self.delaunay.n_sites();
         let mut ranges = vec![[0u32, 0u32]; n_sites];
@@ -154,13 +194,11 @@ impl Voronoi {
         let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
         // What the cell walk reads, one record per half-edge (one cache line fetch per step):
         // the next half-edge and the piece oriented along this half-edge.
-        let walk: Vec<[u32; 3]> = (0..self.n_halfedges())
-            .map(|h| {
-                let p = pieces[h >> 1];
-                let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
-                [self.next[h], a, b]
-            })
-            .collect();
+        let walk: Vec<[u32; 3]> = map_indexed(self.n_halfedges(), |h| {
+            let p = pieces[h >> 1];
+            let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
+            [self.next[h], a, b]
+        });
         // Cells in the order of their first half-edge, which follows the (spatially coherent)
         // triangle order, so that consecutive cells share cache lines.
         let mut cell_at = vec![INVALID; self.n_halfedges()];

@@ -2,6 +2,7 @@
 
 use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
+use super::expansion::Exact;
 use super::incremental::{next_edge, prev_edge};
 use super::predicates::incircle;
 
@@ -93,6 +94,16 @@ impl Voronoi {
     fn build_planar(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
+        #[cfg(feature = "parallel")]
+        let centres: Vec<[f64; 2]> = {
+            use rayon::prelude::*;
+            (0..n_tri as u32)
+                .into_par_iter()
+                .with_min_len(1 << 14)
+                .map(|t| self.circumcentre(t))
+                .collect()
+        };
+        #[cfg(not(feature = "parallel"))]
         let centres: Vec<[f64; 2]> = (0..n_tri as u32).map(|t| self.circumcentre(t)).collect();
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
         // point is exactly cocircular, and also when their circumcentres round to the same point
@@ -104,11 +115,13 @@ impl Voronoi {
             if t == INVALID || t < e {
                 continue;
             }
-            let merge = centres[(e / 3) as usize] == centres[(t / 3) as usize] || {
-                let base = 3 * (e / 3);
-                let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
-                incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
-            };
+            let (here, there) = (centres[(e / 3) as usize], centres[(t / 3) as usize]);
+            let merge = here == there
+                || (may_be_cocircular(here, there, d.corner_point(e), d.scale) && {
+                    let base = 3 * (e / 3);
+                    let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                    incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
+                });
             if merge {
                 internal[e as usize] = true;
                 internal[t as usize] = true;
@@ -261,16 +274,7 @@ impl Voronoi {
         let d = &self.delaunay;
         let base = 3 * t;
         let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
-        let (bx, by) = (b[0] - a[0], b[1] - a[1]);
-        let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
-        let naive = bx * cy - by * cx;
-        let (a, det, ux, uy) = if naive.abs() >= 1e-6 * ((bx * cy).abs() + (by * cx).abs()) {
-            let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
-            (a, 2.0 * naive, cy * bl - by * cl, bx * cl - cx * bl)
-        } else {
-            sliver_circumcentre_offset(a, b, c)
-        };
-        let (ux, uy) = (ux / det, uy / det);
+        let [ux, uy] = circumcentre_offset(a, b, c);
         [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
     }
 
@@ -448,39 +452,66 @@ impl Voronoi {
     }
 }
 
-/// Circumcentre of a nearly degenerate triangle as `(origin, 2·det, x·det, y·det)` offsets.
+/// The circumcentre of triangle `abc` minus `a`, to within about 1e-10 of its length.
 ///
-/// The origin is an endpoint of the shortest edge: then the short edge vector is exact and small,
-/// its squared length cannot cancel against the other's, and the fused-multiply-add differences
-/// of products keep the few significant digits that decide where the centre lies.
-#[cold]
-fn sliver_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> ([f64; 2], f64, f64, f64) {
-    let length2 = |p: [f64; 2], q: [f64; 2]| (q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2);
-    let (ab, bc, ca) = (length2(a, b), length2(b, c), length2(c, a));
-    let (a, b, c) = if ab <= bc && ab <= ca {
-        (a, b, c)
-    } else if bc <= ca {
-        (b, c, a)
-    } else {
-        (c, a, b)
-    };
+/// The usual formula `(cy·|b|² − by·|c|², bx·|c|² − cx·|b|²) / 2(bx·cy − by·cx)` (with `b`, `c`
+/// taken relative to `a`) is used when a bound on its rounding errors says it is that accurate:
+/// every rounding, the differences `b − a`, `c − a` included, is at most a few ulps of the
+/// magnitudes of the products, so when the results are no more than [`CANCELLATION_LIMIT`]
+/// times smaller than those magnitudes the relative error stays below ~1e-10. Flatter triangles
+/// (a small fraction; their centres are far away and sensitive) are computed exactly and
+/// rounded once.
+#[inline]
+fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
-    (
-        a,
-        2.0 * difference_of_products(bx, cy, by, cx),
-        difference_of_products(cy, bl, by, cl),
-        difference_of_products(bx, cl, cx, bl),
-    )
+    let det = bx * cy - by * cx;
+    let (ux, uy) = (cy * bl - by * cl, bx * cl - cx * bl);
+    let det_size = (bx * cy).abs() + (by * cx).abs();
+    let u_size = (cy * bl).abs() + (by * cl).abs() + (bx * cl).abs() + (cx * bl).abs();
+    if det.abs() * CANCELLATION_LIMIT >= det_size
+        && (ux.abs() + uy.abs()) * CANCELLATION_LIMIT >= u_size
+    {
+        let inverse = 0.5 / det;
+        [ux * inverse, uy * inverse]
+    } else {
+        exact_circumcentre_offset(a, b, c)
+    }
 }
 
-/// `a·b − c·d` to within about one ulp (Kahan's algorithm with fused multiply-adds).
+/// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres
+/// `here` and `there` and a shared corner (`scaled_corner` in the frame multiplied by `scale`)?
+///
+/// Cocircular triangles have the same exact centre, and [`circumcentre_offset`] places each
+/// within ~1.5e-10 of the radius of it, so centres farther apart than 1e-8 radii (a margin of
+/// about 50, measured in the L1 norm, which never underflows to zero for tiny sites) cannot be;
+/// only the rest go to the exact in-circle test, which decides.
 #[inline]
-fn difference_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
-    let cd = c * d;
-    let cd_error = (-c).mul_add(d, cd);
-    a.mul_add(b, -cd) + cd_error
+fn may_be_cocircular(here: [f64; 2], there: [f64; 2], scaled_corner: [f64; 2], scale: f64) -> bool {
+    let corner = [scaled_corner[0] / scale, scaled_corner[1] / scale];
+    let apart = (here[0] - there[0]).abs() + (here[1] - there[1]).abs();
+    let radius = (here[0] - corner[0]).abs() + (here[1] - corner[1]).abs();
+    apart <= 1e-8 * radius
+}
+
+/// How much cancellation [`circumcentre_offset`] accepts in floating point: about 1e-10 relative
+/// error from a few ulps (2.2e-16 each) amplified by this factor.
+const CANCELLATION_LIMIT: f64 = 1.0e5;
+
+/// [`circumcentre_offset`] in exact arithmetic, each coordinate rounded once at the end (the
+/// division adds half an ulp).
+#[cold]
+fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
+    let (bx, by) = (Exact::difference(b[0], a[0]), Exact::difference(b[1], a[1]));
+    let (cx, cy) = (Exact::difference(c[0], a[0]), Exact::difference(c[1], a[1]));
+    let bl = bx.times(&bx).plus(&by.times(&by)).compressed();
+    let cl = cx.times(&cx).plus(&cy.times(&cy)).compressed();
+    let det = bx.times(&cy).minus(&by.times(&cx)).value();
+    let ux = cy.times(&bl).minus(&by.times(&cl)).value();
+    let uy = bx.times(&cl).minus(&cx.times(&bl)).value();
+    // A Delaunay triangle is never flat (exact orientation), so `det` is not zero.
+    [ux / (2.0 * det), uy / (2.0 * det)]
 }
 
 /// Union-find root with path halving.
@@ -491,4 +522,37 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
         x = grand;
     }
     x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circumcentres_of_flat_triangles_stay_accurate() {
+        // (0, 0), (1, 0), (2, h): the centre is (0.5, (2 + h²) / 2h) exactly; the fast formula
+        // would lose about log10(1/h) digits to cancellation.
+        for h in [1e-3, 1e-9, 1e-12, 3e-15] {
+            let [x, y] = circumcentre_offset([0.0, 0.0], [1.0, 0.0], [2.0, h]);
+            let exact_y = 1.0 / h + 0.5 * h;
+            assert!((x - 0.5).abs() <= 1e-12, "h = {h}: x = {x}");
+            assert!((y - exact_y).abs() <= 1e-12 * exact_y, "h = {h}: y = {y}");
+        }
+        // A corner far from the two others: the numerators cancel instead of the determinant.
+        let [x, y] = circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        assert!(
+            (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
+        );
+    }
+
+    #[test]
+    fn cocircular_filter_never_rejects_equal_centres() {
+        let centre = [0.25, -3.0];
+        assert!(may_be_cocircular(centre, centre, [2.0, 2.0], 2.0));
+        assert!(!may_be_cocircular(centre, [0.26, -3.0], [2.0, 2.0], 2.0));
+        // Tiny magnitudes: the L1 test does not underflow to "apart".
+        let tiny = [1e-300, 2e-300];
+        assert!(may_be_cocircular(tiny, tiny, [0.5, 0.5], 1e300));
+    }
 }

@@ -4,6 +4,8 @@
 
 use std::cmp::Ordering;
 
+use super::expansion::{sign_of_sum, two_diff, two_product};
+
 /// A distance function on the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Metric {
@@ -79,55 +81,9 @@ impl Metric {
     }
 }
 
-/// `a - b` as a non-overlapping pair `(rounded, error)`.
-#[inline]
-fn two_diff(a: f64, b: f64) -> (f64, f64) {
-    let x = a - b;
-    let b_virtual = a - x;
-    let a_virtual = x + b_virtual;
-    (x, (a - a_virtual) + (b_virtual - b))
-}
-
-#[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let x = a + b;
-    let b_virtual = x - a;
-    let a_virtual = x - b_virtual;
-    (x, (a - a_virtual) + (b - b_virtual))
-}
-
-/// `a · b` as `(rounded, error)`, exact through a fused multiply-add.
-#[inline]
-fn two_product(a: f64, b: f64) -> (f64, f64) {
-    let x = a * b;
-    (x, a.mul_add(b, -x))
-}
-
 /// Absolute value of the two-term expansion `h + l` (its sign is the sign of `h`).
 fn abs_expansion((h, l): (f64, f64)) -> (f64, f64) {
     if h < 0.0 { (-h, -l) } else { (h, l) }
-}
-
-/// Exact sign (−1, 0 or 1) of the sum of `terms`, by growing a non-overlapping expansion.
-fn sign_of_sum(terms: &[f64]) -> f64 {
-    let mut expansion: Vec<f64> = Vec::with_capacity(terms.len());
-    for &t in terms {
-        let mut carry = t;
-        let mut grown = Vec::with_capacity(expansion.len() + 1);
-        for &e in &expansion {
-            let (sum, err) = two_sum(carry, e);
-            if err != 0.0 {
-                grown.push(err);
-            }
-            carry = sum;
-        }
-        if carry != 0.0 {
-            grown.push(carry);
-        }
-        expansion = grown;
-    }
-    // The last component of a non-overlapping expansion dominates the others.
-    expansion.last().map_or(0.0, |&x| x.signum())
 }
 
 #[cfg(test)]

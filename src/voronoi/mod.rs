@@ -19,6 +19,7 @@ mod delaunay;
 mod diagram;
 mod error;
 mod exact_distance;
+mod expansion;
 mod incremental;
 mod lloyd;
 mod nearest;
