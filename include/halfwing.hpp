@@ -848,6 +848,14 @@ class render_buffers {
     return render_buffers(raw);
   }
 
+  /// Fills and outlines of clipped Voronoi cells, polygon `i` being the cell of site `i`; see
+  /// hw_render_buffers_from_voronoi_cells().
+  static render_buffers cells(const voronoi_cells& c) {
+    hw_render_buffers* raw = nullptr;
+    check(hw_render_buffers_from_voronoi_cells(c.get(), &raw));
+    return render_buffers(raw);
+  }
+
   /// One float array (see hw_render_buffers_floats()), valid while this object lives.
   values_view<const float> floats(hw_render_floats which) const {
     const float* data = nullptr;
