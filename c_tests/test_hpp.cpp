@@ -196,6 +196,8 @@ static void winged_kernel() {
   (void)e1;
   (void)e2;
   (void)e3;
+}
+
 static void voronoi_classes() {
   const std::vector<hw::point2> sites = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 2}, {4, 0}};
   const hw::voronoi diagram(sites);
@@ -221,7 +223,7 @@ static void voronoi_classes() {
         drawn.indices(HW_RENDER_TRIANGLES).size() / 3);
   CHECK(drawn.indices(HW_RENDER_WIREFRAME_SOURCES).size() ==
         drawn.floats(HW_RENDER_WIREFRAME).size() / 6);
-  CHECK(drawn.n_vertices() == drawn.floats(HW_RENDER_POSITIONS).size() / 3);
+  CHECK(drawn.n_vertices() == drawn.floats(HW_RENDER_POSITIONS).size() / 3 && drawn.n_vertices() > 0);
   const hw::voronoi_cells diamond = diagram.clip({{2, -1}, {5, 2}, {2, 5}, {-1, 2}});
   CHECK(diamond.positions().size() >= 4);
 

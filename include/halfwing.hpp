@@ -604,6 +604,38 @@ class winged {
     hw_winged_table(get(), which, naming, format, nullptr, 0, &needed);
     std::string text(needed, '\0');
     check(hw_winged_table(get(), which, naming, format, &text[0], text.size(), &needed));
+    text.resize(needed - 1);
+    return text;
+  }
+
+  /// The C object, for calls the wrapper does not cover. Still owned by this structure.
+  hw_winged* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  explicit winged(hw_winged* raw) : raw_(raw) {}
+
+  hw_wcirculator around(hw_wface f, hw_wcirculator_kind kind) const {
+    hw_wcirculator c;
+    check(hw_wcirc_around_face(get(), f, kind, &c));
+    return c;
+  }
+  hw_wcirculator around(hw_wvertex v, hw_wcirculator_kind kind) const {
+    hw_wcirculator c;
+    check(hw_wcirc_around_vertex(get(), v, kind, &c));
+    return c;
+  }
+
+  template <class Id>
+  point triple(hw_status (*call)(const hw_winged*, Id, double*), Id id) const {
+    point p;
+    check(call(get(), id, p.data()));
+    return p;
+  }
+
+  detail::owned<hw_winged, hw_winged_free> raw_;
+};
+
 /// A 2D point (x, y).
 using point2 = std::array<double, 2>;
 
@@ -795,33 +827,41 @@ class voronoi {
     return text;
   }
 
-  /// The C object, for calls the wrapper does not cover. Still owned by this structure.
-  hw_winged* get() const noexcept { return raw_.get(); }
-  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+  /// Writes an SVG drawing of `cells` (clipped from this diagram) to `path`.
+  void write_svg(const voronoi_cells& cells, const std::string& path,
+                 const hw_svg_options& options = hw_svg_options_default()) const {
+    check(hw_voronoi_svg_write(get(), cells.get(), &options, path.c_str()));
+  }
+
+  /// The C object, still owned by this wrapper.
+  hw_voronoi* get() const noexcept { return raw_.get(); }
 
  private:
-  explicit winged(hw_winged* raw) : raw_(raw) {}
-
-  hw_wcirculator around(hw_wface f, hw_wcirculator_kind kind) const {
-    hw_wcirculator c;
-    check(hw_wcirc_around_face(get(), f, kind, &c));
-    return c;
+  /// A size query fails with HW_ERR_BUFFER_TOO_SMALL by design; anything else is an error.
+  static void check_or_size(hw_status status) {
+    if (status != HW_ERR_BUFFER_TOO_SMALL) check(status);
   }
-  hw_wcirculator around(hw_wvertex v, hw_wcirculator_kind kind) const {
-    hw_wcirculator c;
-    check(hw_wcirc_around_vertex(get(), v, kind, &c));
-    return c;
-  }
-
-  template <class Id>
-  point triple(hw_status (*call)(const hw_winged*, Id, double*), Id id) const {
-    point p;
-    check(call(get(), id, p.data()));
-    return p;
-  }
-
-  detail::owned<hw_winged, hw_winged_free> raw_;
+  detail::owned<hw_voronoi, hw_voronoi_free> raw_;
 };
+
+/// The outcome of hw::lloyd().
+struct lloyd_result {
+  std::vector<point2> sites;
+  uint32_t iterations = 0;
+  double max_displacement = 0;
+};
+
+/// Lloyd relaxation of `sites` inside the convex polygon `region`; see hw_voronoi_lloyd().
+inline lloyd_result lloyd(const std::vector<point2>& sites, const std::vector<point2>& region,
+                          uint32_t max_iterations, double tolerance = 0) {
+  lloyd_result r;
+  r.sites.resize(sites.size());
+  check(hw_voronoi_lloyd(sites.empty() ? nullptr : sites.front().data(), sites.size(),
+                         region.empty() ? nullptr : region.front().data(), region.size(),
+                         max_iterations, tolerance, sites.empty() ? nullptr : r.sites.front().data(),
+                         &r.iterations, &r.max_displacement));
+  return r;
+}
 
 /// GPU-ready arrays of a mesh or a polygon list (owns an hw_render_buffers); see
 /// hw_render_buffers_build(). Views stay valid while this object lives.
@@ -956,42 +996,6 @@ inline mesh ruled(const std::vector<point>& first, const std::vector<point>& sec
 }
 
 }  // namespace surface
-
-  /// Writes an SVG drawing of `cells` (clipped from this diagram) to `path`.
-  void write_svg(const voronoi_cells& cells, const std::string& path,
-                 const hw_svg_options& options = hw_svg_options_default()) const {
-    check(hw_voronoi_svg_write(get(), cells.get(), &options, path.c_str()));
-  }
-
-  /// The C object, still owned by this wrapper.
-  hw_voronoi* get() const noexcept { return raw_.get(); }
-
- private:
-  /// A size query fails with HW_ERR_BUFFER_TOO_SMALL by design; anything else is an error.
-  static void check_or_size(hw_status status) {
-    if (status != HW_ERR_BUFFER_TOO_SMALL) check(status);
-  }
-  detail::owned<hw_voronoi, hw_voronoi_free> raw_;
-};
-
-/// The outcome of hw::lloyd().
-struct lloyd_result {
-  std::vector<point2> sites;
-  uint32_t iterations = 0;
-  double max_displacement = 0;
-};
-
-/// Lloyd relaxation of `sites` inside the convex polygon `region`; see hw_voronoi_lloyd().
-inline lloyd_result lloyd(const std::vector<point2>& sites, const std::vector<point2>& region,
-                          uint32_t max_iterations, double tolerance = 0) {
-  lloyd_result r;
-  r.sites.resize(sites.size());
-  check(hw_voronoi_lloyd(sites.empty() ? nullptr : sites.front().data(), sites.size(),
-                         region.empty() ? nullptr : region.front().data(), region.size(),
-                         max_iterations, tolerance, sites.empty() ? nullptr : r.sites.front().data(),
-                         &r.iterations, &r.max_displacement));
-  return r;
-}
 
 }  // namespace hw
 
