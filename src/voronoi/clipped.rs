@@ -4,6 +4,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::parallel::map_indexed;
 use crate::soup::PolygonSoup;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
@@ -99,24 +100,6 @@ impl Builder<'_> {
 /// below [`INVALID`] − 1 by the site limit).
 const UNDECIDED: u32 = INVALID - 1;
 
-/// `(0..len).map(f).collect()`, in parallel when the `parallel` feature is on. Every pass it
-/// serves is a pure per-element function over millions of elements.
-fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
-    #[cfg(feature = "parallel")]
-    {
-        use rayon::prelude::*;
-        (0..len)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(f)
-            .collect()
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        (0..len).map(f).collect()
-    }
-}
-
 impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
@@ -191,64 +174,89 @@ impl Voronoi {
         } else {
             self.owner_of(clip.centroid())
         };
-        let mut cell_pieces: Vec<[u32; 2]> = Vec::new();
-        // What the cell walk reads, one record per half-edge (one cache line fetch per step):
-        // the next half-edge and the piece oriented along this half-edge.
-        let walk: Vec<[u32; 3]> = map_indexed(self.n_halfedges(), |h| {
-            let p = pieces[h >> 1];
-            let [a, b] = if h & 1 == 0 { p } else { [p[1], p[0]] };
-            [self.next[h], a, b]
-        });
-        // Cells in the order of their first half-edge, which follows the (spatially coherent)
-        // triangle order, so that consecutive cells share cache lines.
-        let mut cell_at = vec![INVALID; self.n_halfedges()];
-        for (site, &h) in self.cell_edge.iter().enumerate() {
-            if h != INVALID {
-                cell_at[h as usize] = site as u32;
-            }
-        }
         if owner_of_everything != INVALID {
             ranges[owner_of_everything as usize] = [indices.len() as u32, m as u32];
             indices.extend(0..m as u32);
         }
-        for (start, &s) in cell_at.iter().enumerate() {
-            if s == INVALID || s == owner_of_everything {
-                continue;
-            }
-            let first = indices.len() as u32;
-            cell_pieces.clear();
-            let start = start as u32;
-            let mut h = start;
-            loop {
-                let [next, a, b] = walk[h as usize];
-                if a != INVALID {
-                    cell_pieces.push([a, b]);
-                }
-                h = next;
-                if h == start {
-                    break;
-                }
-            }
-            let count = cell_pieces.len();
-            for (i, &[start, end]) in cell_pieces.iter().enumerate() {
-                indices.push(start);
-                let next_start = cell_pieces[(i + 1) % count][0];
-                // A piece ending on the boundary is followed by the boundary up to where the
-                // next piece starts (nothing when the next piece starts right there).
-                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
-                    && end != next_start
-                {
-                    indices.push(end);
-                    b.corners_between(exit, entry, &mut indices);
+        // Cells in insertion order, which follows the Hilbert curve and so the (spatially
+        // coherent) order of the triangles and half-edges: consecutive cells share cache lines.
+        // Cells are independent once the pieces exist: runs of them are assembled in parallel
+        // into local lists, then concatenated in order.
+        let order = &self.delaunay.insertion_order;
+        let assemble_run = |run: &[u32]| {
+            let mut local = Vec::with_capacity(7 * run.len());
+            let mut spans = Vec::with_capacity(run.len());
+            let mut cell_pieces = Vec::new();
+            for &s in run {
+                let start = self.cell_edge[s as usize];
+                if start != INVALID && s != owner_of_everything {
+                    let first = local.len() as u32;
+                    self.assemble_cell(start, &pieces, &b, &mut cell_pieces, &mut local);
+                    spans.push([s, first, local.len() as u32 - first]);
                 }
             }
-            ranges[s as usize] = [first, indices.len() as u32 - first];
+            (local, spans)
+        };
+        #[cfg(feature = "parallel")]
+        let runs: Vec<(Vec<u32>, Vec<[u32; 3]>)> = {
+            use rayon::prelude::*;
+            order.par_chunks(1 << 15).map(assemble_run).collect()
+        };
+        #[cfg(not(feature = "parallel"))]
+        let runs = vec![assemble_run(order)];
+        for (local, spans) in runs {
+            let offset = indices.len() as u32;
+            indices.extend_from_slice(&local);
+            for [s, first, len] in spans {
+                ranges[s as usize] = [offset + first, len];
+            }
         }
         ClippedCells {
             positions: b.positions,
             ranges,
             indices,
             clip: clip.clone(),
+        }
+    }
+
+    /// Appends to `out` the corners of the cell whose boundary cycle starts at half-edge
+    /// `start`: the clipped pieces of its edges in order and, where a piece ends on the region's
+    /// boundary, the region's corners up to where the next piece starts.
+    fn assemble_cell(
+        &self,
+        start: u32,
+        pieces: &[[u32; 2]],
+        b: &Builder,
+        cell_pieces: &mut Vec<[u32; 2]>,
+        out: &mut Vec<u32>,
+    ) {
+        cell_pieces.clear();
+        let mut h = start;
+        loop {
+            let p = pieces[(h >> 1) as usize];
+            if p[0] != INVALID {
+                cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
+            }
+            h = self.next[h as usize];
+            if h == start {
+                break;
+            }
+        }
+        let Some(&[first_start, _]) = cell_pieces.first() else {
+            return;
+        };
+        for (i, &[start, end]) in cell_pieces.iter().enumerate() {
+            out.push(start);
+            // The next piece's start, without a division per corner for the wrap-around.
+            let next_start = cell_pieces.get(i + 1).map_or(first_start, |p| p[0]);
+            // A piece ending on the boundary is followed by the boundary up to where the next
+            // piece starts (nothing when the next piece starts right there).
+            if end != next_start
+                && let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
+            {
+                out.push(end);
+                b.corners_between(exit, entry, out);
+            }
         }
     }
 

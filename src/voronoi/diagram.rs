@@ -4,6 +4,7 @@ use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::{next_edge, prev_edge};
+use super::parallel::map_indexed;
 use super::predicates::incircle;
 
 /// Geometry of an undirected Voronoi edge.
@@ -94,44 +95,47 @@ impl Voronoi {
     fn build_planar(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
-        #[cfg(feature = "parallel")]
-        let centres: Vec<[f64; 2]> = {
-            use rayon::prelude::*;
-            (0..n_tri as u32)
-                .into_par_iter()
-                .with_min_len(1 << 14)
-                .map(|t| self.circumcentre(t))
-                .collect()
-        };
-        #[cfg(not(feature = "parallel"))]
-        let centres: Vec<[f64; 2]> = (0..n_tri as u32).map(|t| self.circumcentre(t)).collect();
+        let centres: Vec<[f64; 2]> = map_indexed(n_tri, |t| self.circumcentre(t as u32));
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
         // point is exactly cocircular, and also when their circumcentres round to the same point
         // (so that no edge has zero length in the floating-point output either).
-        let mut parent: Vec<u32> = (0..n_tri as u32).collect();
-        let mut internal = vec![false; d.triangles.len()];
-        for e in 0..d.triangles.len() as u32 {
-            let t = d.twins[e as usize];
-            if t == INVALID || t < e {
-                continue;
+        // Each edge is decided once, from its half-edge with the larger twin, in parallel; the
+        // rare merges then mark the twin too and are joined in order.
+        let mut internal: Vec<bool> = map_indexed(d.triangles.len(), |e| {
+            let t = d.twins[e];
+            if t == INVALID || (t as usize) < e {
+                return false;
             }
-            let (here, there) = (centres[(e / 3) as usize], centres[(t / 3) as usize]);
-            let merge = here == there
-                || (may_be_cocircular(here, there, d.corner_point(e), d.scale) && {
-                    let base = 3 * (e / 3);
+            let (here, there) = (centres[e / 3], centres[(t / 3) as usize]);
+            here == there
+                || (may_be_cocircular(here, there, d.corner_point(e as u32), d.scale) && {
+                    let base = 3 * (e as u32 / 3);
                     let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
                     incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
-                });
-            if merge {
-                internal[e as usize] = true;
-                internal[t as usize] = true;
+                })
+        });
+        let merged: Vec<u32> = (0..internal.len() as u32)
+            .filter(|&e| internal[e as usize])
+            .collect();
+        for &e in &merged {
+            internal[d.twins[e as usize] as usize] = true;
+        }
+        let any_merge = !merged.is_empty();
+        let mut parent: Vec<u32> = if any_merge {
+            (0..n_tri as u32).collect()
+        } else {
+            Vec::new()
+        };
+        if any_merge {
+            for &e in &merged {
+                let t = d.twins[e as usize];
                 let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
                 if ra != rb {
                     parent[ra.max(rb) as usize] = ra.min(rb);
                 }
             }
         }
-        let (triangle_vertex, vertices) = if internal.iter().any(|&i| i) {
+        let (triangle_vertex, vertices) = if any_merge {
             let mut triangle_vertex = vec![INVALID; n_tri];
             let mut vertices = Vec::with_capacity(n_tri);
             for t in 0..n_tri as u32 {
@@ -202,19 +206,15 @@ impl Voronoi {
         }
         // A cell starts at the dual of its site's vertex edge: the outgoing hull edge for hull
         // sites, whose dual is the in-ray. (One read per site instead of a write per half-edge.)
-        for site in 0..d.n_sites() as u32 {
-            let first = d.vertex_edge[site as usize];
-            if first != INVALID {
-                self.cell_edge[site as usize] = d
-                    .outgoing(site)
-                    .map(|e| dual[e as usize])
-                    .find(|&h| h != INVALID)
-                    .unwrap_or(INVALID);
-                debug_assert!(
-                    dual[first as usize] != INVALID || d.twins[first as usize] != INVALID
-                );
+        self.cell_edge = map_indexed(d.n_sites(), |site| {
+            if d.vertex_edge[site] == INVALID {
+                return INVALID;
             }
-        }
+            d.outgoing(site as u32)
+                .map(|e| dual[e as usize])
+                .find(|&h| h != INVALID)
+                .unwrap_or(INVALID)
+        });
         self.vertices = vertices;
         self.triangle_vertex = triangle_vertex;
         self.origin = origin;

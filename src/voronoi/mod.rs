@@ -23,6 +23,7 @@ mod expansion;
 mod incremental;
 mod lloyd;
 mod nearest;
+mod parallel;
 pub mod predicates;
 mod raster;
 mod spatial_sort;
