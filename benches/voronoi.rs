@@ -1,7 +1,8 @@
 //! Delaunay and clipped-Voronoi construction times on 10k, 100k and 1M uniform random sites and
 //! on the 1000×1000 integer grid (the inputs of issue 5's benchmark table).
 //!
-//! Run: `cargo bench --bench voronoi` (single-threaded: construction does not use rayon).
+//! Run: `cargo bench --bench voronoi`. The triangulation is single-threaded; the Voronoi dual and
+//! the clipping run their per-element passes on rayon's pool (the `parallel` feature).
 
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
 use halfwing::voronoi::{ClipPolygon, Delaunay, Voronoi};
