@@ -218,6 +218,12 @@ static void voronoi_classes() {
   const hw::point2 c = cells.centroid(4);
   CHECK(c[0] > 0 && c[0] < 4 && c[1] > 0 && c[1] < 4);
   CHECK(cells.to_mesh().n_faces() == 5 && cells.face_sites().size() == 5);
+  const hw::render_buffers drawn = hw::render_buffers::cells(cells);
+  CHECK(drawn.indices(HW_RENDER_TRIANGLE_FACES).size() ==
+        drawn.indices(HW_RENDER_TRIANGLES).size() / 3);
+  CHECK(drawn.indices(HW_RENDER_WIREFRAME_SOURCES).size() ==
+        drawn.floats(HW_RENDER_WIREFRAME).size() / 6);
+  CHECK(drawn.n_vertices() == drawn.floats(HW_RENDER_POSITIONS).size() / 3 && drawn.n_vertices() > 0);
   const hw::voronoi_cells diamond = diagram.clip({{2, -1}, {5, 2}, {2, 5}, {-1, 2}});
   CHECK(diamond.positions().size() >= 4);
 

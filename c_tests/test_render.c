@@ -1,5 +1,5 @@
 /* Render buffers and surface generators through the C API: the arrays a GL program uploads, every
- * shading and layout, polygon lists, and the refusal of every bad argument. */
+ * shading and layout, polygon lists, Voronoi cells, and the refusal of every bad argument. */
 #include <math.h>
 #include <stdint.h>
 
@@ -219,6 +219,80 @@ static void polygon_lists(void) {
   CHECK(buffers == BUFFERS_SENTINEL);
 }
 
+/* Four sites, one per quadrant of [-2, 2]^2, and a duplicate of the first: four square cells
+ * whose triangles, vertices and outline segments all name their site; the duplicate draws
+ * nothing. */
+static void voronoi_cell_buffers(void) {
+  static const double sites[] = {-1, -1, 1, -1, 1, 1, -1, 1, -1, -1};
+  hw_voronoi *v = NULL;
+  hw_voronoi_cells *cells = NULL;
+  hw_render_buffers *buffers = NULL;
+  const float *xyz = NULL, *normals = NULL;
+  const uint32_t *triangles = NULL, *triangle_sites = NULL, *vertex_sites = NULL;
+  const uint32_t *segment_sites = NULL;
+  size_t n_xyz = 0, n_normals = 0, n_triangles = 0, n_triangle_sites = 0, n_vertex_sites = 0;
+  size_t n_segment_sites = 0, t, k;
+  double area = 0;
+  CHECK(hw_voronoi_build(sites, 5, &v) == HW_OK);
+  CHECK(hw_voronoi_clip_rect(v, -2, -2, 2, 2, &cells) == HW_OK);
+  hw_voronoi_free(v); /* the cells own their data, the buffers theirs */
+  CHECK(hw_render_buffers_from_voronoi_cells(cells, &buffers) == HW_OK && buffers != NULL);
+  hw_voronoi_cells_free(cells);
+
+  CHECK(hw_render_buffers_n_vertices(buffers) == 16);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POSITIONS, &xyz, &n_xyz) == HW_OK);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &normals, &n_normals) == HW_OK);
+  CHECK(n_xyz == 16 * 3 && n_normals == 16 * 3);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLES, &triangles, &n_triangles) == HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLE_FACES, &triangle_sites,
+                                  &n_triangle_sites) == HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_VERTEX_SOURCES, &vertex_sites,
+                                  &n_vertex_sites) == HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_WIREFRAME_SOURCES, &segment_sites,
+                                  &n_segment_sites) == HW_OK);
+  CHECK(n_triangles == 8 * 3 && n_triangle_sites == 8 && n_vertex_sites == 16);
+  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 16 * 6 && n_segment_sites == 16);
+  for (k = 0; k < 16; ++k) {
+    CHECK(xyz[3 * k + 2] == 0.0f && normals[3 * k + 2] == 1.0f);
+    CHECK(vertex_sites[k] < 4 && segment_sites[k] < 4);
+  }
+  for (t = 0; t < 8; ++t) {
+    const float *a = xyz + 3 * triangles[3 * t], *b = xyz + 3 * triangles[3 * t + 1];
+    const float *c = xyz + 3 * triangles[3 * t + 2];
+    const double signed_area =
+        0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    CHECK(signed_area > 0); /* counter-clockwise */
+    area += signed_area;
+    /* every corner of the triangle belongs to its site's cell, which lies in its quadrant */
+    CHECK(triangle_sites[t] < 4);
+    for (k = 0; k < 3; ++k) {
+      const uint32_t corner = triangles[3 * t + k];
+      const double sx = sites[2 * triangle_sites[t]], sy = sites[2 * triangle_sites[t] + 1];
+      CHECK(vertex_sites[corner] == triangle_sites[t]);
+      CHECK(xyz[3 * corner] * sx >= 0 && xyz[3 * corner + 1] * sy >= 0);
+    }
+  }
+  CHECK(fabs(area - 16) < 1e-5);
+  hw_render_buffers_free(buffers);
+}
+
+static void bad_voronoi_cell_arguments(void) {
+  static const double sites[] = {0, 0, 1, 0, 0, 1};
+  hw_voronoi *v = NULL;
+  hw_voronoi_cells *cells = NULL;
+  hw_render_buffers *buffers = BUFFERS_SENTINEL;
+  CHECK(hw_voronoi_build(sites, 3, &v) == HW_OK);
+  CHECK(hw_voronoi_clip_rect(v, -1, -1, 2, 2, &cells) == HW_OK);
+  CHECK_STATUS(hw_render_buffers_from_voronoi_cells(NULL, &buffers), HW_ERR_NULL_ARGUMENT,
+               "cells");
+  CHECK_STATUS(hw_render_buffers_from_voronoi_cells(cells, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_buffers");
+  CHECK_STATUS(hw_render_buffers_from_voronoi_cells(NULL, NULL), HW_ERR_NULL_ARGUMENT, "");
+  CHECK(buffers == BUFFERS_SENTINEL); /* outputs only on success */
+  hw_voronoi_cells_free(cells);
+  hw_voronoi_free(v);
+}
+
 static void bad_render_arguments(void) {
   hw_mesh *mesh = unit_cube();
   hw_render_buffers *buffers = BUFFERS_SENTINEL, *good = build(mesh, NULL);
@@ -369,6 +443,8 @@ int main(void) {
   boundary_bounds_and_non_manifold_edges();
   polygon_lists();
   bad_render_arguments();
+  voronoi_cell_buffers();
+  bad_voronoi_cell_arguments();
   generators();
   bad_generator_parameters();
   return check_summary("test_render");

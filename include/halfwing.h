@@ -82,8 +82,8 @@ typedef struct hw_index_maps hw_index_maps;
 typedef struct hw_mesh hw_mesh;
 
 /**
- * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build() or
- * hw_render_buffers_from_polygons(); release with hw_render_buffers_free(). Immutable: its
+ * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
+ * hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
  * views stay valid until it is freed, also after the mesh it came from changes or is freed.
  */
 typedef struct hw_render_buffers hw_render_buffers;
@@ -1845,6 +1845,20 @@ hw_status hw_render_buffers_from_polygons(const double *corners,
                                           const uint32_t *sizes,
                                           size_t n_polygons,
                                           hw_render_buffers **out_buffers);
+
+/**
+ * Builds fill and outline buffers of the clipped cells of a Voronoi diagram, as
+ * hw_render_buffers_from_polygons() would from its cells: polygon `i` is the cell of site `i`,
+ * so ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
+ * name sites (colour a cell by its site). Each cell gets its own copies of its corners (z = 0,
+ * normals +z); an empty cell (a duplicate site, or a cell outside the clip region) has no
+ * triangle and no outline. The buffers do not depend on `cells` afterwards.
+ *
+ * # Safety
+ * `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
+ */
+hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
+                                               hw_render_buffers **out_buffers);
 
 /**
  * Releases render buffers (their views die with them). NULL is a no-op; freeing twice is

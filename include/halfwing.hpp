@@ -636,135 +636,6 @@ class winged {
   detail::owned<hw_winged, hw_winged_free> raw_;
 };
 
-/// GPU-ready arrays of a mesh or a polygon list (owns an hw_render_buffers); see
-/// hw_render_buffers_build(). Views stay valid while this object lives.
-class render_buffers {
- public:
-  /// The buffers of `m`; `report` (the mesh's build diagnostic) adds its non-manifold edges.
-  explicit render_buffers(const mesh& m,
-                          const hw_render_options& options = hw_render_options_default(),
-                          const diagnostic* report = nullptr) {
-    hw_render_buffers* raw = nullptr;
-    check(hw_render_buffers_build(m.get(), report ? report->get() : nullptr, &options, &raw));
-    raw_ = owner(raw);
-  }
-
-  /// Fills and outlines of polygons: `corners` holds `dimension` (2 or 3) doubles per corner,
-  /// polygon after polygon, `sizes` the corners of each; see hw_render_buffers_from_polygons().
-  static render_buffers polygons(const std::vector<double>& corners, uint32_t dimension,
-                                 const std::vector<uint32_t>& sizes) {
-    if (dimension == 0 || corners.size() % dimension != 0)
-      throw error(HW_ERR_INVALID_INPUT, "corners: size is not a multiple of the dimension");
-    hw_render_buffers* raw = nullptr;
-    check(hw_render_buffers_from_polygons(corners.data(), dimension, corners.size() / dimension,
-                                          sizes.data(), sizes.size(), &raw));
-    return render_buffers(raw);
-  }
-
-  /// One float array (see hw_render_buffers_floats()), valid while this object lives.
-  values_view<const float> floats(hw_render_floats which) const {
-    const float* data = nullptr;
-    std::size_t n = 0;
-    check(hw_render_buffers_floats(get(), which, &data, &n));
-    return values_view<const float>(data, n);
-  }
-  /// One index array (see hw_render_buffers_indices()), valid while this object lives.
-  values_view<const uint32_t> indices(hw_render_indices which) const {
-    const uint32_t* data = nullptr;
-    std::size_t n = 0;
-    check(hw_render_buffers_indices(get(), which, &data, &n));
-    return values_view<const uint32_t>(data, n);
-  }
-  std::size_t n_vertices() const { return hw_render_buffers_n_vertices(get()); }
-  /// Floats per interleaved vertex (0 for separate arrays).
-  std::size_t stride() const { return hw_render_buffers_stride(get()); }
-  /// The box around the vertices: {min, max}.
-  std::pair<std::array<float, 3>, std::array<float, 3>> bounds() const {
-    std::array<float, 3> lo{}, hi{};
-    check(hw_render_buffers_bounds(get(), lo.data(), hi.data()));
-    return {lo, hi};
-  }
-  hw_render_buffers* get() const noexcept { return raw_.get(); }
-
- private:
-  using owner = detail::owned<hw_render_buffers, hw_render_buffers_free>;
-  explicit render_buffers(hw_render_buffers* raw) : raw_(raw) {}
-  owner raw_;
-};
-
-/// Surface generators (seed 003) and primitives; bad parameters throw hw::error.
-namespace surface {
-
-using point = std::array<double, 3>;
-
-namespace detail {
-/// Runs a generator `call(hw_mesh** out)` and owns the mesh it makes.
-template <class Call>
-mesh generate(Call&& call) {
-  hw_mesh* raw = nullptr;
-  check(call(&raw));
-  return mesh::adopt(raw);
-}
-inline const double* flat(const std::vector<point>& points) {
-  return points.empty() ? nullptr : points.front().data();
-}
-}  // namespace detail
-
-inline mesh tetrahedron() {
-  return detail::generate([&](hw_mesh** out) { return hw_surface_tetrahedron(out); });
-}
-inline mesh cube(double side = 1.0) {
-  return detail::generate([&](hw_mesh** out) { return hw_surface_cube(side, out); });
-}
-inline mesh icosphere(double radius, uint32_t level) {
-  return detail::generate([&](hw_mesh** out) { return hw_surface_icosphere(radius, level, out); });
-}
-inline mesh torus(double major_radius, double minor_radius, uint32_t major_steps,
-                  uint32_t minor_steps, hw_cell_faces faces = HW_CELLS_QUADS) {
-  return detail::generate([&](hw_mesh** out) {
-    return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, faces, out);
-  });
-}
-inline mesh grid(double width, double height, uint32_t cells_x, uint32_t cells_y,
-                 hw_cell_faces faces = HW_CELLS_QUADS) {
-  return detail::generate([&](hw_mesh** out) {
-    return hw_surface_grid(width, height, cells_x, cells_y, faces, out);
-  });
-}
-/// `profile` swept along `direction` in `steps` rows.
-inline mesh sweep(const std::vector<point>& profile, bool closed, const point& direction,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
-  return detail::generate([&](hw_mesh** out) {
-    return hw_surface_sweep(detail::flat(profile), profile.size(), closed, direction.data(), steps,
-                            faces, out);
-  });
-}
-/// `profile` turned about an axis; `angle` in radians, or a full turn when `angle` is omitted.
-inline mesh revolution(const std::vector<point>& profile, bool closed, const point& axis_origin,
-                       const point& axis_direction, uint32_t steps, double angle = 0.0,
-                       hw_caps caps = HW_CAPS_NONE, hw_cell_faces faces = HW_CELLS_QUADS) {
-  return detail::generate([&](hw_mesh** out) {
-    return hw_surface_revolution(detail::flat(profile), profile.size(), closed, axis_origin.data(),
-                                 axis_direction.data(), angle == 0.0, angle, steps, caps, faces,
-                                 out);
-  });
-}
-/// Straight rulings from `first[i]` to `second[i]`.
-inline mesh ruled(const std::vector<point>& first, const std::vector<point>& second, bool closed,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
-  if (first.size() != second.size())
-    throw error(HW_ERR_INVALID_INPUT, "ruled surface polylines differ in length");
-  return detail::generate([&](hw_mesh** out) {
-    return hw_surface_ruled(detail::flat(first), detail::flat(second), first.size(), closed, steps,
-                            faces, out);
-  });
-}
-
-}  // namespace surface
-
-// ---------------------------------------------------------------------------------------------
-// Voronoi diagram
-
 /// A 2D point (x, y).
 using point2 = std::array<double, 2>;
 
@@ -991,6 +862,140 @@ inline lloyd_result lloyd(const std::vector<point2>& sites, const std::vector<po
                          &r.iterations, &r.max_displacement));
   return r;
 }
+
+/// GPU-ready arrays of a mesh or a polygon list (owns an hw_render_buffers); see
+/// hw_render_buffers_build(). Views stay valid while this object lives.
+class render_buffers {
+ public:
+  /// The buffers of `m`; `report` (the mesh's build diagnostic) adds its non-manifold edges.
+  explicit render_buffers(const mesh& m,
+                          const hw_render_options& options = hw_render_options_default(),
+                          const diagnostic* report = nullptr) {
+    hw_render_buffers* raw = nullptr;
+    check(hw_render_buffers_build(m.get(), report ? report->get() : nullptr, &options, &raw));
+    raw_ = owner(raw);
+  }
+
+  /// Fills and outlines of polygons: `corners` holds `dimension` (2 or 3) doubles per corner,
+  /// polygon after polygon, `sizes` the corners of each; see hw_render_buffers_from_polygons().
+  static render_buffers polygons(const std::vector<double>& corners, uint32_t dimension,
+                                 const std::vector<uint32_t>& sizes) {
+    if (dimension == 0 || corners.size() % dimension != 0)
+      throw error(HW_ERR_INVALID_INPUT, "corners: size is not a multiple of the dimension");
+    hw_render_buffers* raw = nullptr;
+    check(hw_render_buffers_from_polygons(corners.data(), dimension, corners.size() / dimension,
+                                          sizes.data(), sizes.size(), &raw));
+    return render_buffers(raw);
+  }
+
+  /// Fills and outlines of clipped Voronoi cells, polygon `i` being the cell of site `i`; see
+  /// hw_render_buffers_from_voronoi_cells().
+  static render_buffers cells(const voronoi_cells& c) {
+    hw_render_buffers* raw = nullptr;
+    check(hw_render_buffers_from_voronoi_cells(c.get(), &raw));
+    return render_buffers(raw);
+  }
+
+  /// One float array (see hw_render_buffers_floats()), valid while this object lives.
+  values_view<const float> floats(hw_render_floats which) const {
+    const float* data = nullptr;
+    std::size_t n = 0;
+    check(hw_render_buffers_floats(get(), which, &data, &n));
+    return values_view<const float>(data, n);
+  }
+  /// One index array (see hw_render_buffers_indices()), valid while this object lives.
+  values_view<const uint32_t> indices(hw_render_indices which) const {
+    const uint32_t* data = nullptr;
+    std::size_t n = 0;
+    check(hw_render_buffers_indices(get(), which, &data, &n));
+    return values_view<const uint32_t>(data, n);
+  }
+  std::size_t n_vertices() const { return hw_render_buffers_n_vertices(get()); }
+  /// Floats per interleaved vertex (0 for separate arrays).
+  std::size_t stride() const { return hw_render_buffers_stride(get()); }
+  /// The box around the vertices: {min, max}.
+  std::pair<std::array<float, 3>, std::array<float, 3>> bounds() const {
+    std::array<float, 3> lo{}, hi{};
+    check(hw_render_buffers_bounds(get(), lo.data(), hi.data()));
+    return {lo, hi};
+  }
+  hw_render_buffers* get() const noexcept { return raw_.get(); }
+
+ private:
+  using owner = detail::owned<hw_render_buffers, hw_render_buffers_free>;
+  explicit render_buffers(hw_render_buffers* raw) : raw_(raw) {}
+  owner raw_;
+};
+
+/// Surface generators (seed 003) and primitives; bad parameters throw hw::error.
+namespace surface {
+
+using point = std::array<double, 3>;
+
+namespace detail {
+/// Runs a generator `call(hw_mesh** out)` and owns the mesh it makes.
+template <class Call>
+mesh generate(Call&& call) {
+  hw_mesh* raw = nullptr;
+  check(call(&raw));
+  return mesh::adopt(raw);
+}
+inline const double* flat(const std::vector<point>& points) {
+  return points.empty() ? nullptr : points.front().data();
+}
+}  // namespace detail
+
+inline mesh tetrahedron() {
+  return detail::generate([&](hw_mesh** out) { return hw_surface_tetrahedron(out); });
+}
+inline mesh cube(double side = 1.0) {
+  return detail::generate([&](hw_mesh** out) { return hw_surface_cube(side, out); });
+}
+inline mesh icosphere(double radius, uint32_t level) {
+  return detail::generate([&](hw_mesh** out) { return hw_surface_icosphere(radius, level, out); });
+}
+inline mesh torus(double major_radius, double minor_radius, uint32_t major_steps,
+                  uint32_t minor_steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+  return detail::generate([&](hw_mesh** out) {
+    return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, faces, out);
+  });
+}
+inline mesh grid(double width, double height, uint32_t cells_x, uint32_t cells_y,
+                 hw_cell_faces faces = HW_CELLS_QUADS) {
+  return detail::generate([&](hw_mesh** out) {
+    return hw_surface_grid(width, height, cells_x, cells_y, faces, out);
+  });
+}
+/// `profile` swept along `direction` in `steps` rows.
+inline mesh sweep(const std::vector<point>& profile, bool closed, const point& direction,
+                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+  return detail::generate([&](hw_mesh** out) {
+    return hw_surface_sweep(detail::flat(profile), profile.size(), closed, direction.data(), steps,
+                            faces, out);
+  });
+}
+/// `profile` turned about an axis; `angle` in radians, or a full turn when `angle` is omitted.
+inline mesh revolution(const std::vector<point>& profile, bool closed, const point& axis_origin,
+                       const point& axis_direction, uint32_t steps, double angle = 0.0,
+                       hw_caps caps = HW_CAPS_NONE, hw_cell_faces faces = HW_CELLS_QUADS) {
+  return detail::generate([&](hw_mesh** out) {
+    return hw_surface_revolution(detail::flat(profile), profile.size(), closed, axis_origin.data(),
+                                 axis_direction.data(), angle == 0.0, angle, steps, caps, faces,
+                                 out);
+  });
+}
+/// Straight rulings from `first[i]` to `second[i]`.
+inline mesh ruled(const std::vector<point>& first, const std::vector<point>& second, bool closed,
+                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+  if (first.size() != second.size())
+    throw error(HW_ERR_INVALID_INPUT, "ruled surface polylines differ in length");
+  return detail::generate([&](hw_mesh** out) {
+    return hw_surface_ruled(detail::flat(first), detail::flat(second), first.size(), closed, steps,
+                            faces, out);
+  });
+}
+
+}  // namespace surface
 
 }  // namespace hw
 

@@ -1,13 +1,15 @@
 // halfwing viewer — opens an OBJ, OFF or PLY model (default: the bundled hole_capsule.off) and
 // shows what halfwing knows about it: shading flat / smooth / by crease angle, the wireframe,
 // boundary loops and non-manifold edges from the build diagnostic, vertex and face normals.
+// V switches to a 2D Voronoi diagram (clicks add sites, L runs Lloyd steps) and back.
 // Everything drawn comes from hw::render_buffers. GLFW + OpenGL 3.3 core, no other library.
 //
 //   halfwing_viewer [model] [--screenshot out.png] [--size WxH] [--keys KEYS]
 //
 // --screenshot renders one frame offscreen, writes the PNG and exits (headless under Xvfb).
 // --keys presses keys before the first frame, as if typed (e.g. "1WN": flat shading, no
-// wireframe, vertex normals), so every mode can be shot from a script.
+// wireframe, vertex normals; "VLL": the Voronoi diagram after two Lloyd steps), so every mode can
+// be shot from a script.
 #include "gl_core.h"
 
 #include <cctype>
@@ -24,6 +26,7 @@
 #include "mesh_shader.h"
 #include "offscreen.h"
 #include "orbit_camera.h"
+#include "voronoi_scene.hpp"
 
 #ifndef HALFWING_EXAMPLE_MODEL
 #define HALFWING_EXAMPLE_MODEL "hole_capsule.off"
@@ -33,6 +36,7 @@ namespace {
 
 struct viewer_state {
   std::unique_ptr<viewer::scene> scene;
+  std::unique_ptr<viewer::scene> other;  // the scene V switches to (the Voronoi one made on demand)
   viewer::programs programs{0, 0};
   orbit_camera camera{};
   bool dragging = false;
@@ -50,6 +54,7 @@ void print_help(const viewer_state& state) {
       "  drag       orbit (left button)\n"
       "  scroll     zoom\n"
       "  R          reset the camera\n"
+      "  V          switch between the mesh and a 2D Voronoi diagram\n"
       "%s"
       "  H          this help\n"
       "  Esc / Q    quit\n",
@@ -94,6 +99,16 @@ void on_key(GLFWwindow* window, int key, int, int action, int) {
     print_help(state);
   } else if (key == GLFW_KEY_R) {
     frame_scene(state);
+  } else if (key == GLFW_KEY_V) {
+    try {
+      if (!state.other) state.other = std::make_unique<viewer::voronoi_scene>();
+      std::swap(state.scene, state.other);
+      frame_scene(state);
+      std::printf("%s\n", state.scene->status().c_str());
+      print_help(state);
+    } catch (const std::exception& failure) {
+      std::fprintf(stderr, "halfwing_viewer: %s\n", failure.what());
+    }
   } else {
     try {
       if (state.scene->on_key(key)) {
@@ -116,7 +131,17 @@ void on_button(GLFWwindow* window, int button, int action, int) {
     state.press_x = state.last_x = x, state.press_y = state.last_y = y;
   } else if (std::fabs(x - state.press_x) + std::fabs(y - state.press_y) < 3) {
     // A click, not a drag: the scene may use it (the Voronoi scene adds a site).
-    state.scene->on_click(x, y);
+    int width = 0, height = 0;
+    glfwGetWindowSize(window, &width, &height);
+    if (width <= 0 || height <= 0) return;
+    try {
+      if (state.scene->on_click(x / width, y / height)) {
+        std::printf("%s\n", state.scene->status().c_str());
+        std::fflush(stdout);
+      }
+    } catch (const hw::error& failure) {
+      std::fprintf(stderr, "halfwing_viewer: %s\n", failure.what());
+    }
   }
 }
 

@@ -13,12 +13,8 @@
 
 namespace viewer {
 
-/// How a line set looks. Boundary and non-manifold edges are highlights, wide and in colours the
-/// surface never takes: the tests look for them in screenshots.
-struct line_style {
-  std::array<float, 3> color;
-  float width;  // pixels
-};
+/// Boundary and non-manifold edges are highlights, wide and in colours the surface never takes:
+/// the tests look for them in screenshots.
 namespace styles {
 constexpr line_style wireframe{{0.08f, 0.08f, 0.08f}, 1.2f};
 constexpr line_style boundary{{1.0f, 0.0f, 1.0f}, 3.0f};      // magenta

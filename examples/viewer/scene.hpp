@@ -1,7 +1,7 @@
 // scene.hpp — what the viewer shows: something that draws itself for a camera, reacts to keys and
-// clicks, and lists its keys. The mesh scene is one; the Voronoi scene (clicks add sites, a key
-// runs Lloyd steps, cells filled from hw_render_buffers_from_polygons()) plugs in here once the
-// Voronoi kernel lands.
+// clicks, and lists its keys: the mesh scene (mesh_scene.hpp) and the Voronoi scene
+// (voronoi_scene.hpp: clicks add sites, a key runs Lloyd steps, cells filled from
+// hw::render_buffers::cells()).
 #ifndef HALFWING_VIEWER_SCENE_HPP
 #define HALFWING_VIEWER_SCENE_HPP
 
@@ -20,6 +20,12 @@ struct programs {
   GLuint lines;
 };
 
+/// How a line set looks.
+struct line_style {
+  std::array<float, 3> color;
+  float width;  // pixels
+};
+
 class scene {
  public:
   virtual ~scene() = default;
@@ -27,7 +33,8 @@ class scene {
   virtual void draw(const programs& with) const = 0;
   /// Handles a key press; returns true when it changed what is drawn.
   virtual bool on_key(int key) = 0;
-  /// Handles a left click at window pixel (x, y); returns true when it changed what is drawn.
+  /// Handles a left click at (x, y), fractions of the window's width and height from its top-left
+  /// corner; returns true when it changed what is drawn.
   virtual bool on_click(double x, double y) = 0;
   /// One line per key the scene understands.
   virtual std::string help() const = 0;

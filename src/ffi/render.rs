@@ -4,7 +4,7 @@
 use crate::geom::VertexNormalWeighting;
 use crate::render::{
     Bounds, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
-    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer,
+    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer, voronoi_cell_buffer,
 };
 
 use super::boundary::{Out, arg_ref, arg_slice, guard, guard_value, guard_void, write_view};
@@ -15,6 +15,7 @@ use super::mesh::{hw_mesh, mesh_ref};
 use super::normals::{HW_WEIGHT_ANGLE, hw_normal_weighting, weighting};
 use super::status::*;
 use super::threads::with_threads;
+use super::voronoi_cells::{cells_ref, hw_voronoi_cells};
 
 /// Where the normals of hw_render_buffers_build() come from.
 pub type hw_shading = u32;
@@ -84,8 +85,8 @@ enum Contents {
     Polygons(Box<PolygonBuffer>),
 }
 
-/// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build() or
-/// hw_render_buffers_from_polygons(); release with hw_render_buffers_free(). Immutable: its
+/// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
+/// hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
 /// views stay valid until it is freed, also after the mesh it came from changes or is freed.
 pub struct hw_render_buffers {
     contents: Contents,
@@ -331,6 +332,35 @@ pub unsafe extern "C" fn hw_render_buffers_from_polygons(
             corners: &points,
             sizes,
         })?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe {
+            out.write(into_handle(hw_render_buffers {
+                contents: Contents::Polygons(Box::new(buffer)),
+            }))
+        };
+        Ok(())
+    })
+}
+
+/// Builds fill and outline buffers of the clipped cells of a Voronoi diagram, as
+/// hw_render_buffers_from_polygons() would from its cells: polygon `i` is the cell of site `i`,
+/// so ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
+/// name sites (colour a cell by its site). Each cell gets its own copies of its corners (z = 0,
+/// normals +z); an empty cell (a duplicate site, or a cell outside the clip region) has no
+/// triangle and no outline. The buffers do not depend on `cells` afterwards.
+///
+/// # Safety
+/// `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
+    cells: *const hw_voronoi_cells,
+    out_buffers: *mut *mut hw_render_buffers,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_buffers, "out_buffers")?;
+        // SAFETY: forwarded from the caller.
+        let cells = unsafe { cells_ref(cells) }?;
+        let buffer = voronoi_cell_buffer(cells)?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_render_buffers {

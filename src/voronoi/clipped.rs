@@ -251,11 +251,11 @@ impl Voronoi {
             let next_start = cell_pieces.get(i + 1).map_or(first_start, |p| p[0]);
             // A piece ending on the boundary is followed by the boundary up to where the next
             // piece starts (nothing when the next piece starts right there).
-            if end != next_start {
-                if let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start)) {
-                    out.push(end);
-                    b.corners_between(exit, entry, out);
-                }
+            if end != next_start
+                && let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
+            {
+                out.push(end);
+                b.corners_between(exit, entry, out);
             }
         }
     }
