@@ -24,6 +24,26 @@ impl hw_diagnostic {
     }
 }
 
+/// Hands what a builder made to C: the object through `out` and, when the caller asked for it, the
+/// build's diagnostic through `out_diagnostic`. Call only once nothing can fail any more.
+///
+/// # Safety
+/// The pointers behind `out` and `out_diagnostic` must be writable.
+pub(crate) unsafe fn hand_over_built<T: 'static>(
+    out: Out<*mut T>,
+    object: T,
+    out_diagnostic: Option<Out<*mut hw_diagnostic>>,
+    diagnostic: Diagnostic,
+) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        out.write(into_handle(object));
+        if let Some(out_diagnostic) = out_diagnostic {
+            out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
+        }
+    }
+}
+
 /// One list of element ids in a diagnostic (see hw_diagnostic_ids()).
 pub type hw_diagnostic_list = u32;
 /// Faces with fewer than 3 corners.

@@ -9,7 +9,7 @@ use crate::mesh::Mesh;
 use crate::soup::PolygonSoup;
 
 use super::boundary::{Out, arg_ref, guard, guard_void, write_view};
-use super::diagnostic::hw_diagnostic;
+use super::diagnostic::{hand_over_built, hw_diagnostic};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{build_policy, hw_build_policy, hw_mesh, mesh_ref};
@@ -158,12 +158,7 @@ pub unsafe extern "C" fn hw_mesh_read(
         let soup = read_path(unsafe { path_arg(path) }?)?;
         let (mesh, diagnostic) = with_threads(|| Mesh::from_soup(&soup, policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
-        unsafe {
-            out.write(into_handle(hw_mesh { mesh }));
-            if let Some(out_diagnostic) = out_diagnostic {
-                out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
-            }
-        }
+        unsafe { hand_over_built(out, hw_mesh { mesh }, out_diagnostic, diagnostic) };
         Ok(())
     })
 }

@@ -4,7 +4,7 @@ use crate::mesh::Mesh;
 use crate::soup::{BuildError, BuildPolicy};
 
 use super::boundary::{Out, arg_ref, guard, guard_value, guard_void};
-use super::diagnostic::hw_diagnostic;
+use super::diagnostic::{hand_over_built, hw_diagnostic};
 use super::elements::{
     HW_ELEMENT_EDGE, HW_ELEMENT_FACE, HW_ELEMENT_HALFEDGE, HW_ELEMENT_VERTEX, hw_element_kind,
 };
@@ -115,12 +115,7 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
         let policy = build_policy(policy)?;
         let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
         // SAFETY: checked non-NULL; writable per the caller.
-        unsafe {
-            out.write(into_handle(hw_mesh { mesh }));
-            if let Some(out_diagnostic) = out_diagnostic {
-                out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
-            }
-        }
+        unsafe { hand_over_built(out, hw_mesh { mesh }, out_diagnostic, diagnostic) };
         Ok(())
     })
 }

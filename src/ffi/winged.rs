@@ -16,7 +16,7 @@ use super::boundary::{
     Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, guard, guard_value, guard_void,
     write_view,
 };
-use super::diagnostic::hw_diagnostic;
+use super::diagnostic::{hand_over_built, hw_diagnostic};
 use super::elements::id_conversions;
 use super::error::FfiError;
 use super::face_list::face_list_arg;
@@ -212,12 +212,7 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
         let policy: BuildPolicy = build_policy(policy)?;
         let (winged, diagnostic) = Winged::from_face_list(&list, policy)?;
         // SAFETY: checked non-NULL; writable per the caller.
-        unsafe {
-            out.write(into_handle(hw_winged { winged }));
-            if let Some(out_diagnostic) = out_diagnostic {
-                out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
-            }
-        }
+        unsafe { hand_over_built(out, hw_winged { winged }, out_diagnostic, diagnostic) };
         Ok(())
     })
 }
