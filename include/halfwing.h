@@ -296,6 +296,89 @@ typedef uint32_t hw_caps;
 typedef uint32_t hw_mesh_array;
 
 /**
+ * The dimension of the site set, as hw_voronoi_dimension() reports it.
+ */
+typedef uint32_t hw_site_dimension;
+
+/**
+ * Which index array hw_voronoi_view() shows.
+ */
+typedef uint32_t hw_voronoi_array;
+
+/**
+ * The shape of a Voronoi edge (see ::hw_voronoi_edge).
+ */
+typedef uint32_t hw_voronoi_edge_kind;
+
+/**
+ * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
+ */
+typedef struct {
+  /**
+   * ::HW_VORONOI_SEGMENT, ::HW_VORONOI_RAY or ::HW_VORONOI_LINE_EDGE.
+   */
+  hw_voronoi_edge_kind kind;
+  /**
+   * The site on the half-edge's left (whose cell it bounds).
+   */
+  uint32_t site;
+  /**
+   * The site on its right.
+   */
+  uint32_t opposite_site;
+  /**
+   * Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
+   */
+  uint32_t origin;
+  /**
+   * End vertex (`HW_INVALID_INDEX` when it runs to infinity).
+   */
+  uint32_t target;
+  /**
+   * Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
+   * where it ends). Line: the midpoint of the two sites.
+   */
+  double point[2];
+  /**
+   * Segment: the end. Otherwise equal to `point`.
+   */
+  double end[2];
+  /**
+   * Ray and line: the direction away from `point` (not normalised; for a half-edge coming
+   * from infinity it points back towards infinity, i.e. against the half-edge). Segment:
+   * `end - point`.
+   */
+  double direction[2];
+} hw_voronoi_edge;
+
+/**
+ * A distance function for hw_voronoi_label_image().
+ */
+typedef uint32_t hw_metric;
+
+/**
+ * What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
+ */
+typedef struct {
+  /**
+   * Picture width in pixels (> 0); the height follows the clip region's aspect ratio.
+   */
+  double width_px;
+  /**
+   * Fill cells with distinct pastel colours (otherwise outlines only).
+   */
+  bool fill_cells;
+  /**
+   * Draw the sites as dots.
+   */
+  bool sites;
+  /**
+   * Draw the Delaunay edges.
+   */
+  bool delaunay_edges;
+} hw_svg_options;
+
+/**
  * A vertex id of an ::hw_winged.
  */
 typedef struct {
@@ -388,89 +471,6 @@ typedef struct {
   uint32_t center;
   hw_wcirculator_kind kind;
 } hw_wcirculator;
-
-/**
- * The dimension of the site set, as hw_voronoi_dimension() reports it.
- */
-typedef uint32_t hw_site_dimension;
-
-/**
- * Which index array hw_voronoi_view() shows.
- */
-typedef uint32_t hw_voronoi_array;
-
-/**
- * The shape of a Voronoi edge (see ::hw_voronoi_edge).
- */
-typedef uint32_t hw_voronoi_edge_kind;
-
-/**
- * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
- */
-typedef struct {
-  /**
-   * ::HW_VORONOI_SEGMENT, ::HW_VORONOI_RAY or ::HW_VORONOI_LINE_EDGE.
-   */
-  hw_voronoi_edge_kind kind;
-  /**
-   * The site on the half-edge's left (whose cell it bounds).
-   */
-  uint32_t site;
-  /**
-   * The site on its right.
-   */
-  uint32_t opposite_site;
-  /**
-   * Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
-   */
-  uint32_t origin;
-  /**
-   * End vertex (`HW_INVALID_INDEX` when it runs to infinity).
-   */
-  uint32_t target;
-  /**
-   * Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
-   * where it ends). Line: the midpoint of the two sites.
-   */
-  double point[2];
-  /**
-   * Segment: the end. Otherwise equal to `point`.
-   */
-  double end[2];
-  /**
-   * Ray and line: the direction away from `point` (not normalised; for a half-edge coming
-   * from infinity it points back towards infinity, i.e. against the half-edge). Segment:
-   * `end - point`.
-   */
-  double direction[2];
-} hw_voronoi_edge;
-
-/**
- * A distance function for hw_voronoi_label_image().
- */
-typedef uint32_t hw_metric;
-
-/**
- * What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
- */
-typedef struct {
-  /**
-   * Picture width in pixels (> 0); the height follows the clip region's aspect ratio.
-   */
-  double width_px;
-  /**
-   * Fill cells with distinct pastel colours (otherwise outlines only).
-   */
-  bool fill_cells;
-  /**
-   * Draw the sites as dots.
-   */
-  bool sites;
-  /**
-   * Draw the Delaunay edges.
-   */
-  bool delaunay_edges;
-} hw_svg_options;
 
 /**
  * `double`.
@@ -824,82 +824,6 @@ typedef struct {
 #define HW_ARRAY_FACE_HALFEDGE 5
 
 /**
- * Face normals (Newell), indexed by face id.
- */
-#define HW_WNORMALS_FACES 0
-
-/**
- * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
- */
-#define HW_WNORMALS_VERTICES 1
-
-/**
- * The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge" table).
- */
-#define HW_WTABLE_VERTICES 0
-
-/**
- * The face table: id, stored edge ("Face-Edge").
- */
-#define HW_WTABLE_FACES 1
-
-/**
- * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
- */
-#define HW_WTABLE_EDGES 2
-
-/**
- * The three tables, vertex, face and edge, separated by a blank line.
- */
-#define HW_WTABLE_ALL 3
-
-/**
- * Seed 000 (Baumgart's cube): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
- * from 1 with a letter (V1, E1, F1).
- */
-#define HW_WNAMING_CW_CCW 0
-
-/**
- * Seed 003 (Granada): Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
- */
-#define HW_WNAMING_DIRECT_INVERSE 1
-
-/**
- * Seed 001 (Wikipedia): vert_origin ... edge_right_ccw; elements numbered from 0.
- */
-#define HW_WNAMING_LEFT_RIGHT 2
-
-/**
- * Columns aligned with spaces; a hole is `∅` (UTF-8).
- */
-#define HW_TABLE_TEXT 0
-
-/**
- * A Markdown table; a hole is `∅`.
- */
-#define HW_TABLE_MARKDOWN 1
-
-/**
- * Comma-separated values with a header row; a hole is an empty field.
- */
-#define HW_TABLE_CSV 2
-
-/**
- * Edges: the edges of a face's loop, or the edges at a vertex.
- */
-#define HW_WCIRC_EDGES 0
-
-/**
- * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
- */
-#define HW_WCIRC_VERTICES 1
-
-/**
- * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
- */
-#define HW_WCIRC_FACES 2
-
-/**
  * No sites.
  */
 #define HW_VORONOI_EMPTY 0
@@ -1008,6 +932,82 @@ typedef struct {
  * Chebyshev (L∞) distance `max(|dx|, |dy|)`.
  */
 #define HW_METRIC_CHEBYSHEV 2
+
+/**
+ * Face normals (Newell), indexed by face id.
+ */
+#define HW_WNORMALS_FACES 0
+
+/**
+ * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
+ */
+#define HW_WNORMALS_VERTICES 1
+
+/**
+ * The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge" table).
+ */
+#define HW_WTABLE_VERTICES 0
+
+/**
+ * The face table: id, stored edge ("Face-Edge").
+ */
+#define HW_WTABLE_FACES 1
+
+/**
+ * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
+ */
+#define HW_WTABLE_EDGES 2
+
+/**
+ * The three tables, vertex, face and edge, separated by a blank line.
+ */
+#define HW_WTABLE_ALL 3
+
+/**
+ * Seed 000 (Baumgart's cube): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
+ * from 1 with a letter (V1, E1, F1).
+ */
+#define HW_WNAMING_CW_CCW 0
+
+/**
+ * Seed 003 (Granada): Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+ */
+#define HW_WNAMING_DIRECT_INVERSE 1
+
+/**
+ * Seed 001 (Wikipedia): vert_origin ... edge_right_ccw; elements numbered from 0.
+ */
+#define HW_WNAMING_LEFT_RIGHT 2
+
+/**
+ * Columns aligned with spaces; a hole is `∅` (UTF-8).
+ */
+#define HW_TABLE_TEXT 0
+
+/**
+ * A Markdown table; a hole is `∅`.
+ */
+#define HW_TABLE_MARKDOWN 1
+
+/**
+ * Comma-separated values with a header row; a hole is an empty field.
+ */
+#define HW_TABLE_CSV 2
+
+/**
+ * Edges: the edges of a face's loop, or the edges at a vertex.
+ */
+#define HW_WCIRC_EDGES 0
+
+/**
+ * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
+ */
+#define HW_WCIRC_VERTICES 1
+
+/**
+ * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
+ */
+#define HW_WCIRC_FACES 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -2134,6 +2134,383 @@ hw_status hw_mesh_view_positions(const hw_mesh *mesh,
                                  size_t *out_n_vertices);
 
 /**
+ * Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`
+ * doubles (x, y per site).
+ *
+ * Predicates are exact, so the result is correct for any finite input: duplicates are merged
+ * (see ::HW_VORONOI_REPRESENTATIVE), collinear sites give parallel bisectors and no triangles,
+ * cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid input.
+ * A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+ *
+ * On success `*out_voronoi` receives a new diagram to release with hw_voronoi_free().
+ *
+ * # Safety
+ * `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_voronoi`
+ * writable.
+ */
+hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_voronoi);
+
+/**
+ * Releases a diagram. NULL is a no-op; a diagram freed already is detected and refused (the last
+ * error says so). Clipped cells made from it (::hw_voronoi_cells) stay valid.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a diagram from this library not in use by another thread.
+ */
+void hw_voronoi_free(hw_voronoi *voronoi);
+
+/**
+ * Number of input sites, duplicates included; 0 for a NULL diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+size_t hw_voronoi_n_sites(const hw_voronoi *voronoi);
+
+/**
+ * Number of distinct sites (= number of cells); 0 for a NULL diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+size_t hw_voronoi_n_unique_sites(const hw_voronoi *voronoi);
+
+/**
+ * Number of Delaunay triangles (0 when all sites are collinear); 0 for a NULL diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+size_t hw_voronoi_n_triangles(const hw_voronoi *voronoi);
+
+/**
+ * Number of Voronoi vertices; 0 for a NULL diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+size_t hw_voronoi_n_vertices(const hw_voronoi *voronoi);
+
+/**
+ * Number of Voronoi half-edges (twice the number of edges); 0 for a NULL diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+size_t hw_voronoi_n_halfedges(const hw_voronoi *voronoi);
+
+/**
+ * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL diagram, with the error recorded).
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram.
+ */
+hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
+
+/**
+ * A read-only view of one index array of the diagram (see ::hw_voronoi_array): `*out_data`
+ * (NULL when empty) and its length `*out_len`, valid as long as the diagram.
+ *
+ * A cell walk in C, as in the course notes:
+ * ```c
+ * uint32_t h = cell_halfedge[s], start = h;
+ * if (h != HW_INVALID_INDEX) do { visit(h); h = next[h]; } while (h != start);
+ * ```
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_data` and `out_len` writable.
+ */
+hw_status hw_voronoi_view(const hw_voronoi *voronoi,
+                          hw_voronoi_array which,
+                          const uint32_t **out_data,
+                          size_t *out_len);
+
+/**
+ * A read-only view of the sites as given: `*out_xy` (x, y per site, NULL when empty) and the
+ * number of sites `*out_n_sites`, valid as long as the diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_sites` writable.
+ */
+hw_status hw_voronoi_sites(const hw_voronoi *voronoi, const double **out_xy, size_t *out_n_sites);
+
+/**
+ * A read-only view of the Voronoi vertices (circumcentres): `*out_xy` (x, y per vertex, NULL
+ * when empty) and their number `*out_n_vertices`, valid as long as the diagram.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_vertices` writable.
+ */
+hw_status hw_voronoi_vertices(const hw_voronoi *voronoi,
+                              const double **out_xy,
+                              size_t *out_n_vertices);
+
+/**
+ * Describes the Voronoi edge of half-edge `halfedge` (see ::hw_voronoi_edge). An index out of
+ * range gives `HW_ERR_INVALID_HANDLE`.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_edge` writable.
+ */
+hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
+                                   uint32_t halfedge,
+                                   hw_voronoi_edge *out_edge);
+
+/**
+ * The Delaunay triangulation as a new half-edge mesh (z = 0): vertex `i` is site `i` (duplicates
+ * are isolated vertices), one triangle per Delaunay triangle, in the order of
+ * ::HW_VORONOI_TRIANGLES. Collinear input gives a mesh without faces. Release it with
+ * hw_mesh_free().
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_mesh` writable.
+ */
+hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh);
+
+/**
+ * The site nearest to the point (`x`, `y`) — the site whose cell contains it — exactly, ties
+ * going to the smallest index. `hint`, when it is a site index, starts the search there (a
+ * nearby site makes the query O(1)); pass `HW_INVALID_INDEX` for none. A NaN or infinite point
+ * gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_site` writable.
+ */
+hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
+                                  double x,
+                                  double y,
+                                  uint32_t hint,
+                                  uint32_t *out_site);
+
+/**
+ * Copies the sites whose cells share an edge with the cell of `site` (its Delaunay neighbours,
+ * less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*needed`
+ * (when not NULL) receives their number. A duplicate site answers for its representative. Out of
+ * range: `HW_ERR_INVALID_HANDLE`; `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
+ * `needed` NULL or writable.
+ */
+hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
+                                uint32_t site,
+                                uint32_t *out_sites,
+                                size_t capacity,
+                                size_t *needed);
+
+/**
+ * The Voronoi half-edge separating the cells of sites `a` and `b`, on the side of `a` (its twin,
+ * `h ^ 1`, is on the side of `b`). Duplicates answer for their representatives. Either site out
+ * of range: `HW_ERR_INVALID_HANDLE`; cells not adjacent: `HW_ERR_NOT_FOUND`.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_halfedge` writable.
+ */
+hw_status hw_voronoi_edge_between(const hw_voronoi *voronoi,
+                                  uint32_t a,
+                                  uint32_t b,
+                                  uint32_t *out_halfedge);
+
+/**
+ * Clips every cell to the rectangle `[xmin, xmax] × [ymin, ymax]`. A rectangle of zero or
+ * negative extent, or with a non-finite bound, gives `HW_ERR_INVALID_INPUT`. On success
+ * `*out_cells` receives new cells to release with hw_voronoi_cells_free().
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_cells` writable.
+ */
+hw_status hw_voronoi_clip_rect(const hw_voronoi *voronoi,
+                               double xmin,
+                               double ymin,
+                               double xmax,
+                               double ymax,
+                               hw_voronoi_cells **out_cells);
+
+/**
+ * Clips every cell to the convex polygon of `n_vertices` vertices given as `2 * n_vertices`
+ * doubles (x, y per vertex), in either orientation; vertices on the segment between their
+ * neighbours are dropped. Fewer than three distinct vertices, zero area or a non-finite vertex
+ * give `HW_ERR_INVALID_INPUT`, and so does a polygon that is not convex (the message names a
+ * vertex where it turns the wrong way). On success `*out_cells` receives new cells to release
+ * with hw_voronoi_cells_free().
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `clip_xy` must point to `2 * n_vertices` doubles;
+ * `out_cells` writable.
+ */
+hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
+                                 const double *clip_xy,
+                                 size_t n_vertices,
+                                 hw_voronoi_cells **out_cells);
+
+/**
+ * Releases clipped cells. NULL is a no-op; cells freed already are detected and refused.
+ *
+ * # Safety
+ * `cells` must be NULL or cells from this library not in use by another thread.
+ */
+void hw_voronoi_cells_free(hw_voronoi_cells *cells);
+
+/**
+ * Number of cells, one per input site (empty ones included); 0 for NULL.
+ *
+ * # Safety
+ * `cells` must be NULL or live cells.
+ */
+size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
+
+/**
+ * A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
+ * first, then Voronoi vertices inside it, then boundary crossings) and their number
+ * `*out_n_positions`, valid as long as the cells.
+ *
+ * # Safety
+ * `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.
+ */
+hw_status hw_voronoi_cells_positions(const hw_voronoi_cells *cells,
+                                     const double **out_xy,
+                                     size_t *out_n_positions);
+
+/**
+ * A read-only view of the cell of `site`: `*out_indices` (NULL when empty), indices into
+ * hw_voronoi_cells_positions(), counter-clockwise, and their number `*out_len` (0 for a
+ * duplicate site or a cell that misses the region). Out of range: `HW_ERR_INVALID_HANDLE`.
+ *
+ * # Safety
+ * `cells` must be NULL or live cells; `out_indices` and `out_len` writable.
+ */
+hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
+                                   uint32_t site,
+                                   const uint32_t **out_indices,
+                                   size_t *out_len);
+
+/**
+ * Area and centroid of the cell of `site`. An empty cell has area 0 and gives
+ * `HW_ERR_NOT_FOUND` when its centroid is asked for; pass NULL for an output not wanted. Out of
+ * range: `HW_ERR_INVALID_HANDLE`.
+ *
+ * # Safety
+ * `cells` must be NULL or live cells; `out_area` NULL or writable; `out_centroid` NULL or two
+ * writable doubles.
+ */
+hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
+                                         uint32_t site,
+                                         double *out_area,
+                                         double *out_centroid);
+
+/**
+ * The cells as a new half-edge mesh (z = 0) whose vertices are hw_voronoi_cells_positions(), so
+ * neighbouring cells share edges: face `k` is the `k`-th non-empty cell in site order (see
+ * hw_voronoi_cells_face_sites()). The mesh kernel can edit it. Release it with hw_mesh_free().
+ *
+ * # Safety
+ * `cells` must be NULL or live cells; `out_mesh` writable.
+ */
+hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mesh);
+
+/**
+ * Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*needed`, when
+ * not NULL, receives the face count); `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
+ *
+ * # Safety
+ * `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
+ * `needed` NULL or writable.
+ */
+hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
+                                      uint32_t *out_sites,
+                                      size_t capacity,
+                                      size_t *needed);
+
+/**
+ * Labels every pixel of a `width × height` image of the rectangle `[xmin, xmax] × [ymin, ymax]`
+ * with the index of the site nearest to the pixel's centre under `metric` — decided exactly,
+ * ties to the smallest index; duplicates never appear. Row-major, row 0 at the top (largest y).
+ *
+ * `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
+ * count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
+ * without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric or a
+ * non-finite bound give `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
+ * `needed` NULL or writable.
+ */
+hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
+                                 hw_metric metric_kind,
+                                 double xmin,
+                                 double ymin,
+                                 double xmax,
+                                 double ymax,
+                                 uint32_t width,
+                                 uint32_t height,
+                                 uint32_t *out_labels,
+                                 size_t capacity,
+                                 size_t *needed);
+
+/**
+ * The default SVG options: 800 pixels wide, filled cells, sites, no Delaunay edges.
+ */
+hw_svg_options hw_svg_options_default(void);
+
+/**
+ * Copies an SVG drawing of `cells` (clipped from `voronoi`) into `buf`, NUL-terminated;
+ * `options` NULL means hw_svg_options_default(). `*needed` (when not NULL) always receives the
+ * size needed, terminator included; a smaller `len` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells from
+ * another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
+ * `len` writable bytes; `needed` NULL or writable.
+ */
+hw_status hw_voronoi_svg(const hw_voronoi *voronoi,
+                         const hw_voronoi_cells *cells,
+                         const hw_svg_options *options,
+                         char *buf,
+                         size_t len,
+                         size_t *needed);
+
+/**
+ * Writes an SVG drawing of `cells` (clipped from `voronoi`) to the file `path`; `options` NULL
+ * means hw_svg_options_default(). A file that cannot be written gives `HW_ERR_IO`.
+ *
+ * # Safety
+ * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `path` NULL
+ * or NUL-terminated.
+ */
+hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
+                               const hw_voronoi_cells *cells,
+                               const hw_svg_options *options,
+                               const char *path);
+
+/**
+ * Lloyd relaxation: moves every site to the centroid of its Voronoi cell clipped to the convex
+ * polygon `clip_xy` (`2 * n_clip_vertices` doubles; a rectangle is four corners), repeatedly,
+ * for at most `max_iterations` iterations or until no site moved farther than `tolerance` in
+ * one iteration (0 runs them all).
+ *
+ * `xy` holds the `n_sites` sites (x, y each); the relaxed sites are written to `out_xy`, which
+ * holds as many doubles and may be the same array as `xy`. Sites whose cell misses the region
+ * stay where they are; a duplicate stays while its representative moves, so they separate.
+ * `*out_iterations` and `*out_max_displacement` (each may be NULL) receive the iterations run
+ * and the largest move of the last one. Bad sites, a bad clip polygon (see
+ * hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only
+ * when `n_sites` is 0); `clip_xy` to `2 * n_clip_vertices` doubles; the other outputs NULL or
+ * writable.
+ */
+hw_status hw_voronoi_lloyd(const double *xy,
+                           size_t n_sites,
+                           const double *clip_xy,
+                           size_t n_clip_vertices,
+                           uint32_t max_iterations,
+                           double tolerance,
+                           double *out_xy,
+                           uint32_t *out_iterations,
+                           double *out_max_displacement);
+
+/**
  * Creates an empty structure, to build with the Euler operators (hw_winged_mvfs() first).
  * Returns NULL only if the allocation fails.
  */
@@ -2549,383 +2926,6 @@ hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps)
  * doubles.
  */
 hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *xyz);
-
-/**
- * Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`
- * doubles (x, y per site).
- *
- * Predicates are exact, so the result is correct for any finite input: duplicates are merged
- * (see ::HW_VORONOI_REPRESENTATIVE), collinear sites give parallel bisectors and no triangles,
- * cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid input.
- * A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
- *
- * On success `*out_voronoi` receives a new diagram to release with hw_voronoi_free().
- *
- * # Safety
- * `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_voronoi`
- * writable.
- */
-hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_voronoi);
-
-/**
- * Releases a diagram. NULL is a no-op; a diagram freed already is detected and refused (the last
- * error says so). Clipped cells made from it (::hw_voronoi_cells) stay valid.
- *
- * # Safety
- * `voronoi` must be NULL or a diagram from this library not in use by another thread.
- */
-void hw_voronoi_free(hw_voronoi *voronoi);
-
-/**
- * Number of input sites, duplicates included; 0 for a NULL diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-size_t hw_voronoi_n_sites(const hw_voronoi *voronoi);
-
-/**
- * Number of distinct sites (= number of cells); 0 for a NULL diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-size_t hw_voronoi_n_unique_sites(const hw_voronoi *voronoi);
-
-/**
- * Number of Delaunay triangles (0 when all sites are collinear); 0 for a NULL diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-size_t hw_voronoi_n_triangles(const hw_voronoi *voronoi);
-
-/**
- * Number of Voronoi vertices; 0 for a NULL diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-size_t hw_voronoi_n_vertices(const hw_voronoi *voronoi);
-
-/**
- * Number of Voronoi half-edges (twice the number of edges); 0 for a NULL diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-size_t hw_voronoi_n_halfedges(const hw_voronoi *voronoi);
-
-/**
- * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL diagram, with the error recorded).
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram.
- */
-hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
-
-/**
- * A read-only view of one index array of the diagram (see ::hw_voronoi_array): `*out_data`
- * (NULL when empty) and its length `*out_len`, valid as long as the diagram.
- *
- * A cell walk in C, as in the course notes:
- * ```c
- * uint32_t h = cell_halfedge[s], start = h;
- * if (h != HW_INVALID_INDEX) do { visit(h); h = next[h]; } while (h != start);
- * ```
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_data` and `out_len` writable.
- */
-hw_status hw_voronoi_view(const hw_voronoi *voronoi,
-                          hw_voronoi_array which,
-                          const uint32_t **out_data,
-                          size_t *out_len);
-
-/**
- * A read-only view of the sites as given: `*out_xy` (x, y per site, NULL when empty) and the
- * number of sites `*out_n_sites`, valid as long as the diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_sites` writable.
- */
-hw_status hw_voronoi_sites(const hw_voronoi *voronoi, const double **out_xy, size_t *out_n_sites);
-
-/**
- * A read-only view of the Voronoi vertices (circumcentres): `*out_xy` (x, y per vertex, NULL
- * when empty) and their number `*out_n_vertices`, valid as long as the diagram.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_vertices` writable.
- */
-hw_status hw_voronoi_vertices(const hw_voronoi *voronoi,
-                              const double **out_xy,
-                              size_t *out_n_vertices);
-
-/**
- * Describes the Voronoi edge of half-edge `halfedge` (see ::hw_voronoi_edge). An index out of
- * range gives `HW_ERR_INVALID_HANDLE`.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_edge` writable.
- */
-hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
-                                   uint32_t halfedge,
-                                   hw_voronoi_edge *out_edge);
-
-/**
- * The Delaunay triangulation as a new half-edge mesh (z = 0): vertex `i` is site `i` (duplicates
- * are isolated vertices), one triangle per Delaunay triangle, in the order of
- * ::HW_VORONOI_TRIANGLES. Collinear input gives a mesh without faces. Release it with
- * hw_mesh_free().
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_mesh` writable.
- */
-hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh);
-
-/**
- * The site nearest to the point (`x`, `y`) — the site whose cell contains it — exactly, ties
- * going to the smallest index. `hint`, when it is a site index, starts the search there (a
- * nearby site makes the query O(1)); pass `HW_INVALID_INDEX` for none. A NaN or infinite point
- * gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_site` writable.
- */
-hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
-                                  double x,
-                                  double y,
-                                  uint32_t hint,
-                                  uint32_t *out_site);
-
-/**
- * Copies the sites whose cells share an edge with the cell of `site` (its Delaunay neighbours,
- * less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*needed`
- * (when not NULL) receives their number. A duplicate site answers for its representative. Out of
- * range: `HW_ERR_INVALID_HANDLE`; `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
- */
-hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
-                                uint32_t site,
-                                uint32_t *out_sites,
-                                size_t capacity,
-                                size_t *needed);
-
-/**
- * The Voronoi half-edge separating the cells of sites `a` and `b`, on the side of `a` (its twin,
- * `h ^ 1`, is on the side of `b`). Duplicates answer for their representatives. Either site out
- * of range: `HW_ERR_INVALID_HANDLE`; cells not adjacent: `HW_ERR_NOT_FOUND`.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_halfedge` writable.
- */
-hw_status hw_voronoi_edge_between(const hw_voronoi *voronoi,
-                                  uint32_t a,
-                                  uint32_t b,
-                                  uint32_t *out_halfedge);
-
-/**
- * Clips every cell to the rectangle `[xmin, xmax] × [ymin, ymax]`. A rectangle of zero or
- * negative extent, or with a non-finite bound, gives `HW_ERR_INVALID_INPUT`. On success
- * `*out_cells` receives new cells to release with hw_voronoi_cells_free().
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_cells` writable.
- */
-hw_status hw_voronoi_clip_rect(const hw_voronoi *voronoi,
-                               double xmin,
-                               double ymin,
-                               double xmax,
-                               double ymax,
-                               hw_voronoi_cells **out_cells);
-
-/**
- * Clips every cell to the convex polygon of `n_vertices` vertices given as `2 * n_vertices`
- * doubles (x, y per vertex), in either orientation; vertices on the segment between their
- * neighbours are dropped. Fewer than three distinct vertices, zero area or a non-finite vertex
- * give `HW_ERR_INVALID_INPUT`, and so does a polygon that is not convex (the message names a
- * vertex where it turns the wrong way). On success `*out_cells` receives new cells to release
- * with hw_voronoi_cells_free().
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `clip_xy` must point to `2 * n_vertices` doubles;
- * `out_cells` writable.
- */
-hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
-                                 const double *clip_xy,
-                                 size_t n_vertices,
-                                 hw_voronoi_cells **out_cells);
-
-/**
- * Releases clipped cells. NULL is a no-op; cells freed already are detected and refused.
- *
- * # Safety
- * `cells` must be NULL or cells from this library not in use by another thread.
- */
-void hw_voronoi_cells_free(hw_voronoi_cells *cells);
-
-/**
- * Number of cells, one per input site (empty ones included); 0 for NULL.
- *
- * # Safety
- * `cells` must be NULL or live cells.
- */
-size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
-
-/**
- * A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
- * first, then Voronoi vertices inside it, then boundary crossings) and their number
- * `*out_n_positions`, valid as long as the cells.
- *
- * # Safety
- * `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.
- */
-hw_status hw_voronoi_cells_positions(const hw_voronoi_cells *cells,
-                                     const double **out_xy,
-                                     size_t *out_n_positions);
-
-/**
- * A read-only view of the cell of `site`: `*out_indices` (NULL when empty), indices into
- * hw_voronoi_cells_positions(), counter-clockwise, and their number `*out_len` (0 for a
- * duplicate site or a cell that misses the region). Out of range: `HW_ERR_INVALID_HANDLE`.
- *
- * # Safety
- * `cells` must be NULL or live cells; `out_indices` and `out_len` writable.
- */
-hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
-                                   uint32_t site,
-                                   const uint32_t **out_indices,
-                                   size_t *out_len);
-
-/**
- * Area and centroid of the cell of `site`. An empty cell has area 0 and gives
- * `HW_ERR_NOT_FOUND` when its centroid is asked for; pass NULL for an output not wanted. Out of
- * range: `HW_ERR_INVALID_HANDLE`.
- *
- * # Safety
- * `cells` must be NULL or live cells; `out_area` NULL or writable; `out_centroid` NULL or two
- * writable doubles.
- */
-hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
-                                         uint32_t site,
-                                         double *out_area,
-                                         double *out_centroid);
-
-/**
- * The cells as a new half-edge mesh (z = 0) whose vertices are hw_voronoi_cells_positions(), so
- * neighbouring cells share edges: face `k` is the `k`-th non-empty cell in site order (see
- * hw_voronoi_cells_face_sites()). The mesh kernel can edit it. Release it with hw_mesh_free().
- *
- * # Safety
- * `cells` must be NULL or live cells; `out_mesh` writable.
- */
-hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mesh);
-
-/**
- * Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*needed`, when
- * not NULL, receives the face count); `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
- *
- * # Safety
- * `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
- */
-hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
-                                      uint32_t *out_sites,
-                                      size_t capacity,
-                                      size_t *needed);
-
-/**
- * Labels every pixel of a `width × height` image of the rectangle `[xmin, xmax] × [ymin, ymax]`
- * with the index of the site nearest to the pixel's centre under `metric` — decided exactly,
- * ties to the smallest index; duplicates never appear. Row-major, row 0 at the top (largest y).
- *
- * `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
- * count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
- * without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric or a
- * non-finite bound give `HW_ERR_INVALID_INPUT`.
- *
- * # Safety
- * `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
- */
-hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
-                                 hw_metric metric_kind,
-                                 double xmin,
-                                 double ymin,
-                                 double xmax,
-                                 double ymax,
-                                 uint32_t width,
-                                 uint32_t height,
-                                 uint32_t *out_labels,
-                                 size_t capacity,
-                                 size_t *needed);
-
-/**
- * The default SVG options: 800 pixels wide, filled cells, sites, no Delaunay edges.
- */
-hw_svg_options hw_svg_options_default(void);
-
-/**
- * Copies an SVG drawing of `cells` (clipped from `voronoi`) into `buf`, NUL-terminated;
- * `options` NULL means hw_svg_options_default(). `*needed` (when not NULL) always receives the
- * size needed, terminator included; a smaller `len` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells from
- * another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
- *
- * # Safety
- * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
- * `len` writable bytes; `needed` NULL or writable.
- */
-hw_status hw_voronoi_svg(const hw_voronoi *voronoi,
-                         const hw_voronoi_cells *cells,
-                         const hw_svg_options *options,
-                         char *buf,
-                         size_t len,
-                         size_t *needed);
-
-/**
- * Writes an SVG drawing of `cells` (clipped from `voronoi`) to the file `path`; `options` NULL
- * means hw_svg_options_default(). A file that cannot be written gives `HW_ERR_IO`.
- *
- * # Safety
- * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `path` NULL
- * or NUL-terminated.
- */
-hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
-                               const hw_voronoi_cells *cells,
-                               const hw_svg_options *options,
-                               const char *path);
-
-/**
- * Lloyd relaxation: moves every site to the centroid of its Voronoi cell clipped to the convex
- * polygon `clip_xy` (`2 * n_clip_vertices` doubles; a rectangle is four corners), repeatedly,
- * for at most `max_iterations` iterations or until no site moved farther than `tolerance` in
- * one iteration (0 runs them all).
- *
- * `xy` holds the `n_sites` sites (x, y each); the relaxed sites are written to `out_xy`, which
- * holds as many doubles and may be the same array as `xy`. Sites whose cell misses the region
- * stay where they are; a duplicate stays while its representative moves, so they separate.
- * `*out_iterations` and `*out_max_displacement` (each may be NULL) receive the iterations run
- * and the largest move of the last one. Bad sites, a bad clip polygon (see
- * hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`.
- *
- * # Safety
- * `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only
- * when `n_sites` is 0); `clip_xy` to `2 * n_clip_vertices` doubles; the other outputs NULL or
- * writable.
- */
-hw_status hw_voronoi_lloyd(const double *xy,
-                           size_t n_sites,
-                           const double *clip_xy,
-                           size_t n_clip_vertices,
-                           uint32_t max_iterations,
-                           double tolerance,
-                           double *out_xy,
-                           uint32_t *out_iterations,
-                           double *out_max_displacement);
 
 #ifdef __cplusplus
 }  // extern "C"
