@@ -55,36 +55,49 @@ pub struct hw_circulator {
     pub kind: hw_circulator_kind,
 }
 
-fn begin(
-    mesh: &Mesh,
+/// Starts a circulator of `kind` around `center`, from the half-edge `start` finds on the mesh, and
+/// writes it through `out` (only on success).
+///
+/// # Safety
+/// `raw_mesh` must be NULL or a live mesh; `out` NULL or writable.
+unsafe fn begin(
     raw_mesh: *const hw_mesh,
-    start: HalfedgeId,
     center: Center,
     kind: hw_circulator_kind,
-) -> Result<hw_circulator, FfiError> {
-    let allowed = match center {
-        Center::Vertex => kind <= HW_CIRC_FACES,
-        Center::Face => kind <= HW_CIRC_FACES && kind != HW_CIRC_INCOMING,
-        Center::Loop => kind == HW_CIRC_HALFEDGES,
-    };
-    if !allowed {
-        return Err(FfiError::invalid_input(format!(
-            "circulator kind {kind} does not apply here"
-        )));
-    }
-    let step = if center == Center::Vertex {
-        Step::RotateCcw
-    } else {
-        Step::Next
-    };
-    let progress = HalfedgeWalk::with_step(mesh, start, step).progress();
-    Ok(hw_circulator {
-        mesh: raw_mesh,
-        start: progress.start,
-        current: progress.current,
-        remaining: u32::try_from(progress.remaining).unwrap_or(u32::MAX),
-        center: center as u32,
-        kind,
+    out: *mut hw_circulator,
+    start: impl FnOnce(&Mesh) -> Result<HalfedgeId, FfiError>,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out, "out")?;
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(raw_mesh) }?;
+        let allowed = match center {
+            Center::Vertex => kind <= HW_CIRC_FACES,
+            Center::Face => kind <= HW_CIRC_FACES && kind != HW_CIRC_INCOMING,
+            Center::Loop => kind == HW_CIRC_HALFEDGES,
+        };
+        if !allowed {
+            return Err(FfiError::invalid_input(format!(
+                "circulator kind {kind} does not apply here"
+            )));
+        }
+        let step = if center == Center::Vertex {
+            Step::RotateCcw
+        } else {
+            Step::Next
+        };
+        let progress = HalfedgeWalk::with_step(mesh, start(mesh)?, step).progress();
+        let circulator = hw_circulator {
+            mesh: raw_mesh,
+            start: progress.start,
+            current: progress.current,
+            remaining: u32::try_from(progress.remaining).unwrap_or(u32::MAX),
+            center: center as u32,
+            kind,
+        };
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(circulator) };
+        Ok(())
     })
 }
 
@@ -99,16 +112,12 @@ pub unsafe extern "C" fn hw_circ_around_vertex(
     kind: hw_circulator_kind,
     out: *mut hw_circulator,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out, "out")?;
-        // SAFETY: forwarded from the caller.
-        let m = unsafe { mesh_ref(mesh) }?;
-        let start = m.try_vertex_halfedge(v.into())?;
-        let circulator = begin(m, mesh, start, Center::Vertex, kind)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(circulator) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        begin(mesh, Center::Vertex, kind, out, |m| {
+            Ok(m.try_vertex_halfedge(v.into())?)
+        })
+    }
 }
 
 /// Starts a walk around face `f`.
@@ -122,16 +131,12 @@ pub unsafe extern "C" fn hw_circ_around_face(
     kind: hw_circulator_kind,
     out: *mut hw_circulator,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out, "out")?;
-        // SAFETY: forwarded from the caller.
-        let m = unsafe { mesh_ref(mesh) }?;
-        let start = m.try_face_halfedge(f.into())?;
-        let circulator = begin(m, mesh, start, Center::Face, kind)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(circulator) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        begin(mesh, Center::Face, kind, out, |m| {
+            Ok(m.try_face_halfedge(f.into())?)
+        })
+    }
 }
 
 /// Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
@@ -145,16 +150,12 @@ pub unsafe extern "C" fn hw_circ_along_loop(
     h: hw_halfedge,
     out: *mut hw_circulator,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out, "out")?;
-        // SAFETY: forwarded from the caller.
-        let m = unsafe { mesh_ref(mesh) }?;
-        let start = m.check_halfedge(h.into())?;
-        let circulator = begin(m, mesh, start, Center::Loop, HW_CIRC_HALFEDGES)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(circulator) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        begin(mesh, Center::Loop, HW_CIRC_HALFEDGES, out, |m| {
+            Ok(m.check_halfedge(h.into())?)
+        })
+    }
 }
 
 /// Advances `circulator` (which must yield `kind`) to the next element: `Some(id)` or `None` when
