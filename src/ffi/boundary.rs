@@ -223,3 +223,24 @@ pub(crate) unsafe fn point_arg(xyz: *const f64, name: &str) -> Result<[f64; 3], 
     }
     Ok(point)
 }
+
+/// The protocol of every `*_next_*` call of a stack circulator: the next element goes through
+/// `out` and the call returns `true`; at the end of the walk, or on an error (recorded), it returns
+/// `false` and `out` is untouched.
+///
+/// # Safety
+/// `out` must be NULL or writable.
+pub(crate) unsafe fn next_element<T>(
+    out: *mut T,
+    advance: impl FnOnce() -> Result<Option<T>, FfiError>,
+) -> bool {
+    guard_value(false, || {
+        let out = Out::new(out, "out")?;
+        let Some(element) = advance()? else {
+            return Ok(false);
+        };
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(element) };
+        Ok(true)
+    })
+}

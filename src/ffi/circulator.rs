@@ -14,7 +14,7 @@
 
 use crate::mesh::{EdgeId, FaceId, HalfedgeId, HalfedgeWalk, Mesh, Step, VertexId, WalkProgress};
 
-use super::boundary::{Out, arg_mut, guard, guard_value};
+use super::boundary::{Out, arg_mut, guard, next_element};
 use super::elements::{HW_INVALID_INDEX, hw_edge, hw_face, hw_halfedge, hw_vertex};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
@@ -214,8 +214,7 @@ unsafe fn advance(
     Ok(found)
 }
 
-/// Writes the next element of a circulator through `out` and returns `true`, or returns `false`
-/// when the walk is over (or on a bad argument, with the error recorded).
+/// Writes the next element of a circulator through `out` (see `next_element`).
 ///
 /// # Safety
 /// As for `advance`; `out` NULL or writable.
@@ -225,16 +224,8 @@ unsafe fn next_into<T>(
     out: *mut T,
     wrap: impl FnOnce(u32) -> T,
 ) -> bool {
-    guard_value(false, || {
-        let out = Out::new(out, "out")?;
-        // SAFETY: forwarded from the caller.
-        let Some(id) = (unsafe { advance(circulator, kind) })? else {
-            return Ok(false);
-        };
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(wrap(id)) };
-        Ok(true)
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe { next_element(out, || Ok(advance(circulator, kind)?.map(wrap))) }
 }
 
 /// Next half-edge of a ::HW_CIRC_HALFEDGES or ::HW_CIRC_INCOMING circulator.

@@ -16,7 +16,7 @@
 
 use crate::winged::{EdgeId, EdgeUse, Side, Step, Walk, WalkState, Winged};
 
-use super::boundary::{Out, arg_mut, guard, guard_value};
+use super::boundary::{Out, arg_mut, guard, next_element};
 use super::elements::HW_INVALID_INDEX;
 use super::error::FfiError;
 use super::status::hw_status;
@@ -200,8 +200,7 @@ unsafe fn advance(
     Ok(found)
 }
 
-/// Writes the next element of a circulator through `out` and returns `true`, or returns `false`
-/// when the walk is over (or on a bad argument, with the error recorded).
+/// Writes the next element of a circulator through `out` (see `next_element`).
 ///
 /// # Safety
 /// As for `advance`; `out` NULL or writable.
@@ -211,16 +210,8 @@ unsafe fn next_into<T>(
     out: *mut T,
     wrap: impl FnOnce(u32) -> T,
 ) -> bool {
-    guard_value(false, || {
-        let out = Out::new(out, "out")?;
-        // SAFETY: forwarded from the caller.
-        let Some(id) = (unsafe { advance(circulator, kind) })? else {
-            return Ok(false);
-        };
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(wrap(id)) };
-        Ok(true)
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe { next_element(out, || Ok(advance(circulator, kind)?.map(wrap))) }
 }
 
 /// Next edge of a ::HW_WCIRC_EDGES circulator.
