@@ -193,6 +193,30 @@ pub(crate) unsafe fn copy_items<T: Copy>(
     Ok(())
 }
 
+/// The whole body of a zero-copy view call: checks both outputs (`data_name` is the pointer
+/// output's name in the C signature, for the message), looks the view up, then writes its start
+/// (NULL when empty) and length.
+///
+/// # Safety
+/// `out_data` and `out_len` must be NULL or writable.
+pub(crate) unsafe fn give_view<'a, T: 'a>(
+    out_data: *mut *const T,
+    data_name: &str,
+    out_len: *mut usize,
+    view: impl FnOnce() -> Result<&'a [T], FfiError>,
+) -> hw_status {
+    guard(|| {
+        let (out_data, out_len) = (
+            Out::new(out_data, data_name)?,
+            Out::new(out_len, "out_len")?,
+        );
+        let data = view()?;
+        // SAFETY: both checked non-NULL, writable per the caller.
+        unsafe { write_view(out_data, out_len, data) };
+        Ok(())
+    })
+}
+
 /// Writes a zero-copy view (`*out_data`, NULL when empty, and `*out_len`).
 ///
 /// # Safety

@@ -2,7 +2,7 @@
 
 use crate::soup::{Diagnostic, EdgeReport};
 
-use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, write_view};
+use super::boundary::{Out, arg_ref, copy_text, give_view, guard, guard_value, guard_void};
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
@@ -173,17 +173,12 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
     out_ids: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_ids, out_len) = (Out::new(out_ids, "out_ids")?, Out::new(out_len, "out_len")?);
-        // SAFETY: forwarded from the caller.
-        let ids = id_list(
-            &unsafe { arg_ref(diagnostic, "diagnostic") }?.diagnostic,
-            list,
-        )?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { write_view(out_ids, out_len, ids) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_ids, "out_ids", out_len, || {
+            id_list(&arg_ref(diagnostic, "diagnostic")?.diagnostic, list)
+        })
+    }
 }
 
 /// The number of edges in one edge list.

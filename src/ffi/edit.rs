@@ -7,7 +7,7 @@
 
 use crate::mesh::{EditError, IndexMaps, VertexId};
 
-use super::boundary::{Out, arg_mut, arg_ref, arg_slice, guard, guard_void, point_arg, write_view};
+use super::boundary::{Out, arg_mut, arg_ref, arg_slice, give_view, guard, guard_void, point_arg};
 use super::elements::*;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -275,25 +275,21 @@ pub unsafe extern "C" fn hw_index_maps_view(
     out_map: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_map, out_len) = (Out::new(out_map, "out_map")?, Out::new(out_len, "out_len")?);
-        // SAFETY: forwarded from the caller.
-        let maps = &unsafe { arg_ref(maps, "maps") }?.maps;
-        let map = match kind {
-            HW_ELEMENT_VERTEX => &maps.vertices,
-            HW_ELEMENT_HALFEDGE => &maps.halfedges,
-            HW_ELEMENT_EDGE => &maps.edges,
-            HW_ELEMENT_FACE => &maps.faces,
-            other => {
-                return Err(FfiError::invalid_input(format!(
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_map, "out_map", out_len, || {
+            let maps = &arg_ref(maps, "maps")?.maps;
+            match kind {
+                HW_ELEMENT_VERTEX => Ok(&maps.vertices[..]),
+                HW_ELEMENT_HALFEDGE => Ok(&maps.halfedges[..]),
+                HW_ELEMENT_EDGE => Ok(&maps.edges[..]),
+                HW_ELEMENT_FACE => Ok(&maps.faces[..]),
+                other => Err(FfiError::invalid_input(format!(
                     "unknown element kind {other}"
-                )));
+                ))),
             }
-        };
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { write_view(out_map, out_len, map) };
-        Ok(())
-    })
+        })
+    }
 }
 
 /// Releases index maps. NULL is a no-op; freeing twice is detected and refused.

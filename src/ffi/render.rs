@@ -7,7 +7,7 @@ use crate::render::{
     SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer, voronoi_cell_buffer,
 };
 
-use super::boundary::{Out, arg_ref, arg_slice, guard, guard_value, guard_void, write_view};
+use super::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
 use super::diagnostic::hw_diagnostic;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -403,17 +403,12 @@ pub unsafe extern "C" fn hw_render_buffers_floats(
     out_data: *mut *const f32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let data = float_array(unsafe { contents_ref(buffers) }?, which)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, data) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_data, "out_data", out_len, || {
+            float_array(contents_ref(buffers)?, which)
+        })
+    }
 }
 
 /// A zero-copy view of one `uint32_t` array: `*out_data` (NULL when empty) and its length
@@ -428,17 +423,12 @@ pub unsafe extern "C" fn hw_render_buffers_indices(
     out_data: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let data = index_array(unsafe { contents_ref(buffers) }?, which)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, data) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_data, "out_data", out_len, || {
+            index_array(contents_ref(buffers)?, which)
+        })
+    }
 }
 
 /// Number of render vertices (entries of the per-vertex arrays); 0 for NULL.

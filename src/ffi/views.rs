@@ -11,7 +11,7 @@
 
 use crate::mesh::Mesh;
 
-use super::boundary::{Out, guard, write_view};
+use super::boundary::{Out, give_view, guard};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
 use super::status::hw_status;
@@ -59,17 +59,12 @@ pub unsafe extern "C" fn hw_mesh_view(
     out_data: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let data = array(unsafe { mesh_ref(mesh) }?, which)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, data) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_data, "out_data", out_len, || {
+            array(mesh_ref(mesh)?, which)
+        })
+    }
 }
 
 /// A read-only view of the vertex positions: `*out_xyz` holds `3 * *out_n_vertices` doubles

@@ -8,7 +8,7 @@ use crate::soup::BuildPolicy;
 use crate::voronoi::{Dimension, EdgeGeometry, INVALID, Voronoi, VoronoiError};
 
 use super::boundary::{
-    Out, arg_ref, arg_slice, copy_items, guard, guard_value, guard_void, write_view,
+    Out, arg_ref, arg_slice, copy_items, give_view, guard, guard_value, guard_void,
 };
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -277,17 +277,12 @@ pub unsafe extern "C" fn hw_voronoi_view(
     out_data: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let data = array(unsafe { voronoi_ref(voronoi) }?, which)?;
-        // SAFETY: both checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, data) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_data, "out_data", out_len, || {
+            array(voronoi_ref(voronoi)?, which)
+        })
+    }
 }
 
 /// Writes a view of points as `2 * len` doubles.

@@ -5,7 +5,7 @@ use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
 use crate::voronoi::{ClipPolygon, ClippedCells, polygon_area_centroid};
 
-use super::boundary::{Out, arg_ref, copy_items, guard, guard_value, guard_void, write_view};
+use super::boundary::{Out, arg_ref, copy_items, give_view, guard, guard_value, guard_void};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::hw_mesh;
@@ -180,17 +180,12 @@ pub unsafe extern "C" fn hw_voronoi_cells_polygon(
     out_indices: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_indices, "out_indices")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let polygon = unsafe { cells_ref(cells) }?.cell(site)?;
-        // SAFETY: both checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, polygon) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_indices, "out_indices", out_len, || {
+            Ok(cells_ref(cells)?.cell(site)?)
+        })
+    }
 }
 
 /// Area and centroid of the cell of `site`. An empty cell has area 0 and gives

@@ -13,8 +13,8 @@ use crate::winged::{
 };
 
 use super::boundary::{
-    Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, guard, guard_value, guard_void,
-    write_view,
+    Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, give_view, guard, guard_value,
+    guard_void,
 };
 use super::diagnostic::{hand_over_built, hw_diagnostic};
 use super::elements::id_conversions;
@@ -436,23 +436,19 @@ pub unsafe extern "C" fn hw_winged_edge_records(
     out_records: *mut *const hw_wedge_record,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_records, out_len) = (
-            Out::new(out_records, "out_records")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let records = unsafe { winged_ref(winged) }?.edge_records();
-        // SAFETY: `hw_wedge_record` and `EdgeRecord` are both `repr(C)` structs of eight 32-bit
-        // ids in the same order (sizes and alignments asserted above), so the slice reads as
-        // either type.
-        let view = unsafe {
-            std::slice::from_raw_parts(records.as_ptr().cast::<hw_wedge_record>(), records.len())
-        };
-        // SAFETY: checked non-NULL; writable per the caller.
-        unsafe { write_view(out_records, out_len, view) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_records, "out_records", out_len, || {
+            let records = winged_ref(winged)?.edge_records();
+            // SAFETY: `hw_wedge_record` and `EdgeRecord` are both `repr(C)` structs of eight
+            // 32-bit ids in the same order (sizes and alignments asserted above), so the slice
+            // reads as either type.
+            Ok(std::slice::from_raw_parts(
+                records.as_ptr().cast::<hw_wedge_record>(),
+                records.len(),
+            ))
+        })
+    }
 }
 
 /// The edge vertex `v` stores: its ring starts there (for a boundary vertex, the edge whose side
