@@ -213,6 +213,26 @@ class winged;
 class voronoi;
 class voronoi_cells;
 
+namespace detail {
+
+/// Calls a C builder of the hw_mesh_from_indexed() form with the three arrays and returns the new
+/// object; `report`, when given, receives the build's diagnostic.
+template <class T, class Builder>
+T* build_indexed(Builder build, const std::vector<double>& positions,
+                 const std::vector<uint32_t>& face_sizes, const std::vector<uint32_t>& indices,
+                 hw_build_policy policy, diagnostic* report) {
+  if (positions.size() % 3 != 0)
+    throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+  T* raw = nullptr;
+  hw_diagnostic* found = nullptr;
+  check(build(positions.data(), positions.size() / 3, face_sizes.data(), face_sizes.size(),
+              indices.data(), indices.size(), policy, &raw, report ? &found : nullptr));
+  if (report) *report = diagnostic(found);
+  return raw;
+}
+
+}  // namespace detail
+
 /// A half-edge polygon mesh (owns an hw_mesh). Const methods may run concurrently; the others
 /// need exclusive access. Failures throw hw::error.
 class mesh {
@@ -229,15 +249,8 @@ class mesh {
                            const std::vector<uint32_t>& indices,
                            hw_build_policy policy = HW_BUILD_STRICT,
                            diagnostic* report = nullptr) {
-    if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
-    hw_mesh* raw = nullptr;
-    hw_diagnostic* found = nullptr;
-    check(hw_mesh_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
-                               face_sizes.size(), indices.data(), indices.size(), policy, &raw,
-                               report ? &found : nullptr));
-    if (report) *report = diagnostic(found);
-    return mesh(raw);
+    return mesh(detail::build_indexed<hw_mesh>(hw_mesh_from_indexed, positions, face_sizes,
+                                               indices, policy, report));
   }
 
   /// Reads an OBJ, OFF or PLY file; see hw_mesh_read().
@@ -495,15 +508,8 @@ class winged {
                              const std::vector<uint32_t>& indices,
                              hw_build_policy policy = HW_BUILD_STRICT,
                              diagnostic* report = nullptr) {
-    if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
-    hw_winged* raw = nullptr;
-    hw_diagnostic* found = nullptr;
-    check(hw_winged_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
-                                 face_sizes.size(), indices.data(), indices.size(), policy, &raw,
-                                 report ? &found : nullptr));
-    if (report) *report = diagnostic(found);
-    return winged(raw);
+    return winged(detail::build_indexed<hw_winged>(hw_winged_from_indexed, positions, face_sizes,
+                                                   indices, policy, report));
   }
 
   /// The winged-edge structure of a half-edge mesh (same ids); see hw_winged_from_mesh().
