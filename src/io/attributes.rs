@@ -108,6 +108,19 @@ impl VertexAttributes {
                 .and_then(|corner| fold_to_vertices(corner, &soup.indices, n, [0.0; 2], same_bits)),
         }
     }
+
+    /// Fills `row` with the values of one vertex record, in the order per-vertex formats write
+    /// them: position, then normal, then texture coordinates (those present).
+    pub(crate) fn vertex_row(&self, soup: &PolygonSoup, vertex: usize, row: &mut Vec<f64>) {
+        row.clear();
+        row.extend_from_slice(&soup.positions[vertex]);
+        if let Some(normals) = &self.normals {
+            row.extend_from_slice(&normals[vertex]);
+        }
+        if let Some(uvs) = &self.uvs {
+            row.extend_from_slice(&uvs[vertex]);
+        }
+    }
 }
 
 #[cfg(test)]

@@ -28,15 +28,8 @@ pub fn write_off(out: impl Write, soup: &PolygonSoup) -> Result<(), IoError> {
     writeln!(out, "{texture}{normal}OFF")?;
     writeln!(out, "{} {} 0", soup.positions.len(), soup.face_sizes.len())?;
     let mut row = Vec::with_capacity(8);
-    for (vertex, position) in soup.positions.iter().enumerate() {
-        row.clear();
-        row.extend_from_slice(position);
-        if let Some(normals) = &attributes.normals {
-            row.extend_from_slice(&normals[vertex]);
-        }
-        if let Some(uvs) = &attributes.uvs {
-            row.extend_from_slice(&uvs[vertex]);
-        }
+    for vertex in 0..soup.positions.len() {
+        attributes.vertex_row(soup, vertex, &mut row);
         write_row(&mut out, "", &row)?;
     }
     let mut corners = soup.indices.iter();

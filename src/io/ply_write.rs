@@ -63,15 +63,8 @@ pub fn write_ply(
     )?;
 
     let mut row = Vec::with_capacity(8);
-    for (vertex, position) in soup.positions.iter().enumerate() {
-        row.clear();
-        row.extend_from_slice(position);
-        if let Some(normals) = &attributes.normals {
-            row.extend_from_slice(&normals[vertex]);
-        }
-        if let Some(uvs) = &attributes.uvs {
-            row.extend_from_slice(&uvs[vertex]);
-        }
+    for vertex in 0..soup.positions.len() {
+        attributes.vertex_row(soup, vertex, &mut row);
         if encoding == PlyEncoding::Ascii {
             write_row(&mut out, "", &row)?;
         } else {
