@@ -214,41 +214,32 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
             unit_face_normals[face.idx()],
             corner_angle(mesh, h),
         );
-        // Counter-clockwise: cross the edge of prev(g) into face(twin(prev(g))).
+        // Turns from h by `turn`, adding each corner met while the faces stay smooth; `true` when
+        // the turn came back to h (a closed fan: nothing is left to gather the other way).
         let budget = mesh.halfedge_capacity();
-        let (mut g, mut steps, mut closed) = (h, 0, false);
-        while steps < budget {
-            let rotated = mesh.prev(g).twin();
-            if rotated == h {
-                closed = true;
-                break;
-            }
-            if !smooth_across(mesh.face(g), mesh.face(rotated)) {
-                break;
-            }
-            add_scaled(
-                &mut sum,
-                unit_face_normals[mesh.face(rotated).idx()],
-                corner_angle(mesh, rotated),
-            );
-            g = rotated;
-            steps += 1;
-        }
-        if !closed {
-            // Clockwise: cross the edge of g into face(next(twin(g))).
+        let gather = |sum: &mut [f64; 3], turn: &dyn Fn(HalfedgeId) -> HalfedgeId| -> bool {
             let mut g = h;
             for _ in 0..budget {
-                let rotated = mesh.next(g.twin());
-                if rotated == h || !smooth_across(mesh.face(g), mesh.face(rotated)) {
-                    break;
+                let rotated = turn(g);
+                if rotated == h {
+                    return true;
+                }
+                if !smooth_across(mesh.face(g), mesh.face(rotated)) {
+                    return false;
                 }
                 add_scaled(
-                    &mut sum,
+                    sum,
                     unit_face_normals[mesh.face(rotated).idx()],
                     corner_angle(mesh, rotated),
                 );
                 g = rotated;
             }
+            false
+        };
+        // Counter-clockwise crosses the edge of prev(g) into face(twin(prev(g))); clockwise crosses
+        // the edge of g into face(next(twin(g))).
+        if !gather(&mut sum, &|g| mesh.prev(g).twin()) {
+            gather(&mut sum, &|g| mesh.next(g.twin()));
         }
         normalized(sum)
     };
