@@ -1,18 +1,23 @@
 //! Bulk construction from an indexed face list.
 //!
-//! [`soup::resolve`](crate::soup::resolve) pairs the directed edges by bucketing and applies the
-//! policy; this module turns the pairing into half-edges in three linear passes:
-//! 1. number the edges in corner order (a corner opens a new edge unless its partner came
-//!    first), so each face's half-edges sit close together in memory;
-//! 2. fill origin/next/prev/face face by face, plus the origin of each boundary twin;
-//! 3. link boundary half-edges into loops through each vertex's outgoing boundary half-edge
-//!    (walking the fan only at vertices with several boundary gaps).
+//! The faces are walked once, in order, and each corner meets its edge in
+//! [`EdgeBuckets`](crate::soup::EdgeBuckets): the first corner on an edge opens edge `e`
+//! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
+//! twin. Each face's loop is written as soon as its corners are known, so half-edges are numbered
+//! in corner order and each face's half-edges sit close together in memory. Boundary half-edges
+//! are then linked into loops through each vertex's outgoing boundary half-edge (walking the fan
+//! only at vertices with several boundary gaps).
+//!
+//! Well-formed input (no face a policy has to act on) is built directly, and the walk itself
+//! finds edge defects; only input that needs a decision goes through
+//! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
 
 use std::borrow::Cow;
 
 use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{
-    BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, degenerate_faces, resolve,
+    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable,
+    degenerate_faces, non_finite_vertices, resolve, well_formed_table,
 };
 
 use super::Mesh;
@@ -31,110 +36,95 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        // The mesh's copy of the input positions needs nothing from the checks and the pairing:
-        // with two threads it is made beside them. Repair, the rare path that adds positions,
-        // brings its own array and the copy goes unused.
-        let (resolved, input_positions) = join(
-            || resolve(list, policy),
-            || large_arrays::copied(list.positions),
-        );
-        let resolved = resolved?;
-        let mut diagnostic = resolved.diagnostic;
-        let (table, partner) = (&resolved.table, resolved.pairing.partner);
-        // Positions the degenerate-face check reads while the mesh takes its own array.
-        let repaired_positions;
-        let (positions, mesh_positions): (&[[f64; 3]], _) = match resolved.positions {
-            Cow::Borrowed(input) => (input, input_positions),
-            Cow::Owned(repaired) => {
-                drop(input_positions);
-                repaired_positions = repaired;
-                let copy = large_arrays::copied(&repaired_positions);
-                (&repaired_positions, copy)
+        if let Some(table) = well_formed_table(list) {
+            let non_finite_vertices = non_finite_vertices(list.positions);
+            // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
+            if non_finite_vertices.is_empty() || policy != BuildPolicy::Strict {
+                let diagnostic = Diagnostic {
+                    non_finite_vertices,
+                    ..Diagnostic::default()
+                };
+                let positions = Cow::Borrowed(list.positions);
+                if let Some(built) = Self::from_table(&table, positions, diagnostic) {
+                    return Ok(built);
+                }
             }
-        };
+        }
+        let resolved = resolve(list, policy)?;
+        let built = Self::from_table(&resolved.table, resolved.positions, resolved.diagnostic);
+        Ok(built.expect("a resolved face table has no edge defects"))
+    }
+
+    /// Builds the mesh of a well-formed table and completes `diagnostic` with what the mesh
+    /// shows (non-manifold and isolated vertices, degenerate faces). `None` when an edge is
+    /// walked by more than two faces or twice in one direction.
+    fn from_table(
+        table: &FaceTable<'_>,
+        positions: Cow<'_, [[f64; 3]]>,
+        mut diagnostic: Diagnostic,
+    ) -> Option<(Mesh, Diagnostic)> {
         // The geometric check reads only the table and the positions: with two threads it runs
-        // beside the connectivity passes.
-        let (mut mesh, degenerate) = join(
-            || Mesh::from_pairing(table, partner, mesh_positions),
-            || degenerate_faces(table, positions),
+        // beside the connectivity walk.
+        let (mesh, degenerate) = join(
+            || Mesh::from_faces(table, large_arrays::copied(&positions)),
+            || degenerate_faces(table, &positions),
         );
+        let mut mesh = mesh?;
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         diagnostic.isolated_vertices = mesh.isolated_vertices();
         diagnostic.degenerate_faces = degenerate;
-        Ok((mesh, diagnostic))
+        Some((mesh, diagnostic))
     }
 
-    /// Builds the connectivity of a resolved table: `partner[c]` is the corner sharing corner
-    /// `c`'s edge the other way, or [`BOUNDARY`]. The partner array is turned into the corner →
-    /// half-edge map in place (saving an allocation as large as the index list).
-    fn from_pairing(table: &FaceTable<'_>, partner: Vec<u32>, positions: Vec<[f64; 3]>) -> Mesh {
-        let corners = table.corners();
-
-        // Pass 1: half-edge of every corner. A corner opens edge `e` (half-edge 2e) unless its
-        // partner came first, in which case it takes the partner's twin. n_corners < 2^31, so
-        // ids stay below u32::MAX.
-        let mut corner_halfedge = partner;
-        let mut is_boundary_corner = Vec::new();
-        let mut n_edges: u32 = 0;
-        for c in 0..corner_halfedge.len() {
-            let p = corner_halfedge[c];
-            corner_halfedge[c] = if p == BOUNDARY {
-                is_boundary_corner.push(c as u32);
-                n_edges += 1;
-                2 * n_edges - 2
-            } else if p as usize > c {
-                n_edges += 1;
-                2 * n_edges - 2
-            } else {
-                corner_halfedge[p as usize] ^ 1
+    /// The connectivity walk (see the module documentation). `None` on an edge defect.
+    fn from_faces(table: &FaceTable<'_>, positions: Vec<[f64; 3]>) -> Option<Mesh> {
+        let mut loops = FaceLoops::new(table, positions.len());
+        let mut face_halfedge = zeroed(table.n_faces());
+        let mut polygon = Vec::new();
+        for (f, first) in face_halfedge.iter_mut().enumerate() {
+            let f32 = f as u32;
+            *first = match *table.face(f) {
+                // The usual triangle, with its loop in registers.
+                [a, b, c] => {
+                    let triangle = [
+                        loops.corner(a, b, f32)?,
+                        loops.corner(b, c, f32)?,
+                        loops.corner(c, a, f32)?,
+                    ];
+                    loops.close_face(triangle)
+                }
+                ref corners => {
+                    polygon.clear();
+                    for (i, &a) in corners.iter().enumerate() {
+                        let b = corners[(i + 1) % corners.len()];
+                        polygon.push(loops.corner(a, b, f32)?);
+                    }
+                    loops.close_face(&polygon)
+                }
             };
         }
-        let boundary_corners = is_boundary_corner;
-
-        // Pass 2: face loops. Zeroed allocations are cheap; every slot gets written below.
-        let n_halfedges = 2 * n_edges as usize;
-        let mut origin = zeroed(n_halfedges);
-        let mut next = zeroed(n_halfedges);
-        let mut prev = zeroed(n_halfedges);
-        let mut face = zeroed(n_halfedges);
-        let mut vertex_halfedge = filled(positions.len(), INVALID_INDEX);
-        let mut face_halfedge = zeroed(table.n_faces());
-        let mut boundary = Vec::with_capacity(boundary_corners.len());
-        let mut next_boundary = boundary_corners.iter().copied().peekable();
-        for (f, first_corner) in face_halfedge.iter_mut().enumerate() {
-            let range = table.face_range(f);
-            let first = corner_halfedge[range.start];
-            *first_corner = first;
-            let mut previous = corner_halfedge[range.end - 1];
-            for c in range.clone() {
-                let h = corner_halfedge[c];
-                let next_c = if c + 1 == range.end {
-                    range.start
-                } else {
-                    c + 1
-                };
-                let (hu, vertex) = (h as usize, corners[c]);
-                origin[hu] = vertex;
-                face[hu] = f as u32;
-                next[hu] = corner_halfedge[next_c];
-                prev[hu] = previous;
-                previous = h;
-                vertex_halfedge[vertex as usize] = h;
-                if next_boundary.next_if_eq(&(c as u32)).is_some() {
-                    origin[hu ^ 1] = corners[next_c];
-                    face[hu ^ 1] = INVALID_INDEX;
-                    boundary.push(h ^ 1);
-                }
-            }
-        }
-
-        let mut mesh = Mesh {
+        let FaceLoops {
             origin,
             next,
             prev,
             face,
+            vertex_halfedge,
+            n_edges,
+            ..
+        } = loops;
+        let n_halfedges = 2 * n_edges as usize;
+        let fit = |mut array: Vec<u32>| {
+            array.truncate(n_halfedges);
+            array.shrink_to_fit();
+            array
+        };
+        let mut mesh = Mesh {
+            origin: fit(origin),
+            next: fit(next),
+            prev: fit(prev),
+            face: fit(face),
             vertex_halfedge,
             positions,
             face_halfedge,
@@ -142,8 +132,15 @@ impl Mesh {
             may_have_pinched_vertices: true,
             attributes: Default::default(),
         };
-        mesh.link_boundary(&boundary);
-        mesh
+        // Every corner has a half-edge with a face; the other half-edges are boundary twins.
+        if n_halfedges > table.n_corners() {
+            let boundary: Vec<u32> = (1..n_halfedges as u32)
+                .step_by(2)
+                .filter(|&h| mesh.face[h as usize] == INVALID_INDEX)
+                .collect();
+            mesh.link_boundary(&boundary);
+        }
+        Some(mesh)
     }
 
     /// Makes each boundary vertex's half-edge a boundary one and links the boundary half-edges
@@ -187,6 +184,69 @@ impl Mesh {
             h = rotated;
         }
         unreachable!("a fan opened by a boundary half-edge is closed by one")
+    }
+}
+
+/// The half-edge arrays while the faces are walked, sized for one edge per corner (the most
+/// there can be) and trimmed afterwards: pages never written are never touched.
+struct FaceLoops {
+    buckets: EdgeBuckets,
+    origin: Vec<u32>,
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    face: Vec<u32>,
+    vertex_halfedge: Vec<u32>,
+    n_edges: u32,
+}
+
+impl FaceLoops {
+    fn new(table: &FaceTable<'_>, n_vertices: usize) -> Self {
+        let capacity = 2 * table.n_corners();
+        FaceLoops {
+            buckets: EdgeBuckets::new(table, n_vertices),
+            origin: zeroed(capacity),
+            next: zeroed(capacity),
+            prev: zeroed(capacity),
+            face: zeroed(capacity),
+            vertex_halfedge: filled(n_vertices, INVALID_INDEX),
+            n_edges: 0,
+        }
+    }
+
+    /// The half-edge of the corner of face `f` running `a → b`: a new edge's first half-edge,
+    /// or the twin of the edge's first corner when that ran `b → a`. `None` when the edge was
+    /// walked this way already or by two faces. (Edge ids stay below the corner count < 2^31,
+    /// the bound of an edge's value.)
+    #[inline]
+    fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
+        let h = match self.buckets.visit(a, b, self.n_edges) {
+            EdgeVisit::Opened => {
+                let h = 2 * self.n_edges;
+                self.n_edges += 1;
+                self.origin[h as usize] = a;
+                self.origin[h as usize + 1] = b;
+                self.face[h as usize + 1] = INVALID_INDEX;
+                h
+            }
+            EdgeVisit::Closed(e) if self.origin[2 * e as usize] == b => 2 * e + 1,
+            EdgeVisit::Closed(_) | EdgeVisit::AlreadyClosed(_) => return None,
+        };
+        self.face[h as usize] = f;
+        self.vertex_halfedge[a as usize] = h;
+        Some(h)
+    }
+
+    /// Links a face's half-edges (in corner order) into its loop; returns the first.
+    #[inline]
+    fn close_face(&mut self, halfedges: impl AsRef<[u32]>) -> u32 {
+        let halfedges = halfedges.as_ref();
+        let mut previous = halfedges[halfedges.len() - 1];
+        for &h in halfedges {
+            self.next[previous as usize] = h;
+            self.prev[h as usize] = previous;
+            previous = h;
+        }
+        halfedges[0]
     }
 }
 

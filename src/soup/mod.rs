@@ -9,6 +9,7 @@
 
 mod degenerate;
 mod diagnostic;
+mod edge_buckets;
 mod face_list;
 mod orient;
 mod pairing;
@@ -19,8 +20,9 @@ mod umbrellas;
 
 pub use degenerate::degenerate_faces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
+pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
-pub use resolve::{Resolved, resolve};
+pub use resolve::{Resolved, resolve, well_formed_table};
 pub use table::{FaceDefects, FaceTable, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};

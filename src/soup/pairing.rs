@@ -1,14 +1,14 @@
-//! Pairing the directed edges of a face table into undirected edges by bucketing.
+//! Pairing the directed edges of a face table into undirected edges.
 //!
-//! Every corner `c` stands for its directed edge `corners[c] → corners[next(c)]`. The edges
-//! running from a smaller to a larger vertex are counting-sorted by their smaller vertex (one pass
-//! to count, one to scatter); every edge running the other way then looks its partner up in the
-//! bucket of its smaller vertex, which holds that vertex's few forward edges. This is linear in
-//! the corner count, in three sequential passes, unlike the one-ring search per new face that
-//! OpenMesh's and CGAL's `add_face` do.
+//! Every corner `c` stands for its directed edge `corners[c] → corners[next(c)]`. The corners
+//! meet their edges in face order in [`EdgeBuckets`] (bucketed by smaller vertex, no sorting and
+//! no one-ring search per new face as OpenMesh's and CGAL's `add_face` do): the second corner on
+//! an edge becomes the first one's partner when it runs the other way. Anything else — a second
+//! corner running the same way, a third corner — marks the edge as a problem.
 
 use super::FaceTable;
-use crate::large_arrays::{filled, zeroed};
+use super::edge_buckets::{EdgeBuckets, EdgeVisit, edge_key};
+use crate::large_arrays::filled;
 
 /// `partner` value of a corner whose edge no other face uses.
 pub const BOUNDARY: u32 = u32::MAX;
@@ -47,92 +47,31 @@ pub struct EdgePairing {
 
 /// Pairs the directed edges of `table`. Preconditions (checked by
 /// [`FaceTable::face_defects`]): every index is below `n_vertices` and no face repeats a vertex.
-///
-/// Forward edges (`a < b`) are counting-sorted into buckets by `a`, keyed by `b`; each backward
-/// edge (`a > b`) then finds its partner by scanning the few forward edges of bucket `b`. Only
-/// half the edges are moved, and no bucket is sorted. Anything unusual — two forward edges with
-/// one key, a backward edge meeting an already paired forward one, two unmatched backward edges
-/// with one key — marks the undirected edge as a problem, whose corners are gathered afterwards.
 pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
     let corners = table.corners();
-    let n_corners = table.n_corners();
-
-    // `bucket_start[a]..bucket_start[a + 1]` will hold the forward edges leaving `a`.
-    let mut bucket_start = vec![0u32; n_vertices + 1];
-    table.for_each_corner_edge(|_, c, n| {
-        let (a, b) = (corners[c], corners[n]);
-        if a < b {
-            bucket_start[a as usize + 1] += 1;
-        }
-    });
-    for v in 0..n_vertices {
-        bucket_start[v + 1] += bucket_start[v];
-    }
-    // Entry = larger vertex in the high half, corner in the low half.
-    let mut entries = zeroed::<u64>(bucket_start[n_vertices] as usize);
+    let mut buckets = EdgeBuckets::new(table, n_vertices);
+    let mut partner = filled(table.n_corners(), BOUNDARY);
     let mut problem_keys: Vec<u64> = Vec::new();
-    {
-        let mut cursor = bucket_start[..n_vertices].to_vec();
-        table.for_each_corner_edge(|_, c, n| {
-            let (a, b) = (corners[c], corners[n]);
-            if a < b {
-                let slot = &mut cursor[a as usize];
-                let bucket = &entries[bucket_start[a as usize] as usize..*slot as usize];
-                if bucket.iter().any(|&entry| (entry >> 32) as u32 == b) {
-                    problem_keys.push(edge_key(a, b));
-                }
-                entries[*slot as usize] = (u64::from(b) << 32) | c as u64;
-                *slot += 1;
-            }
-        });
-    }
-
-    // A forward entry that a backward edge has taken is marked in the entry itself (corner ids
-    // are below 2^31, so bit 31 is free): the bucket is in cache already, while `partner` of the
-    // forward corner may be anywhere in memory.
-    const MATCHED: u64 = 1 << 31;
-    let mut partner = filled(n_corners, BOUNDARY);
-    let mut unmatched_backward: Vec<(u64, u32)> = Vec::new();
     table.for_each_corner_edge(|_, c, n| {
         let (a, b) = (corners[c], corners[n]);
-        if a > b {
-            let bucket = &mut entries
-                [bucket_start[b as usize] as usize..bucket_start[b as usize + 1] as usize];
-            match bucket.iter_mut().find(|entry| (**entry >> 32) as u32 == a) {
-                Some(entry) => {
-                    if *entry & MATCHED == 0 {
-                        let forward = (*entry & u64::from(u32::MAX)) as usize;
-                        *entry |= MATCHED;
-                        partner[forward] = c as u32;
-                        partner[c] = forward as u32;
-                    } else {
-                        problem_keys.push(edge_key(b, a));
-                    }
-                }
-                None => unmatched_backward.push((edge_key(b, a), c as u32)),
+        // Corner ids are below 2^31 (`MAX_CORNERS`), so they fit an edge's value.
+        match buckets.visit(a, b, c as u32) {
+            EdgeVisit::Opened => {}
+            EdgeVisit::Closed(first) if corners[first as usize] == b => {
+                partner[first as usize] = c as u32;
+                partner[c] = first;
+            }
+            EdgeVisit::Closed(_) | EdgeVisit::AlreadyClosed(_) => {
+                problem_keys.push(edge_key(a.min(b), a.max(b)));
             }
         }
     });
-    drop(entries);
-    unmatched_backward.sort_unstable();
-    for pair in unmatched_backward.windows(2) {
-        if pair[0].0 == pair[1].0 {
-            problem_keys.push(pair[0].0);
-        }
-    }
-
     let problems = if problem_keys.is_empty() {
         Vec::new()
     } else {
         gather_problems(table, problem_keys, &mut partner)
     };
     EdgePairing { partner, problems }
-}
-
-/// An undirected edge as one sortable number: smaller vertex high, larger low.
-#[inline]
-fn edge_key(low: u32, high: u32) -> u64 {
-    (u64::from(low) << 32) | u64::from(high)
 }
 
 /// The rare path: collects every corner of the problem edges, marks them [`UNPAIRED`] and

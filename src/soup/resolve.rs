@@ -28,6 +28,19 @@ pub struct Resolved<'a> {
     pub diagnostic: Diagnostic,
 }
 
+/// `list` laid out as a table when no face needs a policy decision: the list is consistent, no
+/// face is too small, out of range or repeats a vertex. Builders try this fast path first and
+/// call [`resolve`] only for the rest (non-finite coordinates and edge defects are theirs to
+/// find on it).
+pub fn well_formed_table<'a>(list: &FaceList<'a>) -> Option<FaceTable<'a>> {
+    let n_vertices = list.positions.len();
+    if n_vertices as u64 > MAX_VERTICES {
+        return None;
+    }
+    let table = FaceTable::new(list).ok()?;
+    table.face_defects(n_vertices).is_empty().then_some(table)
+}
+
 /// Checks `list` and applies `policy` (see [`BuildPolicy`] for what each one does).
 pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<'a>, BuildError> {
     let mut diagnostic = Diagnostic::default();

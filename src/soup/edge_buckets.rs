@@ -1,0 +1,141 @@
+//! Undirected edges of a face table, met corner by corner ("first come"): the first corner that
+//! walks an edge opens it with a value of the caller's choosing, the second closes it and learns
+//! that value, a third finds it closed.
+//!
+//! Edges are kept in buckets by their smaller vertex, keyed by the larger one. A bucket's room is
+//! counted beforehand in one pass: the corners running from that vertex to a larger one. On an
+//! oriented closed manifold that is exactly its number of edges, so buckets are never searched
+//! past a handful of slots and never overflow; edges beyond the room (a boundary edge only walked
+//! from its larger vertex, or defective input) go to a small spill map. No sorting, no hashing on
+//! the usual path, and one 8-byte slot per forward corner.
+
+use std::collections::HashMap;
+
+use super::FaceTable;
+use crate::large_arrays::zeroed;
+
+/// A slot: larger vertex in the high half, value in bits 0..31, bit 31 set once closed. Larger
+/// vertices are at least 1, so an all-zero slot is empty.
+const CLOSED: u64 = 1 << 31;
+const VALUE_MASK: u64 = CLOSED - 1;
+
+/// Largest value an edge can carry (values are corner or edge ids, below 2^31).
+pub(super) const MAX_EDGE_VALUE: u32 = CLOSED as u32 - 1;
+
+/// What a corner found when it met its edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum EdgeVisit {
+    /// First corner on the edge: it opened the edge with its value.
+    Opened,
+    /// Second corner: the edge carried this value (the first corner's) and is now closed.
+    Closed(u32),
+    /// Third or later corner: the edge was closed already; the first corner's value.
+    AlreadyClosed(u32),
+}
+
+/// The buckets of one face table's edges.
+pub(crate) struct EdgeBuckets {
+    /// `start[v]..start[v + 1]`: the slots of vertex `v`'s bucket.
+    start: Vec<u32>,
+    slots: Vec<u64>,
+    /// Edges that found their bucket full, by [`edge_key`].
+    spill: HashMap<u64, u64>,
+}
+
+impl EdgeBuckets {
+    /// Empty buckets sized for `table`'s edges. Preconditions (checked by
+    /// [`FaceTable::face_defects`]): every index is below `n_vertices` < 2^32 − 1.
+    pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Self {
+        let corners = table.corners();
+        let mut start = vec![0u32; n_vertices + 1];
+        // Branch-free: whether a corner runs forward is a coin toss on models whose vertex
+        // order is not face-coherent.
+        table.for_each_corner_edge(|_, c, n| {
+            let (a, b) = (corners[c], corners[n]);
+            start[a as usize + 1] += u32::from(a < b);
+        });
+        for v in 0..n_vertices {
+            start[v + 1] += start[v];
+        }
+        let slots = zeroed(start[n_vertices] as usize);
+        EdgeBuckets {
+            start,
+            slots,
+            spill: HashMap::new(),
+        }
+    }
+
+    /// Meets edge `a`–`b` (either direction, `a != b`) with `value` (at most
+    /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
+    #[inline]
+    pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
+        debug_assert!(value <= MAX_EDGE_VALUE && a != b);
+        let (low, high) = if a < b { (a, b) } else { (b, a) };
+        let bucket = &mut self.slots
+            [self.start[low as usize] as usize..self.start[low as usize + 1] as usize];
+        for slot in bucket {
+            if *slot == 0 {
+                *slot = (u64::from(high) << 32) | u64::from(value);
+                return EdgeVisit::Opened;
+            }
+            if (*slot >> 32) as u32 == high {
+                return close(slot);
+            }
+        }
+        self.visit_spilled(edge_key(low, high), value)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn visit_spilled(&mut self, key: u64, value: u32) -> EdgeVisit {
+        match self.spill.entry(key) {
+            std::collections::hash_map::Entry::Vacant(vacant) => {
+                vacant.insert(u64::from(value));
+                EdgeVisit::Opened
+            }
+            std::collections::hash_map::Entry::Occupied(mut occupied) => close(occupied.get_mut()),
+        }
+    }
+}
+
+/// Closes an open slot (or reports it closed already).
+#[inline]
+fn close(slot: &mut u64) -> EdgeVisit {
+    let first = (*slot & VALUE_MASK) as u32;
+    if *slot & CLOSED != 0 {
+        EdgeVisit::AlreadyClosed(first)
+    } else {
+        *slot |= CLOSED;
+        EdgeVisit::Closed(first)
+    }
+}
+
+/// An undirected edge as one sortable number: smaller vertex high, larger low.
+#[inline]
+pub(crate) fn edge_key(low: u32, high: u32) -> u64 {
+    (u64::from(low) << 32) | u64::from(high)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::soup::FaceList;
+
+    #[test]
+    fn second_corner_closes_third_finds_closed_and_overflow_spills() {
+        let positions = vec![[0.0; 3]; 4];
+        // One forward corner per vertex 0 and 1: edge 0-2 is only walked backward (2→0), so
+        // vertex 0's bucket (room 1) overflows into the spill map.
+        let indices = [0, 1, 2, 1, 3, 2];
+        let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
+        let mut buckets = EdgeBuckets::new(&table, 4);
+        assert_eq!(buckets.visit(0, 1, 7), EdgeVisit::Opened);
+        assert_eq!(buckets.visit(2, 0, 8), EdgeVisit::Opened);
+        assert_eq!(buckets.visit(1, 0, 9), EdgeVisit::Closed(7));
+        assert_eq!(buckets.visit(0, 2, 10), EdgeVisit::Closed(8));
+        assert_eq!(buckets.visit(0, 2, 11), EdgeVisit::AlreadyClosed(8));
+        assert_eq!(buckets.visit(0, 1, 12), EdgeVisit::AlreadyClosed(7));
+        assert_eq!(buckets.visit(3, 1, MAX_EDGE_VALUE), EdgeVisit::Opened);
+        assert_eq!(buckets.visit(1, 3, 0), EdgeVisit::Closed(MAX_EDGE_VALUE));
+    }
+}
