@@ -28,8 +28,6 @@ pub fn newell_vector(points: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
 /// positions and needles thinner than ~1e-15 of their length count as degenerate). One pass;
 /// non-finite coordinates give `false` (they are reported as such, not as degenerate).
 pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool {
-    /// Relative size of the area vector below which it is rounding noise.
-    const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;
     let mut points = points.into_iter();
     let Some(first) = points.next() else {
         return true;
@@ -48,12 +46,39 @@ pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool
         previous = point;
     }
     add(previous, first);
+    is_negligible_area(area_vector, squared_perimeter)
+}
+
+/// [`is_degenerate_polygon`] for a triangle, with its area vector (twice the area, as Newell's)
+/// from the cross product of two edges: fewer operations, for the bulk builds that check every
+/// face.
+pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
+    let (ab, ac, bc) = (difference(b, a), difference(c, a), difference(c, b));
+    let area_vector = [
+        ab[1] * ac[2] - ab[2] * ac[1],
+        ab[2] * ac[0] - ab[0] * ac[2],
+        ab[0] * ac[1] - ab[1] * ac[0],
+    ];
+    is_negligible_area(
+        area_vector,
+        squared_length(ab) + squared_length(ac) + squared_length(bc),
+    )
+}
+
+/// `true` when an area vector is rounding noise against the squared perimeter.
+fn is_negligible_area(area_vector: [f64; 3], squared_perimeter: f64) -> bool {
+    /// Relative size of the area vector below which it is rounding noise.
+    const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;
     let bound = RELATIVE_TOLERANCE * squared_perimeter;
     squared_length(area_vector) <= bound * bound
 }
 
+fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
 fn squared_distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    (0..3).map(|i| (a[i] - b[i]) * (a[i] - b[i])).sum()
+    squared_length(difference(a, b))
 }
 
 fn squared_length(v: [f64; 3]) -> f64 {
@@ -92,5 +117,31 @@ mod tests {
             [1.0, 0.0, 0.0],
             [0.0, 1e-6, 0.0]
         ]));
+    }
+
+    #[test]
+    fn triangle_check_agrees_with_the_polygon_check_and_survives_a_far_origin() {
+        let triangles = [
+            [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]],
+            [[1.0, 2.0, 3.0]; 3],
+            [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1e-6, 0.0]],
+            [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 1e-17, 0.0]],
+            [[0.3, -2.0, 5.0], [1.0, 4.0, -1.0], [-7.0, 0.5, 2.0]],
+        ];
+        for [a, b, c] in triangles {
+            assert_eq!(
+                is_degenerate_triangle(a, b, c),
+                is_degenerate_polygon([a, b, c]),
+                "{a:?} {b:?} {c:?}"
+            );
+        }
+        // The tolerance is relative to the triangle's size, not to its distance from the origin.
+        let far = |x: f64| [1e6 + x, 1e6 + 2.0 * x, 1e6 + 3.0 * x];
+        assert!(is_degenerate_triangle(far(0.0), far(0.25), far(0.5)));
+        assert!(!is_degenerate_triangle(
+            far(0.0),
+            far(0.25),
+            [1e6, 1e6 + 1.0, 1e6]
+        ));
     }
 }

@@ -17,7 +17,7 @@ use std::borrow::Cow;
 use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{
     BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable,
-    degenerate_faces, non_finite_vertices, resolve, well_formed_table,
+    degenerate_faces, non_finite_vertices, resolve, well_formed_edges,
 };
 
 use super::Mesh;
@@ -36,7 +36,7 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        if let Some(table) = well_formed_table(list) {
+        if let Some((table, buckets)) = well_formed_edges(list) {
             let non_finite_vertices = non_finite_vertices(list.positions);
             // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
             if non_finite_vertices.is_empty() || policy != BuildPolicy::Strict {
@@ -45,13 +45,20 @@ impl Mesh {
                     ..Diagnostic::default()
                 };
                 let positions = Cow::Borrowed(list.positions);
-                if let Some(built) = Self::from_table(&table, positions, diagnostic) {
+                if let Some(built) = Self::from_table(&table, buckets, positions, diagnostic) {
                     return Ok(built);
                 }
             }
         }
         let resolved = resolve(list, policy)?;
-        let built = Self::from_table(&resolved.table, resolved.positions, resolved.diagnostic);
+        let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
+            .expect("a resolved face table is well formed");
+        let built = Self::from_table(
+            &resolved.table,
+            buckets,
+            resolved.positions,
+            resolved.diagnostic,
+        );
         Ok(built.expect("a resolved face table has no edge defects"))
     }
 
@@ -60,13 +67,14 @@ impl Mesh {
     /// walked by more than two faces or twice in one direction.
     fn from_table(
         table: &FaceTable<'_>,
+        buckets: EdgeBuckets,
         positions: Cow<'_, [[f64; 3]]>,
         mut diagnostic: Diagnostic,
     ) -> Option<(Mesh, Diagnostic)> {
         // The geometric check reads only the table and the positions: with two threads it runs
         // beside the connectivity walk.
         let (mesh, degenerate) = join(
-            || Mesh::from_faces(table, large_arrays::copied(&positions)),
+            || Mesh::from_faces(table, buckets, large_arrays::copied(&positions)),
             || degenerate_faces(table, &positions),
         );
         let mut mesh = mesh?;
@@ -79,8 +87,12 @@ impl Mesh {
     }
 
     /// The connectivity walk (see the module documentation). `None` on an edge defect.
-    fn from_faces(table: &FaceTable<'_>, positions: Vec<[f64; 3]>) -> Option<Mesh> {
-        let mut loops = FaceLoops::new(table, positions.len());
+    fn from_faces(
+        table: &FaceTable<'_>,
+        buckets: EdgeBuckets,
+        positions: Vec<[f64; 3]>,
+    ) -> Option<Mesh> {
+        let mut loops = FaceLoops::new(table, buckets, positions.len());
         let mut face_halfedge = zeroed(table.n_faces());
         let mut polygon = Vec::new();
         for (f, first) in face_halfedge.iter_mut().enumerate() {
@@ -200,10 +212,10 @@ struct FaceLoops {
 }
 
 impl FaceLoops {
-    fn new(table: &FaceTable<'_>, n_vertices: usize) -> Self {
+    fn new(table: &FaceTable<'_>, buckets: EdgeBuckets, n_vertices: usize) -> Self {
         let capacity = 2 * table.n_corners();
         FaceLoops {
-            buckets: EdgeBuckets::new(table, n_vertices),
+            buckets,
             origin: zeroed(capacity),
             next: zeroed(capacity),
             prev: zeroed(capacity),
@@ -217,7 +229,8 @@ impl FaceLoops {
     /// or the twin of the edge's first corner when that ran `b → a`. `None` when the edge was
     /// walked this way already or by two faces. (Edge ids stay below the corner count < 2^31,
     /// the bound of an edge's value.)
-    #[inline]
+    // Inlined into the walk: it is the whole per-corner work.
+    #[inline(always)]
     fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
         let h = match self.buckets.visit(a, b, self.n_edges) {
             EdgeVisit::Opened => {

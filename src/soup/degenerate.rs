@@ -1,14 +1,17 @@
 //! Zero-area faces of a resolved face table, reported by every builder.
 
 use super::FaceTable;
-use crate::geom::is_degenerate_polygon;
+use crate::geom::{is_degenerate_polygon, is_degenerate_triangle};
 
 /// Input indices of the faces whose area is negligible (non-finite positions are not degenerate
 /// but non-finite, reported apart).
 pub fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u32> {
     let is_degenerate = |f: usize| match *table.face(f) {
-        // Fixed-size corners for the common triangle: the same arithmetic, unrolled.
-        [a, b, c] => is_degenerate_polygon([a, b, c].map(|v| positions[v as usize])),
+        [a, b, c] => is_degenerate_triangle(
+            positions[a as usize],
+            positions[b as usize],
+            positions[c as usize],
+        ),
         ref face => is_degenerate_polygon(face.iter().map(|&v| positions[v as usize])),
     };
     #[cfg(feature = "parallel")]

@@ -12,6 +12,7 @@
 use std::collections::HashMap;
 
 use super::FaceTable;
+use super::table::is_well_formed;
 use crate::large_arrays::zeroed;
 
 /// A slot: larger vertex in the high half, value in bits 0..31, bit 31 set once closed. Larger
@@ -43,31 +44,44 @@ pub(crate) struct EdgeBuckets {
 }
 
 impl EdgeBuckets {
-    /// Empty buckets sized for `table`'s edges. Preconditions (checked by
-    /// [`FaceTable::face_defects`]): every index is below `n_vertices` < 2^32 − 1.
-    pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Self {
-        let corners = table.corners();
+    /// Empty buckets sized for `table`'s edges, or `None` when a face is not well formed (fewer
+    /// than 3 corners, an index `>= n_vertices`, a repeated vertex: the one pass over the faces
+    /// that counts the buckets' room checks them too). `n_vertices` is below 2^32 − 1.
+    pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Option<Self> {
         let mut start = vec![0u32; n_vertices + 1];
-        // Branch-free: whether a corner runs forward is a coin toss on models whose vertex
-        // order is not face-coherent.
-        table.for_each_corner_edge(|_, c, n| {
-            let (a, b) = (corners[c], corners[n]);
-            start[a as usize + 1] += u32::from(a < b);
-        });
+        let mut scratch = Vec::new();
+        // Branch-free counting: whether a corner runs forward is a coin toss on models whose
+        // vertex order is not face-coherent.
+        let mut count = |a: u32, b: u32| start[a as usize + 1] += u32::from(a < b);
+        for f in 0..table.n_faces() {
+            let face = table.face(f);
+            if !is_well_formed(face, n_vertices, &mut scratch) {
+                return None;
+            }
+            if let [a, b, c] = *face {
+                count(a, b);
+                count(b, c);
+                count(c, a);
+            } else {
+                for (i, &a) in face.iter().enumerate() {
+                    count(a, face[(i + 1) % face.len()]);
+                }
+            }
+        }
         for v in 0..n_vertices {
             start[v + 1] += start[v];
         }
         let slots = zeroed(start[n_vertices] as usize);
-        EdgeBuckets {
+        Some(EdgeBuckets {
             start,
             slots,
             spill: HashMap::new(),
-        }
+        })
     }
 
     /// Meets edge `a`–`b` (either direction, `a != b`) with `value` (at most
     /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         debug_assert!(value <= MAX_EDGE_VALUE && a != b);
         let (low, high) = if a < b { (a, b) } else { (b, a) };
@@ -128,7 +142,7 @@ mod tests {
         // vertex 0's bucket (room 1) overflows into the spill map.
         let indices = [0, 1, 2, 1, 3, 2];
         let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
-        let mut buckets = EdgeBuckets::new(&table, 4);
+        let mut buckets = EdgeBuckets::new(&table, 4).unwrap();
         assert_eq!(buckets.visit(0, 1, 7), EdgeVisit::Opened);
         assert_eq!(buckets.visit(2, 0, 8), EdgeVisit::Opened);
         assert_eq!(buckets.visit(1, 0, 9), EdgeVisit::Closed(7));
@@ -137,5 +151,19 @@ mod tests {
         assert_eq!(buckets.visit(0, 1, 12), EdgeVisit::AlreadyClosed(7));
         assert_eq!(buckets.visit(3, 1, MAX_EDGE_VALUE), EdgeVisit::Opened);
         assert_eq!(buckets.visit(1, 3, 0), EdgeVisit::Closed(MAX_EDGE_VALUE));
+    }
+
+    #[test]
+    fn malformed_faces_give_no_buckets() {
+        let positions = vec![[0.0; 3]; 4];
+        for (sizes, indices) in [
+            (&[3][..], &[0, 1, 4][..]),
+            (&[3], &[0, 1, 0]),
+            (&[2, 3], &[0, 1, 1, 2, 3]),
+            (&[4], &[0, 1, 2, 1]),
+        ] {
+            let table = FaceTable::new(&FaceList::polygons(&positions, sizes, indices)).unwrap();
+            assert!(EdgeBuckets::new(&table, 4).is_none(), "{indices:?}");
+        }
     }
 }

@@ -24,5 +24,6 @@ pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
-pub use resolve::{Resolved, resolve, well_formed_table};
+pub(crate) use resolve::well_formed_edges;
+pub use resolve::{Resolved, resolve};
 pub use table::{FaceDefects, FaceTable, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};

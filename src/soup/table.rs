@@ -279,13 +279,7 @@ impl<'a> FaceTable<'a> {
         let mut scratch = Vec::new();
         for f in faces {
             let face = self.face(f);
-            // Fast path for the common valid triangle.
-            if let &[a, b, c] = face
-                && (a.max(b).max(c) as usize) < n_vertices
-                && a != b
-                && b != c
-                && a != c
-            {
+            if is_well_formed(face, n_vertices, &mut scratch) {
                 continue;
             }
             let input = self.input_face(f);
@@ -318,6 +312,20 @@ impl FaceDefects {
     /// `true` when no face has a defect.
     pub fn is_empty(&self) -> bool {
         self.too_small.is_empty() && self.out_of_range.is_empty() && self.repeated_vertex.is_empty()
+    }
+}
+
+/// `true` when `face` has at least 3 corners, all below `n_vertices` and all different (the
+/// common valid triangle decided without a loop).
+#[inline]
+pub(crate) fn is_well_formed(face: &[u32], n_vertices: usize, scratch: &mut Vec<u32>) -> bool {
+    match *face {
+        [a, b, c] => (a.max(b).max(c) as usize) < n_vertices && a != b && b != c && a != c,
+        _ => {
+            face.len() >= 3
+                && face.iter().all(|&v| (v as usize) < n_vertices)
+                && !has_repeated_vertex(face, scratch)
+        }
     }
 }
 
