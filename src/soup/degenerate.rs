@@ -12,6 +12,7 @@ pub fn degenerate_faces(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> Vec<u3
             positions[b as usize],
             positions[c as usize],
         ),
+        [a, b, c, d] => is_degenerate_polygon([a, b, c, d].map(|v| positions[v as usize])),
         ref face => is_degenerate_polygon(face.iter().map(|&v| positions[v as usize])),
     };
     #[cfg(feature = "parallel")]

@@ -12,7 +12,7 @@
 use std::collections::HashMap;
 
 use super::FaceTable;
-use super::table::is_well_formed;
+use super::table::{face_edges, is_well_formed};
 use crate::large_arrays::zeroed;
 
 /// A slot: larger vertex in the high half, value in bits 0..31, bit 31 set once closed. Larger
@@ -63,8 +63,8 @@ impl EdgeBuckets {
                 count(b, c);
                 count(c, a);
             } else {
-                for (i, &a) in face.iter().enumerate() {
-                    count(a, face[(i + 1) % face.len()]);
+                for (a, b) in face_edges(face) {
+                    count(a, b);
                 }
             }
         }

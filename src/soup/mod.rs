@@ -26,4 +26,5 @@ pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair
 pub use policy::{BuildError, BuildPolicy};
 pub(crate) use resolve::well_formed_edges;
 pub use resolve::{Resolved, resolve};
+pub(crate) use table::face_edges;
 pub use table::{FaceDefects, FaceTable, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};

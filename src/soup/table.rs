@@ -315,12 +315,29 @@ impl FaceDefects {
     }
 }
 
+/// The directed edges of a face's loop, `(corner vertex, next corner vertex)`, last to first
+/// included.
+#[inline]
+pub(crate) fn face_edges(face: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
+    let following = face.iter().skip(1).chain(face.first());
+    face.iter().copied().zip(following.copied())
+}
+
 /// `true` when `face` has at least 3 corners, all below `n_vertices` and all different (the
-/// common valid triangle decided without a loop).
+/// common triangles and quads decided without a loop).
 #[inline]
 pub(crate) fn is_well_formed(face: &[u32], n_vertices: usize, scratch: &mut Vec<u32>) -> bool {
     match *face {
         [a, b, c] => (a.max(b).max(c) as usize) < n_vertices && a != b && b != c && a != c,
+        [a, b, c, d] => {
+            (a.max(b).max(c).max(d) as usize) < n_vertices
+                && a != b
+                && a != c
+                && a != d
+                && b != c
+                && b != d
+                && c != d
+        }
         _ => {
             face.len() >= 3
                 && face.iter().all(|&v| (v as usize) < n_vertices)
