@@ -228,8 +228,8 @@ impl FaceLoops {
 
     /// The half-edge of the corner of face `f` running `a → b`: a new edge's first half-edge,
     /// or the twin of the edge's first corner when that ran `b → a`. `None` when the edge was
-    /// walked this way already or by two faces. (Edge ids stay below the corner count < 2^31,
-    /// the bound of an edge's value.)
+    /// walked this way already or by two faces. (Edge ids stay below the corner count, at most
+    /// `MAX_CORNERS`, so they fit an edge's value.)
     // Inlined into the walk: it is the whole per-corner work.
     #[inline(always)]
     fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
@@ -242,8 +242,8 @@ impl FaceLoops {
                 self.face[h as usize + 1] = INVALID_INDEX;
                 h
             }
-            EdgeVisit::Closed(e) if self.origin[2 * e as usize] == b => 2 * e + 1,
-            EdgeVisit::Closed(_) | EdgeVisit::AlreadyClosed(_) => return None,
+            EdgeVisit::Paired(e) => 2 * e + 1,
+            EdgeVisit::Defective => return None,
         };
         self.face[h as usize] = f;
         self.vertex_halfedge[a as usize] = h;

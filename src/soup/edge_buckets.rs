@@ -1,6 +1,7 @@
 //! Undirected edges of a face table, met corner by corner ("first come"): the first corner that
-//! walks an edge opens it with a value of the caller's choosing, the second closes it and learns
-//! that value, a third finds it closed.
+//! walks an edge opens it with a value of the caller's choosing; the second, walking it the other
+//! way, pairs with it and learns that value. A second corner walking the same way, or a third
+//! corner, finds the edge defective.
 //!
 //! Edges are kept in buckets by their smaller vertex, keyed by the larger one. A bucket's room is
 //! counted beforehand in one pass: the corners running from that vertex to a larger one. On an
@@ -15,12 +16,15 @@ use super::FaceTable;
 use super::table::{face_edges, is_well_formed};
 use crate::large_arrays::zeroed;
 
-/// A slot: larger vertex in the high half, value in bits 0..31, bit 31 set once closed. Larger
-/// vertices are at least 1, so an all-zero slot is empty.
-const CLOSED: u64 = 1 << 31;
-const VALUE_MASK: u64 = CLOSED - 1;
+/// A slot: larger vertex in the high half, then whether the first corner ran from the smaller
+/// vertex to the larger (bit 31), then the value (bits 0..31), which becomes [`CLOSED`] once a
+/// second corner came. The direction travels in the slot so a pairing corner needs no other
+/// memory than its bucket. Larger vertices are at least 1, so an all-zero slot is empty.
+const FORWARD: u64 = 1 << 31;
+const VALUE_MASK: u64 = FORWARD - 1;
+const CLOSED: u64 = VALUE_MASK;
 
-/// Largest value an edge can carry (values are corner or edge ids, below 2^31).
+/// Largest value an edge can carry (values are corner or edge ids, below 2^31 − 1).
 pub(super) const MAX_EDGE_VALUE: u32 = CLOSED as u32 - 1;
 
 /// What a corner found when it met its edge.
@@ -28,10 +32,11 @@ pub(super) const MAX_EDGE_VALUE: u32 = CLOSED as u32 - 1;
 pub(crate) enum EdgeVisit {
     /// First corner on the edge: it opened the edge with its value.
     Opened,
-    /// Second corner: the edge carried this value (the first corner's) and is now closed.
-    Closed(u32),
-    /// Third or later corner: the edge was closed already; the first corner's value.
-    AlreadyClosed(u32),
+    /// Second corner, running the other way: the edge carried this value (the first corner's).
+    Paired(u32),
+    /// A second corner running the same way as the first, or a third corner: the edge cannot
+    /// be an edge of an oriented 2-manifold.
+    Defective,
 }
 
 /// The buckets of one face table's edges.
@@ -79,48 +84,57 @@ impl EdgeBuckets {
         })
     }
 
-    /// Meets edge `a`–`b` (either direction, `a != b`) with `value` (at most
+    /// Meets the edge of a corner running `a → b` (`a != b`) with `value` (at most
     /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
     #[inline(always)]
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         debug_assert!(value <= MAX_EDGE_VALUE && a != b);
-        let (low, high) = if a < b { (a, b) } else { (b, a) };
+        let (low, high, forward) = if a < b {
+            (a, b, FORWARD)
+        } else {
+            (b, a, 0)
+        };
+        let opened = (u64::from(high) << 32) | forward | u64::from(value);
         let bucket = &mut self.slots
             [self.start[low as usize] as usize..self.start[low as usize + 1] as usize];
         for slot in bucket {
             if *slot == 0 {
-                *slot = (u64::from(high) << 32) | u64::from(value);
+                *slot = opened;
                 return EdgeVisit::Opened;
             }
             if (*slot >> 32) as u32 == high {
-                return close(slot);
+                return pair(slot, forward);
             }
         }
-        self.visit_spilled(edge_key(low, high), value)
+        self.visit_spilled(edge_key(low, high), opened)
     }
 
     #[cold]
     #[inline(never)]
-    fn visit_spilled(&mut self, key: u64, value: u32) -> EdgeVisit {
+    fn visit_spilled(&mut self, key: u64, opened: u64) -> EdgeVisit {
         match self.spill.entry(key) {
             std::collections::hash_map::Entry::Vacant(vacant) => {
-                vacant.insert(u64::from(value));
+                vacant.insert(opened);
                 EdgeVisit::Opened
             }
-            std::collections::hash_map::Entry::Occupied(mut occupied) => close(occupied.get_mut()),
+            std::collections::hash_map::Entry::Occupied(mut occupied) => {
+                pair(occupied.get_mut(), opened & FORWARD)
+            }
         }
     }
 }
 
-/// Closes an open slot (or reports it closed already).
-#[inline]
-fn close(slot: &mut u64) -> EdgeVisit {
-    let first = (*slot & VALUE_MASK) as u32;
-    if *slot & CLOSED != 0 {
-        EdgeVisit::AlreadyClosed(first)
+/// A second or later corner (direction `forward`) on the open or closed edge in `slot`; the
+/// edge is closed afterwards either way.
+#[inline(always)]
+fn pair(slot: &mut u64, forward: u64) -> EdgeVisit {
+    let first = *slot & VALUE_MASK;
+    let same_direction = *slot & FORWARD == forward;
+    *slot |= CLOSED;
+    if first == CLOSED || same_direction {
+        EdgeVisit::Defective
     } else {
-        *slot |= CLOSED;
-        EdgeVisit::Closed(first)
+        EdgeVisit::Paired(first as u32)
     }
 }
 
@@ -136,7 +150,7 @@ mod tests {
     use crate::soup::FaceList;
 
     #[test]
-    fn second_corner_closes_third_finds_closed_and_overflow_spills() {
+    fn opposite_corner_pairs_same_way_or_third_is_defective_and_overflow_spills() {
         let positions = vec![[0.0; 3]; 4];
         // One forward corner per vertex 0 and 1: edge 0-2 is only walked backward (2→0), so
         // vertex 0's bucket (room 1) overflows into the spill map.
@@ -145,12 +159,18 @@ mod tests {
         let mut buckets = EdgeBuckets::new(&table, 4).unwrap();
         assert_eq!(buckets.visit(0, 1, 7), EdgeVisit::Opened);
         assert_eq!(buckets.visit(2, 0, 8), EdgeVisit::Opened);
-        assert_eq!(buckets.visit(1, 0, 9), EdgeVisit::Closed(7));
-        assert_eq!(buckets.visit(0, 2, 10), EdgeVisit::Closed(8));
-        assert_eq!(buckets.visit(0, 2, 11), EdgeVisit::AlreadyClosed(8));
-        assert_eq!(buckets.visit(0, 1, 12), EdgeVisit::AlreadyClosed(7));
+        assert_eq!(buckets.visit(1, 0, 9), EdgeVisit::Paired(7));
+        assert_eq!(buckets.visit(0, 2, 10), EdgeVisit::Paired(8));
+        assert_eq!(buckets.visit(0, 2, 11), EdgeVisit::Defective);
+        assert_eq!(buckets.visit(1, 0, 12), EdgeVisit::Defective);
         assert_eq!(buckets.visit(3, 1, MAX_EDGE_VALUE), EdgeVisit::Opened);
-        assert_eq!(buckets.visit(1, 3, 0), EdgeVisit::Closed(MAX_EDGE_VALUE));
+        assert_eq!(buckets.visit(1, 3, 0), EdgeVisit::Paired(MAX_EDGE_VALUE));
+        // Same direction twice, in a bucket and in the spill map.
+        assert_eq!(buckets.visit(1, 2, 0), EdgeVisit::Opened);
+        assert_eq!(buckets.visit(1, 2, 1), EdgeVisit::Defective);
+        assert_eq!(buckets.visit(3, 0, 0), EdgeVisit::Opened);
+        assert_eq!(buckets.visit(3, 0, 1), EdgeVisit::Defective);
+        assert_eq!(buckets.visit(0, 3, 1), EdgeVisit::Defective);
     }
 
     #[test]

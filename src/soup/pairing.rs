@@ -55,16 +55,14 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
     let mut problem_keys: Vec<u64> = Vec::new();
     table.for_each_corner_edge(|_, c, n| {
         let (a, b) = (corners[c], corners[n]);
-        // Corner ids are below 2^31 (`MAX_CORNERS`), so they fit an edge's value.
+        // Corner ids are below `MAX_CORNERS`, so they fit an edge's value.
         match buckets.visit(a, b, c as u32) {
             EdgeVisit::Opened => {}
-            EdgeVisit::Closed(first) if corners[first as usize] == b => {
+            EdgeVisit::Paired(first) => {
                 partner[first as usize] = c as u32;
                 partner[c] = first;
             }
-            EdgeVisit::Closed(_) | EdgeVisit::AlreadyClosed(_) => {
-                problem_keys.push(edge_key(a.min(b), a.max(b)));
-            }
+            EdgeVisit::Defective => problem_keys.push(edge_key(a.min(b), a.max(b))),
         }
     });
     let problems = if problem_keys.is_empty() {
