@@ -4,7 +4,8 @@
 //! [`EdgeBuckets`](crate::soup::EdgeBuckets): the first corner on an edge opens edge `e`
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
 //! twin. Each face's loop is written as soon as its corners are known, so half-edges are numbered
-//! in corner order and each face's half-edges sit close together in memory. Boundary half-edges
+//! in corner order and each face's half-edges sit close together in memory; the face's area is
+//! checked on the way (degenerate faces are reported). Boundary half-edges
 //! are then linked into loops through each vertex's outgoing boundary half-edge (walking the fan
 //! only at vertices with several boundary gaps).
 //!
@@ -12,12 +13,10 @@
 //! finds edge defects; only input that needs a decision goes through
 //! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
 
-use std::borrow::Cow;
-
 use crate::large_arrays::{self, filled, zeroed};
 use crate::soup::{
-    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable,
-    degenerate_faces, face_edges, non_finite_vertices, resolve, well_formed_edges,
+    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, face_edges,
+    is_degenerate_face, non_finite_vertices, resolve, well_formed_edges,
 };
 
 use super::Mesh;
@@ -37,123 +36,34 @@ impl Mesh {
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
         if let Some((table, buckets)) = well_formed_edges(list) {
-            let non_finite_vertices = non_finite_vertices(list.positions);
+            // The mesh's copy of the positions and their check need nothing from the walk: with
+            // two threads they are made beside it; with one, first, so that the walk's
+            // degeneracy tests find the positions in cache.
+            let ((positions, non_finite_vertices), walked) = join(
+                || {
+                    let copy = large_arrays::copied(list.positions);
+                    (copy, non_finite_vertices(list.positions))
+                },
+                || FaceLoops::walk(&table, buckets, list.positions),
+            );
             // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
-            if non_finite_vertices.is_empty() || policy != BuildPolicy::Strict {
+            if let Some(loops) = walked
+                && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
+            {
                 let diagnostic = Diagnostic {
                     non_finite_vertices,
                     ..Diagnostic::default()
                 };
-                let positions = Cow::Borrowed(list.positions);
-                if let Some(built) = Self::from_table(&table, buckets, positions, diagnostic) {
-                    return Ok(built);
-                }
+                return Ok(loops.into_mesh(&table, positions, diagnostic));
             }
         }
         let resolved = resolve(list, policy)?;
         let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
             .expect("a resolved face table is well formed");
-        let built = Self::from_table(
-            &resolved.table,
-            buckets,
-            resolved.positions,
-            resolved.diagnostic,
-        );
-        Ok(built.expect("a resolved face table has no edge defects"))
-    }
-
-    /// Builds the mesh of a well-formed table and completes `diagnostic` with what the mesh
-    /// shows (non-manifold and isolated vertices, degenerate faces). `None` when an edge is
-    /// walked by more than two faces or twice in one direction.
-    fn from_table(
-        table: &FaceTable<'_>,
-        buckets: EdgeBuckets,
-        positions: Cow<'_, [[f64; 3]]>,
-        mut diagnostic: Diagnostic,
-    ) -> Option<(Mesh, Diagnostic)> {
-        // The geometric check reads only the table and the positions: with two threads it runs
-        // beside the connectivity walk.
-        let (mesh, degenerate) = join(
-            || Mesh::from_faces(table, buckets, large_arrays::copied(&positions)),
-            || degenerate_faces(table, &positions),
-        );
-        let mut mesh = mesh?;
-        diagnostic.non_manifold_vertices =
-            mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
-        mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
-        diagnostic.isolated_vertices = mesh.isolated_vertices();
-        diagnostic.degenerate_faces = degenerate;
-        Some((mesh, diagnostic))
-    }
-
-    /// The connectivity walk (see the module documentation). `None` on an edge defect.
-    fn from_faces(
-        table: &FaceTable<'_>,
-        buckets: EdgeBuckets,
-        positions: Vec<[f64; 3]>,
-    ) -> Option<Mesh> {
-        let mut loops = FaceLoops::new(table, buckets, positions.len());
-        let mut face_halfedge = zeroed(table.n_faces());
-        let mut polygon = Vec::new();
-        for (f, first) in face_halfedge.iter_mut().enumerate() {
-            let f32 = f as u32;
-            *first = match *table.face(f) {
-                // Triangles and quads, the usual faces, with their loops in registers (the
-                // triangle written out: measurably faster than the generic loop).
-                [a, b, c] => {
-                    let triangle = [
-                        loops.corner(a, b, f32)?,
-                        loops.corner(b, c, f32)?,
-                        loops.corner(c, a, f32)?,
-                    ];
-                    loops.close_face(triangle)
-                }
-                [a, b, c, d] => loops.fixed_face([a, b, c, d], f32)?,
-                ref corners => {
-                    polygon.clear();
-                    for (a, b) in face_edges(corners) {
-                        polygon.push(loops.corner(a, b, f32)?);
-                    }
-                    loops.close_face(&polygon)
-                }
-            };
-        }
-        let FaceLoops {
-            origin,
-            next,
-            prev,
-            face,
-            vertex_halfedge,
-            n_edges,
-            ..
-        } = loops;
-        let n_halfedges = 2 * n_edges as usize;
-        let fit = |mut array: Vec<u32>| {
-            array.truncate(n_halfedges);
-            array.shrink_to_fit();
-            array
-        };
-        let mut mesh = Mesh {
-            origin: fit(origin),
-            next: fit(next),
-            prev: fit(prev),
-            face: fit(face),
-            vertex_halfedge,
-            positions,
-            face_halfedge,
-            deleted: Deletions::default(),
-            may_have_pinched_vertices: true,
-            attributes: Default::default(),
-        };
-        // Every corner has a half-edge with a face; the other half-edges are boundary twins.
-        if n_halfedges > table.n_corners() {
-            let boundary: Vec<u32> = (1..n_halfedges as u32)
-                .step_by(2)
-                .filter(|&h| mesh.face[h as usize] == INVALID_INDEX)
-                .collect();
-            mesh.link_boundary(&boundary);
-        }
-        Some(mesh)
+        let loops = FaceLoops::walk(&resolved.table, buckets, &resolved.positions)
+            .expect("a resolved face table has no edge defects");
+        let positions = resolved.positions.into_owned();
+        Ok(loops.into_mesh(&resolved.table, positions, resolved.diagnostic))
     }
 
     /// Makes each boundary vertex's half-edge a boundary one and links the boundary half-edges
@@ -209,21 +119,105 @@ struct FaceLoops {
     prev: Vec<u32>,
     face: Vec<u32>,
     vertex_halfedge: Vec<u32>,
+    face_halfedge: Vec<u32>,
     n_edges: u32,
+    /// Input indices of the faces of negligible area: the walk reads every face's corners
+    /// anyway, and checking the geometry there costs less than a pass of its own.
+    degenerate_faces: Vec<u32>,
 }
 
 impl FaceLoops {
-    fn new(table: &FaceTable<'_>, buckets: EdgeBuckets, n_vertices: usize) -> Self {
+    /// The connectivity walk (see the module documentation) over a well-formed table whose
+    /// vertices are at `positions`. `None` when an edge is walked by more than two faces or
+    /// twice in one direction.
+    fn walk(
+        table: &FaceTable<'_>,
+        buckets: EdgeBuckets,
+        positions: &[[f64; 3]],
+    ) -> Option<FaceLoops> {
         let capacity = 2 * table.n_corners();
-        FaceLoops {
+        let mut loops = FaceLoops {
             buckets,
             origin: zeroed(capacity),
             next: zeroed(capacity),
             prev: zeroed(capacity),
             face: zeroed(capacity),
-            vertex_halfedge: filled(n_vertices, INVALID_INDEX),
+            vertex_halfedge: filled(positions.len(), INVALID_INDEX),
+            face_halfedge: zeroed(table.n_faces()),
             n_edges: 0,
+            degenerate_faces: Vec::new(),
+        };
+        let mut polygon = Vec::new();
+        for f in 0..table.n_faces() {
+            let (corners, f32) = (table.face(f), f as u32);
+            // Before the topology: the position loads overlap the walk's bucket misses.
+            if is_degenerate_face(corners, positions) {
+                loops.degenerate_faces.push(table.input_face(f));
+            }
+            loops.face_halfedge[f] = match *corners {
+                // Triangles and quads, the usual faces, with their loops in registers (the
+                // triangle written out: measurably faster than the generic loop).
+                [a, b, c] => {
+                    let triangle = [
+                        loops.corner(a, b, f32)?,
+                        loops.corner(b, c, f32)?,
+                        loops.corner(c, a, f32)?,
+                    ];
+                    loops.close_face(triangle)
+                }
+                [a, b, c, d] => loops.fixed_face([a, b, c, d], f32)?,
+                _ => {
+                    polygon.clear();
+                    for (a, b) in face_edges(corners) {
+                        polygon.push(loops.corner(a, b, f32)?);
+                    }
+                    loops.close_face(&polygon)
+                }
+            };
         }
+        Some(loops)
+    }
+
+    /// The mesh of the walked faces of `table`, with boundary loops, and `diagnostic` completed
+    /// with what the mesh shows: non-manifold and isolated vertices, degenerate faces.
+    fn into_mesh(
+        self,
+        table: &FaceTable<'_>,
+        positions: Vec<[f64; 3]>,
+        mut diagnostic: Diagnostic,
+    ) -> (Mesh, Diagnostic) {
+        let n_halfedges = 2 * self.n_edges as usize;
+        let fit = |mut array: Vec<u32>| {
+            array.truncate(n_halfedges);
+            array.shrink_to_fit();
+            array
+        };
+        let mut mesh = Mesh {
+            origin: fit(self.origin),
+            next: fit(self.next),
+            prev: fit(self.prev),
+            face: fit(self.face),
+            vertex_halfedge: self.vertex_halfedge,
+            positions,
+            face_halfedge: self.face_halfedge,
+            deleted: Deletions::default(),
+            may_have_pinched_vertices: true,
+            attributes: Default::default(),
+        };
+        // Every corner has a half-edge with a face; the other half-edges are boundary twins.
+        if n_halfedges > table.n_corners() {
+            let boundary: Vec<u32> = (1..n_halfedges as u32)
+                .step_by(2)
+                .filter(|&h| mesh.face[h as usize] == INVALID_INDEX)
+                .collect();
+            mesh.link_boundary(&boundary);
+        }
+        diagnostic.non_manifold_vertices =
+            mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
+        mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
+        diagnostic.isolated_vertices = mesh.isolated_vertices();
+        diagnostic.degenerate_faces = self.degenerate_faces;
+        (mesh, diagnostic)
     }
 
     /// The half-edge of the corner of face `f` running `a → b`: a new edge's first half-edge,

@@ -89,11 +89,7 @@ impl EdgeBuckets {
     #[inline(always)]
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         debug_assert!(value <= MAX_EDGE_VALUE && a != b);
-        let (low, high, forward) = if a < b {
-            (a, b, FORWARD)
-        } else {
-            (b, a, 0)
-        };
+        let (low, high, forward) = if a < b { (a, b, FORWARD) } else { (b, a, 0) };
         let opened = (u64::from(high) << 32) | forward | u64::from(value);
         let bucket = &mut self.slots
             [self.start[low as usize] as usize..self.start[low as usize + 1] as usize];

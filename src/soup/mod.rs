@@ -19,6 +19,7 @@ mod table;
 mod umbrellas;
 
 pub use degenerate::degenerate_faces;
+pub(crate) use degenerate::is_degenerate_face;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
