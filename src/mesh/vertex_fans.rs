@@ -1,5 +1,7 @@
 //! Vertex-level topology found after a build: isolated vertices and vertices with several fans.
 
+use std::ops::Range;
+
 use super::Mesh;
 use super::ids::{HalfedgeId, INVALID_INDEX, VertexId};
 
@@ -21,51 +23,87 @@ impl Mesh {
     /// vertex's half-edge add up to all live half-edges, no vertex has a second fan. Only
     /// otherwise are per-vertex out-degrees counted.
     pub fn non_manifold_vertices(&self) -> Vec<VertexId> {
-        // The fan walk on the raw arrays (`h = twin(prev(h))`): this runs after every build, over
-        // every half-edge. Bounded by the half-edge count, like the circulators.
-        let (prev, vertex_halfedge) = (&self.prev, &self.vertex_halfedge);
-        let max_steps = self.halfedge_capacity();
-        let check_deleted = self.has_deleted_elements();
-        let fan_size = |v: usize| -> usize {
-            let start = vertex_halfedge[v];
-            if start == INVALID_INDEX
-                || (check_deleted && self.is_vertex_deleted(VertexId(v as u32)))
-            {
-                return 0;
-            }
-            let (mut h, mut steps) = (start, 0);
-            loop {
-                steps += 1;
-                h = prev[h as usize] ^ 1;
-                if h == start || steps >= max_steps {
-                    return steps;
-                }
-            }
+        // This runs after every build, over every half-edge.
+        let n_vertices = self.vertex_capacity();
+        let walked_in = |vertices: Range<usize>| {
+            let mut walked = 0;
+            self.for_each_fan_size(vertices, |_, size| walked += size);
+            walked
         };
         #[cfg(feature = "parallel")]
         let walked: usize = {
             use rayon::prelude::*;
-            (0..self.vertex_capacity())
+            const CHUNK: usize = 1 << 14;
+            (0..n_vertices.div_ceil(CHUNK))
                 .into_par_iter()
-                .with_min_len(8192)
-                .map(fan_size)
+                .map(|chunk| walked_in(chunk * CHUNK..n_vertices.min((chunk + 1) * CHUNK)))
                 .sum()
         };
         #[cfg(not(feature = "parallel"))]
-        let walked: usize = (0..self.vertex_capacity()).map(fan_size).sum();
+        let walked: usize = walked_in(0..n_vertices);
         if walked == self.n_halfedges() {
             return Vec::new();
         }
-        let mut out_degree = vec![0u32; self.vertex_capacity()];
+        let mut out_degree = vec![0u32; n_vertices];
         for h in 0..self.halfedge_capacity() {
             if !self.is_halfedge_deleted(HalfedgeId(h as u32)) {
                 let v = self.origin[h] as usize;
                 out_degree[v] = out_degree[v].saturating_add(1);
             }
         }
-        (0..self.vertex_capacity())
-            .filter(|&v| fan_size(v) != out_degree[v] as usize)
-            .map(|v| VertexId(v as u32))
-            .collect()
+        let mut pinched = Vec::new();
+        self.for_each_fan_size(0..n_vertices, |v, size| {
+            if size != out_degree[v] as usize {
+                pinched.push(VertexId(v as u32));
+            }
+        });
+        pinched.sort_unstable();
+        pinched
+    }
+
+    /// Calls `visit(v, size)` for each live vertex `v` of `vertices` with a half-edge, `size`
+    /// being the number of half-edges of the fan walked from it (`h = twin(prev(h))` on the raw
+    /// arrays, bounded by the half-edge count like the circulators). Several fans are walked in
+    /// step so that their cache misses overlap; vertices are reported in no particular order.
+    fn for_each_fan_size(&self, vertices: Range<usize>, mut visit: impl FnMut(usize, usize)) {
+        const LANES: usize = 8;
+        /// A fan being walked: its vertex, first and current half-edge, steps so far.
+        #[derive(Clone, Copy)]
+        struct Lane {
+            vertex: usize,
+            start: u32,
+            h: u32,
+            steps: usize,
+        }
+        let (prev, vertex_halfedge) = (&self.prev, &self.vertex_halfedge);
+        let max_steps = self.halfedge_capacity();
+        let check_deleted = self.has_deleted_elements();
+        let mut pending = vertices.filter(|&v| {
+            vertex_halfedge[v] != INVALID_INDEX
+                && !(check_deleted && self.is_vertex_deleted(VertexId(v as u32)))
+        });
+        let mut start_lane = || {
+            pending.next().map(|vertex| {
+                let start = vertex_halfedge[vertex];
+                Lane {
+                    vertex,
+                    start,
+                    h: start,
+                    steps: 0,
+                }
+            })
+        };
+        let mut lanes: [Option<Lane>; LANES] = std::array::from_fn(|_| start_lane());
+        while lanes.iter().any(Option::is_some) {
+            for slot in &mut lanes {
+                let Some(lane) = slot else { continue };
+                lane.steps += 1;
+                lane.h = prev[lane.h as usize] ^ 1;
+                if lane.h == lane.start || lane.steps >= max_steps {
+                    visit(lane.vertex, lane.steps);
+                    *slot = start_lane();
+                }
+            }
+        }
     }
 }
