@@ -62,9 +62,10 @@ pub struct Delaunay {
     /// passes over the triangles read coordinates through these, sequentially in memory.
     pub(crate) ranked: Vec<[f64; 2]>,
     pub(crate) corner_ranks: Vec<u32>,
-    /// Sites in insertion order (spatially coherent): per-site passes follow it so that they
-    /// touch memory in the order the triangles were created.
-    pub(crate) insertion_order: Vec<u32>,
+    /// The vertex edge of every site that has one, in increasing order: per-site passes that
+    /// start at a site's vertex edge visit sites in this order to read the triangles
+    /// sequentially (the site of `e` is `triangles[e]`).
+    pub(crate) cell_starts: Vec<u32>,
 }
 
 impl Delaunay {
@@ -107,7 +108,7 @@ impl Delaunay {
             vertex_edge: vec![INVALID; n],
             hull: Vec::new(),
             dimension: Dimension::Empty,
-            insertion_order: Vec::new(),
+            cell_starts: Vec::new(),
             ranked: Vec::new(),
             corner_ranks: Vec::new(),
         };
@@ -140,7 +141,6 @@ impl Delaunay {
             }
         }
         result.canonicalise_representatives(representative);
-        result.insertion_order = order;
         Ok(result)
     }
 
@@ -200,6 +200,7 @@ impl Delaunay {
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
         // is across its edge ∞ → u.
         let mut hull = Vec::new();
+        let mut hull_edges = Vec::new();
         let start = some_ghost;
         let mut g = start;
         loop {
@@ -211,20 +212,30 @@ impl Delaunay {
             let from_infinity = base + k; // ∞ → u
             let v = origin[next_edge(finite) as usize];
             hull.push(to_site[v as usize]);
+            let real = twin[finite as usize];
+            hull_edges.push(3 * new_index[(real / 3) as usize] + real % 3);
             g = twin[from_infinity as usize] / 3;
             if g == start || hull.len() > n_all {
                 break;
             }
         }
-        // Vertex edges: any outgoing edge, then the outgoing hull edge for hull vertices.
-        for (e, &v) in triangles.iter().enumerate() {
-            self.vertex_edge[v as usize] = e as u32;
+        // Vertex edges: the last outgoing edge, then the outgoing hull edge for hull vertices.
+        // Found by rank, whose order follows the triangles', then mapped to sites in one pass.
+        let mut rank_edge = vec![INVALID; to_site.len()];
+        for (e, &r) in corner_ranks.iter().enumerate() {
+            rank_edge[r as usize] = e as u32;
         }
-        for (e, &v) in triangles.iter().enumerate() {
-            if twins[e] == INVALID {
-                self.vertex_edge[v as usize] = e as u32;
+        for &e in &hull_edges {
+            rank_edge[corner_ranks[e as usize] as usize] = e;
+        }
+        for (&e, &site) in rank_edge.iter().zip(to_site) {
+            if e != INVALID {
+                self.vertex_edge[site as usize] = e;
             }
         }
+        self.cell_starts = (0..corner_ranks.len() as u32)
+            .filter(|&e| rank_edge[corner_ranks[e as usize] as usize] == e)
+            .collect();
         self.triangles = triangles;
         self.corner_ranks = corner_ranks;
         self.twins = twins;
