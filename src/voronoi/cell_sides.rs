@@ -145,9 +145,13 @@ impl Voronoi {
         }
     }
 
-    /// The keys, in increasing order, of every edge with an end for which `is_placed` fails
-    /// (an end at infinity always fails).
-    pub(crate) fn edges_with_unplaced_end(&self, is_placed: impl Fn(u32) -> bool) -> Vec<u32> {
+    /// The keys, in increasing order, of every edge with an end that is not placed: at
+    /// infinity, or a vertex for which `is_placed` fails. `unplaced` lists those vertices.
+    pub(crate) fn edges_with_unplaced_end(
+        &self,
+        is_placed: impl Fn(u32) -> bool,
+        unplaced: &[u32],
+    ) -> Vec<u32> {
         let placed = |v: u32| v != INVALID && is_placed(v);
         if self.delaunay.dimension() != Dimension::Plane {
             let n_edges = (self.n_halfedges() / 2) as u32;
@@ -159,21 +163,36 @@ impl Voronoi {
                 .collect();
         }
         // The edges around unplaced vertices, and the rays: the hull edges, one leaving each
-        // hull site.
+        // hull site. Marked in a bit set, which lists them in order without sorting.
         let d = &self.delaunay;
-        let mut keys: Vec<u32> = d.hull.iter().map(|&s| d.vertex_edge[s as usize]).collect();
-        for (t, &v) in self.triangle_vertex.iter().enumerate() {
-            if placed(v) {
-                continue;
-            }
-            for e in 3 * t as u32..3 * t as u32 + 3 {
+        let mut marked = vec![0u64; d.triangles.len().div_ceil(64)];
+        let mut mark = |e: u32| marked[(e / 64) as usize] |= 1 << (e % 64);
+        for &s in &d.hull {
+            mark(d.vertex_edge[s as usize]);
+        }
+        let mut around_triangle = |t: u32| {
+            for e in 3 * t..3 * t + 3 {
                 if !self.is_merged(e) {
-                    keys.push(e.min(d.twins[e as usize]));
+                    mark(e.min(d.twins[e as usize]));
                 }
             }
+        };
+        if self.merged.is_empty() {
+            // One vertex per triangle, numbered alike.
+            unplaced.iter().for_each(|&t| around_triangle(t));
+        } else {
+            (0..self.triangle_vertex.len() as u32)
+                .filter(|&t| !placed(self.triangle_vertex[t as usize]))
+                .for_each(around_triangle);
         }
-        keys.sort_unstable();
-        keys.dedup();
+        let mut keys = Vec::new();
+        for (word_index, &word) in marked.iter().enumerate() {
+            let mut bits = word;
+            while bits != 0 {
+                keys.push(64 * word_index as u32 + bits.trailing_zeros());
+                bits &= bits - 1;
+            }
+        }
         keys
     }
 }

@@ -5,6 +5,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::parallel::map_runs;
 use crate::soup::PolygonSoup;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
@@ -106,12 +107,12 @@ impl Voronoi {
             first_crossing: 0,
             crossings: Vec::new(),
         };
-        let vertex_position = self.place_vertices_in(&mut b);
+        let (vertex_position, unplaced) = self.place_vertices_in(&mut b);
         // An edge with both ends placed is its own piece. Only the others, which may add boundary
         // crossings, are clipped, each once for both of its cells, in the order of their keys.
         let placed = |v: u32| vertex_position[v as usize] != INVALID;
-        let clipped: Vec<(u32, [u32; 2])> = self
-            .edges_with_unplaced_end(placed)
+        let keys = self.edges_with_unplaced_end(placed, &unplaced);
+        let clipped: Vec<(u32, [u32; 2])> = keys
             .into_iter()
             .map(|key| {
                 (
@@ -144,7 +145,7 @@ impl Voronoi {
         // lines. Cells are independent once the clipped edges exist: runs of them are assembled
         // in parallel into local lists, then concatenated in order.
         let order = self.cell_handles();
-        let assemble_run = |run: &[u32]| {
+        let assemble_run = |_, run: &[u32]| {
             let mut local = Vec::with_capacity(7 * run.len());
             let mut spans = Vec::with_capacity(run.len());
             let (mut sides, mut cell_pieces) = (Vec::new(), Vec::new());
@@ -161,13 +162,7 @@ impl Voronoi {
             }
             (local, spans)
         };
-        #[cfg(feature = "parallel")]
-        let runs: Vec<(Vec<u32>, Vec<[u32; 3]>)> = {
-            use rayon::prelude::*;
-            order.par_chunks(1 << 15).map(assemble_run).collect()
-        };
-        #[cfg(not(feature = "parallel"))]
-        let runs = vec![assemble_run(order)];
+        let runs = map_runs(order, 1 << 15, assemble_run);
         indices.reserve(runs.iter().map(|(local, _)| local.len()).sum());
         for (local, spans) in runs {
             let offset = indices.len() as u32;
@@ -193,14 +188,17 @@ impl Voronoi {
     }
 
     /// Gives every Voronoi vertex inside the region (closed test; the same test decides every
-    /// edge) a position, and returns the vertex → position map ([`INVALID`] outside). Those
-    /// exactly on the boundary become perimeter points (or the corner they sit on), so that the
-    /// walk along the boundary knows where they are.
-    fn place_vertices_in(&self, b: &mut Builder) -> Vec<u32> {
+    /// edge) a position, and returns the vertex → position map ([`INVALID`] outside) and the
+    /// list of vertices outside. Those exactly on the boundary become perimeter points (or the
+    /// corner they sit on), so that the walk along the boundary knows where they are.
+    fn place_vertices_in(&self, b: &mut Builder) -> (Vec<u32>, Vec<u32>) {
         let clip = b.clip;
         let m = clip.vertices().len();
-        let mut on_boundary = Vec::new();
-        b.positions.reserve(self.vertices.len());
+        let (mut on_boundary, mut outside) = (Vec::new(), Vec::new());
+        // Room for the crossings too, which are usually O(√n) (the boundary's share of the
+        // cells): growing the array later would copy all of it.
+        let n = self.vertices.len();
+        b.positions.reserve(n + n / 16 + 64);
         let mut vertex_position: Vec<u32> = self
             .vertices
             .iter()
@@ -215,6 +213,8 @@ impl Voronoi {
                 } else {
                     if lowest == 0.0 {
                         on_boundary.push(v);
+                    } else {
+                        outside.push(v as u32);
                     }
                     INVALID
                 }
@@ -233,7 +233,7 @@ impl Voronoi {
                 b.crossing(i, p)
             };
         }
-        vertex_position
+        (vertex_position, outside)
     }
 
     /// The site owning point `p`; used when no edge crosses the region, i.e. the whole region

@@ -4,6 +4,7 @@ use super::error::VoronoiError;
 use super::incremental::{GHOST, GhostTriangulation, next_edge, prev_edge};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
+use crate::large_arrays;
 
 /// Invalid index (no half-edge, no twin, no site).
 pub const INVALID: u32 = u32::MAX;
@@ -171,31 +172,35 @@ impl Delaunay {
         }
         let count = start[to_site.len()] as usize;
         let mut new_index = vec![INVALID; n_all];
+        let mut old_index = large_arrays::zeroed::<u32>(count);
         for (t, slot) in new_index.iter_mut().enumerate() {
             if !is_ghost(t) {
                 let key = newest(t);
                 *slot = start[key];
+                old_index[start[key] as usize] = t as u32;
                 start[key] += 1;
             }
         }
-        let mut triangles = vec![0u32; 3 * count];
-        let mut corner_ranks = vec![0u32; 3 * count];
-        let mut twins = vec![INVALID; 3 * count];
-        for t in 0..n_all {
-            let nt = new_index[t];
-            if nt == INVALID {
-                continue;
-            }
-            for k in 0..3 {
-                let (e, ne) = (3 * t + k, 3 * nt as usize + k);
-                triangles[ne] = to_site[origin[e] as usize];
-                corner_ranks[ne] = origin[e];
-                let o = twin[e] as usize;
-                let no = new_index[o / 3];
-                if no != INVALID {
-                    twins[ne] = 3 * no + (o % 3) as u32;
-                }
-            }
+        // Filled in the new order (writes sequential, reads scattered: cheaper than the reverse).
+        let mut triangles = large_arrays::zeroed::<u32>(3 * count);
+        let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
+        let mut twins = large_arrays::zeroed::<u32>(3 * count);
+        for (ne, ((site, rank), opposite)) in triangles
+            .iter_mut()
+            .zip(corner_ranks.iter_mut())
+            .zip(twins.iter_mut())
+            .enumerate()
+        {
+            let e = 3 * old_index[ne / 3] as usize + ne % 3;
+            *rank = origin[e];
+            *site = to_site[origin[e] as usize];
+            let o = twin[e] as usize;
+            let no = new_index[o / 3];
+            *opposite = if no == INVALID {
+                INVALID
+            } else {
+                3 * no + (o % 3) as u32
+            };
         }
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
         // is across its edge ∞ → u.

@@ -7,8 +7,9 @@ use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
-use super::parallel::{filter_indexed, map_indexed};
+use super::parallel::map_runs_mut;
 use super::predicates::incircle;
+use crate::large_arrays;
 
 /// Geometry of an undirected Voronoi edge.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -103,25 +104,55 @@ impl Voronoi {
     fn place_vertices(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
-        let centres: Vec<[f64; 2]> = map_indexed(n_tri, |t| self.circumcentre(t as u32));
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
         // point is exactly cocircular, and also when their circumcentres round to the same point
-        // (so that no edge has zero length in the floating-point output either).
-        // Each edge is decided once, from its half-edge with the larger twin, in parallel; only
-        // the (rare) merged ones are listed, then joined in order.
-        let merged_edges: Vec<u32> = filter_indexed(d.triangles.len(), |e| {
-            let t = d.twins[e];
-            if t == INVALID || (t as usize) < e {
-                return false;
-            }
-            let (here, there) = (centres[e / 3], centres[(t / 3) as usize]);
+        // (so that no edge has zero length in the floating-point output either). Each edge is
+        // decided once, from the triangle with the larger index, as soon as both centres are
+        // known: in the same pass for neighbours in the same run of triangles (whose centres are
+        // still in cache), after the pass for the others. Only the (rare) merged edges are listed.
+        // `e` lies in the triangle whose circumcircle is (`here`, `radius`).
+        let same_vertex = |e: u32, here: [f64; 2], radius: f64, there: [f64; 2]| {
             here == there
-                || (may_be_cocircular(here, there, d.corner_point(e as u32), d.scale) && {
-                    let base = 3 * (e as u32 / 3);
+                || (may_be_cocircular(here, there, radius) && {
+                    let base = 3 * (e / 3);
                     let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
-                    incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
+                    incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
                 })
+        };
+        // A few long runs: enough to share the work among threads, few edges between runs.
+        let run_len = n_tri.div_ceil(8).max(1 << 14);
+        let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
+        let runs = map_runs_mut(&mut centres, run_len, |k, run| {
+            let first = (k * run_len) as u32;
+            let (mut merged, mut later) = (Vec::new(), Vec::new());
+            for i in 0..run.len() {
+                let t = first + i as u32;
+                let (here, radius) = self.circumcircle(t);
+                run[i] = here;
+                for e in 3 * t..3 * t + 3 {
+                    let twin = d.twins[e as usize];
+                    let neighbour = twin / 3;
+                    if twin == INVALID || neighbour > t {
+                        continue;
+                    }
+                    if neighbour < first {
+                        later.push(e);
+                    } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
+                        merged.push(twin);
+                    }
+                }
+            }
+            (merged, later)
         });
+        let mut merged_edges = Vec::new();
+        for (merged, later) in runs {
+            merged_edges.extend(merged);
+            merged_edges.extend(later.into_iter().filter_map(|e| {
+                let twin = d.twins[e as usize];
+                let (here, radius) = self.circumcircle(e / 3);
+                same_vertex(e, here, radius, centres[(twin / 3) as usize]).then_some(twin)
+            }));
+        }
         if merged_edges.is_empty() {
             // No cocircular or coincident pair (the usual case): one vertex per triangle.
             self.triangle_vertex = (0..n_tri as u32).collect();
@@ -173,13 +204,15 @@ impl Voronoi {
     }
 
     /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
-    /// scaled frame and mapped back (dividing by a power of two is exact).
-    fn circumcentre(&self, t: u32) -> [f64; 2] {
+    /// scaled frame and mapped back (dividing by a power of two is exact), and the L1 length of
+    /// that offset (at least the circumradius).
+    fn circumcircle(&self, t: u32) -> ([f64; 2], f64) {
         let d = &self.delaunay;
         let base = 3 * t;
         let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
         let [ux, uy] = circumcentre_offset(a, b, c);
-        [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
+        let centre = [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale];
+        (centre, (ux.abs() + uy.abs()) / d.scale)
     }
 
     /// The underlying Delaunay triangulation.
@@ -410,18 +443,18 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
 }
 
 /// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres
-/// `here` and `there` and a shared corner (`scaled_corner` in the frame multiplied by `scale`)?
+/// `here` and `there` and `radius`, at least the circumradius of one of them (L1 length)?
 ///
-/// Cocircular triangles have the same exact centre, and [`circumcentre_offset`] places each
-/// within ~1.5e-10 of the radius of it, so centres farther apart than 1e-8 radii (a margin of
-/// about 50, measured in the L1 norm, which never underflows to zero for tiny sites) cannot be;
-/// only the rest go to the exact in-circle test, which decides.
+/// Cocircular triangles have the same exact centre. [`circumcentre_offset`] places each within
+/// ~1.5e-10 of the radius of it, and moving it from its corner to absolute coordinates rounds by
+/// at most half an ulp per coordinate; centres farther apart than 1e-8 radii (a margin of about
+/// 50, measured in the L1 norm, which never underflows to zero for tiny sites) plus an ulp of
+/// their magnitudes cannot be. Only the rest go to the exact in-circle test, which decides.
 #[inline]
-fn may_be_cocircular(here: [f64; 2], there: [f64; 2], scaled_corner: [f64; 2], scale: f64) -> bool {
-    let corner = [scaled_corner[0] / scale, scaled_corner[1] / scale];
+fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
     let apart = (here[0] - there[0]).abs() + (here[1] - there[1]).abs();
-    let radius = (here[0] - corner[0]).abs() + (here[1] - corner[1]).abs();
-    apart <= 1e-8 * radius
+    let magnitude = here[0].abs() + here[1].abs() + there[0].abs() + there[1].abs();
+    apart <= 1e-8 * radius + f64::EPSILON * magnitude
 }
 
 /// How much cancellation [`circumcentre_offset`] accepts in floating point: about 1e-10 relative
@@ -478,10 +511,13 @@ mod tests {
     #[test]
     fn cocircular_filter_never_rejects_equal_centres() {
         let centre = [0.25, -3.0];
-        assert!(may_be_cocircular(centre, centre, [2.0, 2.0], 2.0));
-        assert!(!may_be_cocircular(centre, [0.26, -3.0], [2.0, 2.0], 2.0));
+        assert!(may_be_cocircular(centre, centre, 3.75));
+        assert!(!may_be_cocircular(centre, [0.26, -3.0], 3.75));
+        // Centres one ulp apart far from the origin, for a tiny circle: rounding, not geometry.
+        let far = [1e6, 1e6];
+        assert!(may_be_cocircular(far, [1e6 + 1.2e-10, 1e6], 1e-12));
         // Tiny magnitudes: the L1 test does not underflow to "apart".
         let tiny = [1e-300, 2e-300];
-        assert!(may_be_cocircular(tiny, tiny, [0.5, 0.5], 1e300));
+        assert!(may_be_cocircular(tiny, tiny, 1e-301));
     }
 }

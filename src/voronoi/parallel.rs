@@ -19,21 +19,53 @@ pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + S
     }
 }
 
-/// The indices `i < len` for which `keep(i)` holds, in increasing order; in parallel when the
-/// `parallel` feature is on. Serves passes that find a few exceptions among millions of elements.
-pub(crate) fn filter_indexed(len: usize, keep: impl Fn(usize) -> bool + Sync + Send) -> Vec<u32> {
+/// `f(k, run)` for the consecutive runs of `run_len` elements of `items` (`k` counts runs),
+/// in parallel when the `parallel` feature is on; results in run order.
+pub(crate) fn map_runs<T: Sync, R: Send>(
+    items: &[T],
+    run_len: usize,
+    f: impl Fn(usize, &[T]) -> R + Sync + Send,
+) -> Vec<R> {
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
-        (0..len)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .filter(|&i| keep(i))
-            .map(|i| i as u32)
+        items
+            .par_chunks(run_len)
+            .enumerate()
+            .map(|(k, run)| f(k, run))
             .collect()
     }
     #[cfg(not(feature = "parallel"))]
     {
-        (0..len).filter(|&i| keep(i)).map(|i| i as u32).collect()
+        items
+            .chunks(run_len)
+            .enumerate()
+            .map(|(k, run)| f(k, run))
+            .collect()
+    }
+}
+
+/// [`map_runs`] over runs that `f` fills in.
+pub(crate) fn map_runs_mut<T: Send, R: Send>(
+    items: &mut [T],
+    run_len: usize,
+    f: impl Fn(usize, &mut [T]) -> R + Sync + Send,
+) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items
+            .par_chunks_mut(run_len)
+            .enumerate()
+            .map(|(k, run)| f(k, run))
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items
+            .chunks_mut(run_len)
+            .enumerate()
+            .map(|(k, run)| f(k, run))
+            .collect()
     }
 }
