@@ -6,6 +6,7 @@ use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
 use super::parallel::map_runs;
+use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
@@ -101,9 +102,14 @@ impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
         let m = clip.vertices().len();
+        // Room for the corners, the vertices and the crossings, which are usually O(√n) (the
+        // boundary's share of the cells): growing the array later would copy all of it.
+        let n = self.vertices.len();
+        let mut positions = large_arrays::with_capacity(m + n + n / 16 + 64);
+        positions.extend_from_slice(clip.vertices());
         let mut b = Builder {
             clip,
-            positions: clip.vertices().to_vec(),
+            positions,
             first_crossing: 0,
             crossings: Vec::new(),
         };
@@ -139,8 +145,7 @@ impl Voronoi {
             }
         };
         let n_sites = self.delaunay.n_sites();
-        let mut ranges = vec![[0u32, 0u32]; n_sites];
-        let mut indices = Vec::new();
+        let mut ranges = large_arrays::zeroed::<[u32; 2]>(n_sites);
         // Cells in the order of the triangles (spatially coherent): consecutive cells share cache
         // lines. Cells are independent once the clipped edges exist: runs of them are assembled
         // in parallel into local lists, then concatenated in order.
@@ -163,7 +168,7 @@ impl Voronoi {
             (local, spans)
         };
         let runs = map_runs(order, 1 << 15, assemble_run);
-        indices.reserve(runs.iter().map(|(local, _)| local.len()).sum());
+        let mut indices = large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum());
         for (local, spans) in runs {
             let offset = indices.len() as u32;
             indices.extend_from_slice(&local);
@@ -195,31 +200,23 @@ impl Voronoi {
         let clip = b.clip;
         let m = clip.vertices().len();
         let (mut on_boundary, mut outside) = (Vec::new(), Vec::new());
-        // Room for the crossings too, which are usually O(√n) (the boundary's share of the
-        // cells): growing the array later would copy all of it.
-        let n = self.vertices.len();
-        b.positions.reserve(n + n / 16 + 64);
-        let mut vertex_position: Vec<u32> = self
-            .vertices
-            .iter()
-            .enumerate()
-            .map(|(v, &p)| {
-                let lowest = (0..m)
-                    .map(|i| clip.edge_function(i, p))
-                    .fold(f64::INFINITY, f64::min);
-                if lowest > 0.0 {
-                    b.positions.push(p);
-                    (b.positions.len() - 1) as u32
+        let mut vertex_position = large_arrays::with_capacity(self.vertices.len());
+        vertex_position.extend(self.vertices.iter().enumerate().map(|(v, &p)| {
+            let lowest = (0..m)
+                .map(|i| clip.edge_function(i, p))
+                .fold(f64::INFINITY, f64::min);
+            if lowest > 0.0 {
+                b.positions.push(p);
+                (b.positions.len() - 1) as u32
+            } else {
+                if lowest == 0.0 {
+                    on_boundary.push(v);
                 } else {
-                    if lowest == 0.0 {
-                        on_boundary.push(v);
-                    } else {
-                        outside.push(v as u32);
-                    }
-                    INVALID
+                    outside.push(v as u32);
                 }
-            })
-            .collect();
+                INVALID
+            }
+        }));
         b.first_crossing = b.positions.len();
         for &v in &on_boundary {
             let p = self.vertices[v];
