@@ -5,7 +5,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
-use super::parallel::map_runs;
+use super::parallel::map_each;
 use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
@@ -167,7 +167,7 @@ impl Voronoi {
             }
             (local, spans)
         };
-        let runs = map_runs(order, 1 << 15, assemble_run);
+        let runs = map_each(order.chunks(1 << 15).collect(), assemble_run);
         let mut indices = large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum());
         for (local, spans) in runs {
             let offset = indices.len() as u32;

@@ -7,7 +7,7 @@ use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
-use super::parallel::map_runs_mut;
+use super::parallel::map_each;
 use super::predicates::incircle;
 use crate::large_arrays;
 
@@ -122,28 +122,31 @@ impl Voronoi {
         // A few long runs: enough to share the work among threads, few edges between runs.
         let run_len = n_tri.div_ceil(8).max(1 << 14);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
-        let runs = map_runs_mut(&mut centres, run_len, |k, run| {
-            let first = (k * run_len) as u32;
-            let (mut merged, mut later) = (Vec::new(), Vec::new());
-            for i in 0..run.len() {
-                let t = first + i as u32;
-                let (here, radius) = self.circumcircle(t);
-                run[i] = here;
-                for e in 3 * t..3 * t + 3 {
-                    let twin = d.twins[e as usize];
-                    let neighbour = twin / 3;
-                    if twin == INVALID || neighbour > t {
-                        continue;
-                    }
-                    if neighbour < first {
-                        later.push(e);
-                    } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
-                        merged.push(twin);
+        let runs = map_each(
+            centres.chunks_mut(run_len).collect(),
+            |k, run: &mut [[f64; 2]]| {
+                let first = (k * run_len) as u32;
+                let (mut merged, mut later) = (Vec::new(), Vec::new());
+                for i in 0..run.len() {
+                    let t = first + i as u32;
+                    let (here, radius) = self.circumcircle(t);
+                    run[i] = here;
+                    for e in 3 * t..3 * t + 3 {
+                        let twin = d.twins[e as usize];
+                        let neighbour = twin / 3;
+                        if twin == INVALID || neighbour > t {
+                            continue;
+                        }
+                        if neighbour < first {
+                            later.push(e);
+                        } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
+                            merged.push(twin);
+                        }
                     }
                 }
-            }
-            (merged, later)
-        });
+                (merged, later)
+            },
+        );
         let mut merged_edges = Vec::new();
         for (merged, later) in runs {
             merged_edges.extend(merged);

@@ -19,53 +19,28 @@ pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + S
     }
 }
 
-/// `f(k, run)` for the consecutive runs of `run_len` elements of `items` (`k` counts runs),
-/// in parallel when the `parallel` feature is on; results in run order.
-pub(crate) fn map_runs<T: Sync, R: Send>(
-    items: &[T],
-    run_len: usize,
-    f: impl Fn(usize, &[T]) -> R + Sync + Send,
+/// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
+/// feature is on; results in order. Serves passes over a few long runs of elements (slices,
+/// shared or mutable, that the caller splits off), one task per run.
+pub(crate) fn map_each<I: Send, R: Send>(
+    items: Vec<I>,
+    f: impl Fn(usize, I) -> R + Sync + Send,
 ) -> Vec<R> {
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
         items
-            .par_chunks(run_len)
+            .into_par_iter()
             .enumerate()
-            .map(|(k, run)| f(k, run))
+            .map(|(k, item)| f(k, item))
             .collect()
     }
     #[cfg(not(feature = "parallel"))]
     {
         items
-            .chunks(run_len)
+            .into_iter()
             .enumerate()
-            .map(|(k, run)| f(k, run))
-            .collect()
-    }
-}
-
-/// [`map_runs`] over runs that `f` fills in.
-pub(crate) fn map_runs_mut<T: Send, R: Send>(
-    items: &mut [T],
-    run_len: usize,
-    f: impl Fn(usize, &mut [T]) -> R + Sync + Send,
-) -> Vec<R> {
-    #[cfg(feature = "parallel")]
-    {
-        use rayon::prelude::*;
-        items
-            .par_chunks_mut(run_len)
-            .enumerate()
-            .map(|(k, run)| f(k, run))
-            .collect()
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        items
-            .chunks_mut(run_len)
-            .enumerate()
-            .map(|(k, run)| f(k, run))
+            .map(|(k, item)| f(k, item))
             .collect()
     }
 }
