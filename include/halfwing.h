@@ -2209,7 +2209,9 @@ hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
 
 /**
  * A read-only view of one index array of the diagram (see ::hw_voronoi_array): `*out_data`
- * (NULL when empty) and its length `*out_len`, valid as long as the diagram.
+ * (NULL when empty) and its length `*out_len`, valid as long as the diagram. The half-edge
+ * arrays are built on first use (by this call or any half-edge query), once, safely even when
+ * several threads ask at the same time.
  *
  * A cell walk in C, as in the course notes:
  * ```c

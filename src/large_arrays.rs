@@ -26,6 +26,13 @@ pub(crate) fn filled<T: Copy>(len: usize, value: T) -> Vec<T> {
     array
 }
 
+/// An empty array with room for `capacity` items, for arrays built by pushing.
+pub(crate) fn with_capacity<T>(capacity: usize) -> Vec<T> {
+    let array: Vec<T> = Vec::with_capacity(capacity);
+    advise_huge_pages(array.as_ptr().cast(), capacity * size_of::<T>());
+    array
+}
+
 /// A copy of `items`.
 pub(crate) fn copied<T: Copy>(items: &[T]) -> Vec<T> {
     let mut array: Vec<T> = Vec::with_capacity(items.len());
@@ -70,6 +77,8 @@ mod tests {
             let sevens = filled(len, 7u64);
             assert!(sevens.len() == len && sevens.iter().all(|&x| x == 7));
             assert_eq!(copied(&sevens), sevens);
+            let room = with_capacity::<u64>(len);
+            assert!(room.is_empty() && room.capacity() >= len);
         }
     }
 }

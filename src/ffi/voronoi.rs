@@ -245,12 +245,12 @@ fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError>
         HW_VORONOI_TRIANGLE_TWINS => d.twins(),
         HW_VORONOI_HULL => d.hull(),
         HW_VORONOI_TRIANGLE_VERTEX => &voronoi.triangle_vertex,
-        HW_VORONOI_HALFEDGE_ORIGIN => &voronoi.origin,
-        HW_VORONOI_HALFEDGE_NEXT => &voronoi.next,
-        HW_VORONOI_HALFEDGE_PREV => &voronoi.prev,
-        HW_VORONOI_HALFEDGE_SITE => &voronoi.site,
-        HW_VORONOI_CELL_HALFEDGE => &voronoi.cell_edge,
-        HW_VORONOI_VERTEX_HALFEDGE => &voronoi.vertex_edge,
+        HW_VORONOI_HALFEDGE_ORIGIN => &voronoi.half_edges().origin,
+        HW_VORONOI_HALFEDGE_NEXT => &voronoi.half_edges().next,
+        HW_VORONOI_HALFEDGE_PREV => &voronoi.half_edges().prev,
+        HW_VORONOI_HALFEDGE_SITE => &voronoi.half_edges().site,
+        HW_VORONOI_CELL_HALFEDGE => &voronoi.half_edges().cell_edge,
+        HW_VORONOI_VERTEX_HALFEDGE => &voronoi.half_edges().vertex_edge,
         other => {
             return Err(FfiError::invalid_input(format!(
                 "unknown Voronoi array {other}"
@@ -260,7 +260,9 @@ fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError>
 }
 
 /// A read-only view of one index array of the diagram (see ::hw_voronoi_array): `*out_data`
-/// (NULL when empty) and its length `*out_len`, valid as long as the diagram.
+/// (NULL when empty) and its length `*out_len`, valid as long as the diagram. The half-edge
+/// arrays are built on first use (by this call or any half-edge query), once, safely even when
+/// several threads ask at the same time.
 ///
 /// A cell walk in C, as in the course notes:
 /// ```c
@@ -280,7 +282,8 @@ pub unsafe extern "C" fn hw_voronoi_view(
     // SAFETY: forwarded from the caller.
     unsafe {
         give_view(out_data, "out_data", out_len, || {
-            array(voronoi_ref(voronoi)?, which)
+            let voronoi = voronoi_ref(voronoi)?;
+            with_threads(|| array(voronoi, which))
         })
     }
 }

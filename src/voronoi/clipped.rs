@@ -1,10 +1,12 @@
 //! Voronoi cells clipped to a convex region: closed polygons that share their vertices.
 
+use super::cell_sides::Side;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
-use super::diagram::{EdgeGeometry, Voronoi};
+use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
-use super::parallel::map_indexed;
+use super::parallel::map_each;
+use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
@@ -96,42 +98,125 @@ impl Builder<'_> {
     }
 }
 
-/// Marks a piece not decided by the parallel pass (never a position index: positions stay
-/// below [`INVALID`] − 1 by the site limit).
-const UNDECIDED: u32 = INVALID - 1;
-
 impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
         let m = clip.vertices().len();
+        // Room for the corners, the vertices and the crossings, which are usually O(√n) (the
+        // boundary's share of the cells): growing the array later would copy all of it.
+        let n = self.vertices.len();
+        let mut positions = large_arrays::with_capacity(m + n + n / 16 + 64);
+        positions.extend_from_slice(clip.vertices());
         let mut b = Builder {
             clip,
-            positions: clip.vertices().to_vec(),
+            positions,
             first_crossing: 0,
             crossings: Vec::new(),
         };
-        // Voronoi vertices inside (closed test) get a position; the same test decides every edge.
-        // Those exactly on the boundary become perimeter points (or the corner they sit on), so
-        // that the walk along the boundary knows where they are. The test runs in parallel; the
-        // numbering, a prefix count, in one sequential pass.
-        let lowest_edge_function: Vec<f64> = map_indexed(self.vertices.len(), |v| {
-            let p = self.vertices[v];
-            (0..m)
-                .map(|i| clip.edge_function(i, p))
-                .fold(f64::INFINITY, f64::min)
-        });
-        let mut vertex_position = vec![INVALID; self.vertices.len()];
-        let mut on_boundary = Vec::new();
-        b.positions.reserve(self.vertices.len());
-        for (v, &lowest) in lowest_edge_function.iter().enumerate() {
-            if lowest > 0.0 {
-                vertex_position[v] = b.positions.len() as u32;
-                b.positions.push(self.vertices[v]);
-            } else if lowest == 0.0 {
-                on_boundary.push(v);
+        let (vertex_position, unplaced) = self.place_vertices_in(&mut b);
+        // An edge with both ends placed is its own piece. Only the others, which may add boundary
+        // crossings, are clipped, each once for both of its cells, in the order of their keys.
+        let placed = |v: u32| vertex_position[v as usize] != INVALID;
+        let keys = self.edges_with_unplaced_end(placed, &unplaced);
+        let clipped: Vec<(u32, [u32; 2])> = keys
+            .into_iter()
+            .map(|key| {
+                (
+                    key,
+                    self.clip_edge(self.edge_ends(key), &vertex_position, &mut b),
+                )
+            })
+            .collect();
+        let piece = |side: Side| -> [u32; 2] {
+            if side.from != INVALID && side.to != INVALID {
+                let from = vertex_position[side.from as usize];
+                let to = vertex_position[side.to as usize];
+                if from != INVALID && to != INVALID {
+                    return [from, to];
+                }
+            }
+            let [start, end] = clipped
+                .binary_search_by_key(&side.edge, |&(key, _)| key)
+                .map_or([INVALID; 2], |i| clipped[i].1);
+            if side.reversed {
+                [end, start]
+            } else {
+                [start, end]
+            }
+        };
+        let n_sites = self.delaunay.n_sites();
+        let mut ranges = large_arrays::zeroed::<[u32; 2]>(n_sites);
+        // Cells in the order of the triangles (spatially coherent): consecutive cells share cache
+        // lines. Cells are independent once the clipped edges exist: runs of them are assembled
+        // in parallel into local lists, then concatenated in order.
+        let order = self.cell_handles();
+        let assemble_run = |_, run: &[u32]| {
+            let mut local = Vec::with_capacity(7 * run.len());
+            let mut spans = Vec::with_capacity(run.len());
+            let (mut sides, mut cell_pieces) = (Vec::new(), Vec::new());
+            for &handle in run {
+                let s = self.handle_sides(handle, &mut sides);
+                if !sides.is_empty() {
+                    let first = local.len() as u32;
+                    cell_pieces.clear();
+                    cell_pieces.extend(sides.iter().map(|&side| piece(side)));
+                    cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
+                    assemble_cell(&cell_pieces, &b, &mut local);
+                    spans.push([s, first, local.len() as u32 - first]);
+                }
+            }
+            (local, spans)
+        };
+        let runs = map_each(order.chunks(1 << 15).collect(), assemble_run);
+        let mut indices = large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum());
+        for (local, spans) in runs {
+            let offset = indices.len() as u32;
+            indices.extend_from_slice(&local);
+            for [s, first, len] in spans {
+                ranges[s as usize] = [offset + first, len];
             }
         }
-        drop(lowest_edge_function);
+        // No edge reaches the region: it lies inside one cell.
+        if indices.is_empty() {
+            let owner = self.owner_of(clip.centroid());
+            if owner != INVALID {
+                ranges[owner as usize] = [0, m as u32];
+                indices.extend(0..m as u32);
+            }
+        }
+        ClippedCells {
+            positions: b.positions,
+            ranges,
+            indices,
+            clip: clip.clone(),
+        }
+    }
+
+    /// Gives every Voronoi vertex inside the region (closed test; the same test decides every
+    /// edge) a position, and returns the vertex → position map ([`INVALID`] outside) and the
+    /// list of vertices outside. Those exactly on the boundary become perimeter points (or the
+    /// corner they sit on), so that the walk along the boundary knows where they are.
+    fn place_vertices_in(&self, b: &mut Builder) -> (Vec<u32>, Vec<u32>) {
+        let clip = b.clip;
+        let m = clip.vertices().len();
+        let (mut on_boundary, mut outside) = (Vec::new(), Vec::new());
+        let mut vertex_position = large_arrays::with_capacity(self.vertices.len());
+        vertex_position.extend(self.vertices.iter().enumerate().map(|(v, &p)| {
+            let lowest = (0..m)
+                .map(|i| clip.edge_function(i, p))
+                .fold(f64::INFINITY, f64::min);
+            if lowest > 0.0 {
+                b.positions.push(p);
+                (b.positions.len() - 1) as u32
+            } else {
+                if lowest == 0.0 {
+                    on_boundary.push(v);
+                } else {
+                    outside.push(v as u32);
+                }
+                INVALID
+            }
+        }));
         b.first_crossing = b.positions.len();
         for &v in &on_boundary {
             let p = self.vertices[v];
@@ -145,119 +230,7 @@ impl Voronoi {
                 b.crossing(i, p)
             };
         }
-        // One clipped piece per undirected edge, oriented like its even half-edge. Edges with
-        // both ends inside (nearly all) are their own piece and are found in parallel; only the
-        // others, which may add boundary crossings, are clipped one after the other.
-        let n_edges = self.n_halfedges() / 2;
-        let mut pieces: Vec<[u32; 2]> = map_indexed(n_edges, |k| {
-            let (o, t) = (self.origin[2 * k], self.origin[2 * k + 1]);
-            if o != INVALID && t != INVALID {
-                let (po, pt) = (vertex_position[o as usize], vertex_position[t as usize]);
-                if po != INVALID && pt != INVALID {
-                    return [po, pt];
-                }
-            }
-            [INVALID, UNDECIDED]
-        });
-        let mut any_piece = false;
-        for (k, piece) in pieces.iter_mut().enumerate() {
-            if piece[1] == UNDECIDED {
-                *piece = self.clip_edge(2 * k as u32, &vertex_position, &mut b);
-            }
-            any_piece |= piece[0] != INVALID;
-        }
-        let n_sites = self.delaunay.n_sites();
-        let mut ranges = vec![[0u32, 0u32]; n_sites];
-        let mut indices = Vec::with_capacity(pieces.len() * 2 + m);
-        let owner_of_everything = if any_piece {
-            INVALID
-        } else {
-            self.owner_of(clip.centroid())
-        };
-        if owner_of_everything != INVALID {
-            ranges[owner_of_everything as usize] = [indices.len() as u32, m as u32];
-            indices.extend(0..m as u32);
-        }
-        // Cells in insertion order, which follows the Hilbert curve and so the (spatially
-        // coherent) order of the triangles and half-edges: consecutive cells share cache lines.
-        // Cells are independent once the pieces exist: runs of them are assembled in parallel
-        // into local lists, then concatenated in order.
-        let order = &self.delaunay.insertion_order;
-        let assemble_run = |run: &[u32]| {
-            let mut local = Vec::with_capacity(7 * run.len());
-            let mut spans = Vec::with_capacity(run.len());
-            let mut cell_pieces = Vec::new();
-            for &s in run {
-                let start = self.cell_edge[s as usize];
-                if start != INVALID && s != owner_of_everything {
-                    let first = local.len() as u32;
-                    self.assemble_cell(start, &pieces, &b, &mut cell_pieces, &mut local);
-                    spans.push([s, first, local.len() as u32 - first]);
-                }
-            }
-            (local, spans)
-        };
-        #[cfg(feature = "parallel")]
-        let runs: Vec<(Vec<u32>, Vec<[u32; 3]>)> = {
-            use rayon::prelude::*;
-            order.par_chunks(1 << 15).map(assemble_run).collect()
-        };
-        #[cfg(not(feature = "parallel"))]
-        let runs = vec![assemble_run(order)];
-        for (local, spans) in runs {
-            let offset = indices.len() as u32;
-            indices.extend_from_slice(&local);
-            for [s, first, len] in spans {
-                ranges[s as usize] = [offset + first, len];
-            }
-        }
-        ClippedCells {
-            positions: b.positions,
-            ranges,
-            indices,
-            clip: clip.clone(),
-        }
-    }
-
-    /// Appends to `out` the corners of the cell whose boundary cycle starts at half-edge
-    /// `start`: the clipped pieces of its edges in order and, where a piece ends on the region's
-    /// boundary, the region's corners up to where the next piece starts.
-    fn assemble_cell(
-        &self,
-        start: u32,
-        pieces: &[[u32; 2]],
-        b: &Builder,
-        cell_pieces: &mut Vec<[u32; 2]>,
-        out: &mut Vec<u32>,
-    ) {
-        cell_pieces.clear();
-        let mut h = start;
-        loop {
-            let p = pieces[(h >> 1) as usize];
-            if p[0] != INVALID {
-                cell_pieces.push(if h & 1 == 0 { p } else { [p[1], p[0]] });
-            }
-            h = self.next[h as usize];
-            if h == start {
-                break;
-            }
-        }
-        let Some(&[first_start, _]) = cell_pieces.first() else {
-            return;
-        };
-        for (i, &[start, end]) in cell_pieces.iter().enumerate() {
-            out.push(start);
-            // The next piece's start, without a division per corner for the wrap-around.
-            let next_start = cell_pieces.get(i + 1).map_or(first_start, |p| p[0]);
-            // A piece ending on the boundary is followed by the boundary up to where the next
-            // piece starts (nothing when the next piece starts right there).
-            if end != next_start
-                && let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
-            {
-                out.push(end);
-                b.corners_between(exit, entry, out);
-            }
-        }
+        (vertex_position, outside)
     }
 
     /// The site owning point `p`; used when no edge crosses the region, i.e. the whole region
@@ -266,16 +239,16 @@ impl Voronoi {
         self.nearest_site(p, None).ok().flatten().unwrap_or(INVALID)
     }
 
-    /// Clips the edge of even half-edge `h`: `[start, end]` positions, or `[INVALID; 2]` when
+    /// Clips the edge with ends `ends`: `[start, end]` positions, or `[INVALID; 2]` when
     /// nothing of positive length is left.
-    fn clip_edge(&self, h: u32, vertex_position: &[u32], b: &mut Builder) -> [u32; 2] {
+    fn clip_edge(&self, ends: EdgeEnds, vertex_position: &[u32], b: &mut Builder) -> [u32; 2] {
         const NONE: [u32; 2] = [INVALID, INVALID];
         let clip = b.clip;
         let m = clip.vertices().len();
-        let (o, t) = (self.origin(h), self.target(h));
+        let (o, t) = (ends.from, ends.to);
         // Parametrise as base + s·dir with s in [lo, hi]; the finite end (if any) is at s = 0.
         // An in-ray (from infinity) is clipped as the ray from its finite end, then reversed.
-        let (base, dir, far, mut lo, mut hi, reversed) = match self.geometry(h) {
+        let (base, dir, far, mut lo, mut hi, reversed) = match self.geometry_of(ends) {
             EdgeGeometry::Segment { from, to } => {
                 if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
                 {
@@ -348,6 +321,28 @@ impl Voronoi {
             return NONE;
         }
         if reversed { [end, start] } else { [start, end] }
+    }
+}
+
+/// Appends to `out` the corners of a cell given its clipped pieces in order (`[start, end]`
+/// positions): each piece's start and, where a piece ends on the region's boundary, the region's
+/// corners up to where the next piece starts.
+fn assemble_cell(pieces: &[[u32; 2]], b: &Builder, out: &mut Vec<u32>) {
+    let Some(&[first_start, _]) = pieces.first() else {
+        return;
+    };
+    for (i, &[start, end]) in pieces.iter().enumerate() {
+        out.push(start);
+        // The next piece's start, without a division per corner for the wrap-around.
+        let next_start = pieces.get(i + 1).map_or(first_start, |p| p[0]);
+        // A piece ending on the boundary is followed by the boundary up to where the next
+        // piece starts (nothing when the next piece starts right there).
+        if end != next_start
+            && let (Some(exit), Some(entry)) = (b.perimeter(end), b.perimeter(next_start))
+        {
+            out.push(end);
+            b.corners_between(exit, entry, out);
+        }
     }
 }
 

@@ -4,6 +4,7 @@ use super::error::VoronoiError;
 use super::incremental::{GHOST, GhostTriangulation, next_edge, prev_edge};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
+use crate::large_arrays;
 
 /// Invalid index (no half-edge, no twin, no site).
 pub const INVALID: u32 = u32::MAX;
@@ -62,9 +63,10 @@ pub struct Delaunay {
     /// passes over the triangles read coordinates through these, sequentially in memory.
     pub(crate) ranked: Vec<[f64; 2]>,
     pub(crate) corner_ranks: Vec<u32>,
-    /// Sites in insertion order (spatially coherent): per-site passes follow it so that they
-    /// touch memory in the order the triangles were created.
-    pub(crate) insertion_order: Vec<u32>,
+    /// The vertex edge of every site that has one, in increasing order: per-site passes that
+    /// start at a site's vertex edge visit sites in this order to read the triangles
+    /// sequentially (the site of `e` is `triangles[e]`).
+    pub(crate) cell_starts: Vec<u32>,
 }
 
 impl Delaunay {
@@ -107,7 +109,7 @@ impl Delaunay {
             vertex_edge: vec![INVALID; n],
             hull: Vec::new(),
             dimension: Dimension::Empty,
-            insertion_order: Vec::new(),
+            cell_starts: Vec::new(),
             ranked: Vec::new(),
             corner_ranks: Vec::new(),
         };
@@ -140,7 +142,6 @@ impl Delaunay {
             }
         }
         result.canonicalise_representatives(representative);
-        result.insertion_order = order;
         Ok(result)
     }
 
@@ -171,35 +172,40 @@ impl Delaunay {
         }
         let count = start[to_site.len()] as usize;
         let mut new_index = vec![INVALID; n_all];
+        let mut old_index = large_arrays::zeroed::<u32>(count);
         for (t, slot) in new_index.iter_mut().enumerate() {
             if !is_ghost(t) {
                 let key = newest(t);
                 *slot = start[key];
+                old_index[start[key] as usize] = t as u32;
                 start[key] += 1;
             }
         }
-        let mut triangles = vec![0u32; 3 * count];
-        let mut corner_ranks = vec![0u32; 3 * count];
-        let mut twins = vec![INVALID; 3 * count];
-        for t in 0..n_all {
-            let nt = new_index[t];
-            if nt == INVALID {
-                continue;
-            }
-            for k in 0..3 {
-                let (e, ne) = (3 * t + k, 3 * nt as usize + k);
-                triangles[ne] = to_site[origin[e] as usize];
-                corner_ranks[ne] = origin[e];
-                let o = twin[e] as usize;
-                let no = new_index[o / 3];
-                if no != INVALID {
-                    twins[ne] = 3 * no + (o % 3) as u32;
-                }
-            }
+        // Filled in the new order (writes sequential, reads scattered: cheaper than the reverse).
+        let mut triangles = large_arrays::zeroed::<u32>(3 * count);
+        let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
+        let mut twins = large_arrays::zeroed::<u32>(3 * count);
+        for (ne, ((site, rank), opposite)) in triangles
+            .iter_mut()
+            .zip(corner_ranks.iter_mut())
+            .zip(twins.iter_mut())
+            .enumerate()
+        {
+            let e = 3 * old_index[ne / 3] as usize + ne % 3;
+            *rank = origin[e];
+            *site = to_site[origin[e] as usize];
+            let o = twin[e] as usize;
+            let no = new_index[o / 3];
+            *opposite = if no == INVALID {
+                INVALID
+            } else {
+                3 * no + (o % 3) as u32
+            };
         }
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
         // is across its edge ∞ → u.
         let mut hull = Vec::new();
+        let mut hull_edges = Vec::new();
         let start = some_ghost;
         let mut g = start;
         loop {
@@ -211,20 +217,30 @@ impl Delaunay {
             let from_infinity = base + k; // ∞ → u
             let v = origin[next_edge(finite) as usize];
             hull.push(to_site[v as usize]);
+            let real = twin[finite as usize];
+            hull_edges.push(3 * new_index[(real / 3) as usize] + real % 3);
             g = twin[from_infinity as usize] / 3;
             if g == start || hull.len() > n_all {
                 break;
             }
         }
-        // Vertex edges: any outgoing edge, then the outgoing hull edge for hull vertices.
-        for (e, &v) in triangles.iter().enumerate() {
-            self.vertex_edge[v as usize] = e as u32;
+        // Vertex edges: the last outgoing edge, then the outgoing hull edge for hull vertices.
+        // Found by rank, whose order follows the triangles', then mapped to sites in one pass.
+        let mut rank_edge = vec![INVALID; to_site.len()];
+        for (e, &r) in corner_ranks.iter().enumerate() {
+            rank_edge[r as usize] = e as u32;
         }
-        for (e, &v) in triangles.iter().enumerate() {
-            if twins[e] == INVALID {
-                self.vertex_edge[v as usize] = e as u32;
+        for &e in &hull_edges {
+            rank_edge[corner_ranks[e as usize] as usize] = e;
+        }
+        for (&e, &site) in rank_edge.iter().zip(to_site) {
+            if e != INVALID {
+                self.vertex_edge[site as usize] = e;
             }
         }
+        self.cell_starts = (0..corner_ranks.len() as u32)
+            .filter(|&e| rank_edge[corner_ranks[e as usize] as usize] == e)
+            .collect();
         self.triangles = triangles;
         self.corner_ranks = corner_ranks;
         self.twins = twins;

@@ -1,11 +1,15 @@
 //! The Voronoi diagram as a DCEL, dual to the Delaunay triangulation.
 
+use std::sync::OnceLock;
+
+use super::dcel::HalfEdges;
 use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
 use super::expansion::Exact;
-use super::incremental::{next_edge, prev_edge};
-use super::parallel::map_indexed;
+use super::incremental::prev_edge;
+use super::parallel::map_each;
 use super::predicates::incircle;
+use crate::large_arrays;
 
 /// Geometry of an undirected Voronoi edge.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,17 +54,20 @@ pub enum EdgeGeometry {
 ///   zero length in the output.
 /// * Cells are indexed by site; duplicates (see [`Delaunay::representative`]) have no cell of
 ///   their own.
+///
+/// Construction places the vertices; the half-edge arrays are derived from the triangles on
+/// first use (by any half-edge query), since clipping, nearest-site queries and Lloyd relaxation
+/// read the cells straight from the triangles and never need them.
 #[derive(Clone, Debug)]
 pub struct Voronoi {
     pub(crate) delaunay: Delaunay,
     pub(crate) vertices: Vec<[f64; 2]>,
-    pub(crate) vertex_edge: Vec<u32>,
     pub(crate) triangle_vertex: Vec<u32>,
-    pub(crate) origin: Vec<u32>,
-    pub(crate) next: Vec<u32>,
-    pub(crate) prev: Vec<u32>,
-    pub(crate) site: Vec<u32>,
-    pub(crate) cell_edge: Vec<u32>,
+    /// Per Delaunay half-edge: are both its sides one Voronoi vertex (no Voronoi edge)? Empty
+    /// when nothing was merged, the usual case for non-degenerate input.
+    pub(crate) merged: Vec<bool>,
+    /// The half-edge arrays, built on first use (see [`HalfEdges`]).
+    half_edges: OnceLock<HalfEdges>,
 }
 
 impl Voronoi {
@@ -71,211 +78,144 @@ impl Voronoi {
 
     /// The dual of an existing triangulation.
     pub fn from_delaunay(delaunay: Delaunay) -> Self {
-        let n = delaunay.n_sites();
         let mut v = Voronoi {
             vertices: Vec::new(),
-            vertex_edge: Vec::new(),
             triangle_vertex: Vec::new(),
-            origin: Vec::new(),
-            next: Vec::new(),
-            prev: Vec::new(),
-            site: Vec::new(),
-            cell_edge: vec![INVALID; n],
+            merged: Vec::new(),
+            half_edges: OnceLock::new(),
             delaunay,
         };
         match v.delaunay.dimension() {
-            Dimension::Plane => v.build_planar(),
-            Dimension::Line => v.build_parallel(),
-            Dimension::Empty | Dimension::Point => {}
+            Dimension::Plane => v.place_vertices(),
+            // Without triangles the half-edge arrays are tiny and are the only description.
+            Dimension::Line => {
+                let slabs = HalfEdges::parallel(&v.delaunay);
+                v.half_edges = OnceLock::from(slabs);
+            }
+            Dimension::Empty | Dimension::Point => {
+                let nothing = HalfEdges::empty(v.delaunay.n_sites());
+                v.half_edges = OnceLock::from(nothing);
+            }
         }
         v
     }
 
-    /// Groups triangles with one circumcircle, places vertices, and links the half-edges.
-    fn build_planar(&mut self) {
+    /// Groups triangles with one circumcircle and places one vertex per group.
+    fn place_vertices(&mut self) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
-        let centres: Vec<[f64; 2]> = map_indexed(n_tri, |t| self.circumcentre(t as u32));
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
         // point is exactly cocircular, and also when their circumcentres round to the same point
-        // (so that no edge has zero length in the floating-point output either).
-        // Each edge is decided once, from its half-edge with the larger twin, in parallel; the
-        // rare merges then mark the twin too and are joined in order.
-        let mut internal: Vec<bool> = map_indexed(d.triangles.len(), |e| {
-            let t = d.twins[e];
-            if t == INVALID || (t as usize) < e {
-                return false;
-            }
-            let (here, there) = (centres[e / 3], centres[(t / 3) as usize]);
+        // (so that no edge has zero length in the floating-point output either). Each edge is
+        // decided once, from the triangle with the larger index, as soon as both centres are
+        // known: in the same pass for neighbours in the same run of triangles (whose centres are
+        // still in cache), after the pass for the others. Only the (rare) merged edges are listed.
+        // `e` lies in the triangle whose circumcircle is (`here`, `radius`).
+        let same_vertex = |e: u32, here: [f64; 2], radius: f64, there: [f64; 2]| {
             here == there
-                || (may_be_cocircular(here, there, d.corner_point(e as u32), d.scale) && {
-                    let base = 3 * (e as u32 / 3);
+                || (may_be_cocircular(here, there, radius) && {
+                    let base = 3 * (e / 3);
                     let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
-                    incircle(a, b, c, d.corner_point(prev_edge(t))) == 0.0
+                    incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
                 })
-        });
-        let merged: Vec<u32> = (0..internal.len() as u32)
-            .filter(|&e| internal[e as usize])
-            .collect();
-        for &e in &merged {
-            internal[d.twins[e as usize] as usize] = true;
-        }
-        let any_merge = !merged.is_empty();
-        let mut parent: Vec<u32> = if any_merge {
-            (0..n_tri as u32).collect()
-        } else {
-            Vec::new()
         };
-        if any_merge {
-            for &e in &merged {
-                let t = d.twins[e as usize];
-                let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
-                if ra != rb {
-                    parent[ra.max(rb) as usize] = ra.min(rb);
+        // A few long runs: enough to share the work among threads, few edges between runs.
+        let run_len = n_tri.div_ceil(8).max(1 << 14);
+        let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
+        let runs = map_each(
+            centres.chunks_mut(run_len).collect(),
+            |k, run: &mut [[f64; 2]]| {
+                let first = (k * run_len) as u32;
+                let (mut merged, mut later) = (Vec::new(), Vec::new());
+                for i in 0..run.len() {
+                    let t = first + i as u32;
+                    let (here, radius) = self.circumcircle(t);
+                    run[i] = here;
+                    for e in 3 * t..3 * t + 3 {
+                        let twin = d.twins[e as usize];
+                        let neighbour = twin / 3;
+                        if twin == INVALID || neighbour > t {
+                            continue;
+                        }
+                        if neighbour < first {
+                            later.push(e);
+                        } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
+                            merged.push(twin);
+                        }
+                    }
                 }
-            }
+                (merged, later)
+            },
+        );
+        let mut merged_edges = Vec::new();
+        for (merged, later) in runs {
+            merged_edges.extend(merged);
+            merged_edges.extend(later.into_iter().filter_map(|e| {
+                let twin = d.twins[e as usize];
+                let (here, radius) = self.circumcircle(e / 3);
+                same_vertex(e, here, radius, centres[(twin / 3) as usize]).then_some(twin)
+            }));
         }
-        let (triangle_vertex, vertices) = if any_merge {
-            let mut triangle_vertex = vec![INVALID; n_tri];
-            let mut vertices = Vec::with_capacity(n_tri);
-            for t in 0..n_tri as u32 {
-                let root = find(&mut parent, t);
-                if triangle_vertex[root as usize] == INVALID {
-                    triangle_vertex[root as usize] = vertices.len() as u32;
-                    vertices.push(centres[root as usize]);
-                }
-                triangle_vertex[t as usize] = triangle_vertex[root as usize];
-            }
-            (triangle_vertex, vertices)
-        } else {
+        if merged_edges.is_empty() {
             // No cocircular or coincident pair (the usual case): one vertex per triangle.
-            ((0..n_tri as u32).collect(), centres)
-        };
-        // Half-edges: a pair per kept Delaunay edge; the even one is dual to the Delaunay
-        // half-edge `e` (cell of origin(e)), the odd one to its twin (or the hull's outer side).
-        let mut dual = vec![INVALID; d.triangles.len()];
-        let n_half = internal.iter().filter(|&&i| !i).count() * 2; // upper bound, exact below
-        let mut origin = Vec::with_capacity(n_half);
-        let mut site = Vec::with_capacity(n_half);
-        for e in 0..d.triangles.len() as u32 {
+            self.triangle_vertex = (0..n_tri as u32).collect();
+            self.vertices = centres;
+            return;
+        }
+        let mut merged = vec![false; d.triangles.len()];
+        let mut parent: Vec<u32> = (0..n_tri as u32).collect();
+        for &e in &merged_edges {
             let t = d.twins[e as usize];
-            if internal[e as usize] || (t != INVALID && t < e) {
-                continue;
-            }
-            let h = origin.len() as u32;
-            let here = triangle_vertex[(e / 3) as usize];
-            let there = if t == INVALID {
-                INVALID
-            } else {
-                triangle_vertex[(t / 3) as usize]
-            };
-            origin.push(there);
-            site.push(d.origin(e));
-            origin.push(here);
-            site.push(d.origin(next_edge(e)));
-            dual[e as usize] = h;
-            // The outer side of a hull edge is simply the pair `dual[e] ^ 1`.
-            if t != INVALID {
-                dual[t as usize] = h + 1;
+            merged[e as usize] = true;
+            merged[t as usize] = true;
+            let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
+            if ra != rb {
+                parent[ra.max(rb) as usize] = ra.min(rb);
             }
         }
-        // Links, one Delaunay half-edge at a time (memory-coherent, no per-site circulation):
-        // after dual(e) comes the dual of the next kept edge counter-clockwise around origin(e),
-        // or, past the hull, the ray out to infinity; after that ray, the cell's in-ray.
-        let mut next = vec![INVALID; origin.len()];
-        for e in 0..d.triangles.len() as u32 {
-            let h = dual[e as usize];
-            if h == INVALID {
-                continue;
+        let mut triangle_vertex = vec![INVALID; n_tri];
+        let mut vertices = Vec::with_capacity(n_tri);
+        for t in 0..n_tri as u32 {
+            let root = find(&mut parent, t);
+            if triangle_vertex[root as usize] == INVALID {
+                triangle_vertex[root as usize] = vertices.len() as u32;
+                vertices.push(centres[root as usize]);
             }
-            let mut cur = e;
-            next[h as usize] = loop {
-                let p = prev_edge(cur);
-                let t = d.twins[p as usize];
-                if t == INVALID {
-                    let out_ray = dual[p as usize] ^ 1;
-                    let a = d.origin(e);
-                    next[out_ray as usize] = dual[d.vertex_edge[a as usize] as usize];
-                    break out_ray;
-                }
-                if !internal[t as usize] {
-                    break dual[t as usize];
-                }
-                cur = t;
-            };
+            triangle_vertex[t as usize] = triangle_vertex[root as usize];
         }
-        // A cell starts at the dual of its site's vertex edge: the outgoing hull edge for hull
-        // sites, whose dual is the in-ray. (One read per site instead of a write per half-edge.)
-        self.cell_edge = map_indexed(d.n_sites(), |site| {
-            if d.vertex_edge[site] == INVALID {
-                return INVALID;
-            }
-            d.outgoing(site as u32)
-                .map(|e| dual[e as usize])
-                .find(|&h| h != INVALID)
-                .unwrap_or(INVALID)
-        });
-        self.vertices = vertices;
         self.triangle_vertex = triangle_vertex;
-        self.origin = origin;
-        self.site = site;
-        self.finish_links(next);
+        self.vertices = vertices;
+        self.merged = merged;
     }
 
-    /// All sites on a line: the cells are slabs between parallel bisectors.
-    fn build_parallel(&mut self) {
-        let chain = self.delaunay.hull.clone();
-        let m = chain.len() - 1;
-        self.origin = vec![INVALID; 2 * m];
-        self.site = Vec::with_capacity(2 * m);
-        for w in chain.windows(2) {
-            self.site.push(w[0]);
-            self.site.push(w[1]);
-        }
-        let mut next = vec![INVALID; 2 * m];
-        for k in 0..m {
-            // Cell of chain[k+1] holds 2k+1 (towards chain[k]) and 2k+2 (towards chain[k+2]).
-            let left_of_next = 2 * k as u32 + 1;
-            let right_of_next = if k + 1 < m {
-                2 * k as u32 + 2
-            } else {
-                left_of_next
-            };
-            next[left_of_next as usize] = right_of_next;
-            next[right_of_next as usize] = left_of_next;
-            self.cell_edge[chain[k + 1] as usize] = left_of_next;
-        }
-        next[0] = 0;
-        self.cell_edge[chain[0] as usize] = 0;
-        self.finish_links(next);
+    /// Is Delaunay half-edge `e` merged away (both its sides one Voronoi vertex)?
+    #[inline(always)]
+    pub(crate) fn is_merged(&self, e: u32) -> bool {
+        !self.merged.is_empty() && self.merged[e as usize]
     }
 
-    fn finish_links(&mut self, next: Vec<u32>) {
-        let mut prev = vec![INVALID; next.len()];
-        for (h, &n) in next.iter().enumerate() {
-            if n != INVALID {
-                prev[n as usize] = h as u32;
-            }
-        }
-        let mut vertex_edge = vec![INVALID; self.vertices.len()];
-        for (h, &o) in self.origin.iter().enumerate() {
-            if o != INVALID {
-                vertex_edge[o as usize] = h as u32;
-            }
-        }
-        self.next = next;
-        self.prev = prev;
-        self.vertex_edge = vertex_edge;
+    /// The half-edge arrays, built on first use.
+    pub(crate) fn half_edges(&self) -> &HalfEdges {
+        self.half_edges.get_or_init(|| {
+            HalfEdges::planar(
+                &self.delaunay,
+                &self.triangle_vertex,
+                self.vertices.len(),
+                |e| self.is_merged(e),
+            )
+        })
     }
 
     /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
-    /// scaled frame and mapped back (dividing by a power of two is exact).
-    fn circumcentre(&self, t: u32) -> [f64; 2] {
+    /// scaled frame and mapped back (dividing by a power of two is exact), and the L1 length of
+    /// that offset (at least the circumradius).
+    fn circumcircle(&self, t: u32) -> ([f64; 2], f64) {
         let d = &self.delaunay;
         let base = 3 * t;
         let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
         let [ux, uy] = circumcentre_offset(a, b, c);
-        [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale]
+        let centre = [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale];
+        (centre, (ux.abs() + uy.abs()) / d.scale)
     }
 
     /// The underlying Delaunay triangulation.
@@ -295,17 +235,19 @@ impl Voronoi {
 
     /// An outgoing half-edge of vertex `v`.
     pub fn vertex_edge(&self, v: u32) -> u32 {
-        self.vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+        let vertex_edge = &self.half_edges().vertex_edge;
+        vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
     }
 
     /// Number of half-edges (twice the number of edges).
     pub fn n_halfedges(&self) -> usize {
-        self.origin.len()
+        self.half_edges().origin.len()
     }
 
     /// Start vertex of `h`, [`INVALID`] when it comes from infinity (or `h` is invalid).
     pub fn origin(&self, h: u32) -> u32 {
-        self.origin.get(h as usize).copied().unwrap_or(INVALID)
+        let origin = &self.half_edges().origin;
+        origin.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// End vertex of `h`, [`INVALID`] when it runs to infinity.
@@ -320,17 +262,20 @@ impl Voronoi {
 
     /// Next half-edge counter-clockwise around the same cell.
     pub fn next(&self, h: u32) -> u32 {
-        self.next.get(h as usize).copied().unwrap_or(INVALID)
+        let next = &self.half_edges().next;
+        next.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// Previous half-edge around the same cell.
     pub fn prev(&self, h: u32) -> u32 {
-        self.prev.get(h as usize).copied().unwrap_or(INVALID)
+        let prev = &self.half_edges().prev;
+        prev.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// The site whose cell `h` bounds (on its left).
     pub fn site(&self, h: u32) -> u32 {
-        self.site.get(h as usize).copied().unwrap_or(INVALID)
+        let site = &self.half_edges().site;
+        site.get(h as usize).copied().unwrap_or(INVALID)
     }
 
     /// The site across `h`.
@@ -341,7 +286,8 @@ impl Voronoi {
     /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
     /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
     pub fn cell_edge(&self, site: u32) -> u32 {
-        self.cell_edge
+        self.half_edges()
+            .cell_edge
             .get(site as usize)
             .copied()
             .unwrap_or(INVALID)
@@ -354,11 +300,12 @@ impl Voronoi {
         if start == INVALID {
             return out;
         }
+        let links = self.half_edges();
         let mut h = start;
         loop {
             out.push(h);
-            h = self.next[h as usize];
-            if h == start || out.len() > self.origin.len() {
+            h = links.next[h as usize];
+            if h == start || out.len() > links.origin.len() {
                 break;
             }
         }
@@ -368,7 +315,7 @@ impl Voronoi {
     /// Is the cell of `site` bounded?
     pub fn is_bounded(&self, site: u32) -> bool {
         let h = self.cell_edge(site);
-        h != INVALID && self.origin[h as usize] != INVALID
+        h != INVALID && self.origin(h) != INVALID
     }
 
     /// Sites whose cells share an edge with the cell of `site` (Delaunay neighbours not merged
@@ -400,12 +347,13 @@ impl Voronoi {
         if start == INVALID {
             return out;
         }
+        let links = self.half_edges();
         let mut h = start;
         loop {
-            out.push(self.site[h as usize]);
+            out.push(links.site[h as usize]);
             // Next outgoing half-edge around v: twin of the previous edge of this cell.
-            h = self.prev[h as usize] ^ 1;
-            if h == start || out.len() > self.origin.len() {
+            h = links.prev[h as usize] ^ 1;
+            if h == start || out.len() > links.origin.len() {
                 break;
             }
         }
@@ -414,14 +362,24 @@ impl Voronoi {
 
     /// Geometry of the edge of half-edge `h`, `None` for an invalid half-edge.
     pub fn edge_geometry(&self, h: u32) -> Option<EdgeGeometry> {
-        if h as usize >= self.origin.len() {
+        if h as usize >= self.n_halfedges() {
             return None;
         }
         Some(self.geometry(h))
     }
 
     pub(crate) fn geometry(&self, h: u32) -> EdgeGeometry {
-        let (o, t) = (self.origin(h), self.target(h));
+        self.geometry_of(EdgeEnds {
+            from: self.origin(h),
+            to: self.target(h),
+            left: self.site(h),
+            right: self.opposite_site(h),
+        })
+    }
+
+    /// Geometry of the edge with ends `ends` (see [`EdgeEnds`]).
+    pub(crate) fn geometry_of(&self, ends: EdgeEnds) -> EdgeGeometry {
+        let (o, t) = (ends.from, ends.to);
         if o != INVALID && t != INVALID {
             return EdgeGeometry::Segment {
                 from: self.vertices[o as usize],
@@ -429,10 +387,7 @@ impl Voronoi {
             };
         }
         let sites = self.delaunay.sites();
-        let (a, b) = (
-            sites[self.site(h) as usize],
-            sites[self.opposite_site(h) as usize],
-        );
+        let (a, b) = (sites[ends.left as usize], sites[ends.right as usize]);
         // Left site a: moving along the bisector with a on the left is direction rot90(b - a).
         let along = [a[1] - b[1], b[0] - a[0]];
         match (o == INVALID, t == INVALID) {
@@ -450,6 +405,16 @@ impl Voronoi {
             },
         }
     }
+}
+
+/// A Voronoi edge, oriented, by its end vertices ([`INVALID`] at infinity) and the sites on its
+/// left and right: what its geometry and clipping need, whether or not half-edges exist.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct EdgeEnds {
+    pub from: u32,
+    pub to: u32,
+    pub left: u32,
+    pub right: u32,
 }
 
 /// The circumcentre of triangle `abc` minus `a`, to within about 1e-10 of its length.
@@ -481,18 +446,18 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
 }
 
 /// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres
-/// `here` and `there` and a shared corner (`scaled_corner` in the frame multiplied by `scale`)?
+/// `here` and `there` and `radius`, at least the circumradius of one of them (L1 length)?
 ///
-/// Cocircular triangles have the same exact centre, and [`circumcentre_offset`] places each
-/// within ~1.5e-10 of the radius of it, so centres farther apart than 1e-8 radii (a margin of
-/// about 50, measured in the L1 norm, which never underflows to zero for tiny sites) cannot be;
-/// only the rest go to the exact in-circle test, which decides.
+/// Cocircular triangles have the same exact centre. [`circumcentre_offset`] places each within
+/// ~1.5e-10 of the radius of it, and moving it from its corner to absolute coordinates rounds by
+/// at most half an ulp per coordinate; centres farther apart than 1e-8 radii (a margin of about
+/// 50, measured in the L1 norm, which never underflows to zero for tiny sites) plus an ulp of
+/// their magnitudes cannot be. Only the rest go to the exact in-circle test, which decides.
 #[inline]
-fn may_be_cocircular(here: [f64; 2], there: [f64; 2], scaled_corner: [f64; 2], scale: f64) -> bool {
-    let corner = [scaled_corner[0] / scale, scaled_corner[1] / scale];
+fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
     let apart = (here[0] - there[0]).abs() + (here[1] - there[1]).abs();
-    let radius = (here[0] - corner[0]).abs() + (here[1] - corner[1]).abs();
-    apart <= 1e-8 * radius
+    let magnitude = here[0].abs() + here[1].abs() + there[0].abs() + there[1].abs();
+    apart <= 1e-8 * radius + f64::EPSILON * magnitude
 }
 
 /// How much cancellation [`circumcentre_offset`] accepts in floating point: about 1e-10 relative
@@ -549,10 +514,13 @@ mod tests {
     #[test]
     fn cocircular_filter_never_rejects_equal_centres() {
         let centre = [0.25, -3.0];
-        assert!(may_be_cocircular(centre, centre, [2.0, 2.0], 2.0));
-        assert!(!may_be_cocircular(centre, [0.26, -3.0], [2.0, 2.0], 2.0));
+        assert!(may_be_cocircular(centre, centre, 3.75));
+        assert!(!may_be_cocircular(centre, [0.26, -3.0], 3.75));
+        // Centres one ulp apart far from the origin, for a tiny circle: rounding, not geometry.
+        let far = [1e6, 1e6];
+        assert!(may_be_cocircular(far, [1e6 + 1.2e-10, 1e6], 1e-12));
         // Tiny magnitudes: the L1 test does not underflow to "apart".
         let tiny = [1e-300, 2e-300];
-        assert!(may_be_cocircular(tiny, tiny, [0.5, 0.5], 1e300));
+        assert!(may_be_cocircular(tiny, tiny, 1e-301));
     }
 }

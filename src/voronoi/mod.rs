@@ -13,8 +13,10 @@
 //! coordinates differences do not underflow); constructions (circumcentres, clip points,
 //! areas) are floating point.
 
+mod cell_sides;
 mod clip_region;
 mod clipped;
+mod dcel;
 mod delaunay;
 mod diagram;
 mod error;

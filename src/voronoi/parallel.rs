@@ -18,3 +18,29 @@ pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + S
         (0..len).map(f).collect()
     }
 }
+
+/// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
+/// feature is on; results in order. Serves passes over a few long runs of elements (slices,
+/// shared or mutable, that the caller splits off), one task per run.
+pub(crate) fn map_each<I: Send, R: Send>(
+    items: Vec<I>,
+    f: impl Fn(usize, I) -> R + Sync + Send,
+) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items
+            .into_par_iter()
+            .enumerate()
+            .map(|(k, item)| f(k, item))
+            .collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items
+            .into_iter()
+            .enumerate()
+            .map(|(k, item)| f(k, item))
+            .collect()
+    }
+}

@@ -1,0 +1,198 @@
+//! The boundary of each Voronoi cell as a sequence of sides, read straight from the Delaunay
+//! triangles when there are any (so bulk operations need no half-edge arrays), otherwise from
+//! the half-edges.
+//!
+//! Every Voronoi edge has a *key* that both of its sides share, and an orientation of its own:
+//! * planar diagrams: the key is the Delaunay half-edge `e` the edge is dual to, the one of the
+//!   pair with the smaller index (a hull edge's only one); oriented with the cell of `origin(e)`
+//!   on its left, from the vertex of the twin's triangle (or infinity) to that of `e`'s triangle;
+//! * otherwise: the key is the edge index `h / 2`, oriented like the even half-edge `h`.
+//!
+//! In both cases keys increase with the half-edge numbering of [`super::Voronoi`], and a cell's
+//! sides come in the order of its half-edge cycle, starting at its [`super::Voronoi::cell_edge`].
+
+use super::delaunay::{Dimension, INVALID};
+use super::diagram::{EdgeEnds, Voronoi};
+use super::incremental::{next_edge, prev_edge};
+
+/// A Voronoi edge seen from one of its cells (which lies on the side's left).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Side {
+    /// Start vertex along the cell's boundary ([`INVALID`] at infinity).
+    pub from: u32,
+    /// End vertex ([`INVALID`] at infinity).
+    pub to: u32,
+    /// The edge's key.
+    pub edge: u32,
+    /// Does the side run against the edge's own orientation?
+    pub reversed: bool,
+}
+
+impl Voronoi {
+    /// Every cell with sides once, as a handle for [`Voronoi::handle_sides`], in an order that
+    /// reads memory coherently.
+    pub(crate) fn cell_handles(&self) -> &[u32] {
+        let d = &self.delaunay;
+        if d.dimension() == Dimension::Plane {
+            &d.cell_starts
+        } else {
+            &d.hull
+        }
+    }
+
+    /// Replaces `out` with the sides of the cell of `handle` (see [`Voronoi::cell_handles`]),
+    /// counter-clockwise; returns its site.
+    pub(crate) fn handle_sides(&self, handle: u32, out: &mut Vec<Side>) -> u32 {
+        out.clear();
+        if self.delaunay.dimension() == Dimension::Plane {
+            self.sides_from_triangles(handle, out);
+            self.delaunay.triangles[handle as usize]
+        } else {
+            self.sides_from_half_edges(handle, out);
+            handle
+        }
+    }
+
+    /// Circulates counter-clockwise over the Delaunay edges leaving a site, from its vertex edge
+    /// `first` (the outgoing hull edge for a hull site): each one not merged away is dual to a
+    /// side; past the hull the cell closes with the ray out across the incoming hull edge.
+    fn sides_from_triangles(&self, first: u32, out: &mut Vec<Side>) {
+        let d = &self.delaunay;
+        let vertex = |e: u32| self.triangle_vertex[(e / 3) as usize];
+        let mut e = first;
+        loop {
+            if !self.is_merged(e) {
+                let twin = d.twins[e as usize];
+                out.push(if twin == INVALID {
+                    Side {
+                        from: INVALID,
+                        to: vertex(e),
+                        edge: e,
+                        reversed: false,
+                    }
+                } else {
+                    Side {
+                        from: vertex(twin),
+                        to: vertex(e),
+                        edge: e.min(twin),
+                        reversed: twin < e,
+                    }
+                });
+            }
+            let incoming = prev_edge(e);
+            let back = d.twins[incoming as usize];
+            if back == INVALID {
+                out.push(Side {
+                    from: vertex(e),
+                    to: INVALID,
+                    edge: incoming,
+                    reversed: true,
+                });
+                return;
+            }
+            if back == first {
+                return;
+            }
+            e = back;
+        }
+    }
+
+    fn sides_from_half_edges(&self, site: u32, out: &mut Vec<Side>) {
+        let links = self.half_edges();
+        let start = self.cell_edge(site);
+        if start == INVALID {
+            return;
+        }
+        let mut h = start;
+        loop {
+            out.push(Side {
+                from: links.origin[h as usize],
+                to: links.origin[(h ^ 1) as usize],
+                edge: h >> 1,
+                reversed: h & 1 == 1,
+            });
+            h = links.next[h as usize];
+            if h == start {
+                return;
+            }
+        }
+    }
+
+    /// The ends and sites of the edge with key `edge`, in its own orientation.
+    pub(crate) fn edge_ends(&self, edge: u32) -> EdgeEnds {
+        if self.delaunay.dimension() == Dimension::Plane {
+            let d = &self.delaunay;
+            let twin = d.twins[edge as usize];
+            EdgeEnds {
+                from: if twin == INVALID {
+                    INVALID
+                } else {
+                    self.triangle_vertex[(twin / 3) as usize]
+                },
+                to: self.triangle_vertex[(edge / 3) as usize],
+                left: d.triangles[edge as usize],
+                right: d.triangles[next_edge(edge) as usize],
+            }
+        } else {
+            let links = self.half_edges();
+            let h = 2 * edge as usize;
+            EdgeEnds {
+                from: links.origin[h],
+                to: links.origin[h + 1],
+                left: links.site[h],
+                right: links.site[h + 1],
+            }
+        }
+    }
+
+    /// The keys, in increasing order, of every edge with an end that is not placed: at
+    /// infinity, or a vertex for which `is_placed` fails. `unplaced` lists those vertices.
+    pub(crate) fn edges_with_unplaced_end(
+        &self,
+        is_placed: impl Fn(u32) -> bool,
+        unplaced: &[u32],
+    ) -> Vec<u32> {
+        let placed = |v: u32| v != INVALID && is_placed(v);
+        if self.delaunay.dimension() != Dimension::Plane {
+            let n_edges = (self.n_halfedges() / 2) as u32;
+            return (0..n_edges)
+                .filter(|&k| {
+                    let ends = self.edge_ends(k);
+                    !(placed(ends.from) && placed(ends.to))
+                })
+                .collect();
+        }
+        // The edges around unplaced vertices, and the rays: the hull edges, one leaving each
+        // hull site. Marked in a bit set, which lists them in order without sorting.
+        let d = &self.delaunay;
+        let mut marked = vec![0u64; d.triangles.len().div_ceil(64)];
+        let mut mark = |e: u32| marked[(e / 64) as usize] |= 1 << (e % 64);
+        for &s in &d.hull {
+            mark(d.vertex_edge[s as usize]);
+        }
+        let mut around_triangle = |t: u32| {
+            for e in 3 * t..3 * t + 3 {
+                if !self.is_merged(e) {
+                    mark(e.min(d.twins[e as usize]));
+                }
+            }
+        };
+        if self.merged.is_empty() {
+            // One vertex per triangle, numbered alike.
+            unplaced.iter().for_each(|&t| around_triangle(t));
+        } else {
+            (0..self.triangle_vertex.len() as u32)
+                .filter(|&t| !placed(self.triangle_vertex[t as usize]))
+                .for_each(around_triangle);
+        }
+        let mut keys = Vec::new();
+        for (word_index, &word) in marked.iter().enumerate() {
+            let mut bits = word;
+            while bits != 0 {
+                keys.push(64 * word_index as u32 + bits.trailing_zeros());
+                bits &= bits - 1;
+            }
+        }
+        keys
+    }
+}
