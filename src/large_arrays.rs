@@ -1,68 +1,118 @@
 //! Allocation of the large arrays that bulk construction fills (tens of MB for a million faces).
 //!
-//! A freshly allocated array costs a page fault per 4 KiB page on first touch, which is about half
-//! the time of a cold bulk build. On Linux these arrays ask for transparent huge pages before they
-//! are touched (`madvise(MADV_HUGEPAGE)`; systems in THP "madvise" mode only give them on
-//! request), so the kernel faults in 2 MiB at a time. Where the advice is not available or not
-//! taken, the arrays are ordinary `Vec`s and nothing changes but speed.
+//! A freshly allocated array costs a page fault per 4 KiB page on first touch, which was the
+//! largest single cost of a cold bulk build. On Linux these arrays ask for transparent huge pages
+//! before they are touched (`madvise(MADV_HUGEPAGE)`; systems in THP "madvise" mode only give
+//! them on request), so the kernel faults in 2 MiB at a time.
+//!
+//! A huge page can only back a whole aligned 2 MiB of one mapping, so the arrays are also sized
+//! for aligned mappings: glibc maps a large block on its own behind a header of a few bytes, and
+//! Linux aligns an anonymous mapping whose length is a multiple of 2 MiB. Such an array starts
+//! just past a huge-page boundary and ends just before one; its last huge page is advised as a
+//! whole, and its first, where the allocator's header write has already put a small page, is
+//! collapsed into a huge page (`MADV_COLLAPSE`) before the array is touched. The slack at the end
+//! (under 2 MiB) is returned by [`fit`] once an array that is kept has its final length. Where
+//! advice, collapse or alignment is not available, the arrays are ordinary `Vec`s and nothing
+//! changes but speed.
 
 /// Arrays smaller than this are not worth a system call (and rarely span a whole huge page).
 const ADVICE_THRESHOLD_BYTES: usize = 2 << 20;
+const HUGE_PAGE: usize = 2 << 20;
+/// Room for the allocator's header in a block sized to end just before a huge-page boundary.
+const HEADER_ROOM: usize = 4096;
 
 /// `len` zeros, for arrays every slot of which is written later. For integers the standard
 /// library takes zeroed memory from the allocator (`calloc`), so fresh pages are not written
 /// twice; the advice comes before the first touch.
 pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
-    let array = vec![T::default(); len];
-    advise_huge_pages(array.as_ptr().cast(), len * size_of::<T>());
+    let mut array = vec![T::default(); huge_page_capacity::<T>(len)];
+    advise_huge_pages(array.as_ptr().cast(), array.len() * size_of::<T>());
+    array.truncate(len);
     array
 }
 
 /// `len` copies of `value`.
 pub(crate) fn filled<T: Copy>(len: usize, value: T) -> Vec<T> {
-    let mut array: Vec<T> = Vec::with_capacity(len);
-    advise_huge_pages(array.as_ptr().cast(), len * size_of::<T>());
+    let mut array = with_capacity(len);
     array.resize(len, value);
     array
 }
 
 /// An empty array with room for `capacity` items, for arrays built by pushing.
 pub(crate) fn with_capacity<T>(capacity: usize) -> Vec<T> {
-    let array: Vec<T> = Vec::with_capacity(capacity);
-    advise_huge_pages(array.as_ptr().cast(), capacity * size_of::<T>());
+    let array: Vec<T> = Vec::with_capacity(huge_page_capacity::<T>(capacity));
+    advise_huge_pages(array.as_ptr().cast(), array.capacity() * size_of::<T>());
     array
 }
 
 /// A copy of `items`.
 pub(crate) fn copied<T: Copy>(items: &[T]) -> Vec<T> {
-    let mut array: Vec<T> = Vec::with_capacity(items.len());
-    advise_huge_pages(array.as_ptr().cast(), std::mem::size_of_val(items));
+    let mut array = with_capacity(items.len());
     array.extend_from_slice(items);
     array
 }
 
-/// Advises the kernel to back the whole 2 MiB pages inside `[start, start + bytes)` with huge
-/// pages. Only a hint: failure is ignored.
+/// `array` truncated to `len` with its spare capacity returned (for glibc's mapped blocks a
+/// `mremap` in place: nothing is copied, and pages never touched were never faulted in).
+pub(crate) fn fit<T>(mut array: Vec<T>, len: usize) -> Vec<T> {
+    array.truncate(len);
+    array.shrink_to_fit();
+    array
+}
+
+/// A capacity of at least `len` whose block, with the allocator's header, is a whole number of
+/// huge pages, for arrays large enough to be advised.
+fn huge_page_capacity<T>(len: usize) -> usize {
+    let bytes = len.saturating_mul(size_of::<T>());
+    if bytes < ADVICE_THRESHOLD_BYTES || size_of::<T>() == 0 {
+        return len;
+    }
+    match bytes
+        .checked_add(HEADER_ROOM)
+        .and_then(|b| b.checked_next_multiple_of(HUGE_PAGE))
+    {
+        Some(rounded) => ((rounded - HEADER_ROOM) / size_of::<T>()).max(len),
+        None => len,
+    }
+}
+
+/// Advises the kernel to back `[start, start + bytes)` with huge pages: all of it when it is a
+/// mapping of its own (only a header before it in its first huge page, nothing after it in its
+/// last), else the whole huge pages inside it. Only hints: failures are ignored, and contents
+/// never change.
 #[cfg(target_os = "linux")]
 fn advise_huge_pages(start: *const u8, bytes: usize) {
-    const HUGE_PAGE: usize = 2 << 20;
     if bytes < ADVICE_THRESHOLD_BYTES {
         return;
     }
-    let first = (start as usize).next_multiple_of(HUGE_PAGE);
-    let end = (start as usize + bytes) & !(HUGE_PAGE - 1);
-    if end > first {
-        // SAFETY: the range lies inside one live allocation of ours; MADV_HUGEPAGE changes how
-        // pages are backed, never their contents or validity.
-        unsafe {
-            libc::madvise(first as *mut libc::c_void, end - first, libc::MADV_HUGEPAGE);
+    let (start, end) = (start as usize, start as usize + bytes);
+    let (page_start, page_end) = (start & !(HUGE_PAGE - 1), end.next_multiple_of(HUGE_PAGE));
+    let own_mapping = start - page_start < HEADER_ROOM && page_end - end < HEADER_ROOM;
+    let advise = |first: usize, end: usize, advice: libc::c_int| {
+        if end > first {
+            // SAFETY: MADV_HUGEPAGE and MADV_COLLAPSE change how pages are backed, never their
+            // contents or validity; the range is the array's memory, plus, for a mapping of its
+            // own, the allocator's header and the few bytes after the array in that mapping.
+            unsafe {
+                libc::madvise(first as *mut libc::c_void, end - first, advice);
+            }
         }
+    };
+    if own_mapping {
+        advise(page_start, page_end, libc::MADV_HUGEPAGE);
+        advise(page_start, page_start + HUGE_PAGE, libc::MADV_COLLAPSE);
+    } else {
+        advise(
+            start.next_multiple_of(HUGE_PAGE),
+            end & !(HUGE_PAGE - 1),
+            libc::MADV_HUGEPAGE,
+        );
     }
 }
 
 #[cfg(not(target_os = "linux"))]
 fn advise_huge_pages(_start: *const u8, _bytes: usize) {
-    let _ = ADVICE_THRESHOLD_BYTES;
+    let _ = (ADVICE_THRESHOLD_BYTES, HUGE_PAGE, HEADER_ROOM);
 }
 
 #[cfg(test)]
@@ -77,8 +127,22 @@ mod tests {
             let sevens = filled(len, 7u64);
             assert!(sevens.len() == len && sevens.iter().all(|&x| x == 7));
             assert_eq!(copied(&sevens), sevens);
-            let room = with_capacity::<u64>(len);
+            let room = with_capacity::<u16>(len);
             assert!(room.is_empty() && room.capacity() >= len);
+            let fitted = fit(zeroed::<u32>(len + 10), len);
+            assert!(fitted.len() == len && fitted.capacity() == len);
         }
+    }
+
+    #[test]
+    fn large_capacities_fill_whole_huge_pages_and_small_ones_are_exact() {
+        assert_eq!(huge_page_capacity::<u32>(1000), 1000);
+        for len in [1 << 20, 3 << 20, (5 << 20) + 7] {
+            let capacity = huge_page_capacity::<u32>(len);
+            assert!(capacity >= len);
+            assert_eq!((capacity * 4 + HEADER_ROOM) % HUGE_PAGE, 0);
+            assert!(capacity * 4 - len * 4 < HUGE_PAGE);
+        }
+        assert_eq!(huge_page_capacity::<u64>(usize::MAX), usize::MAX);
     }
 }

@@ -3,7 +3,9 @@
 mod newell;
 mod normals;
 
-pub use newell::{is_degenerate_polygon, is_degenerate_triangle, newell_vector};
+pub use newell::{
+    is_degenerate_polygon, is_degenerate_triangle, newell_vector, triangle_area_vector,
+};
 pub use normals::{
     VertexNormalWeighting, corner_angle, corner_normals, face_and_vertex_normals, face_area_vector,
     face_normals, face_normals_into, normals_into, vertex_normals,

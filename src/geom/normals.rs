@@ -13,7 +13,7 @@
 
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
-use super::newell_vector;
+use super::{newell_vector, triangle_area_vector};
 
 /// How a vertex normal weighs the normals of the faces around the vertex.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -65,7 +65,16 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
 
 /// Newell vector of face `f`: along its normal, twice its area long.
 pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)))
+    let mut corners = mesh.face_vertices(f).map(|v| mesh.position(v));
+    match (
+        corners.next(),
+        corners.next(),
+        corners.next(),
+        corners.next(),
+    ) {
+        (Some(a), Some(b), Some(c), None) => triangle_area_vector(a, b, c),
+        _ => newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v))),
+    }
 }
 
 /// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
@@ -116,8 +125,8 @@ pub fn normals_into(
 /// normal to each corner's vertex sum in `sums`; the sums are normalised at the end.
 ///
 /// Triangles and quads, which make up nearly every real mesh, are read straight from the raw
-/// arrays with fixed-size corner lists (same Newell arithmetic, so the same bits as the general
-/// path); other faces and angle weighting take the general per-face walk.
+/// arrays with fixed-size corner lists (same arithmetic as [`face_area_vector`], so the same
+/// bits as the general path); other faces and angle weighting take the general per-face walk.
 fn accumulate_normals(
     mesh: &Mesh,
     weighting: VertexNormalWeighting,
@@ -149,7 +158,8 @@ fn accumulate_normals(
             let corner = |h: u32| origin[h as usize];
             if h3 == h0 {
                 let vertices = [corner(h0), corner(h1), corner(h2)];
-                let area_vector = newell_vector(vertices.map(|v| positions[v as usize]));
+                let [a, b, c] = vertices.map(|v| positions[v as usize]);
+                let area_vector = triangle_area_vector(a, b, c);
                 let unit = normalized(area_vector);
                 visit_face(f, unit);
                 scatter(sums, &vertices, weighted(area_vector, unit));

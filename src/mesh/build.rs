@@ -13,7 +13,7 @@
 //! finds edge defects; only input that needs a decision goes through
 //! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
 
-use crate::large_arrays::{self, filled, zeroed};
+use crate::large_arrays::{self, filled, fit, zeroed};
 use crate::soup::{
     BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, face_edges,
     is_degenerate_face, non_finite_vertices, resolve, well_formed_edges,
@@ -187,19 +187,17 @@ impl FaceLoops {
         mut diagnostic: Diagnostic,
     ) -> (Mesh, Diagnostic) {
         let n_halfedges = 2 * self.n_edges as usize;
-        let fit = |mut array: Vec<u32>| {
-            array.truncate(n_halfedges);
-            array.shrink_to_fit();
-            array
-        };
+        let (n_vertices, n_faces) = (positions.len(), self.face_halfedge.len());
+        // The arrays were allocated with room to spare (see `large_arrays`); the mesh keeps
+        // exactly what it uses.
         let mut mesh = Mesh {
-            origin: fit(self.origin),
-            next: fit(self.next),
-            prev: fit(self.prev),
-            face: fit(self.face),
-            vertex_halfedge: self.vertex_halfedge,
-            positions,
-            face_halfedge: self.face_halfedge,
+            origin: fit(self.origin, n_halfedges),
+            next: fit(self.next, n_halfedges),
+            prev: fit(self.prev, n_halfedges),
+            face: fit(self.face, n_halfedges),
+            vertex_halfedge: fit(self.vertex_halfedge, n_vertices),
+            positions: fit(positions, n_vertices),
+            face_halfedge: fit(self.face_halfedge, n_faces),
             deleted: Deletions::default(),
             may_have_pinched_vertices: true,
             attributes: Default::default(),

@@ -53,7 +53,7 @@ impl EdgeBuckets {
     /// than 3 corners, an index `>= n_vertices`, a repeated vertex: the one pass over the faces
     /// that counts the buckets' room checks them too). `n_vertices` is below 2^32 − 1.
     pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Option<Self> {
-        let mut start = vec![0u32; n_vertices + 1];
+        let mut start = zeroed::<u32>(n_vertices + 1);
         let mut scratch = Vec::new();
         // Branch-free counting: whether a corner runs forward is a coin toss on models whose
         // vertex order is not face-coherent.
