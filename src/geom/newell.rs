@@ -62,6 +62,18 @@ pub fn triangle_area_vector(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
     ]
 }
 
+/// The area vector of quad `abcd` (as [`newell_vector`], planar or not): the cross product of
+/// its diagonals, which Newell's sums reduce to for four corners.
+#[inline]
+pub fn quad_area_vector(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> [f64; 3] {
+    let (ac, bd) = (difference(c, a), difference(d, b));
+    [
+        ac[1] * bd[2] - ac[2] * bd[1],
+        ac[2] * bd[0] - ac[0] * bd[2],
+        ac[0] * bd[1] - ac[1] * bd[0],
+    ]
+}
+
 /// [`is_degenerate_polygon`] for a triangle, from [`triangle_area_vector`]; bulk builds check
 /// every face this way.
 pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
@@ -133,6 +145,21 @@ mod tests {
             [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 1e-17, 0.0]],
             [[0.3, -2.0, 5.0], [1.0, 4.0, -1.0], [-7.0, 0.5, 2.0]],
         ];
+        let quad = [
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.5],
+            [2.0, 1.0, -0.25],
+            [0.0, 1.0, 1.0],
+        ];
+        let [a, b, c, d] = quad;
+        let newell = newell_vector(quad);
+        let diagonals = quad_area_vector(a, b, c, d);
+        for i in 0..3 {
+            assert!(
+                (newell[i] - diagonals[i]).abs() < 1e-12,
+                "{newell:?} {diagonals:?}"
+            );
+        }
         for [a, b, c] in triangles {
             assert_eq!(
                 is_degenerate_triangle(a, b, c),

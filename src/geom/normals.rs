@@ -13,7 +13,7 @@
 
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
-use super::{newell_vector, triangle_area_vector};
+use super::{newell_vector, quad_area_vector, triangle_area_vector};
 
 /// How a vertex normal weighs the normals of the faces around the vertex.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -66,13 +66,10 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
 /// Newell vector of face `f`: along its normal, twice its area long.
 pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     let mut corners = mesh.face_vertices(f).map(|v| mesh.position(v));
-    match (
-        corners.next(),
-        corners.next(),
-        corners.next(),
-        corners.next(),
-    ) {
-        (Some(a), Some(b), Some(c), None) => triangle_area_vector(a, b, c),
+    let first_five = [(); 5].map(|_| corners.next());
+    match first_five {
+        [Some(a), Some(b), Some(c), None, _] => triangle_area_vector(a, b, c),
+        [Some(a), Some(b), Some(c), Some(d), None] => quad_area_vector(a, b, c, d),
         _ => newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v))),
     }
 }
@@ -167,7 +164,8 @@ fn accumulate_normals(
             }
             if next[h3 as usize] == h0 {
                 let vertices = [corner(h0), corner(h1), corner(h2), corner(h3)];
-                let area_vector = newell_vector(vertices.map(|v| positions[v as usize]));
+                let [a, b, c, d] = vertices.map(|v| positions[v as usize]);
+                let area_vector = quad_area_vector(a, b, c, d);
                 let unit = normalized(area_vector);
                 visit_face(f, unit);
                 scatter(sums, &vertices, weighted(area_vector, unit));
