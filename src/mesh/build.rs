@@ -13,10 +13,10 @@
 //! finds edge defects; only input that needs a decision goes through
 //! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
 
-use crate::large_arrays::{self, filled, fit, zeroed};
+use crate::large_arrays::{filled, fit, zeroed};
 use crate::soup::{
-    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, face_edges,
-    is_degenerate_face, non_finite_vertices, resolve, well_formed_edges,
+    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, Walked,
+    face_edges, is_degenerate_face, walk_faces,
 };
 
 use super::Mesh;
@@ -35,35 +35,13 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        if let Some((table, buckets)) = well_formed_edges(list) {
-            // The mesh's copy of the positions and their check need nothing from the walk: with
-            // two threads they are made beside it; with one, first, so that the walk's
-            // degeneracy tests find the positions in cache.
-            let ((positions, non_finite_vertices), walked) = join(
-                || {
-                    let copy = large_arrays::copied(list.positions);
-                    (copy, non_finite_vertices(list.positions))
-                },
-                || FaceLoops::walk(&table, buckets, list.positions),
-            );
-            // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
-            if let Some(loops) = walked
-                && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
-            {
-                let diagnostic = Diagnostic {
-                    non_finite_vertices,
-                    ..Diagnostic::default()
-                };
-                return Ok(loops.into_mesh(&table, positions, diagnostic));
-            }
-        }
-        let resolved = resolve(list, policy)?;
-        let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
-            .expect("a resolved face table is well formed");
-        let loops = FaceLoops::walk(&resolved.table, buckets, &resolved.positions)
-            .expect("a resolved face table has no edge defects");
-        let positions = resolved.positions.into_owned();
-        Ok(loops.into_mesh(&resolved.table, positions, resolved.diagnostic))
+        let Walked {
+            walked,
+            table,
+            positions,
+            diagnostic,
+        } = walk_faces(list, policy, FaceLoops::walk)?;
+        Ok(walked.into_mesh(&table, positions, diagnostic))
     }
 
     /// Makes each boundary vertex's half-edge a boundary one and links the boundary half-edges
@@ -263,18 +241,6 @@ impl FaceLoops {
             previous = h;
         }
         halfedges[0]
-    }
-}
-
-/// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
-fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
-    #[cfg(feature = "parallel")]
-    {
-        rayon::join(a, b)
-    }
-    #[cfg(not(feature = "parallel"))]
-    {
-        (a(), b())
     }
 }
 

@@ -33,7 +33,7 @@ pub struct Resolved<'a> {
 /// decision: the list is consistent, no face is too small, out of range or repeats a vertex.
 /// Builders try this fast path first and call [`resolve`] only for the rest (non-finite
 /// coordinates and edge defects are theirs to find on it).
-pub(crate) fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
+pub(super) fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
     let n_vertices = list.positions.len();
     if n_vertices as u64 > MAX_VERTICES {
         return None;

@@ -4,10 +4,10 @@
 //! The slide reads the faces in order and, for every consecutive corner pair `(a, b)`, either
 //! finds the edge `(b, a)` already made (the face becomes its inverse face, `Ci`) or appends a
 //! new edge `a → b` (the face becomes its direct face, `Cd`); then it fills the wings. The
-//! "does `(b, a)` exist" lookup is the expensive part; [`resolve`] answers it for every corner at
-//! once by bucketing (and applies the [`BuildPolicy`]), so the slide's loop runs here in one
-//! linear pass with the answer at hand. Edges are numbered in the order the slide would create
-//! them, so the result is exactly the slide's table.
+//! "does `(b, a)` exist" lookup is the expensive part; here every corner meets its edge in the
+//! edge buckets of [`crate::soup`] (shared with the half-edge builder, with the same
+//! [`BuildPolicy`] handling), so the slide's loop runs in one linear pass. Edges are numbered in
+//! the order the slide would create them, so the result is exactly the slide's table.
 
 use std::collections::HashMap;
 
@@ -15,8 +15,10 @@ use super::error::WingedError;
 use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 use super::record::EdgeRecord;
 use super::structure::Winged;
+use crate::large_arrays;
 use crate::soup::{
-    BOUNDARY, BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, degenerate_faces, resolve,
+    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, Walked,
+    degenerate_faces, face_edges, walk_faces,
 };
 
 impl Winged {
@@ -38,13 +40,15 @@ impl Winged {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Self, Diagnostic), BuildError> {
-        let resolved = resolve(list, policy)?;
-        let mut diagnostic = resolved.diagnostic;
-        let mut w = assemble(
-            &resolved.table,
-            &resolved.pairing.partner,
-            resolved.positions.into_owned(),
-        );
+        let Walked {
+            walked,
+            table,
+            positions,
+            mut diagnostic,
+        } = walk_faces(list, policy, |table, buckets, _| {
+            WingedFaces::walk(table, buckets)
+        })?;
+        let mut w = walked.into_winged(positions);
         w.link_boundary_loops();
         w.choose_vertex_edges();
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
@@ -55,7 +59,7 @@ impl Winged {
             .filter(|(_, e)| !e.is_valid())
             .map(|(v, _)| v as u32)
             .collect();
-        diagnostic.degenerate_faces = degenerate_faces(&resolved.table, &w.positions);
+        diagnostic.degenerate_faces = degenerate_faces(&table, &w.positions);
         Ok((w, diagnostic))
     }
 
@@ -202,63 +206,81 @@ impl Winged {
     }
 }
 
-/// Creates the edge records in the slide's order and fills faces and wings of the face sides,
-/// in one pass over the faces. `partner[c]` is the corner walking corner `c`'s edge the other
-/// way, or [`BOUNDARY`].
-fn assemble(table: &FaceTable<'_>, partner: &[u32], positions: Vec<[f64; 3]>) -> Winged {
-    let indices = table.corners();
-    // Filled in corner order, so it grows by pushes (no up-front fill of the whole array).
-    let mut edge_of_corner: Vec<EdgeId> = Vec::with_capacity(indices.len());
-    let mut edges: Vec<EdgeRecord> = Vec::with_capacity(indices.len() / 2 + 1);
-    let mut face_edge = Vec::with_capacity(table.n_faces());
-    for f in 0..table.n_faces() {
-        let corners = table.face_range(f);
-        let (first, end) = (corners.start, corners.end);
-        let face = FaceId(f as u32);
-        for c in first..end {
-            let mate = partner[c];
-            if mate == BOUNDARY || mate as usize > c {
-                // First face to walk this edge: a new edge, walked forward (the slide's Cd).
-                edge_of_corner.push(EdgeId(edges.len() as u32));
-                let next = if c + 1 == end { first } else { c + 1 };
-                let mut r = EdgeRecord::unlinked(VertexId(indices[c]), VertexId(indices[next]));
-                r.left_face = face;
-                edges.push(r);
-            } else {
-                // The edge exists: this face walks it backward (the slide's Ci).
-                let e = edge_of_corner[mate as usize];
-                edge_of_corner.push(e);
-                edges[e.index()].right_face = face;
+/// The edge records and face edges of the slide's loop, before holes and vertices are linked.
+struct WingedFaces {
+    edges: Vec<EdgeRecord>,
+    face_edge: Vec<EdgeId>,
+}
+
+impl WingedFaces {
+    /// The slide's loop: creates the edge records in its order and fills faces and wings of the
+    /// face sides, in one pass over the faces, each corner meeting its edge in `buckets`. `None`
+    /// on an edge defect (see [`EdgeVisit::Defective`]).
+    fn walk(table: &FaceTable<'_>, mut buckets: EdgeBuckets) -> Option<WingedFaces> {
+        // At most one edge per corner; fitted to the count afterwards.
+        let mut edges: Vec<EdgeRecord> = large_arrays::with_capacity(table.n_corners());
+        let mut face_edge = large_arrays::with_capacity(table.n_faces());
+        let mut loop_edges: Vec<EdgeId> = Vec::new();
+        for f in 0..table.n_faces() {
+            let (corners, face) = (table.face(f), FaceId(f as u32));
+            loop_edges.clear();
+            for (a, b) in face_edges(corners) {
+                // Edge ids stay below the corner count, so they fit an edge's value.
+                let e = match buckets.visit(a, b, edges.len() as u32) {
+                    EdgeVisit::Opened => {
+                        // First face to walk this edge: a new edge, walked forward (the slide's
+                        // Cd).
+                        let mut r = EdgeRecord::unlinked(VertexId(a), VertexId(b));
+                        r.left_face = face;
+                        edges.push(r);
+                        edges.len() - 1
+                    }
+                    EdgeVisit::Paired(e) => {
+                        // The edge exists: this face walks it backward (the slide's Ci).
+                        edges[e as usize].right_face = face;
+                        e as usize
+                    }
+                    EdgeVisit::Defective => return None,
+                };
+                loop_edges.push(EdgeId(e as u32));
             }
+            // "Recorrer aristas y rellenar enlaces": the face's edges are still in cache.
+            let mut prev = loop_edges[loop_edges.len() - 1];
+            let following = loop_edges.iter().skip(1).chain(&loop_edges[..1]);
+            for ((&e, &next), &corner) in loop_edges.iter().zip(following).zip(corners) {
+                let r = &mut edges[e.index()];
+                let side = if r.left_face == face && r.start.0 == corner {
+                    Side::Left
+                } else {
+                    Side::Right
+                };
+                r.set_prev(side, prev);
+                r.set_next(side, next);
+                prev = e;
+            }
+            face_edge.push(loop_edges[0]);
         }
-        // "Recorrer aristas y rellenar enlaces": the face's corners are still in cache.
-        for c in first..end {
-            let prev = if c == first { end - 1 } else { c - 1 };
-            let next = if c + 1 == end { first } else { c + 1 };
-            let r = &mut edges[edge_of_corner[c].index()];
-            let side = if r.left_face == face && r.start.0 == indices[c] {
-                Side::Left
-            } else {
-                Side::Right
-            };
-            r.set_prev(side, edge_of_corner[prev]);
-            r.set_next(side, edge_of_corner[next]);
-        }
-        face_edge.push(edge_of_corner[first]);
+        Some(WingedFaces { edges, face_edge })
     }
 
-    let n_faces = table.n_faces();
-    let n_vertices = positions.len();
-    Winged {
-        positions,
-        vertex_edge: vec![EdgeId::INVALID; n_vertices],
-        vertex_alive: vec![true; n_vertices],
-        face_edge,
-        face_alive: vec![true; n_faces],
-        n_live_vertices: n_vertices as u32,
-        n_live_edges: edges.len() as u32,
-        n_live_faces: n_faces as u32,
-        edges,
-        point_faces: Vec::new(),
+    /// The structure of the walked faces over vertices at `positions`.
+    fn into_winged(self, positions: Vec<[f64; 3]>) -> Winged {
+        let WingedFaces { edges, face_edge } = self;
+        let (n_faces, n_vertices) = (face_edge.len(), positions.len());
+        let n_edges = edges.len();
+        let edges = large_arrays::fit(edges, n_edges);
+        let face_edge = large_arrays::fit(face_edge, n_faces);
+        Winged {
+            positions,
+            vertex_edge: vec![EdgeId::INVALID; n_vertices],
+            vertex_alive: vec![true; n_vertices],
+            face_edge,
+            face_alive: vec![true; n_faces],
+            n_live_vertices: n_vertices as u32,
+            n_live_edges: edges.len() as u32,
+            n_live_faces: n_faces as u32,
+            edges,
+            point_faces: Vec::new(),
+        }
     }
 }

@@ -1,0 +1,83 @@
+//! The front both kernels' bulk builders share: a face walk over [`EdgeBuckets`] on well-formed
+//! input, and [`resolve`] first only for input that needs a policy decision.
+
+use std::borrow::Cow;
+
+use super::edge_buckets::EdgeBuckets;
+use super::resolve::{resolve, well_formed_edges};
+use super::table::non_finite_vertices;
+use super::{BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable};
+use crate::large_arrays;
+
+/// What a builder's walk made, with the table it walked, the positions of its vertices (the
+/// input's, then those of repair's copies) and the diagnostic so far.
+pub(crate) struct Walked<'a, T> {
+    pub(crate) walked: T,
+    pub(crate) table: FaceTable<'a>,
+    pub(crate) positions: Vec<[f64; 3]>,
+    pub(crate) diagnostic: Diagnostic,
+}
+
+/// Runs `walk(table, buckets, positions)` — which meets every corner's edge in the buckets and
+/// gives `None` on an edge defect — directly on well-formed input, else on the table [`resolve`]
+/// makes under `policy` (where it cannot meet a defect).
+pub(crate) fn walk_faces<'a, T: Send>(
+    list: &FaceList<'a>,
+    policy: BuildPolicy,
+    walk: impl Fn(&FaceTable<'_>, EdgeBuckets, &[[f64; 3]]) -> Option<T> + Sync,
+) -> Result<Walked<'a, T>, BuildError> {
+    if let Some((table, buckets)) = well_formed_edges(list) {
+        // The structure's copy of the positions and their check need nothing from the walk:
+        // with two threads they are made beside it; with one, first, so that the walk finds
+        // the positions in cache.
+        let ((positions, non_finite_vertices), walked) = join(
+            || {
+                let copy = large_arrays::copied(list.positions);
+                (copy, non_finite_vertices(list.positions))
+            },
+            || walk(&table, buckets, list.positions),
+        );
+        // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
+        if let Some(walked) = walked
+            && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
+        {
+            let diagnostic = Diagnostic {
+                non_finite_vertices,
+                ..Diagnostic::default()
+            };
+            return Ok(Walked {
+                walked,
+                table,
+                positions,
+                diagnostic,
+            });
+        }
+    }
+    let resolved = resolve(list, policy)?;
+    let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
+        .expect("a resolved face table is well formed");
+    let walked = walk(&resolved.table, buckets, &resolved.positions)
+        .expect("a resolved face table has no edge defects");
+    let positions = match resolved.positions {
+        Cow::Borrowed(input) => large_arrays::copied(input),
+        Cow::Owned(repaired) => repaired,
+    };
+    Ok(Walked {
+        walked,
+        table: resolved.table,
+        positions,
+        diagnostic: resolved.diagnostic,
+    })
+}
+
+/// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
+fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::join(a, b)
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (a(), b())
+    }
+}
