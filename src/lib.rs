@@ -16,6 +16,7 @@ pub mod winged;
 
 pub mod ffi;
 
+mod cycles;
 mod large_arrays;
 
 /// The crate version, as `Cargo.toml` states it.

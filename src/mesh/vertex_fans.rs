@@ -4,6 +4,7 @@ use std::ops::Range;
 
 use super::Mesh;
 use super::ids::{HalfedgeId, INVALID_INDEX, VertexId};
+use crate::cycles::for_each_cycle_length;
 
 impl Mesh {
     /// Live vertices with no half-edge, ascending.
@@ -63,47 +64,17 @@ impl Mesh {
 
     /// Calls `visit(v, size)` for each live vertex `v` of `vertices` with a half-edge, `size`
     /// being the number of half-edges of the fan walked from it (`h = twin(prev(h))` on the raw
-    /// arrays, bounded by the half-edge count like the circulators). Several fans are walked in
-    /// step so that their cache misses overlap; vertices are reported in no particular order.
-    fn for_each_fan_size(&self, vertices: Range<usize>, mut visit: impl FnMut(usize, usize)) {
-        const LANES: usize = 8;
-        /// A fan being walked: its vertex, first and current half-edge, steps so far.
-        #[derive(Clone, Copy)]
-        struct Lane {
-            vertex: usize,
-            start: u32,
-            h: u32,
-            steps: usize,
-        }
+    /// arrays, bounded by the half-edge count like the circulators), in no particular order.
+    fn for_each_fan_size(&self, vertices: Range<usize>, visit: impl FnMut(usize, usize)) {
         let (prev, vertex_halfedge) = (&self.prev, &self.vertex_halfedge);
-        let max_steps = self.halfedge_capacity();
         let check_deleted = self.has_deleted_elements();
-        let mut pending = vertices.filter(|&v| {
-            vertex_halfedge[v] != INVALID_INDEX
-                && !(check_deleted && self.is_vertex_deleted(VertexId(v as u32)))
-        });
-        let mut start_lane = || {
-            pending.next().map(|vertex| {
-                let start = vertex_halfedge[vertex];
-                Lane {
-                    vertex,
-                    start,
-                    h: start,
-                    steps: 0,
-                }
+        let starts = vertices
+            .filter(|&v| {
+                vertex_halfedge[v] != INVALID_INDEX
+                    && !(check_deleted && self.is_vertex_deleted(VertexId(v as u32)))
             })
-        };
-        let mut lanes: [Option<Lane>; LANES] = std::array::from_fn(|_| start_lane());
-        while lanes.iter().any(Option::is_some) {
-            for slot in &mut lanes {
-                let Some(lane) = slot else { continue };
-                lane.steps += 1;
-                lane.h = prev[lane.h as usize] ^ 1;
-                if lane.h == lane.start || lane.steps >= max_steps {
-                    visit(lane.vertex, lane.steps);
-                    *slot = start_lane();
-                }
-            }
-        }
+            .map(|v| (v, vertex_halfedge[v]));
+        let step = |h: u32| Some(prev[h as usize] ^ 1);
+        for_each_cycle_length(starts, self.halfedge_capacity(), step, visit);
     }
 }

@@ -18,7 +18,7 @@ use super::structure::Winged;
 use crate::large_arrays;
 use crate::soup::{
     BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, Walked,
-    degenerate_faces, face_edges, walk_faces,
+    face_edges, is_degenerate_face, walk_faces,
 };
 
 impl Winged {
@@ -45,11 +45,13 @@ impl Winged {
             table,
             positions,
             mut diagnostic,
-        } = walk_faces(list, policy, |table, buckets, _| {
-            WingedFaces::walk(table, buckets)
-        })?;
-        let mut w = walked.into_winged(positions);
-        w.link_boundary_loops();
+        } = walk_faces(list, policy, WingedFaces::walk)?;
+        let (mut w, degenerate_faces) = walked.into_winged(positions);
+        // Every corner walks one side of an edge; when they cover both sides of every edge
+        // there is no hole to link, and the pass over all edges is skipped.
+        if 2 * w.edges.len() > table.n_corners() {
+            w.link_boundary_loops();
+        }
         w.choose_vertex_edges();
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
         diagnostic.isolated_vertices = w
@@ -59,7 +61,7 @@ impl Winged {
             .filter(|(_, e)| !e.is_valid())
             .map(|(v, _)| v as u32)
             .collect();
-        diagnostic.degenerate_faces = degenerate_faces(&table, &w.positions);
+        diagnostic.degenerate_faces = degenerate_faces;
         Ok((w, diagnostic))
     }
 
@@ -210,19 +212,29 @@ impl Winged {
 struct WingedFaces {
     edges: Vec<EdgeRecord>,
     face_edge: Vec<EdgeId>,
+    /// Input indices of the faces of negligible area, checked on the way.
+    degenerate_faces: Vec<u32>,
 }
 
 impl WingedFaces {
     /// The slide's loop: creates the edge records in its order and fills faces and wings of the
     /// face sides, in one pass over the faces, each corner meeting its edge in `buckets`. `None`
     /// on an edge defect (see [`EdgeVisit::Defective`]).
-    fn walk(table: &FaceTable<'_>, mut buckets: EdgeBuckets) -> Option<WingedFaces> {
+    fn walk(
+        table: &FaceTable<'_>,
+        mut buckets: EdgeBuckets,
+        positions: &[[f64; 3]],
+    ) -> Option<WingedFaces> {
         // At most one edge per corner; fitted to the count afterwards.
         let mut edges: Vec<EdgeRecord> = large_arrays::with_capacity(table.n_corners());
         let mut face_edge = large_arrays::with_capacity(table.n_faces());
         let mut loop_edges: Vec<EdgeId> = Vec::new();
+        let mut degenerate_faces = Vec::new();
         for f in 0..table.n_faces() {
             let (corners, face) = (table.face(f), FaceId(f as u32));
+            if is_degenerate_face(corners, positions) {
+                degenerate_faces.push(table.input_face(f));
+            }
             loop_edges.clear();
             for (a, b) in face_edges(corners) {
                 // Edge ids stay below the corner count, so they fit an edge's value.
@@ -260,17 +272,25 @@ impl WingedFaces {
             }
             face_edge.push(loop_edges[0]);
         }
-        Some(WingedFaces { edges, face_edge })
+        Some(WingedFaces {
+            edges,
+            face_edge,
+            degenerate_faces,
+        })
     }
 
-    /// The structure of the walked faces over vertices at `positions`.
-    fn into_winged(self, positions: Vec<[f64; 3]>) -> Winged {
-        let WingedFaces { edges, face_edge } = self;
+    /// The structure of the walked faces over vertices at `positions`, and the degenerate faces.
+    fn into_winged(self, positions: Vec<[f64; 3]>) -> (Winged, Vec<u32>) {
+        let WingedFaces {
+            edges,
+            face_edge,
+            degenerate_faces,
+        } = self;
         let (n_faces, n_vertices) = (face_edge.len(), positions.len());
         let n_edges = edges.len();
         let edges = large_arrays::fit(edges, n_edges);
         let face_edge = large_arrays::fit(face_edge, n_faces);
-        Winged {
+        let winged = Winged {
             positions,
             vertex_edge: vec![EdgeId::INVALID; n_vertices],
             vertex_alive: vec![true; n_vertices],
@@ -281,6 +301,7 @@ impl WingedFaces {
             n_live_faces: n_faces as u32,
             edges,
             point_faces: Vec::new(),
-        }
+        };
+        (winged, degenerate_faces)
     }
 }
