@@ -51,8 +51,9 @@ impl Winged {
         // there is no hole to link, and the pass over all edges is skipped.
         if 2 * w.edges.len() > table.n_corners() {
             w.link_boundary_loops();
+            // Hole sides come first in the vertex edge rule.
+            w.choose_vertex_edges();
         }
-        w.choose_vertex_edges();
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
         diagnostic.isolated_vertices = w
             .vertex_edge
@@ -177,34 +178,60 @@ impl Winged {
     /// Chooses every vertex's stored edge by the rule documented on
     /// [`Winged::from_face_list`], in one pass over the edges.
     pub(crate) fn choose_vertex_edges(&mut self) {
-        /// How good the edge chosen so far is; a better kind replaces it, an equal one does not
-        /// (so the lowest-numbered edge of the best kind wins).
-        const NONE: u8 = 0;
-        const ENDS_HERE: u8 = 1;
-        const STARTS_HERE: u8 = 2;
-        const BORDERS_HOLE: u8 = 3;
-        let n = self.positions.len();
-        let mut chosen = vec![EdgeId::INVALID; n];
-        let mut kind = vec![NONE; n];
-        let mut offer = |v: VertexId, e: usize, k: u8| {
-            if kind[v.index()] < k {
-                kind[v.index()] = k;
-                chosen[v.index()] = EdgeId(e as u32);
-            }
-        };
+        let mut choice = VertexEdgeChoice::new(self.positions.len());
         for (e, r) in self.edges.iter().enumerate() {
-            if r.is_deleted() {
-                continue;
+            if !r.is_deleted() {
+                choice.offer_holes(e, r);
+                choice.offer_ends(e, r);
             }
-            for side in [Side::Left, Side::Right] {
-                if !r.face(side).is_valid() {
-                    offer(r.tail(side), e, BORDERS_HOLE);
-                }
-            }
-            offer(r.start, e, STARTS_HERE);
-            offer(r.end, e, ENDS_HERE);
         }
-        self.vertex_edge = chosen;
+        self.vertex_edge = choice.chosen;
+    }
+}
+
+/// The vertex edge rule of [`Winged::from_face_list`], fed edge by edge: a better kind of edge
+/// replaces the one chosen so far, an equal kind does not, so offering each kind in increasing
+/// edge order keeps the lowest-numbered edge of the best kind.
+struct VertexEdgeChoice {
+    chosen: Vec<EdgeId>,
+    kind: Vec<u8>,
+}
+
+impl VertexEdgeChoice {
+    const NONE: u8 = 0;
+    const ENDS_HERE: u8 = 1;
+    const STARTS_HERE: u8 = 2;
+    const BORDERS_HOLE: u8 = 3;
+
+    fn new(n_vertices: usize) -> Self {
+        VertexEdgeChoice {
+            chosen: vec![EdgeId::INVALID; n_vertices],
+            kind: vec![Self::NONE; n_vertices],
+        }
+    }
+
+    #[inline]
+    fn offer(&mut self, v: VertexId, e: usize, kind: u8) {
+        if self.kind[v.index()] < kind {
+            self.kind[v.index()] = kind;
+            self.chosen[v.index()] = EdgeId(e as u32);
+        }
+    }
+
+    /// Offers edge `e` to the vertices it starts and ends at.
+    #[inline]
+    fn offer_ends(&mut self, e: usize, r: &EdgeRecord) {
+        self.offer(r.start, e, Self::STARTS_HERE);
+        self.offer(r.end, e, Self::ENDS_HERE);
+    }
+
+    /// Offers edge `e` to the vertices its hole sides leave from.
+    fn offer_holes(&mut self, e: usize, r: &EdgeRecord) {
+        for side in [Side::Left, Side::Right] {
+            if !r.face(side).is_valid() {
+                self.offer(r.tail(side), e, Self::BORDERS_HOLE);
+            }
+        }
     }
 }
 
@@ -212,6 +239,9 @@ impl Winged {
 struct WingedFaces {
     edges: Vec<EdgeRecord>,
     face_edge: Vec<EdgeId>,
+    /// The vertex edges by start and end, offered as the edges are made (holes are known only
+    /// after the walk).
+    vertex_edges: VertexEdgeChoice,
     /// Input indices of the faces of negligible area, checked on the way.
     degenerate_faces: Vec<u32>,
 }
@@ -230,6 +260,7 @@ impl WingedFaces {
         let mut face_edge = large_arrays::with_capacity(table.n_faces());
         let mut loop_edges: Vec<EdgeId> = Vec::new();
         let mut degenerate_faces = Vec::new();
+        let mut vertex_edges = VertexEdgeChoice::new(positions.len());
         for f in 0..table.n_faces() {
             let (corners, face) = (table.face(f), FaceId(f as u32));
             if is_degenerate_face(corners, positions) {
@@ -244,6 +275,7 @@ impl WingedFaces {
                         // Cd).
                         let mut r = EdgeRecord::unlinked(VertexId(a), VertexId(b));
                         r.left_face = face;
+                        vertex_edges.offer_ends(edges.len(), &r);
                         edges.push(r);
                         edges.len() - 1
                     }
@@ -275,6 +307,7 @@ impl WingedFaces {
         Some(WingedFaces {
             edges,
             face_edge,
+            vertex_edges,
             degenerate_faces,
         })
     }
@@ -284,6 +317,7 @@ impl WingedFaces {
         let WingedFaces {
             edges,
             face_edge,
+            vertex_edges,
             degenerate_faces,
         } = self;
         let (n_faces, n_vertices) = (face_edge.len(), positions.len());
@@ -292,7 +326,7 @@ impl WingedFaces {
         let face_edge = large_arrays::fit(face_edge, n_faces);
         let winged = Winged {
             positions,
-            vertex_edge: vec![EdgeId::INVALID; n_vertices],
+            vertex_edge: vertex_edges.chosen,
             vertex_alive: vec![true; n_vertices],
             face_edge,
             face_alive: vec![true; n_faces],
