@@ -4,8 +4,8 @@
 use std::borrow::Cow;
 
 use super::edge_buckets::EdgeBuckets;
-use super::resolve::{resolve, well_formed_edges};
-use super::table::non_finite_vertices;
+use super::resolve::resolve;
+use super::table::{MAX_VERTICES, non_finite_vertices};
 use super::{BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable};
 use crate::large_arrays;
 
@@ -68,6 +68,20 @@ pub(crate) fn walk_faces<'a, T: Send>(
         positions,
         diagnostic: resolved.diagnostic,
     })
+}
+
+/// `list` laid out as a table, with the buckets of its edges, when no face needs a policy
+/// decision: the list is consistent, no face is too small, out of range or repeats a vertex.
+/// Builders try this fast path first and call [`resolve`] only for the rest (non-finite
+/// coordinates and edge defects are theirs to find on it).
+fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
+    let n_vertices = list.positions.len();
+    if n_vertices as u64 > MAX_VERTICES {
+        return None;
+    }
+    let table = FaceTable::new(list).ok()?;
+    let buckets = EdgeBuckets::new(&table, n_vertices)?;
+    Some((table, buckets))
 }
 
 /// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.

@@ -5,7 +5,6 @@
 use std::borrow::Cow;
 use std::collections::HashMap;
 
-use super::edge_buckets::EdgeBuckets;
 use super::orient::{faces_to_flip, flip_faces};
 use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
 use super::table::{MAX_VERTICES, non_finite_vertices};
@@ -27,20 +26,6 @@ pub struct Resolved<'a> {
     pub positions: Cow<'a, [[f64; 3]]>,
     /// Every defect found so far (builders add vertex-level and geometric findings).
     pub diagnostic: Diagnostic,
-}
-
-/// `list` laid out as a table, with the buckets of its edges, when no face needs a policy
-/// decision: the list is consistent, no face is too small, out of range or repeats a vertex.
-/// Builders try this fast path first and call [`resolve`] only for the rest (non-finite
-/// coordinates and edge defects are theirs to find on it).
-pub(super) fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
-    let n_vertices = list.positions.len();
-    if n_vertices as u64 > MAX_VERTICES {
-        return None;
-    }
-    let table = FaceTable::new(list).ok()?;
-    let buckets = EdgeBuckets::new(&table, n_vertices)?;
-    Some((table, buckets))
 }
 
 /// Checks `list` and applies `policy` (see [`BuildPolicy`] for what each one does).
