@@ -1,44 +1,26 @@
-//! Walking many cycles of a structure at once: the fan checks run one walk per vertex over every
-//! edge, and each step waits for a cache miss. Walks taken in step overlap those misses.
+//! Cycle lengths by walking: the fan checks of both kernels run one walk per vertex over every
+//! edge after each build.
 
 /// Walks the cycle from each `(id, start)` of `starts` by `step` and calls `visit(id, length)`:
 /// `length` counts the elements met until `step` returns to `start`, gives `None`, or
-/// `max_steps` is reached. Several walks advance in turn, so `visit` sees them in no particular
-/// order.
+/// `max_steps` is reached.
+#[inline]
 pub(crate) fn for_each_cycle_length<S: Copy + PartialEq>(
     starts: impl Iterator<Item = (usize, S)>,
     max_steps: usize,
     step: impl Fn(S) -> Option<S>,
     mut visit: impl FnMut(usize, usize),
 ) {
-    const LANES: usize = 8;
-    /// A cycle being walked: its id, first and current element, elements met so far.
-    #[derive(Clone, Copy)]
-    struct Lane<S> {
-        id: usize,
-        start: S,
-        current: S,
-        length: usize,
-    }
-    let mut starts = starts.map(|(id, start)| Lane {
-        id,
-        start,
-        current: start,
-        length: 0,
-    });
-    let mut lanes: [Option<Lane<S>>; LANES] = std::array::from_fn(|_| starts.next());
-    while lanes.iter().any(Option::is_some) {
-        for slot in &mut lanes {
-            let Some(lane) = slot else { continue };
-            lane.length += 1;
-            match step(lane.current) {
-                Some(next) if next != lane.start && lane.length < max_steps => lane.current = next,
-                _ => {
-                    visit(lane.id, lane.length);
-                    *slot = starts.next();
-                }
+    for (id, start) in starts {
+        let (mut current, mut length) = (start, 0);
+        loop {
+            length += 1;
+            match step(current) {
+                Some(next) if next != start && length < max_steps => current = next,
+                _ => break,
             }
         }
+        visit(id, length);
     }
 }
 

@@ -58,13 +58,12 @@ impl Mesh {
                 pinched.push(VertexId(v as u32));
             }
         });
-        pinched.sort_unstable();
         pinched
     }
 
     /// Calls `visit(v, size)` for each live vertex `v` of `vertices` with a half-edge, `size`
     /// being the number of half-edges of the fan walked from it (`h = twin(prev(h))` on the raw
-    /// arrays, bounded by the half-edge count like the circulators), in no particular order.
+    /// arrays, bounded by the half-edge count like the circulators).
     fn for_each_fan_size(&self, vertices: Range<usize>, visit: impl FnMut(usize, usize)) {
         let (prev, vertex_halfedge) = (&self.prev, &self.vertex_halfedge);
         let check_deleted = self.has_deleted_elements();
