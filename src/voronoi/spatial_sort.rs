@@ -99,7 +99,7 @@ fn hilbert_index(x: u32, y: u32) -> u32 {
 
 /// Curve levels decoded by one table lookup in [`hilbert_index`] (divides [`HILBERT_BITS`]).
 const HILBERT_LEVELS_PER_STEP: u32 = 2;
-const _: () = assert!(HILBERT_BITS % HILBERT_LEVELS_PER_STEP == 0);
+const _: () = assert!(HILBERT_BITS.is_multiple_of(HILBERT_LEVELS_PER_STEP));
 
 /// The Hilbert curve as a state machine, [`HILBERT_LEVELS_PER_STEP`] levels per transition.
 ///
