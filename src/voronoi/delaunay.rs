@@ -1,7 +1,7 @@
 //! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
 
 use super::error::VoronoiError;
-use super::incremental::{GHOST, GhostTriangulation, next_edge, prev_edge};
+use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
@@ -123,7 +123,7 @@ impl Delaunay {
             Seed::Empty => {}
             Seed::Degenerate => result.build_collinear(&mut representative),
             Seed::Triangle { a, b, c, position } => {
-                let mut tri = GhostTriangulation::new(&sorted, a, b, c, 6 * n + 12);
+                let mut tri = GhostTriangulation::new(&sorted, a, b, c, n);
                 // Sites skipped while looking for the seed triangle come first, then the rest.
                 for k in (0..n as u32).filter(|&k| k as usize != position) {
                     if k == a || k == b || rank_representative[k as usize] != k {
@@ -136,8 +136,7 @@ impl Delaunay {
                 for (k, &r) in rank_representative.iter().enumerate() {
                     representative[order[k] as usize] = order[r as usize];
                 }
-                let (origin, twin) = (tri.origin, tri.twin);
-                result.finish_planar(origin, twin, &order);
+                result.finish_planar(&tri.triangles, &order);
                 result.ranked = sorted;
             }
         }
@@ -147,24 +146,20 @@ impl Delaunay {
 
     /// Copies the real triangles out of the ghost triangulation and walks the hull.
     /// `to_site` maps the builder's vertex numbers (insertion ranks) to site indices.
-    fn finish_planar(&mut self, origin: Vec<u32>, twin: Vec<u32>, to_site: &[u32]) {
-        let n_all = origin.len() / 3;
-        let is_ghost = |t: usize| {
-            origin[3 * t] == GHOST || origin[3 * t + 1] == GHOST || origin[3 * t + 2] == GHOST
-        };
+    fn finish_planar(&mut self, built: &[Triangle], to_site: &[u32]) {
+        let n_all = built.len();
         // Real triangles are renumbered by their newest corner (a counting sort on insertion
         // rank): slot reuse during construction scatters neighbours across the array, and every
         // later pass (Voronoi vertices, links, clipping) walks neighbours, so the output order is
         // made spatially coherent once here.
         let mut start = vec![0u32; to_site.len() + 1];
-        let newest =
-            |t: usize| origin[3 * t].max(origin[3 * t + 1]).max(origin[3 * t + 2]) as usize;
+        let newest = |t: &Triangle| t.corners[0].max(t.corners[1]).max(t.corners[2]) as usize;
         let mut some_ghost = INVALID;
-        for t in 0..n_all {
-            if is_ghost(t) {
+        for (t, triangle) in built.iter().enumerate() {
+            if triangle.is_ghost() {
                 some_ghost = t as u32;
             } else {
-                start[newest(t) + 1] += 1;
+                start[newest(triangle) + 1] += 1;
             }
         }
         for k in 1..start.len() {
@@ -173,9 +168,9 @@ impl Delaunay {
         let count = start[to_site.len()] as usize;
         let mut new_index = vec![INVALID; n_all];
         let mut old_index = large_arrays::zeroed::<u32>(count);
-        for (t, slot) in new_index.iter_mut().enumerate() {
-            if !is_ghost(t) {
-                let key = newest(t);
+        for (t, (slot, triangle)) in new_index.iter_mut().zip(built).enumerate() {
+            if !triangle.is_ghost() {
+                let key = newest(triangle);
                 *slot = start[key];
                 old_index[start[key] as usize] = t as u32;
                 start[key] += 1;
@@ -185,41 +180,38 @@ impl Delaunay {
         let mut triangles = large_arrays::zeroed::<u32>(3 * count);
         let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
         let mut twins = large_arrays::zeroed::<u32>(3 * count);
-        for (ne, ((site, rank), opposite)) in triangles
-            .iter_mut()
-            .zip(corner_ranks.iter_mut())
-            .zip(twins.iter_mut())
-            .enumerate()
+        for (((sites, ranks), opposites), &old) in triangles
+            .chunks_exact_mut(3)
+            .zip(corner_ranks.chunks_exact_mut(3))
+            .zip(twins.chunks_exact_mut(3))
+            .zip(&old_index)
         {
-            let e = 3 * old_index[ne / 3] as usize + ne % 3;
-            *rank = origin[e];
-            *site = to_site[origin[e] as usize];
-            let o = twin[e] as usize;
-            let no = new_index[o / 3];
-            *opposite = if no == INVALID {
-                INVALID
-            } else {
-                3 * no + (o % 3) as u32
-            };
+            let triangle = &built[old as usize];
+            for k in 0..3 {
+                let rank = triangle.corners[k];
+                ranks[k] = rank;
+                sites[k] = to_site[rank as usize];
+                let o = triangle.twins[k];
+                let no = new_index[(o / 3) as usize];
+                opposites[k] = if no == INVALID {
+                    INVALID
+                } else {
+                    3 * no + o % 3
+                };
+            }
         }
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
-        // is across its edge ∞ → u.
+        // is across its edge ∞ → u (edge 2).
         let mut hull = Vec::new();
         let mut hull_edges = Vec::new();
         let start = some_ghost;
         let mut g = start;
         loop {
-            let base = 3 * g;
-            let k = (0..3)
-                .find(|&k| origin[(base + k) as usize] == GHOST)
-                .expect("ghost has the infinite vertex");
-            let finite = base + (k + 1) % 3; // u → v
-            let from_infinity = base + k; // ∞ → u
-            let v = origin[next_edge(finite) as usize];
-            hull.push(to_site[v as usize]);
-            let real = twin[finite as usize];
+            let ghost = &built[g as usize];
+            hull.push(to_site[ghost.corners[1] as usize]);
+            let real = ghost.twins[0];
             hull_edges.push(3 * new_index[(real / 3) as usize] + real % 3);
-            g = twin[from_infinity as usize] / 3;
+            g = ghost.twins[2] / 3;
             if g == start || hull.len() > n_all {
                 break;
             }

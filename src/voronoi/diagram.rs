@@ -119,6 +119,7 @@ impl Voronoi {
                     incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
                 })
         };
+        let unscale = d.scale.recip();
         // A few long runs: enough to share the work among threads, few edges between runs.
         let run_len = n_tri.div_ceil(8).max(1 << 14);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
@@ -129,7 +130,7 @@ impl Voronoi {
                 let (mut merged, mut later) = (Vec::new(), Vec::new());
                 for i in 0..run.len() {
                     let t = first + i as u32;
-                    let (here, radius) = self.circumcircle(t);
+                    let (here, radius) = self.circumcircle(t, unscale);
                     run[i] = here;
                     for e in 3 * t..3 * t + 3 {
                         let twin = d.twins[e as usize];
@@ -152,7 +153,7 @@ impl Voronoi {
             merged_edges.extend(merged);
             merged_edges.extend(later.into_iter().filter_map(|e| {
                 let twin = d.twins[e as usize];
-                let (here, radius) = self.circumcircle(e / 3);
+                let (here, radius) = self.circumcircle(e / 3, unscale);
                 same_vertex(e, here, radius, centres[(twin / 3) as usize]).then_some(twin)
             }));
         }
@@ -207,15 +208,17 @@ impl Voronoi {
     }
 
     /// Circumcentre of Delaunay triangle `t`, computed relative to its first corner in the
-    /// scaled frame and mapped back (dividing by a power of two is exact), and the L1 length of
-    /// that offset (at least the circumradius).
-    fn circumcircle(&self, t: u32) -> ([f64; 2], f64) {
+    /// scaled frame and mapped back, and the L1 length of that offset (at least the
+    /// circumradius). `unscale` is `1 / scale`: both are powers of two, so multiplying by it
+    /// rounds exactly as dividing by `scale` would, and is several times cheaper.
+    #[inline(always)]
+    fn circumcircle(&self, t: u32, unscale: f64) -> ([f64; 2], f64) {
         let d = &self.delaunay;
         let base = 3 * t;
         let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
         let [ux, uy] = circumcentre_offset(a, b, c);
-        let centre = [(a[0] + ux) / d.scale, (a[1] + uy) / d.scale];
-        (centre, (ux.abs() + uy.abs()) / d.scale)
+        let centre = [(a[0] + ux) * unscale, (a[1] + uy) * unscale];
+        (centre, (ux.abs() + uy.abs()) * unscale)
     }
 
     /// The underlying Delaunay triangulation.

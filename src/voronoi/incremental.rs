@@ -10,10 +10,16 @@
 //! conflict, and the result is *a* Delaunay triangulation; the Voronoi layer merges the triangles
 //! that share a circumcircle.
 //!
-//! Half-edge `e` belongs to triangle `e / 3`; `next(e) = 3(e/3) + (e+1) % 3`; triangles are
-//! counter-clockwise; `origin[e]` is the start vertex, [`GHOST`] for the vertex at infinity.
+//! Half-edge `e` is edge `e % 3` of triangle `e / 3`, running from corner `e % 3` to the next
+//! corner; `next(e) = 3(e/3) + (e+1) % 3`; triangles are counter-clockwise. A ghost keeps the
+//! vertex at infinity ([`GHOST`]) as its corner 2, so its finite edge is its edge 0 and one load
+//! tells a ghost from a real triangle.
+//!
+//! Corners and twins of a triangle are stored side by side ([`Triangle`]): walking to a neighbour
+//! and testing it reads one record, usually one cache line, instead of two arrays.
 
 use super::predicates::{incircle, orient2d};
+use crate::large_arrays;
 
 /// The vertex at infinity.
 pub(crate) const GHOST: u32 = u32::MAX;
@@ -30,13 +36,27 @@ pub(crate) fn prev_edge(e: u32) -> u32 {
     if e.is_multiple_of(3) { e + 2 } else { e - 1 }
 }
 
+/// One triangle: its corners counter-clockwise and, for each edge `k` (corner `k` to corner
+/// `k + 1`), the opposite half-edge.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Triangle {
+    pub corners: [u32; 3],
+    pub twins: [u32; 3],
+}
+
+impl Triangle {
+    /// Is this a ghost (corner 2 at infinity)?
+    #[inline(always)]
+    pub fn is_ghost(&self) -> bool {
+        self.corners[2] == GHOST
+    }
+}
+
 /// A triangulation under construction (or finished), ghosts included.
 pub(crate) struct GhostTriangulation<'a> {
     points: &'a [[f64; 2]],
-    /// Start vertex of each half-edge.
-    pub origin: Vec<u32>,
-    /// Opposite half-edge of each half-edge.
-    pub twin: Vec<u32>,
+    /// Triangle `t` owns half-edges `3t..3t + 3`.
+    pub triangles: Vec<Triangle>,
     last: u32,
     cavity: Vec<u32>,
     boundary: Vec<(u32, u32, u32)>,
@@ -52,27 +72,25 @@ enum Location {
 }
 
 impl<'a> GhostTriangulation<'a> {
-    /// Starts from the counter-clockwise triangle `a, b, c` (`orient2d > 0`) and its three ghosts.
-    pub fn new(points: &'a [[f64; 2]], a: u32, b: u32, c: u32, capacity: usize) -> Self {
-        let mut tri = GhostTriangulation {
+    /// Starts from the counter-clockwise triangle `a, b, c` (`orient2d > 0`) and its three
+    /// ghosts, with room for `n_sites` vertices (`2n - 2` triangles, ghosts included).
+    pub fn new(points: &'a [[f64; 2]], a: u32, b: u32, c: u32, n_sites: usize) -> Self {
+        let mut triangles = large_arrays::with_capacity(2 * n_sites + 4);
+        let triangle = |corners, twins| Triangle { corners, twins };
+        triangles.extend_from_slice(&[
+            triangle([a, b, c], [3, 6, 9]),      // 0: the real triangle
+            triangle([b, a, GHOST], [0, 11, 7]), // 1: ghost of a→b
+            triangle([c, b, GHOST], [1, 5, 10]), // 2: ghost of b→c
+            triangle([a, c, GHOST], [2, 8, 4]),  // 3: ghost of c→a
+        ]);
+        GhostTriangulation {
             points,
-            origin: Vec::with_capacity(capacity),
-            twin: Vec::with_capacity(capacity),
+            triangles,
             last: 0,
             cavity: Vec::new(),
             boundary: Vec::new(),
             stack: Vec::new(),
-        };
-        #[rustfmt::skip]
-        tri.origin.extend_from_slice(&[
-            a, b, c,          // 0: the real triangle
-            b, a, GHOST,      // 1: ghost of a→b
-            c, b, GHOST,      // 2: ghost of b→c
-            a, c, GHOST,      // 3: ghost of c→a
-        ]);
-        tri.twin
-            .extend_from_slice(&[3, 6, 9, 0, 11, 7, 1, 5, 10, 2, 8, 4]);
-        tri
+        }
     }
 
     #[inline(always)]
@@ -80,21 +98,10 @@ impl<'a> GhostTriangulation<'a> {
         self.points[v as usize]
     }
 
-    /// The finite edge `(u, v)` of ghost triangle `t` (the ghost lies left of `u → v`), or `None`
-    /// for a real triangle.
+    /// The opposite of half-edge `e`.
     #[inline(always)]
-    fn ghost_edge(&self, t: u32) -> Option<u32> {
-        let base = 3 * t;
-        let o = &self.origin[base as usize..base as usize + 3];
-        if o[2] == GHOST {
-            Some(base)
-        } else if o[0] == GHOST {
-            Some(base + 1)
-        } else if o[1] == GHOST {
-            Some(base + 2)
-        } else {
-            None
-        }
+    fn twin(&self, e: u32) -> u32 {
+        self.triangles[(e / 3) as usize].twins[(e % 3) as usize]
     }
 
     /// Does ghost edge `u → v` conflict with `p` (outside the hull across it, or on its interior)?
@@ -107,42 +114,40 @@ impl<'a> GhostTriangulation<'a> {
 
     #[inline(always)]
     fn in_conflict(&self, t: u32, p: [f64; 2]) -> bool {
-        match self.ghost_edge(t) {
-            Some(e) => self.ghost_conflict(
-                self.origin[e as usize],
-                self.origin[next_edge(e) as usize],
-                p,
-            ),
-            None => {
-                let base = 3 * t as usize;
-                let o = &self.origin[base..base + 3];
-                incircle(self.point(o[0]), self.point(o[1]), self.point(o[2]), p) > 0.0
-            }
+        let [a, b, c] = self.triangles[t as usize].corners;
+        if c == GHOST {
+            self.ghost_conflict(a, b, p)
+        } else {
+            incircle(self.point(a), self.point(b), self.point(c), p) > 0.0
         }
     }
 
-    /// Visibility walk from the last created triangle; exact orientations throughout.
+    /// Visibility walk from the last created triangle; exact orientations throughout. The edge
+    /// the walk came in through is not tested again: `p` is strictly on its inner side.
     fn locate(&self, p: [f64; 2]) -> Location {
-        let n_triangles = self.origin.len() / 3;
+        let n_triangles = self.triangles.len();
         let mut t = self.last;
+        let mut entry = 3;
         // A visibility walk in a Delaunay triangulation always terminates; the bound only turns
         // an impossible cycle into a (slow, correct) exhaustive search instead of a hang.
         let mut steps = 0usize;
         'walk: while steps <= 4 * n_triangles + 16 {
             steps += 1;
-            if let Some(e) = self.ghost_edge(t) {
-                let (u, v) = (self.origin[e as usize], self.origin[next_edge(e) as usize]);
-                if self.ghost_conflict(u, v, p) {
+            let triangle = &self.triangles[t as usize];
+            let [a, b, c] = triangle.corners;
+            if c == GHOST {
+                if self.ghost_conflict(a, b, p) {
                     return Location::Conflict(t);
                 }
-                t = self.twin[e as usize] / 3;
+                let o = triangle.twins[0];
+                (t, entry) = (o / 3, (o % 3) as usize);
                 continue;
             }
-            let base = 3 * t;
-            for e in base..base + 3 {
-                let (u, v) = (self.origin[e as usize], self.origin[next_edge(e) as usize]);
-                if orient2d(self.point(u), self.point(v), p) < 0.0 {
-                    t = self.twin[e as usize] / 3;
+            let corners = [self.point(a), self.point(b), self.point(c)];
+            for k in 0..3 {
+                if k != entry && orient2d(corners[k], corners[(k + 1) % 3], p) < 0.0 {
+                    let o = triangle.twins[k];
+                    (t, entry) = (o / 3, (o % 3) as usize);
                     continue 'walk;
                 }
             }
@@ -153,8 +158,7 @@ impl<'a> GhostTriangulation<'a> {
 
     /// `p` lies in the closed real triangle `t`: a duplicate of one of its corners or in conflict.
     fn inside_real_triangle(&self, t: u32, p: [f64; 2]) -> Location {
-        let base = 3 * t as usize;
-        for &v in &self.origin[base..base + 3] {
+        for v in self.triangles[t as usize].corners {
             if self.point(v) == p {
                 return Location::Duplicate(v);
             }
@@ -163,24 +167,16 @@ impl<'a> GhostTriangulation<'a> {
     }
 
     fn locate_exhaustively(&self, p: [f64; 2]) -> Location {
-        let n_triangles = (self.origin.len() / 3) as u32;
-        for t in 0..n_triangles {
-            match self.ghost_edge(t) {
-                Some(_) => {
-                    if self.in_conflict(t, p) {
-                        return Location::Conflict(t);
-                    }
+        for (t, triangle) in (0..).zip(&self.triangles) {
+            if triangle.is_ghost() {
+                if self.in_conflict(t, p) {
+                    return Location::Conflict(t);
                 }
-                None => {
-                    let base = 3 * t;
-                    let inside = (base..base + 3).all(|e| {
-                        let (u, v) = (self.origin[e as usize], self.origin[next_edge(e) as usize]);
-                        orient2d(self.point(u), self.point(v), p) >= 0.0
-                    });
-                    if inside {
-                        return self.inside_real_triangle(t, p);
-                    }
-                }
+                continue;
+            }
+            let corners = triangle.corners.map(|v| self.point(v));
+            if (0..3).all(|k| orient2d(corners[k], corners[(k + 1) % 3], p) >= 0.0) {
+                return self.inside_real_triangle(t, p);
             }
         }
         unreachable!("every point lies in a real triangle or conflicts with a ghost")
@@ -202,7 +198,7 @@ impl<'a> GhostTriangulation<'a> {
         // Depth-first growth; visiting each triangle's edges counter-clockwise yields the cavity
         // boundary as one counter-clockwise loop (the cavity is a disk with no interior vertex).
         while let Some(e) = self.stack.pop() {
-            let o = self.twin[e as usize];
+            let o = self.twin(e);
             let neighbour = o / 3;
             if self.in_conflict(neighbour, p) {
                 self.cavity.push(neighbour);
@@ -210,37 +206,48 @@ impl<'a> GhostTriangulation<'a> {
                 self.stack.push(next_edge(o1));
                 self.stack.push(o1);
             } else {
-                let u = self.origin[e as usize];
-                let v = self.origin[next_edge(e) as usize];
-                self.boundary.push((o, u, v));
+                let corners = &self.triangles[(e / 3) as usize].corners;
+                let k = (e % 3) as usize;
+                self.boundary.push((o, corners[k], corners[(k + 1) % 3]));
             }
         }
         let k = self.boundary.len();
         debug_assert_eq!(k, self.cavity.len() + 2);
         // The fan needs two more triangles than the cavity had.
         for _ in 0..2 {
-            self.cavity.push((self.origin.len() / 3) as u32);
-            self.origin.extend_from_slice(&[0, 0, 0]);
-            self.twin.extend_from_slice(&[0, 0, 0]);
+            self.cavity.push(self.triangles.len() as u32);
+            self.triangles.push(Triangle::default());
         }
+        // Fan triangle `i` is (u, v, s) for boundary edge `i` = (u, v), stored rotated so that a
+        // vertex at infinity lands in corner 2: its logical edge `j` is half-edge `edge(i, j)`.
+        let (cavity, boundary) = (&self.cavity, &self.boundary);
+        let rotation = |i: usize| {
+            let (_, u, v) = boundary[i];
+            if u == GHOST {
+                2
+            } else if v == GHOST {
+                1
+            } else {
+                0
+            }
+        };
+        let edge = |i: usize, j: u32| 3 * cavity[i] + (j + rotation(i)) % 3;
         for i in 0..k {
-            let t = self.cavity[i];
-            let (o, u, v) = self.boundary[i];
-            debug_assert_eq!(
-                v,
-                self.boundary[(i + 1) % k].1,
-                "cavity boundary is one loop"
-            );
-            let next_t = self.cavity[if i + 1 == k { 0 } else { i + 1 }];
-            let prev_t = self.cavity[if i == 0 { k - 1 } else { i - 1 }];
-            let b = 3 * t as usize;
-            self.origin[b] = u;
-            self.origin[b + 1] = v;
-            self.origin[b + 2] = s;
-            self.twin[b] = o;
-            self.twin[o as usize] = b as u32;
-            self.twin[b + 1] = 3 * next_t + 2;
-            self.twin[b + 2] = 3 * prev_t + 1;
+            let (o, u, v) = boundary[i];
+            debug_assert_eq!(v, boundary[(i + 1) % k].1, "cavity boundary is one loop");
+            let next = if i + 1 == k { 0 } else { i + 1 };
+            let prev = if i == 0 { k - 1 } else { i - 1 };
+            let mut triangle = Triangle::default();
+            for (j, (corner, twin)) in [(u, o), (v, edge(next, 2)), (s, edge(prev, 1))]
+                .into_iter()
+                .enumerate()
+            {
+                let slot = ((j as u32 + rotation(i)) % 3) as usize;
+                triangle.corners[slot] = corner;
+                triangle.twins[slot] = twin;
+            }
+            self.triangles[cavity[i] as usize] = triangle;
+            self.triangles[(o / 3) as usize].twins[(o % 3) as usize] = edge(i, 0);
         }
         self.last = self.cavity[0];
         None
