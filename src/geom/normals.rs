@@ -70,7 +70,7 @@ pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     match first_five {
         [Some(a), Some(b), Some(c), None, _] => triangle_area_vector(a, b, c),
         [Some(a), Some(b), Some(c), Some(d), None] => quad_area_vector(a, b, c, d),
-        _ => newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v))),
+        _ => newell_vector(first_five.into_iter().flatten().chain(corners)),
     }
 }
 

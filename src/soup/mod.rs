@@ -19,7 +19,6 @@ mod resolve;
 mod table;
 mod umbrellas;
 
-pub use degenerate::degenerate_faces;
 pub(crate) use degenerate::is_degenerate_face;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit};

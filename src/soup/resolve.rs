@@ -15,13 +15,12 @@ use super::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, FaceTable
 /// refused face vertices of its own (which always succeeds).
 const REPAIR_ROUNDS: usize = 8;
 
-/// A face list made buildable: every corner is paired or on the boundary.
+/// A face list made buildable: every corner's edge pairs with at most one other corner, walking
+/// it the other way.
 #[derive(Debug)]
 pub struct Resolved<'a> {
     /// The faces to build, with their input face indices.
     pub table: FaceTable<'a>,
-    /// Their pairing; `problems` is empty.
-    pub pairing: EdgePairing,
     /// Positions of the built vertices: the input's, then those of repair's copies.
     pub positions: Cow<'a, [[f64; 3]]>,
     /// Every defect found so far (builders add vertex-level and geometric findings).
@@ -139,7 +138,6 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
     diagnostic.vertex_copies = copies.copied_from;
     Ok(Resolved {
         table,
-        pairing,
         positions,
         diagnostic,
     })

@@ -217,25 +217,28 @@ impl Winged {
     /// misses some of their edges), in increasing order. The structure holds them, but walks
     /// around them see one fan at a time.
     pub fn non_manifold_vertices(&self) -> Vec<VertexId> {
-        let each_ring_size = |visit: &mut dyn FnMut(usize, usize)| {
-            let starts = self
-                .vertices()
-                .filter_map(|v| Some((v.index(), self.vertex_first_use(v)?)));
-            let step = |u: EdgeUse| self.use_prev(u).map(EdgeUse::twin);
-            for_each_cycle_length(starts, self.walk_bound(), step, visit);
-        };
         // Every edge has two ends: when the rings add up to twice the edges, none missed any
         // (the usual case, decided without counting degrees).
         let mut walked = 0;
-        each_ring_size(&mut |_, size| walked += size);
+        self.for_each_ring_size(|_, size| walked += size);
         if walked == 2 * self.n_edges() as usize {
             return Vec::new();
         }
         let mut ring_size = vec![0; self.positions.len()];
-        each_ring_size(&mut |v, size| ring_size[v] = size);
+        self.for_each_ring_size(|v, size| ring_size[v] = size);
         let degree = self.degrees();
         self.vertices()
             .filter(|&v| ring_size[v.index()] != degree[v.index()] as usize)
             .collect()
+    }
+
+    /// Calls `visit(v, size)` for each live vertex `v` with a stored edge, `size` being its
+    /// [`Winged::valence`] (the ring walked from that edge, bounded like every walk).
+    fn for_each_ring_size(&self, visit: impl FnMut(usize, usize)) {
+        let starts = self
+            .vertices()
+            .filter_map(|v| Some((v.index(), self.vertex_first_use(v)?)));
+        let step = |u: EdgeUse| self.use_prev(u).map(EdgeUse::twin);
+        for_each_cycle_length(starts, self.walk_bound(), step, visit);
     }
 }
