@@ -14,7 +14,7 @@ use std::ffi::{CStr, c_char, c_void};
 
 use crate::mesh::{AttributeError, ElementKind, Mesh, ScalarType};
 
-use super::boundary::{Out, arg_mut, arg_ref, arg_slice, copy_text, guard};
+use super::boundary::{Out, arg_mut, arg_ref, arg_slice, copy_text, give_pointer, guard};
 use super::elements::{element_kind, hw_element_kind};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
@@ -209,21 +209,13 @@ pub unsafe extern "C" fn hw_mesh_attribute_view(
     out_data: *mut *const c_void,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let (mesh, name) = unsafe { (mesh_ref(mesh)?, name_arg(name)?) };
-        let (data, len) = column_memory(mesh, element_kind(kind)?, name, scalar_type(scalar)?)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe {
-            out_data.write(data);
-            out_len.write(len);
-        }
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_pointer(out_data, "out_data", out_len, || {
+            let (mesh, name) = (mesh_ref(mesh)?, name_arg(name)?);
+            column_memory(mesh, element_kind(kind)?, name, scalar_type(scalar)?)
+        })
+    }
 }
 
 /// Writable access to attribute `name` of `kind` (layout as hw_mesh_attribute_view()): write
@@ -241,21 +233,13 @@ pub unsafe extern "C" fn hw_mesh_attribute_data(
     out_data: *mut *mut c_void,
     out_len: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        let (out_data, out_len) = (
-            Out::new(out_data, "out_data")?,
-            Out::new(out_len, "out_len")?,
-        );
-        // SAFETY: forwarded from the caller.
-        let (mesh, name) = unsafe { (&mut arg_mut(mesh, "mesh")?.mesh, name_arg(name)?) };
-        let (data, len) = column_memory_mut(mesh, element_kind(kind)?, name, scalar_type(scalar)?)?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe {
-            out_data.write(data);
-            out_len.write(len);
-        }
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_pointer(out_data, "out_data", out_len, || {
+            let (mesh, name) = (&mut arg_mut(mesh, "mesh")?.mesh, name_arg(name)?);
+            column_memory_mut(mesh, element_kind(kind)?, name, scalar_type(scalar)?)
+        })
+    }
 }
 
 /// Number of attributes of `kind` (halfwing's own `hw:` ones included).

@@ -205,16 +205,48 @@ pub(crate) unsafe fn give_view<'a, T: 'a>(
     out_len: *mut usize,
     view: impl FnOnce() -> Result<&'a [T], FfiError>,
 ) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_pointer(out_data, data_name, out_len, || {
+            let data = view()?;
+            Ok((view_start(data), data.len()))
+        })
+    }
+}
+
+/// The whole body of a call that hands out memory as a pointer and a length: checks both
+/// outputs (`data_name` as for [`give_view`]), computes them, then writes both.
+///
+/// # Safety
+/// `out_data` and `out_len` must be NULL or writable.
+pub(crate) unsafe fn give_pointer<P>(
+    out_data: *mut P,
+    data_name: &str,
+    out_len: *mut usize,
+    memory: impl FnOnce() -> Result<(P, usize), FfiError>,
+) -> hw_status {
     guard(|| {
         let (out_data, out_len) = (
             Out::new(out_data, data_name)?,
             Out::new(out_len, "out_len")?,
         );
-        let data = view()?;
+        let (data, len) = memory()?;
         // SAFETY: both checked non-NULL, writable per the caller.
-        unsafe { write_view(out_data, out_len, data) };
+        unsafe {
+            out_data.write(data);
+            out_len.write(len);
+        }
         Ok(())
     })
+}
+
+/// The start of a view as handed to C: NULL when it is empty.
+fn view_start<T>(data: &[T]) -> *const T {
+    if data.is_empty() {
+        std::ptr::null()
+    } else {
+        data.as_ptr()
+    }
 }
 
 /// Writes a zero-copy view (`*out_data`, NULL when empty, and `*out_len`).
@@ -224,11 +256,7 @@ pub(crate) unsafe fn give_view<'a, T: 'a>(
 pub(crate) unsafe fn write_view<T>(out_data: Out<*const T>, out_len: Out<usize>, data: &[T]) {
     // SAFETY: forwarded from the caller.
     unsafe {
-        out_data.write(if data.is_empty() {
-            std::ptr::null()
-        } else {
-            data.as_ptr()
-        });
+        out_data.write(view_start(data));
         out_len.write(data.len());
     }
 }

@@ -24,24 +24,32 @@ impl hw_diagnostic {
     }
 }
 
-/// Hands what a builder made to C: the object through `out` and, when the caller asked for it, the
-/// build's diagnostic through `out_diagnostic`. Call only once nothing can fail any more.
+/// The whole body of a build call: checks `out` (`out_name` is its name in the C signature, for
+/// the message), runs `build`, then hands the object to C through `out` and, when the caller asked
+/// for it, the build's diagnostic through `out_diagnostic`. On failure neither is written.
 ///
 /// # Safety
-/// The pointers behind `out` and `out_diagnostic` must be writable.
-pub(crate) unsafe fn hand_over_built<T: 'static>(
-    out: Out<*mut T>,
-    object: T,
-    out_diagnostic: Option<Out<*mut hw_diagnostic>>,
-    diagnostic: Diagnostic,
-) {
-    // SAFETY: forwarded from the caller.
-    unsafe {
-        out.write(into_handle(object));
-        if let Some(out_diagnostic) = out_diagnostic {
-            out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
+/// `out` must be NULL or writable; `out_diagnostic` NULL or writable.
+pub(crate) unsafe fn give_built<T: 'static>(
+    out: *mut *mut T,
+    out_name: &str,
+    out_diagnostic: *mut *mut hw_diagnostic,
+    build: impl FnOnce() -> Result<(T, Diagnostic), FfiError>,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out, out_name)?;
+        let out_diagnostic = Out::optional(out_diagnostic);
+        let (object, diagnostic) = build()?;
+        // SAFETY: checked non-NULL (`out`) or present (`out_diagnostic`); writable per the
+        // caller.
+        unsafe {
+            out.write(into_handle(object));
+            if let Some(out_diagnostic) = out_diagnostic {
+                out_diagnostic.write(hw_diagnostic::into_handle(diagnostic));
+            }
         }
-    }
+        Ok(())
+    })
 }
 
 /// One list of element ids in a diagnostic (see hw_diagnostic_ids()).

@@ -9,7 +9,7 @@ use crate::mesh::Mesh;
 use crate::soup::PolygonSoup;
 
 use super::boundary::{Out, arg_ref, guard, guard_void, write_view};
-use super::diagnostic::{hand_over_built, hw_diagnostic};
+use super::diagnostic::{give_built, hw_diagnostic};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{build_policy, hw_build_policy, hw_mesh, mesh_ref};
@@ -150,17 +150,15 @@ pub unsafe extern "C" fn hw_mesh_read(
     out_mesh: *mut *mut hw_mesh,
     out_diagnostic: *mut *mut hw_diagnostic,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out_mesh, "out_mesh")?;
-        let out_diagnostic = Out::optional(out_diagnostic);
-        let policy = build_policy(policy)?;
-        // SAFETY: forwarded from the caller.
-        let soup = read_path(unsafe { path_arg(path) }?)?;
-        let (mesh, diagnostic) = with_threads(|| Mesh::from_soup(&soup, policy))?;
-        // SAFETY: checked non-NULL; writable per the caller.
-        unsafe { hand_over_built(out, hw_mesh { mesh }, out_diagnostic, diagnostic) };
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_built(out_mesh, "out_mesh", out_diagnostic, || {
+            let policy = build_policy(policy)?;
+            let soup = read_path(path_arg(path)?)?;
+            let (mesh, diagnostic) = with_threads(|| Mesh::from_soup(&soup, policy))?;
+            Ok((hw_mesh { mesh }, diagnostic))
+        })
+    }
 }
 
 /// Writes a mesh to a file (format by extension; PLY is written binary little-endian). Deleted

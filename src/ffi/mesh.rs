@@ -3,8 +3,8 @@
 use crate::mesh::Mesh;
 use crate::soup::{BuildError, BuildPolicy};
 
-use super::boundary::{Out, arg_ref, guard, guard_value, guard_void};
-use super::diagnostic::{hand_over_built, hw_diagnostic};
+use super::boundary::{arg_ref, guard_value, guard_void};
+use super::diagnostic::{give_built, hw_diagnostic};
 use super::elements::{
     HW_ELEMENT_EDGE, HW_ELEMENT_FACE, HW_ELEMENT_HALFEDGE, HW_ELEMENT_VERTEX, hw_element_kind,
 };
@@ -103,21 +103,17 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
     out_mesh: *mut *mut hw_mesh,
     out_diagnostic: *mut *mut hw_diagnostic,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out_mesh, "out_mesh")?;
-        let out_diagnostic = Out::optional(out_diagnostic);
-        // SAFETY: forwarded from the caller.
-        let list = unsafe {
-            face_list_arg(
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_built(out_mesh, "out_mesh", out_diagnostic, || {
+            let list = face_list_arg(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
-            )?
-        };
-        let policy = build_policy(policy)?;
-        let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
-        // SAFETY: checked non-NULL; writable per the caller.
-        unsafe { hand_over_built(out, hw_mesh { mesh }, out_diagnostic, diagnostic) };
-        Ok(())
-    })
+            )?;
+            let policy = build_policy(policy)?;
+            let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
+            Ok((hw_mesh { mesh }, diagnostic))
+        })
+    }
 }
 
 /// Releases a mesh. NULL is a no-op; a mesh freed already is detected and refused (the last error

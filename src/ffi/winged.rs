@@ -7,7 +7,6 @@
 //! numbering does match across hw_winged_from_mesh() and hw_winged_to_mesh(): winged vertex,
 //! edge and face `i` are mesh vertex, edge and face `i`.
 
-use crate::soup::BuildPolicy;
 use crate::winged::{
     EdgeId, EdgeRecord, FaceId, Naming, TableFormat, VertexId, Winged, WingedError,
 };
@@ -16,13 +15,14 @@ use super::boundary::{
     Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, give_view, guard, guard_value,
     guard_void,
 };
-use super::diagnostic::{hand_over_built, hw_diagnostic};
+use super::diagnostic::{give_built, hw_diagnostic};
 use super::elements::id_conversions;
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{build_policy, hw_build_policy, hw_mesh, mesh_ref};
 use super::status::*;
+use super::threads::with_threads;
 
 /// A winged-edge (Baumgart) polygon mesh: one record per edge with its two vertices, its two
 /// faces and its four wings. Opaque; create it with hw_winged_new(), hw_winged_from_indexed() or
@@ -200,21 +200,17 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
     out_winged: *mut *mut hw_winged,
     out_diagnostic: *mut *mut hw_diagnostic,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::new(out_winged, "out_winged")?;
-        let out_diagnostic = Out::optional(out_diagnostic);
-        // SAFETY: forwarded from the caller.
-        let list = unsafe {
-            face_list_arg(
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_built(out_winged, "out_winged", out_diagnostic, || {
+            let list = face_list_arg(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
-            )?
-        };
-        let policy: BuildPolicy = build_policy(policy)?;
-        let (winged, diagnostic) = Winged::from_face_list(&list, policy)?;
-        // SAFETY: checked non-NULL; writable per the caller.
-        unsafe { hand_over_built(out, hw_winged { winged }, out_diagnostic, diagnostic) };
-        Ok(())
-    })
+            )?;
+            let policy = build_policy(policy)?;
+            let (winged, diagnostic) = with_threads(|| Winged::from_face_list(&list, policy))?;
+            Ok((hw_winged { winged }, diagnostic))
+        })
+    }
 }
 
 /// Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
@@ -254,7 +250,7 @@ pub unsafe extern "C" fn hw_winged_from_indexed_ordered(
             )
         };
         let order: Vec<[u32; 2]> = order.chunks_exact(2).map(|e| [e[0], e[1]]).collect();
-        let winged = Winged::from_face_list_with_edge_order(&list, &order)?;
+        let winged = with_threads(|| Winged::from_face_list_with_edge_order(&list, &order))?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe { out.write(into_handle(hw_winged { winged })) };
         Ok(())
