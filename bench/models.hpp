@@ -8,24 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "halfwing.hpp"
+#include "../c_tests/indexed_mesh.hpp"
 
 namespace bench {
 
-/// An indexed polygon list: x, y, z per vertex; corners per face; vertex index per corner.
-struct IndexedMesh {
-  std::string name;
-  std::vector<double> positions;
-  std::vector<uint32_t> face_sizes;
-  std::vector<uint32_t> indices;
-  std::size_t n_vertices() const { return positions.size() / 3; }
-  std::size_t n_faces() const { return face_sizes.size(); }
-  bool all_triangles() const {
-    for (uint32_t size : face_sizes)
-      if (size != 3) return false;
-    return true;
-  }
-};
+using IndexedMesh = indexed::Mesh;
 
 /// A torus of `rings x segments` quads, each split into two triangles when `triangles`:
 /// closed, genus 1.
@@ -82,23 +69,7 @@ inline IndexedMesh open_grid(uint32_t n) {
 
 /// A model file (OBJ, OFF, PLY) read with hw_soup_read(), named by its file name.
 inline IndexedMesh read_file(const std::string& path) {
-  hw_soup* soup = nullptr;
-  hw::check(hw_soup_read(path.c_str(), &soup));
-  const double* positions = nullptr;
-  const uint32_t *sizes = nullptr, *indices = nullptr;
-  std::size_t n_vertices = 0, n_faces = 0, n_indices = 0;
-  const hw_status viewed =
-      hw_soup_view(soup, &positions, &n_vertices, &sizes, &n_faces, &indices, &n_indices);
-  IndexedMesh m;
-  if (viewed == HW_OK) {
-    m.name = path.substr(path.find_last_of('/') + 1);
-    m.positions.assign(positions, positions + 3 * n_vertices);
-    m.face_sizes.assign(sizes, sizes + n_faces);
-    m.indices.assign(indices, indices + n_indices);
-  }
-  hw_soup_free(soup);
-  hw::check(viewed);
-  return m;
+  return indexed::read(path, path.substr(path.find_last_of('/') + 1));
 }
 
 }  // namespace bench

@@ -5,51 +5,20 @@
 #define HALFWING_C_TESTS_MODELS_HPP
 
 #include <algorithm>
-#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "halfwing.hpp"
+#include "indexed_mesh.hpp"
 
 namespace models {
 
-struct Indexed {
-  std::string name;
-  std::vector<double> positions;
-  std::vector<uint32_t> face_sizes;
-  std::vector<uint32_t> indices;
-  std::size_t n_vertices() const { return positions.size() / 3; }
-  std::size_t n_faces() const { return face_sizes.size(); }
-  /// The corners of face f.
-  std::vector<uint32_t> face(std::size_t f, std::vector<std::size_t>& offsets) const {
-    if (offsets.empty()) {
-      offsets.push_back(0);
-      for (uint32_t size : face_sizes) offsets.push_back(offsets.back() + size);
-    }
-    return {indices.begin() + offsets[f], indices.begin() + offsets[f + 1]};
-  }
-};
+using Indexed = indexed::Mesh;
 
-/// Reads a file with hw_soup_read(); throws hw::error when it cannot be read.
+/// Reads a file with hw_soup_read(), named folder/file; throws hw::error when it cannot be read.
 inline Indexed read(const std::filesystem::path& path) {
-  hw_soup* soup = nullptr;
-  hw::check(hw_soup_read(path.c_str(), &soup));
-  const double* xyz = nullptr;
-  const uint32_t *sizes = nullptr, *corners = nullptr;
-  std::size_t n_vertices = 0, n_faces = 0, n_indices = 0;
-  const hw_status status =
-      hw_soup_view(soup, &xyz, &n_vertices, &sizes, &n_faces, &corners, &n_indices);
-  Indexed m;
-  m.name = path.parent_path().filename().string() + "/" + path.filename().string();
-  if (status == HW_OK) {
-    m.positions.assign(xyz, xyz + 3 * n_vertices);
-    m.face_sizes.assign(sizes, sizes + n_faces);
-    m.indices.assign(corners, corners + n_indices);
-  }
-  hw_soup_free(soup);
-  hw::check(status);
-  return m;
+  return indexed::read(path.string(),
+                       path.parent_path().filename().string() + "/" + path.filename().string());
 }
 
 /// The mesh files of `folder` (relative to the shared data folder), sorted by name.
