@@ -238,8 +238,7 @@ impl Voronoi {
 
     /// An outgoing half-edge of vertex `v`.
     pub fn vertex_edge(&self, v: u32) -> u32 {
-        let vertex_edge = &self.half_edges().vertex_edge;
-        vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+        entry(&self.half_edges().vertex_edge, v)
     }
 
     /// Number of half-edges (twice the number of edges).
@@ -249,8 +248,7 @@ impl Voronoi {
 
     /// Start vertex of `h`, [`INVALID`] when it comes from infinity (or `h` is invalid).
     pub fn origin(&self, h: u32) -> u32 {
-        let origin = &self.half_edges().origin;
-        origin.get(h as usize).copied().unwrap_or(INVALID)
+        entry(&self.half_edges().origin, h)
     }
 
     /// End vertex of `h`, [`INVALID`] when it runs to infinity.
@@ -265,20 +263,17 @@ impl Voronoi {
 
     /// Next half-edge counter-clockwise around the same cell.
     pub fn next(&self, h: u32) -> u32 {
-        let next = &self.half_edges().next;
-        next.get(h as usize).copied().unwrap_or(INVALID)
+        entry(&self.half_edges().next, h)
     }
 
     /// Previous half-edge around the same cell.
     pub fn prev(&self, h: u32) -> u32 {
-        let prev = &self.half_edges().prev;
-        prev.get(h as usize).copied().unwrap_or(INVALID)
+        entry(&self.half_edges().prev, h)
     }
 
     /// The site whose cell `h` bounds (on its left).
     pub fn site(&self, h: u32) -> u32 {
-        let site = &self.half_edges().site;
-        site.get(h as usize).copied().unwrap_or(INVALID)
+        entry(&self.half_edges().site, h)
     }
 
     /// The site across `h`.
@@ -289,11 +284,7 @@ impl Voronoi {
     /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
     /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
     pub fn cell_edge(&self, site: u32) -> u32 {
-        self.half_edges()
-            .cell_edge
-            .get(site as usize)
-            .copied()
-            .unwrap_or(INVALID)
+        entry(&self.half_edges().cell_edge, site)
     }
 
     /// Half-edges of the cell of `site`, counter-clockwise (in-ray first for unbounded cells).
@@ -490,6 +481,11 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
         x = grand;
     }
     x
+}
+
+/// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
+fn entry(array: &[u32], i: u32) -> u32 {
+    array.get(i as usize).copied().unwrap_or(INVALID)
 }
 
 #[cfg(test)]
