@@ -3,18 +3,16 @@
 use super::predicates::incircle;
 use super::*;
 
-/// Deterministic pseudo-random points in the unit square.
+#[path = "../../benches/common/points.rs"]
+mod points;
+
+/// Deterministic pseudo-random points in the unit square (the benchmarks' generator, started one
+/// step further along).
 pub(crate) fn random_points(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut state = seed
+    let start = seed
         .wrapping_mul(6364136223846793005)
         .wrapping_add(1442695040888963407);
-    let mut next = || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
-    (0..n).map(|_| [next(), next()]).collect()
+    points::uniform(n, start)
 }
 
 /// Checks the structure and the exact empty-circle property against every site (small inputs)

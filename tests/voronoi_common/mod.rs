@@ -7,6 +7,9 @@ use halfwing::voronoi::{
 };
 use std::path::Path;
 
+#[path = "../../benches/common/points.rs"]
+mod points;
+
 /// Reads a 2D point file of `data/points2d/` by extension: `.json` (array of `[x, y]`),
 /// `.xy` / `.cin` (one point per line, extra columns ignored), `.node` / `.poly` (Triangle's
 /// vertex section), `boostpoly_*.txt` (count, then points; segments ignored).
@@ -198,14 +201,8 @@ pub fn bounding_clip(points: &[[f64; 2]], margin: f64) -> ClipPolygon {
     .expect("non-degenerate box")
 }
 
-/// Deterministic uniform points in the unit square.
+/// Deterministic uniform points in the unit square (the benchmarks' generator, from a scrambled
+/// seed).
 pub fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-    let mut next = || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
-    (0..n).map(|_| [next(), next()]).collect()
+    points::uniform(n, seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
 }
