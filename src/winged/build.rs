@@ -46,13 +46,12 @@ impl Winged {
             positions,
             mut diagnostic,
         } = walk_faces(list, policy, WingedFaces::walk)?;
-        let (mut w, degenerate_faces) = walked.into_winged(positions);
         // Every corner walks one side of an edge; when they cover both sides of every edge
-        // there is no hole to link, and the pass over all edges is skipped.
-        if 2 * w.edges.len() > table.n_corners() {
+        // there is no hole, and the passes over all edges for holes are skipped.
+        let has_holes = 2 * walked.edges.len() > table.n_corners();
+        let (mut w, degenerate_faces) = walked.into_winged(positions, has_holes);
+        if has_holes {
             w.link_boundary_loops();
-            // Hole sides come first in the vertex edge rule.
-            w.choose_vertex_edges();
         }
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
         diagnostic.isolated_vertices = w
@@ -312,14 +311,21 @@ impl WingedFaces {
         })
     }
 
-    /// The structure of the walked faces over vertices at `positions`, and the degenerate faces.
-    fn into_winged(self, positions: Vec<[f64; 3]>) -> (Winged, Vec<u32>) {
+    /// The structure of the walked faces over vertices at `positions` (its holes not yet linked
+    /// into loops), and the degenerate faces.
+    fn into_winged(self, positions: Vec<[f64; 3]>, has_holes: bool) -> (Winged, Vec<u32>) {
         let WingedFaces {
             edges,
             face_edge,
-            vertex_edges,
+            mut vertex_edges,
             degenerate_faces,
         } = self;
+        if has_holes {
+            // Hole sides come first in the vertex edge rule; ends were offered by the walk.
+            for (e, r) in edges.iter().enumerate() {
+                vertex_edges.offer_holes(e, r);
+            }
+        }
         let (n_faces, n_vertices) = (face_edge.len(), positions.len());
         let n_edges = edges.len();
         let edges = large_arrays::fit(edges, n_edges);
