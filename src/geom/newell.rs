@@ -54,32 +54,45 @@ pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool
 /// passes over triangle meshes.
 #[inline]
 pub fn triangle_area_vector(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
-    let (ab, ac) = (difference(b, a), difference(c, a));
-    [
-        ab[1] * ac[2] - ab[2] * ac[1],
-        ab[2] * ac[0] - ab[0] * ac[2],
-        ab[0] * ac[1] - ab[1] * ac[0],
-    ]
+    cross(difference(b, a), difference(c, a))
 }
 
 /// The area vector of quad `abcd` (as [`newell_vector`], planar or not): the cross product of
 /// its diagonals, which Newell's sums reduce to for four corners.
 #[inline]
 pub fn quad_area_vector(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> [f64; 3] {
-    let (ac, bd) = (difference(c, a), difference(d, b));
-    [
-        ac[1] * bd[2] - ac[2] * bd[1],
-        ac[2] * bd[0] - ac[0] * bd[2],
-        ac[0] * bd[1] - ac[1] * bd[0],
-    ]
+    cross(difference(c, a), difference(d, b))
 }
 
 /// [`is_degenerate_polygon`] for a triangle, from [`triangle_area_vector`]; bulk builds check
 /// every face this way.
+#[inline]
 pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
-    let squared_perimeter =
-        squared_distance(a, b) + squared_distance(a, c) + squared_distance(b, c);
-    is_negligible_area(triangle_area_vector(a, b, c), squared_perimeter)
+    let (ab, ac) = (difference(b, a), difference(c, a));
+    let area_vector = cross(ab, ac);
+    // |bc|² ≤ 2(|ab|² + |ac|²), so the squared perimeter is below four times the two edges'
+    // squares: an area vector that is not negligible against that is not negligible at all.
+    // Almost every face is decided here, without the third edge.
+    let two_edges = squared_length(ab) + squared_length(ac);
+    if !is_negligible_area(area_vector, 4.0 * two_edges) {
+        return false;
+    }
+    is_negligible_area(area_vector, two_edges + squared_distance(b, c))
+}
+
+/// [`is_degenerate_polygon`] for a quad, its area vector from the diagonals (as
+/// [`quad_area_vector`]) against the sum of its squared sides.
+#[inline]
+pub fn is_degenerate_quad(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> bool {
+    let sides = [
+        difference(b, a),
+        difference(c, b),
+        difference(d, c),
+        difference(a, d),
+    ];
+    let squared_perimeter = sides.iter().map(|&side| squared_length(side)).sum();
+    let diagonals = (sum(sides[0], sides[1]), sum(sides[1], sides[2]));
+    is_negligible_area(cross(diagonals.0, diagonals.1), squared_perimeter)
 }
 
 /// `true` when an area vector is rounding noise against the squared perimeter.
@@ -88,6 +101,18 @@ fn is_negligible_area(area_vector: [f64; 3], squared_perimeter: f64) -> bool {
     const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;
     let bound = RELATIVE_TOLERANCE * squared_perimeter;
     squared_length(area_vector) <= bound * bound
+}
+
+fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+    [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ]
+}
+
+fn sum(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
 fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
@@ -137,7 +162,14 @@ mod tests {
     }
 
     #[test]
-    fn triangle_check_agrees_with_the_polygon_check_and_survives_a_far_origin() {
+    fn triangle_and_quad_checks_agree_with_the_polygon_check_and_survive_a_far_origin() {
+        let mid = |p: [f64; 3], q: [f64; 3]| {
+            [
+                0.5 * (p[0] + q[0]),
+                0.5 * (p[1] + q[1]),
+                0.5 * (p[2] + q[2]),
+            ]
+        };
         let triangles = [
             [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]],
             [[1.0, 2.0, 3.0]; 3],
@@ -166,7 +198,18 @@ mod tests {
                 is_degenerate_polygon([a, b, c]),
                 "{a:?} {b:?} {c:?}"
             );
+            // The same triangle with a corner repeated or split along an edge is a quad.
+            for quad in [[a, b, c, c], [a, b, c, a], [a, mid(a, b), b, c]] {
+                let [p, q, r, s] = quad;
+                assert_eq!(
+                    is_degenerate_quad(p, q, r, s),
+                    is_degenerate_polygon(quad),
+                    "{quad:?}"
+                );
+            }
         }
+        assert!(!is_degenerate_quad(a, b, c, d));
+        assert!(is_degenerate_quad(a, b, a, b), "a bowtie folded flat");
         // The tolerance is relative to the triangle's size, not to its distance from the origin.
         let far = |x: f64| [1e6 + x, 1e6 + 2.0 * x, 1e6 + 3.0 * x];
         assert!(is_degenerate_triangle(far(0.0), far(0.25), far(0.5)));

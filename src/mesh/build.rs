@@ -15,8 +15,8 @@
 
 use crate::large_arrays::{filled, fit, zeroed};
 use crate::soup::{
-    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, Walked,
-    face_edges, is_degenerate_face, walk_faces,
+    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor, FaceList, FaceTable,
+    Walked, face_edges, is_degenerate_face, walk_faces,
 };
 
 use super::Mesh;
@@ -91,7 +91,6 @@ impl Mesh {
 /// The half-edge arrays while the faces are walked, sized for one edge per corner (the most
 /// there can be) and trimmed afterwards: pages never written are never touched.
 struct FaceLoops {
-    buckets: EdgeBuckets,
     origin: Vec<u32>,
     next: Vec<u32>,
     prev: Vec<u32>,
@@ -110,12 +109,11 @@ impl FaceLoops {
     /// twice in one direction.
     fn walk(
         table: &FaceTable<'_>,
-        buckets: EdgeBuckets,
+        mut buckets: EdgeBuckets,
         positions: &[[f64; 3]],
     ) -> Option<FaceLoops> {
         let capacity = 2 * table.n_corners();
         let mut loops = FaceLoops {
-            buckets,
             origin: zeroed(capacity),
             next: zeroed(capacity),
             prev: zeroed(capacity),
@@ -125,34 +123,53 @@ impl FaceLoops {
             n_edges: 0,
             degenerate_faces: Vec::new(),
         };
+        let mut writer = LoopWriter {
+            edges: buckets.visitor(),
+            origin: loops.origin.as_chunks_mut().0,
+            face: loops.face.as_chunks_mut().0,
+            next: &mut loops.next,
+            prev: &mut loops.prev,
+            vertex_halfedge: &mut loops.vertex_halfedge,
+            n_edges: 0,
+        };
         let mut polygon = Vec::new();
-        for f in 0..table.n_faces() {
-            let (corners, f32) = (table.face(f), f as u32);
+        let faces = table.faces().zip(&mut loops.face_halfedge);
+        for (f, (corners, face_halfedge)) in faces.enumerate() {
+            let f32 = f as u32;
             // Before the topology: the position loads overlap the walk's bucket misses.
             if is_degenerate_face(corners, positions) {
                 loops.degenerate_faces.push(table.input_face(f));
             }
-            loops.face_halfedge[f] = match *corners {
-                // Triangles and quads, the usual faces, with their loops in registers (the
-                // triangle written out: measurably faster than the generic loop).
+            *face_halfedge = match *corners {
+                // Triangles and quads, the usual faces, written out with their loops in
+                // registers: measurably faster than the generic loop.
                 [a, b, c] => {
                     let triangle = [
-                        loops.corner(a, b, f32)?,
-                        loops.corner(b, c, f32)?,
-                        loops.corner(c, a, f32)?,
+                        writer.corner(a, b, f32)?,
+                        writer.corner(b, c, f32)?,
+                        writer.corner(c, a, f32)?,
                     ];
-                    loops.close_face(triangle)
+                    writer.close_face(triangle)
                 }
-                [a, b, c, d] => loops.fixed_face([a, b, c, d], f32)?,
+                [a, b, c, d] => {
+                    let quad = [
+                        writer.corner(a, b, f32)?,
+                        writer.corner(b, c, f32)?,
+                        writer.corner(c, d, f32)?,
+                        writer.corner(d, a, f32)?,
+                    ];
+                    writer.close_face(quad)
+                }
                 _ => {
                     polygon.clear();
                     for (a, b) in face_edges(corners) {
-                        polygon.push(loops.corner(a, b, f32)?);
+                        polygon.push(writer.corner(a, b, f32)?);
                     }
-                    loops.close_face(&polygon)
+                    writer.close_face(&polygon)
                 }
             };
         }
+        loops.n_edges = writer.n_edges;
         Some(loops)
     }
 
@@ -195,7 +212,21 @@ impl FaceLoops {
         diagnostic.degenerate_faces = self.degenerate_faces;
         (mesh, diagnostic)
     }
+}
 
+/// The walk's view of [`FaceLoops`]' arrays and the edge buckets: slices on the walk's stack,
+/// so their addresses and lengths stay in registers; origins and faces by edge, as pairs.
+struct LoopWriter<'a> {
+    edges: EdgeVisitor<'a>,
+    origin: &'a mut [[u32; 2]],
+    face: &'a mut [[u32; 2]],
+    next: &'a mut [u32],
+    prev: &'a mut [u32],
+    vertex_halfedge: &'a mut [u32],
+    n_edges: u32,
+}
+
+impl LoopWriter<'_> {
     /// The half-edge of the corner of face `f` running `a → b`: a new edge's first half-edge,
     /// or the twin of the edge's first corner when that ran `b → a`. `None` when the edge was
     /// walked this way already or by two faces. (Edge ids stay below the corner count, at most
@@ -203,35 +234,26 @@ impl FaceLoops {
     // Inlined into the walk: it is the whole per-corner work.
     #[inline(always)]
     fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
-        let h = match self.buckets.visit(a, b, self.n_edges) {
+        let h = match self.edges.visit(a, b, self.n_edges) {
             EdgeVisit::Opened => {
-                let h = 2 * self.n_edges;
+                let e = self.n_edges;
                 self.n_edges += 1;
-                self.origin[h as usize] = a;
-                self.origin[h as usize + 1] = b;
-                self.face[h as usize + 1] = INVALID_INDEX;
-                h
+                self.origin[e as usize] = [a, b];
+                self.face[e as usize] = [f, INVALID_INDEX];
+                2 * e
             }
-            EdgeVisit::Paired(e) => 2 * e + 1,
+            EdgeVisit::Paired(e) => {
+                self.face[e as usize][1] = f;
+                2 * e + 1
+            }
             EdgeVisit::Defective => return None,
         };
-        self.face[h as usize] = f;
         self.vertex_halfedge[a as usize] = h;
         Some(h)
     }
 
-    /// The loop of a face of `N` corners; returns its first half-edge.
-    #[inline(always)]
-    fn fixed_face<const N: usize>(&mut self, corners: [u32; N], f: u32) -> Option<u32> {
-        let mut halfedges = [0; N];
-        for i in 0..N {
-            halfedges[i] = self.corner(corners[i], corners[(i + 1) % N], f)?;
-        }
-        Some(self.close_face(halfedges))
-    }
-
     /// Links a face's half-edges (in corner order) into its loop; returns the first.
-    #[inline]
+    #[inline(always)]
     fn close_face(&mut self, halfedges: impl AsRef<[u32]>) -> u32 {
         let halfedges = halfedges.as_ref();
         let mut previous = halfedges[halfedges.len() - 1];

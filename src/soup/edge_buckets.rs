@@ -58,23 +58,35 @@ impl EdgeBuckets {
         // Branch-free counting: whether a corner runs forward is a coin toss on models whose
         // vertex order is not face-coherent.
         let mut count = |a: u32, b: u32| start[a as usize + 1] += u32::from(a < b);
-        for f in 0..table.n_faces() {
-            let face = table.face(f);
+        for face in table.faces() {
             if !is_well_formed(face, n_vertices, &mut scratch) {
                 return None;
             }
-            if let [a, b, c] = *face {
-                count(a, b);
-                count(b, c);
-                count(c, a);
-            } else {
-                for (a, b) in face_edges(face) {
+            match *face {
+                [a, b, c] => {
                     count(a, b);
+                    count(b, c);
+                    count(c, a);
+                }
+                [a, b, c, d] => {
+                    count(a, b);
+                    count(b, c);
+                    count(c, d);
+                    count(d, a);
+                }
+                _ => {
+                    for (a, b) in face_edges(face) {
+                        count(a, b);
+                    }
                 }
             }
         }
-        for v in 0..n_vertices {
-            start[v + 1] += start[v];
+        // The running total stays in a register: reading back each sum just stored would wait
+        // on the store every step.
+        let mut total = 0;
+        for room in &mut start {
+            total += *room;
+            *room = total;
         }
         let slots = zeroed(start[n_vertices] as usize);
         Some(EdgeBuckets {
@@ -84,6 +96,33 @@ impl EdgeBuckets {
         })
     }
 
+    /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
+    #[inline]
+    pub(crate) fn visitor(&mut self) -> EdgeVisitor<'_> {
+        EdgeVisitor {
+            start: &self.start,
+            slots: &mut self.slots,
+            spill: &mut self.spill,
+        }
+    }
+
+    /// [`EdgeVisitor::visit`], for callers that visit a few edges at a time.
+    #[inline]
+    pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
+        self.visitor().visit(a, b, value)
+    }
+}
+
+/// The buckets' arrays borrowed for a walk. A walk keeps this on its stack, so the arrays'
+/// addresses and lengths stay in registers across the walk's own stores (read through
+/// [`EdgeBuckets`] itself they are reloaded after every store the compiler cannot tell apart).
+pub(crate) struct EdgeVisitor<'b> {
+    start: &'b [u32],
+    slots: &'b mut [u64],
+    spill: &'b mut HashMap<u64, u64>,
+}
+
+impl EdgeVisitor<'_> {
     /// Meets the edge of a corner running `a → b` (`a != b`) with `value` (at most
     /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
     #[inline(always)]
@@ -91,8 +130,8 @@ impl EdgeBuckets {
         debug_assert!(value <= MAX_EDGE_VALUE && a != b);
         let (low, high, forward) = if a < b { (a, b, FORWARD) } else { (b, a, 0) };
         let opened = (u64::from(high) << 32) | forward | u64::from(value);
-        let bucket = &mut self.slots
-            [self.start[low as usize] as usize..self.start[low as usize + 1] as usize];
+        let room = &self.start[low as usize..low as usize + 2];
+        let bucket = &mut self.slots[room[0] as usize..room[1] as usize];
         for slot in bucket {
             if *slot == 0 {
                 *slot = opened;
@@ -102,20 +141,20 @@ impl EdgeBuckets {
                 return pair(slot, forward);
             }
         }
-        self.visit_spilled(edge_key(low, high), opened)
+        visit_spilled(self.spill, edge_key(low, high), opened)
     }
+}
 
-    #[cold]
-    #[inline(never)]
-    fn visit_spilled(&mut self, key: u64, opened: u64) -> EdgeVisit {
-        match self.spill.entry(key) {
-            std::collections::hash_map::Entry::Vacant(vacant) => {
-                vacant.insert(opened);
-                EdgeVisit::Opened
-            }
-            std::collections::hash_map::Entry::Occupied(mut occupied) => {
-                pair(occupied.get_mut(), opened & FORWARD)
-            }
+#[cold]
+#[inline(never)]
+fn visit_spilled(spill: &mut HashMap<u64, u64>, key: u64, opened: u64) -> EdgeVisit {
+    match spill.entry(key) {
+        std::collections::hash_map::Entry::Vacant(vacant) => {
+            vacant.insert(opened);
+            EdgeVisit::Opened
+        }
+        std::collections::hash_map::Entry::Occupied(mut occupied) => {
+            pair(occupied.get_mut(), opened & FORWARD)
         }
     }
 }

@@ -21,11 +21,11 @@ mod umbrellas;
 
 pub(crate) use degenerate::is_degenerate_face;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
-pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit};
+pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Walked, walk_faces};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
 pub use resolve::{Resolved, resolve};
 pub(crate) use table::face_edges;
-pub use table::{FaceDefects, FaceTable, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};
+pub use table::{FaceDefects, FaceTable, Faces, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};

@@ -163,6 +163,21 @@ impl<'a> FaceTable<'a> {
         &self.corners[self.face_range(f)]
     }
 
+    /// The vertex indices of every face, in order: the builders' walks go through here, and a
+    /// uniform face size walks the corner array in fixed steps (no offsets, no bounds checks).
+    #[inline]
+    pub fn faces(&self) -> Faces<'_> {
+        match &self.layout {
+            Layout::Uniform { size, .. } => {
+                Faces::Uniform(self.corners.chunks_exact(*size as usize))
+            }
+            Layout::Offsets(offsets) => Faces::Offsets {
+                corners: &self.corners,
+                offsets: offsets.windows(2),
+            },
+        }
+    }
+
     /// The input face index of table face `f`.
     #[inline]
     pub fn input_face(&self, f: usize) -> u32 {
@@ -294,6 +309,39 @@ impl<'a> FaceTable<'a> {
             }
         }
         defects
+    }
+}
+
+/// The faces of a table in order, as slices of its corner array (see [`FaceTable::faces`]).
+pub enum Faces<'t> {
+    /// Every face has the same size.
+    Uniform(std::slice::ChunksExact<'t, u32>),
+    /// Faces between consecutive offsets.
+    Offsets {
+        corners: &'t [u32],
+        offsets: std::slice::Windows<'t, u32>,
+    },
+}
+
+impl<'t> Iterator for Faces<'t> {
+    type Item = &'t [u32];
+
+    #[inline]
+    fn next(&mut self) -> Option<&'t [u32]> {
+        match self {
+            Faces::Uniform(chunks) => chunks.next(),
+            Faces::Offsets { corners, offsets } => offsets
+                .next()
+                .map(|range| &corners[range[0] as usize..range[1] as usize]),
+        }
+    }
+
+    #[inline]
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        match self {
+            Faces::Uniform(chunks) => chunks.size_hint(),
+            Faces::Offsets { offsets, .. } => offsets.size_hint(),
+        }
     }
 }
 

@@ -260,8 +260,9 @@ impl WingedFaces {
         let mut loop_edges: Vec<EdgeId> = Vec::new();
         let mut degenerate_faces = Vec::new();
         let mut vertex_edges = VertexEdgeChoice::new(positions.len());
-        for f in 0..table.n_faces() {
-            let (corners, face) = (table.face(f), FaceId(f as u32));
+        let mut buckets = buckets.visitor();
+        for (f, corners) in table.faces().enumerate() {
+            let face = FaceId(f as u32);
             if is_degenerate_face(corners, positions) {
                 degenerate_faces.push(table.input_face(f));
             }
