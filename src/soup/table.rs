@@ -411,27 +411,44 @@ pub(crate) fn has_repeated_vertex(face: &[u32], scratch: &mut Vec<u32>) -> bool 
 
 /// Vertices with a NaN or infinite coordinate, ascending.
 pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
-    let is_bad = |p: &[f64; 3]| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite());
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
-        positions
-            .par_iter()
-            .with_min_len(1 << 16)
-            .enumerate()
-            .filter(|(_, p)| is_bad(p))
-            .map(|(v, _)| v as u32)
-            .collect()
+        const PART: usize = 1 << 16;
+        if positions.len() > PART {
+            return positions
+                .par_chunks(PART)
+                .enumerate()
+                .flat_map_iter(|(i, part)| non_finite_in(i * PART, part))
+                .collect();
+        }
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        positions
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| is_bad(p))
-            .map(|(v, _)| v as u32)
-            .collect()
+    non_finite_in(0, positions)
+}
+
+/// [`non_finite_vertices`] of the vertices `first..` at `positions`. Every run of vertices is
+/// tested as a whole first, branch-free (so the test runs packed): nearly all of them are clean,
+/// and only a run with a bad coordinate is searched vertex by vertex.
+fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
+    const RUN: usize = 256;
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    let is_bad = |p: &[f64; 3]| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite());
+    let mut bad = Vec::new();
+    for (r, run) in positions.chunks(RUN).enumerate() {
+        // All exponent bits set: infinite or NaN.
+        let any_bad = run.iter().flatten().fold(0, |any, x| {
+            any | u64::from(x.to_bits() & EXPONENT == EXPONENT)
+        });
+        if any_bad != 0 {
+            let start = first + r * RUN;
+            bad.extend(
+                (0..run.len())
+                    .filter(|&i| is_bad(&run[i]))
+                    .map(|i| (start + i) as u32),
+            );
+        }
     }
+    bad
 }
 
 #[cfg(test)]
@@ -525,5 +542,12 @@ mod tests {
     fn non_finite_coordinates_are_found() {
         let positions = [[0.0; 3], [f64::NAN, 0.0, 0.0], [0.0, f64::INFINITY, 0.0]];
         assert_eq!(non_finite_vertices(&positions), vec![1, 2]);
+        // Across runs and parallel parts, in order; huge and subnormal values are finite.
+        let mut many = vec![[f64::MAX, -f64::MIN_POSITIVE * 0.5, 1.0]; 200_000];
+        let bad: [u32; 7] = [0, 255, 256, 65_535, 65_536, 131_073, 199_999];
+        for (k, &v) in bad.iter().enumerate() {
+            many[v as usize][k % 3] = [f64::NAN, f64::NEG_INFINITY, f64::INFINITY][k % 3];
+        }
+        assert_eq!(non_finite_vertices(&many), bad);
     }
 }
