@@ -15,8 +15,8 @@
 
 use crate::large_arrays::{filled, fit, zeroed};
 use crate::soup::{
-    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor, FaceList, FaceTable,
-    Walked, face_edges, is_degenerate_face, walk_faces,
+    BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
+    FaceList, FaceTable, Walked, face_edges, walk_faces,
 };
 
 use super::Mesh;
@@ -98,19 +98,17 @@ struct FaceLoops {
     vertex_halfedge: Vec<u32>,
     face_halfedge: Vec<u32>,
     n_edges: u32,
-    /// Input indices of the faces of negligible area: the walk reads every face's corners
-    /// anyway, and checking the geometry there costs less than a pass of its own.
-    degenerate_faces: Vec<u32>,
 }
 
 impl FaceLoops {
     /// The connectivity walk (see the module documentation) over a well-formed table whose
-    /// vertices are at `positions`. `None` when an edge is walked by more than two faces or
-    /// twice in one direction.
+    /// vertices are at `positions`, checking each face's area into `degenerate` when given.
+    /// `None` when an edge is walked by more than two faces or twice in one direction.
     fn walk(
         table: &FaceTable<'_>,
         mut buckets: EdgeBuckets,
         positions: &[[f64; 3]],
+        mut degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<FaceLoops> {
         let capacity = 2 * table.n_corners();
         let mut loops = FaceLoops {
@@ -121,15 +119,17 @@ impl FaceLoops {
             vertex_halfedge: filled(positions.len(), INVALID_INDEX),
             face_halfedge: zeroed(table.n_faces()),
             n_edges: 0,
-            degenerate_faces: Vec::new(),
         };
+        // Every array cut to one of two lengths the compiler can see are shared, so the walk's
+        // bounds checks need two registers, not one per array.
+        let (n_edges, n_vertices) = (capacity / 2, positions.len());
         let mut writer = LoopWriter {
             edges: buckets.visitor(),
-            origin: loops.origin.as_chunks_mut().0,
-            face: loops.face.as_chunks_mut().0,
-            next: &mut loops.next,
-            prev: &mut loops.prev,
-            vertex_halfedge: &mut loops.vertex_halfedge,
+            origin: &mut loops.origin.as_chunks_mut().0[..n_edges],
+            face: &mut loops.face.as_chunks_mut().0[..n_edges],
+            next: &mut loops.next[..2 * n_edges],
+            prev: &mut loops.prev[..2 * n_edges],
+            vertex_halfedge: &mut loops.vertex_halfedge[..n_vertices],
             n_edges: 0,
         };
         let mut polygon = Vec::new();
@@ -137,8 +137,8 @@ impl FaceLoops {
         for (f, (corners, face_halfedge)) in faces.enumerate() {
             let f32 = f as u32;
             // Before the topology: the position loads overlap the walk's bucket misses.
-            if is_degenerate_face(corners, positions) {
-                loops.degenerate_faces.push(table.input_face(f));
+            if let Some(degenerate) = degenerate.as_deref_mut() {
+                degenerate.check(table, f, corners);
             }
             *face_halfedge = match *corners {
                 // Triangles and quads, the usual faces, written out with their loops in
@@ -174,7 +174,7 @@ impl FaceLoops {
     }
 
     /// The mesh of the walked faces of `table`, with boundary loops, and `diagnostic` completed
-    /// with what the mesh shows: non-manifold and isolated vertices, degenerate faces.
+    /// with what the mesh shows: non-manifold and isolated vertices.
     fn into_mesh(
         self,
         table: &FaceTable<'_>,
@@ -209,7 +209,6 @@ impl FaceLoops {
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         diagnostic.isolated_vertices = mesh.isolated_vertices();
-        diagnostic.degenerate_faces = self.degenerate_faces;
         (mesh, diagnostic)
     }
 }

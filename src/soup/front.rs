@@ -6,11 +6,12 @@ use std::borrow::Cow;
 use super::edge_buckets::EdgeBuckets;
 use super::resolve::resolve;
 use super::table::{MAX_VERTICES, non_finite_vertices};
-use super::{BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable};
+use super::{BuildError, BuildPolicy, DegenerateFaces, Diagnostic, FaceList, FaceTable};
 use crate::large_arrays;
 
 /// What a builder's walk made, with the table it walked, the positions of its vertices (the
-/// input's, then those of repair's copies) and the diagnostic so far.
+/// input's, then those of repair's copies) and the diagnostic so far (degenerate faces
+/// included).
 pub(crate) struct Walked<'a, T> {
     pub(crate) walked: T,
     pub(crate) table: FaceTable<'a>,
@@ -18,31 +19,51 @@ pub(crate) struct Walked<'a, T> {
     pub(crate) diagnostic: Diagnostic,
 }
 
-/// Runs `walk(table, buckets, positions)` — which meets every corner's edge in the buckets and
-/// gives `None` on an edge defect — directly on well-formed input, else on the table [`resolve`]
-/// makes under `policy` (where it cannot meet a defect).
+/// Runs `walk(table, buckets, positions, degenerate)` — which meets every corner's edge in the
+/// buckets, checks each face into `degenerate` when given one, and gives `None` on an edge
+/// defect — directly on well-formed input, else on the table [`resolve`] makes under `policy`
+/// (where it cannot meet a defect).
 pub(crate) fn walk_faces<'a, T: Send>(
     list: &FaceList<'a>,
     policy: BuildPolicy,
-    walk: impl Fn(&FaceTable<'_>, EdgeBuckets, &[[f64; 3]]) -> Option<T> + Sync,
+    walk: impl Fn(
+        &FaceTable<'_>,
+        EdgeBuckets,
+        &[[f64; 3]],
+        Option<&mut DegenerateFaces<'_>>,
+    ) -> Option<T>
+    + Sync,
 ) -> Result<Walked<'a, T>, BuildError> {
     if let Some((table, buckets)) = well_formed_edges(list) {
-        // The structure's copy of the positions and their check need nothing from the walk:
-        // with two threads they are made beside it; with one, first, so that the walk finds
-        // the positions in cache.
-        let ((positions, non_finite_vertices), walked) = join(
-            || {
-                let copy = large_arrays::copied(list.positions);
-                (copy, non_finite_vertices(list.positions))
-            },
-            || walk(&table, buckets, list.positions),
-        );
+        // The structure's copy of the positions and their checks need nothing from the walk.
+        // With two threads they are made beside it, the degenerate faces too; with one, first
+        // (so that the walk finds the positions in cache), and the walk checks each face's
+        // area as it reads the face anyway.
+        let beside = thread_count() > 1;
+        let ((positions, non_finite_vertices, degenerate_beside), (walked, degenerate_in_walk)) =
+            join(
+                || {
+                    let copy = large_arrays::copied(list.positions);
+                    let degenerate =
+                        beside.then(|| DegenerateFaces::of_table(&table, list.positions));
+                    (copy, non_finite_vertices(list.positions), degenerate)
+                },
+                || {
+                    let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
+                    let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
+                    (walked, degenerate)
+                },
+            );
         // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
         if let Some(walked) = walked
             && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
         {
+            let degenerate_faces = degenerate_beside
+                .or(degenerate_in_walk.map(DegenerateFaces::into_faces))
+                .unwrap_or_default();
             let diagnostic = Diagnostic {
                 non_finite_vertices,
+                degenerate_faces,
                 ..Diagnostic::default()
             };
             return Ok(Walked {
@@ -56,8 +77,16 @@ pub(crate) fn walk_faces<'a, T: Send>(
     let resolved = resolve(list, policy)?;
     let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
         .expect("a resolved face table is well formed");
-    let walked = walk(&resolved.table, buckets, &resolved.positions)
-        .expect("a resolved face table has no edge defects");
+    let mut degenerate = DegenerateFaces::new(&resolved.positions);
+    let walked = walk(
+        &resolved.table,
+        buckets,
+        &resolved.positions,
+        Some(&mut degenerate),
+    )
+    .expect("a resolved face table has no edge defects");
+    let mut diagnostic = resolved.diagnostic;
+    diagnostic.degenerate_faces = degenerate.into_faces();
     let positions = match resolved.positions {
         Cow::Borrowed(input) => large_arrays::copied(input),
         Cow::Owned(repaired) => repaired,
@@ -66,7 +95,7 @@ pub(crate) fn walk_faces<'a, T: Send>(
         walked,
         table: resolved.table,
         positions,
-        diagnostic: resolved.diagnostic,
+        diagnostic,
     })
 }
 
@@ -82,6 +111,18 @@ fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuck
     let table = FaceTable::new(list).ok()?;
     let buckets = EdgeBuckets::new(&table, n_vertices)?;
     Some((table, buckets))
+}
+
+/// Threads of the pool the build runs in (1 without the `parallel` feature).
+fn thread_count() -> usize {
+    #[cfg(feature = "parallel")]
+    {
+        rayon::current_num_threads()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        1
+    }
 }
 
 /// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.

@@ -19,7 +19,7 @@ mod resolve;
 mod table;
 mod umbrellas;
 
-pub(crate) use degenerate::is_degenerate_face;
+pub(crate) use degenerate::DegenerateFaces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};

@@ -17,8 +17,8 @@ use super::record::EdgeRecord;
 use super::structure::Winged;
 use crate::large_arrays;
 use crate::soup::{
-    BuildError, BuildPolicy, Diagnostic, EdgeBuckets, EdgeVisit, FaceList, FaceTable, Walked,
-    face_edges, is_degenerate_face, walk_faces,
+    BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, FaceList,
+    FaceTable, Walked, face_edges, walk_faces,
 };
 
 impl Winged {
@@ -49,7 +49,7 @@ impl Winged {
         // Every corner walks one side of an edge; when they cover both sides of every edge
         // there is no hole, and the passes over all edges for holes are skipped.
         let has_holes = 2 * walked.edges.len() > table.n_corners();
-        let (mut w, degenerate_faces) = walked.into_winged(positions, has_holes);
+        let mut w = walked.into_winged(positions, has_holes);
         if has_holes {
             w.link_boundary_loops();
         }
@@ -61,7 +61,6 @@ impl Winged {
             .filter(|(_, e)| !e.is_valid())
             .map(|(v, _)| v as u32)
             .collect();
-        diagnostic.degenerate_faces = degenerate_faces;
         Ok((w, diagnostic))
     }
 
@@ -241,30 +240,29 @@ struct WingedFaces {
     /// The vertex edges by start and end, offered as the edges are made (holes are known only
     /// after the walk).
     vertex_edges: VertexEdgeChoice,
-    /// Input indices of the faces of negligible area, checked on the way.
-    degenerate_faces: Vec<u32>,
 }
 
 impl WingedFaces {
     /// The slide's loop: creates the edge records in its order and fills faces and wings of the
-    /// face sides, in one pass over the faces, each corner meeting its edge in `buckets`. `None`
-    /// on an edge defect (see [`EdgeVisit::Defective`]).
+    /// face sides, in one pass over the faces, each corner meeting its edge in `buckets`, each
+    /// face's area checked into `degenerate` when given. `None` on an edge defect (see
+    /// [`EdgeVisit::Defective`]).
     fn walk(
         table: &FaceTable<'_>,
         mut buckets: EdgeBuckets,
         positions: &[[f64; 3]],
+        mut degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<WingedFaces> {
         // At most one edge per corner; fitted to the count afterwards.
         let mut edges: Vec<EdgeRecord> = large_arrays::with_capacity(table.n_corners());
         let mut face_edge = large_arrays::with_capacity(table.n_faces());
         let mut loop_edges: Vec<EdgeId> = Vec::new();
-        let mut degenerate_faces = Vec::new();
         let mut vertex_edges = VertexEdgeChoice::new(positions.len());
         let mut buckets = buckets.visitor();
         for (f, corners) in table.faces().enumerate() {
             let face = FaceId(f as u32);
-            if is_degenerate_face(corners, positions) {
-                degenerate_faces.push(table.input_face(f));
+            if let Some(degenerate) = degenerate.as_deref_mut() {
+                degenerate.check(table, f, corners);
             }
             loop_edges.clear();
             for (a, b) in face_edges(corners) {
@@ -308,18 +306,16 @@ impl WingedFaces {
             edges,
             face_edge,
             vertex_edges,
-            degenerate_faces,
         })
     }
 
     /// The structure of the walked faces over vertices at `positions` (its holes not yet linked
-    /// into loops), and the degenerate faces.
-    fn into_winged(self, positions: Vec<[f64; 3]>, has_holes: bool) -> (Winged, Vec<u32>) {
+    /// into loops).
+    fn into_winged(self, positions: Vec<[f64; 3]>, has_holes: bool) -> Winged {
         let WingedFaces {
             edges,
             face_edge,
             mut vertex_edges,
-            degenerate_faces,
         } = self;
         if has_holes {
             // Hole sides come first in the vertex edge rule; ends were offered by the walk.
@@ -331,7 +327,7 @@ impl WingedFaces {
         let n_edges = edges.len();
         let edges = large_arrays::fit(edges, n_edges);
         let face_edge = large_arrays::fit(face_edge, n_faces);
-        let winged = Winged {
+        Winged {
             positions,
             vertex_edge: vertex_edges.chosen,
             vertex_alive: vec![true; n_vertices],
@@ -342,7 +338,6 @@ impl WingedFaces {
             n_live_faces: n_faces as u32,
             edges,
             point_faces: Vec::new(),
-        };
-        (winged, degenerate_faces)
+        }
     }
 }
