@@ -34,26 +34,27 @@ pub(crate) fn walk_faces<'a, T: Send>(
     ) -> Option<T>
     + Sync,
 ) -> Result<Walked<'a, T>, BuildError> {
-    if let Some((table, buckets)) = well_formed_edges(list) {
-        // The structure's copy of the positions and their checks need nothing from the walk.
-        // With two threads they are made beside it, the degenerate faces too; with one, first
-        // (so that the walk finds the positions in cache), and the walk checks each face's
-        // area as it reads the face anyway.
-        let beside = thread_count() > 1;
-        let ((positions, non_finite_vertices, degenerate_beside), (walked, degenerate_in_walk)) =
-            join(
-                || {
-                    let copy = large_arrays::copied(list.positions);
-                    let degenerate =
-                        beside.then(|| DegenerateFaces::of_table(&table, list.positions));
-                    (copy, non_finite_vertices(list.positions), degenerate)
-                },
-                || {
-                    let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
-                    let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
-                    (walked, degenerate)
-                },
-            );
+    // The structure's copy of the positions and their check need nothing from the faces: with
+    // two threads they are made beside the bucket count, and the degenerate faces are found
+    // beside the walk; with one, all runs in turn (the copy just before the walk, which then
+    // finds the positions in cache), and the walk checks each face's area as it reads it.
+    let beside = thread_count() > 1;
+    let (edges, (positions, non_finite_vertices)) = join(
+        || well_formed_edges(list),
+        || {
+            let copy = large_arrays::copied(list.positions);
+            (copy, non_finite_vertices(list.positions))
+        },
+    );
+    if let Some((table, buckets)) = edges {
+        let (degenerate_beside, (walked, degenerate_in_walk)) = join(
+            || beside.then(|| DegenerateFaces::of_table(&table, list.positions)),
+            || {
+                let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
+                let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
+                (walked, degenerate)
+            },
+        );
         // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
         if let Some(walked) = walked
             && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
@@ -88,7 +89,8 @@ pub(crate) fn walk_faces<'a, T: Send>(
     let mut diagnostic = resolved.diagnostic;
     diagnostic.degenerate_faces = degenerate.into_faces();
     let positions = match resolved.positions {
-        Cow::Borrowed(input) => large_arrays::copied(input),
+        // The input's positions, copied already.
+        Cow::Borrowed(_) => positions,
         Cow::Owned(repaired) => repaired,
     };
     Ok(Walked {
