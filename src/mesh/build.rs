@@ -5,9 +5,9 @@
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
 //! twin. Each face's loop is written as soon as its corners are known, so half-edges are numbered
 //! in corner order and each face's half-edges sit close together in memory; the face's area is
-//! checked on the way (degenerate faces are reported). Boundary half-edges are then linked into
-//! loops through each vertex's outgoing boundary half-edge (walking the fan only at vertices with
-//! several boundary gaps).
+//! checked on the way, or beside the walk when a second thread is free (degenerate faces are
+//! reported). Boundary half-edges are then linked into loops through each vertex's outgoing
+//! boundary half-edge (walking the fan only at vertices with several boundary gaps).
 //!
 //! Well-formed input (no face a policy has to act on) is built directly, and the walk itself
 //! finds edge defects; only input that needs a decision goes through
