@@ -34,46 +34,53 @@ pub(crate) fn walk_faces<'a, T: Send>(
     ) -> Option<T>
     + Sync,
 ) -> Result<Walked<'a, T>, BuildError> {
-    // The structure's copy of the positions and their check need nothing from the faces: with
-    // two threads they are made beside the bucket count, and the degenerate faces are found
-    // beside the walk; with one, all runs in turn (the copy just before the walk, which then
-    // finds the positions in cache), and the walk checks each face's area as it reads it.
-    let beside = thread_count() > 1;
-    let (edges, (positions, non_finite_vertices)) = join(
-        || well_formed_edges(list),
-        || {
-            let copy = large_arrays::copied(list.positions);
-            (copy, non_finite_vertices(list.positions))
-        },
-    );
-    if let Some((table, buckets)) = edges {
-        let (degenerate_beside, (walked, degenerate_in_walk)) = join(
-            || beside.then(|| DegenerateFaces::of_table(&table, list.positions)),
+    let mut input_copy = None;
+    // Lists with more vertices than ids are left to resolve to refuse, before anything the size
+    // of the input is allocated.
+    if list.positions.len() as u64 <= MAX_VERTICES {
+        // The structure's copy of the positions and their check need nothing from the faces:
+        // with two threads they are made beside the bucket count, and the degenerate faces are
+        // found beside the walk; with one, all runs in turn (the copy just before the walk,
+        // which then finds the positions in cache), and the walk checks each face's area as it
+        // reads it.
+        let beside = thread_count() > 1;
+        let (edges, (positions, non_finite_vertices)) = join(
+            || well_formed_edges(list),
             || {
-                let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
-                let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
-                (walked, degenerate)
+                let copy = large_arrays::copied(list.positions);
+                (copy, non_finite_vertices(list.positions))
             },
         );
-        // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
-        if let Some(walked) = walked
-            && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
-        {
-            let degenerate_faces = degenerate_beside
-                .or(degenerate_in_walk.map(DegenerateFaces::into_faces))
-                .unwrap_or_default();
-            let diagnostic = Diagnostic {
-                non_finite_vertices,
-                degenerate_faces,
-                ..Diagnostic::default()
-            };
-            return Ok(Walked {
-                walked,
-                table,
-                positions,
-                diagnostic,
-            });
+        if let Some((table, buckets)) = edges {
+            let (degenerate_beside, (walked, degenerate_in_walk)) = join(
+                || beside.then(|| DegenerateFaces::of_table(&table, list.positions)),
+                || {
+                    let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
+                    let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
+                    (walked, degenerate)
+                },
+            );
+            // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
+            if let Some(walked) = walked
+                && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
+            {
+                let degenerate_faces = degenerate_beside
+                    .or(degenerate_in_walk.map(DegenerateFaces::into_faces))
+                    .unwrap_or_default();
+                let diagnostic = Diagnostic {
+                    non_finite_vertices,
+                    degenerate_faces,
+                    ..Diagnostic::default()
+                };
+                return Ok(Walked {
+                    walked,
+                    table,
+                    positions,
+                    diagnostic,
+                });
+            }
         }
+        input_copy = Some(positions);
     }
     let resolved = resolve(list, policy)?;
     let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
@@ -89,8 +96,7 @@ pub(crate) fn walk_faces<'a, T: Send>(
     let mut diagnostic = resolved.diagnostic;
     diagnostic.degenerate_faces = degenerate.into_faces();
     let positions = match resolved.positions {
-        // The input's positions, copied already.
-        Cow::Borrowed(_) => positions,
+        Cow::Borrowed(input) => input_copy.unwrap_or_else(|| large_arrays::copied(input)),
         Cow::Owned(repaired) => repaired,
     };
     Ok(Walked {
@@ -107,9 +113,6 @@ pub(crate) fn walk_faces<'a, T: Send>(
 /// coordinates and edge defects are theirs to find on it).
 fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
     let n_vertices = list.positions.len();
-    if n_vertices as u64 > MAX_VERTICES {
-        return None;
-    }
     let table = FaceTable::new(list).ok()?;
     let buckets = EdgeBuckets::new(&table, n_vertices)?;
     Some((table, buckets))
