@@ -121,7 +121,7 @@ impl Voronoi {
         };
         let unscale = d.scale.recip();
         // A few long runs: enough to share the work among threads, few edges between runs.
-        let run_len = n_tri.div_ceil(8).max(1 << 14);
+        let run_len = n_tri.div_ceil(8).max(1 << 15);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
         let runs = map_each(
             centres.chunks_mut(run_len).collect(),

@@ -21,26 +21,24 @@ pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + S
 
 /// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
 /// feature is on; results in order. Serves passes over a few long runs of elements (slices,
-/// shared or mutable, that the caller splits off), one task per run.
+/// shared or mutable, that the caller splits off), one task per run. A single run is done on the
+/// calling thread: handing it to the pool and waiting for it would only add the round trip.
 pub(crate) fn map_each<I: Send, R: Send>(
     items: Vec<I>,
     f: impl Fn(usize, I) -> R + Sync + Send,
 ) -> Vec<R> {
     #[cfg(feature = "parallel")]
-    {
+    if items.len() > 1 {
         use rayon::prelude::*;
-        items
+        return items
             .into_par_iter()
             .enumerate()
             .map(|(k, item)| f(k, item))
-            .collect()
+            .collect();
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        items
-            .into_iter()
-            .enumerate()
-            .map(|(k, item)| f(k, item))
-            .collect()
-    }
+    items
+        .into_iter()
+        .enumerate()
+        .map(|(k, item)| f(k, item))
+        .collect()
 }
