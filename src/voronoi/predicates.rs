@@ -109,10 +109,15 @@ fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
     if !(-240..=240).contains(&unit_exponent) || biased_exponent == 0 {
         return false;
     }
-    let inverse_unit = pow2(-unit_exponent);
+    // 2^-unit_exponent, a normal number (the range check above), built from its bits: `pow2`
+    // would call the software `powi`.
+    let inverse_unit = f64::from_bits(((1023 - unit_exponent) as u64) << 52);
+    // Every `units` is below 2^bits in magnitude (exact: a power-of-two multiple of `d`), so
+    // converting to an integer and back is exact truncation (`trunc` is a library call on
+    // baseline x86-64).
     diffs.iter().all(|&d| {
         let units = d * inverse_unit;
-        units == units.trunc()
+        units == units as i64 as f64
     })
 }
 
