@@ -2,6 +2,7 @@
 
 use super::error::VoronoiError;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
+use super::parallel::map_each;
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
@@ -180,26 +181,36 @@ impl Delaunay {
         let mut triangles = large_arrays::zeroed::<u32>(3 * count);
         let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
         let mut twins = large_arrays::zeroed::<u32>(3 * count);
-        for (((sites, ranks), opposites), &old) in triangles
-            .chunks_exact_mut(3)
-            .zip(corner_ranks.chunks_exact_mut(3))
-            .zip(twins.chunks_exact_mut(3))
-            .zip(&old_index)
-        {
-            let triangle = &built[old as usize];
-            for k in 0..3 {
-                let rank = triangle.corners[k];
-                ranks[k] = rank;
-                sites[k] = to_site[rank as usize];
-                let o = triangle.twins[k];
-                let no = new_index[(o / 3) as usize];
-                opposites[k] = if no == INVALID {
-                    INVALID
-                } else {
-                    3 * no + o % 3
-                };
+        // Runs of output triangles are independent: filled in parallel.
+        const RUN: usize = 1 << 15;
+        let runs: Vec<_> = triangles
+            .chunks_mut(3 * RUN)
+            .zip(corner_ranks.chunks_mut(3 * RUN))
+            .zip(twins.chunks_mut(3 * RUN))
+            .zip(old_index.chunks(RUN))
+            .collect();
+        map_each(runs, |_, (((sites, ranks), opposites), olds)| {
+            for (((sites, ranks), opposites), &old) in sites
+                .chunks_exact_mut(3)
+                .zip(ranks.chunks_exact_mut(3))
+                .zip(opposites.chunks_exact_mut(3))
+                .zip(olds)
+            {
+                let triangle = &built[old as usize];
+                for k in 0..3 {
+                    let rank = triangle.corners[k];
+                    ranks[k] = rank;
+                    sites[k] = to_site[rank as usize];
+                    let o = triangle.twins[k];
+                    let no = new_index[(o / 3) as usize];
+                    opposites[k] = if no == INVALID {
+                        INVALID
+                    } else {
+                        3 * no + o % 3
+                    };
+                }
             }
-        }
+        });
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
         // is across its edge ∞ → u (edge 2).
         let mut hull = Vec::new();
