@@ -2,7 +2,7 @@
 
 use super::error::VoronoiError;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
-use super::parallel::map_each;
+use super::parallel::{map_each, map_indexed};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
@@ -95,7 +95,7 @@ impl Delaunay {
             });
         }
         let scale = normalising_scale(sites);
-        let scaled: Vec<[f64; 2]> = sites.iter().map(|p| [p[0] * scale, p[1] * scale]).collect();
+        let scaled = map_indexed(n, |i| [sites[i][0] * scale, sites[i][1] * scale]);
         let mut representative: Vec<u32> = (0..n as u32).collect();
         let order = brio_hilbert_order(&scaled);
 
@@ -117,7 +117,7 @@ impl Delaunay {
         // The triangulation is built on vertices numbered by insertion rank, with coordinates
         // stored in that (space-filling-curve) order: walks and cavities then touch memory
         // sequentially instead of jumping across the input. Ranks map back to sites at the end.
-        let sorted: Vec<[f64; 2]> = order.iter().map(|&s| result.scaled[s as usize]).collect();
+        let sorted = map_indexed(n, |k| result.scaled[order[k] as usize]);
         let ranks: Vec<u32> = (0..n as u32).collect();
         let mut rank_representative = ranks.clone();
         match find_initial_triangle(&sorted, &ranks, &mut rank_representative) {
