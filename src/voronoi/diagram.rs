@@ -174,15 +174,19 @@ impl Voronoi {
                 parent[ra.max(rb) as usize] = ra.min(rb);
             }
         }
+        // Parents only point to smaller triangles, so in increasing order a triangle's parent
+        // already points to its root: one step finds it, and roots (numbered as met) come first.
         let mut triangle_vertex = vec![INVALID; n_tri];
         let mut vertices = Vec::with_capacity(n_tri);
-        for t in 0..n_tri as u32 {
-            let root = find(&mut parent, t);
-            if triangle_vertex[root as usize] == INVALID {
-                triangle_vertex[root as usize] = vertices.len() as u32;
-                vertices.push(centres[root as usize]);
-            }
-            triangle_vertex[t as usize] = triangle_vertex[root as usize];
+        for t in 0..n_tri {
+            let root = parent[parent[t] as usize];
+            parent[t] = root;
+            triangle_vertex[t] = if root as usize == t {
+                vertices.push(centres[t]);
+                (vertices.len() - 1) as u32
+            } else {
+                triangle_vertex[root as usize]
+            };
         }
         self.triangle_vertex = triangle_vertex;
         self.vertices = vertices;
