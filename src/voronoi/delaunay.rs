@@ -439,6 +439,18 @@ impl Delaunay {
         self.ranked[self.corner_ranks[e as usize] as usize]
     }
 
+    /// Scaled coordinates of the corners of triangle `t`, counter-clockwise (an array `map`
+    /// here was left as a call by the compiler).
+    #[inline(always)]
+    pub(crate) fn triangle_points(&self, t: u32) -> [[f64; 2]; 3] {
+        let base = 3 * t;
+        [
+            self.corner_point(base),
+            self.corner_point(base + 1),
+            self.corner_point(base + 2),
+        ]
+    }
+
     /// Scaled coordinates used by the exact predicates.
     #[cfg(test)]
     #[inline(always)]

@@ -114,8 +114,7 @@ impl Voronoi {
         let same_vertex = |e: u32, here: [f64; 2], radius: f64, there: [f64; 2]| {
             here == there
                 || (may_be_cocircular(here, there, radius) && {
-                    let base = 3 * (e / 3);
-                    let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                    let [a, b, c] = d.triangle_points(e / 3);
                     incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
                 })
         };
@@ -218,8 +217,7 @@ impl Voronoi {
     #[inline(always)]
     fn circumcircle(&self, t: u32, unscale: f64) -> ([f64; 2], f64) {
         let d = &self.delaunay;
-        let base = 3 * t;
-        let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+        let [a, b, c] = d.triangle_points(t);
         let [ux, uy] = circumcentre_offset(a, b, c);
         let centre = [(a[0] + ux) * unscale, (a[1] + uy) * unscale];
         (centre, (ux.abs() + uy.abs()) * unscale)
