@@ -44,26 +44,47 @@ impl Voronoi {
     /// counter-clockwise; returns its site.
     pub(crate) fn handle_sides(&self, handle: u32, out: &mut Vec<Side>) -> u32 {
         out.clear();
+        self.visit_handle_sides(handle, |side| {
+            out.push(side);
+            true
+        })
+        .0
+    }
+
+    /// Hands the sides of the cell of `handle` to `visit`, counter-clockwise, until it returns
+    /// `false`; returns the cell's site and whether every side was visited.
+    #[inline(always)]
+    pub(crate) fn visit_handle_sides(
+        &self,
+        handle: u32,
+        visit: impl FnMut(Side) -> bool,
+    ) -> (u32, bool) {
         if self.delaunay.dimension() == Dimension::Plane {
-            self.sides_from_triangles(handle, out);
-            self.delaunay.triangles[handle as usize]
+            let all = self.visit_triangle_sides(handle, visit);
+            (self.delaunay.triangles[handle as usize], all)
         } else {
-            self.sides_from_half_edges(handle, out);
-            handle
+            (handle, self.visit_half_edge_sides(handle, visit))
         }
     }
 
     /// Circulates counter-clockwise over the Delaunay edges leaving a site, from its vertex edge
     /// `first` (the outgoing hull edge for a hull site): each one not merged away is dual to a
     /// side; past the hull the cell closes with the ray out across the incoming hull edge.
-    fn sides_from_triangles(&self, first: u32, out: &mut Vec<Side>) {
+    /// Hands every side to `visit` in order until it returns `false`; returns whether all were
+    /// visited.
+    #[inline(always)]
+    fn visit_triangle_sides(
+        &self,
+        first: u32,
+        mut visit: impl FnMut(Side) -> bool,
+    ) -> bool {
         let d = &self.delaunay;
         let vertex = |e: u32| self.triangle_vertex[(e / 3) as usize];
         let mut e = first;
         loop {
             if !self.is_merged(e) {
                 let twin = d.twins[e as usize];
-                out.push(if twin == INVALID {
+                let side = if twin == INVALID {
                     Side {
                         from: INVALID,
                         to: vertex(e),
@@ -77,43 +98,48 @@ impl Voronoi {
                         edge: e.min(twin),
                         reversed: twin < e,
                     }
-                });
+                };
+                if !visit(side) {
+                    return false;
+                }
             }
             let incoming = prev_edge(e);
             let back = d.twins[incoming as usize];
             if back == INVALID {
-                out.push(Side {
+                return visit(Side {
                     from: vertex(e),
                     to: INVALID,
                     edge: incoming,
                     reversed: true,
                 });
-                return;
             }
             if back == first {
-                return;
+                return true;
             }
             e = back;
         }
     }
 
-    fn sides_from_half_edges(&self, site: u32, out: &mut Vec<Side>) {
+    fn visit_half_edge_sides(&self, site: u32, mut visit: impl FnMut(Side) -> bool) -> bool {
         let links = self.half_edges();
         let start = self.cell_edge(site);
         if start == INVALID {
-            return;
+            return true;
         }
         let mut h = start;
         loop {
-            out.push(Side {
+            let side = Side {
                 from: links.origin[h as usize],
                 to: links.origin[(h ^ 1) as usize],
                 edge: h >> 1,
                 reversed: h & 1 == 1,
-            });
+            };
+            if !visit(side) {
+                return false;
+            }
             h = links.next[h as usize];
             if h == start {
-                return;
+                return true;
             }
         }
     }

@@ -7,6 +7,9 @@ use super::predicates::orient2d;
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClipPolygon {
     vertices: Vec<[f64; 2]>,
+    /// `edges[i]` runs from vertex `i` to the next: the edge functions of every Voronoi vertex
+    /// read them, so they are computed once here.
+    edges: Vec<[f64; 2]>,
     area: f64,
 }
 
@@ -89,7 +92,17 @@ impl ClipPolygon {
             return Err(VoronoiError::NonConvexClip { vertex: 0 });
         }
         let area = shoelace(&v);
-        Ok(ClipPolygon { vertices: v, area })
+        let edges = (0..n)
+            .map(|i| {
+                let (a, b) = (v[i], v[(i + 1) % n]);
+                [b[0] - a[0], b[1] - a[1]]
+            })
+            .collect();
+        Ok(ClipPolygon {
+            vertices: v,
+            edges,
+            area,
+        })
     }
 
     /// Vertices, counter-clockwise. Edge `i` runs from vertex `i` to vertex `i + 1`.
@@ -110,32 +123,42 @@ impl ClipPolygon {
     /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side.
     #[inline(always)]
     pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
-        let (a, e) = (self.vertices[i], self.edge_vector(i));
-        e[0] * (p[1] - a[1]) - e[1] * (p[0] - a[0])
+        half_plane(self.vertices[i], self.edges[i], p)
+    }
+
+    /// The smallest edge function of `p` over all edges: `> 0` strictly inside, `0` on the
+    /// boundary.
+    #[inline]
+    pub(crate) fn lowest_edge_function(&self, p: [f64; 2]) -> f64 {
+        self.vertices
+            .iter()
+            .zip(&self.edges)
+            .map(|(&a, &e)| half_plane(a, e, p))
+            .fold(f64::INFINITY, f64::min)
     }
 
     /// Cross product of edge `i` with direction `d`: how fast `edge_function` grows along `d`.
     #[inline(always)]
     pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
-        let e = self.edge_vector(i);
+        let e = self.edges[i];
         e[0] * d[1] - e[1] * d[0]
     }
 
+    /// The vector from vertex `i` to the next.
     #[inline(always)]
     pub(crate) fn edge_vector(&self, i: usize) -> [f64; 2] {
-        let j = if i + 1 == self.vertices.len() {
-            0
-        } else {
-            i + 1
-        };
-        let (a, b) = (self.vertices[i], self.vertices[j]);
-        [b[0] - a[0], b[1] - a[1]]
+        self.edges[i]
     }
 
-    /// Centroid of the polygon.
     pub fn centroid(&self) -> [f64; 2] {
         polygon_area_centroid(&self.vertices).1
     }
+}
+
+/// Edge function of `p` for the edge from `a` along `e`.
+#[inline(always)]
+fn half_plane(a: [f64; 2], e: [f64; 2], p: [f64; 2]) -> f64 {
+    e[0] * (p[1] - a[1]) - e[1] * (p[0] - a[0])
 }
 
 fn shoelace(v: &[[f64; 2]]) -> f64 {

@@ -127,13 +127,18 @@ impl Voronoi {
                 )
             })
             .collect();
+        // A side with both ends placed is its own piece.
+        let placed_piece = |side: Side| -> Option<[u32; 2]> {
+            if side.from == INVALID || side.to == INVALID {
+                return None;
+            }
+            let from = vertex_position[side.from as usize];
+            let to = vertex_position[side.to as usize];
+            (from != INVALID && to != INVALID).then_some([from, to])
+        };
         let piece = |side: Side| -> [u32; 2] {
-            if side.from != INVALID && side.to != INVALID {
-                let from = vertex_position[side.from as usize];
-                let to = vertex_position[side.to as usize];
-                if from != INVALID && to != INVALID {
-                    return [from, to];
-                }
+            if let Some(p) = placed_piece(side) {
+                return p;
             }
             let [start, end] = clipped
                 .binary_search_by_key(&side.edge, |&(key, _)| key)
@@ -151,27 +156,49 @@ impl Voronoi {
         // in parallel into local lists, then concatenated in order.
         let order = self.cell_handles();
         let assemble_run = |_, run: &[u32]| {
-            let mut local = Vec::with_capacity(7 * run.len());
+            let mut local = large_arrays::with_capacity(7 * run.len());
             let mut spans = Vec::with_capacity(run.len());
             let (mut sides, mut cell_pieces) = (Vec::new(), Vec::new());
             for &handle in run {
-                let s = self.handle_sides(handle, &mut sides);
-                if !sides.is_empty() {
-                    let first = local.len() as u32;
+                let first = local.len();
+                // Most cells have every vertex inside: their pieces join end to start, so the
+                // polygon is the pieces' starts in order, written out as the sides are visited.
+                let (s, all_placed) = self.visit_handle_sides(handle, |side| {
+                    placed_piece(side).map(|[from, _]| local.push(from)).is_some()
+                });
+                let has_sides = if all_placed {
+                    local.len() > first
+                } else {
+                    local.truncate(first);
+                    self.handle_sides(handle, &mut sides);
                     cell_pieces.clear();
                     cell_pieces.extend(sides.iter().map(|&side| piece(side)));
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
-                    spans.push([s, first, local.len() as u32 - first]);
+                    !sides.is_empty()
+                };
+                if has_sides {
+                    spans.push([s, first as u32, (local.len() - first) as u32]);
                 }
             }
             (local, spans)
         };
         let runs = map_each(order.chunks(1 << 15).collect(), assemble_run);
-        let mut indices = large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum());
+        // A single run's list is the whole output; several are concatenated.
+        let single = runs.len() == 1;
+        let mut indices = if single {
+            Vec::new()
+        } else {
+            large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum())
+        };
         for (local, spans) in runs {
             let offset = indices.len() as u32;
-            indices.extend_from_slice(&local);
+            if single {
+                let len = local.len();
+                indices = large_arrays::fit(local, len);
+            } else {
+                indices.extend_from_slice(&local);
+            }
             for [s, first, len] in spans {
                 ranges[s as usize] = [offset + first, len];
             }
@@ -202,9 +229,7 @@ impl Voronoi {
         let (mut on_boundary, mut outside) = (Vec::new(), Vec::new());
         let mut vertex_position = large_arrays::with_capacity(self.vertices.len());
         vertex_position.extend(self.vertices.iter().enumerate().map(|(v, &p)| {
-            let lowest = (0..m)
-                .map(|i| clip.edge_function(i, p))
-                .fold(f64::INFINITY, f64::min);
+            let lowest = clip.lowest_edge_function(p);
             if lowest > 0.0 {
                 b.positions.push(p);
                 (b.positions.len() - 1) as u32

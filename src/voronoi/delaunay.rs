@@ -2,6 +2,7 @@
 
 use super::error::VoronoiError;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
+use super::parallel::{map_each, map_indexed};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
@@ -94,7 +95,7 @@ impl Delaunay {
             });
         }
         let scale = normalising_scale(sites);
-        let scaled: Vec<[f64; 2]> = sites.iter().map(|p| [p[0] * scale, p[1] * scale]).collect();
+        let scaled = map_indexed(n, |i| [sites[i][0] * scale, sites[i][1] * scale]);
         let mut representative: Vec<u32> = (0..n as u32).collect();
         let order = brio_hilbert_order(&scaled);
 
@@ -116,7 +117,7 @@ impl Delaunay {
         // The triangulation is built on vertices numbered by insertion rank, with coordinates
         // stored in that (space-filling-curve) order: walks and cavities then touch memory
         // sequentially instead of jumping across the input. Ranks map back to sites at the end.
-        let sorted: Vec<[f64; 2]> = order.iter().map(|&s| result.scaled[s as usize]).collect();
+        let sorted = map_indexed(n, |k| result.scaled[order[k] as usize]);
         let ranks: Vec<u32> = (0..n as u32).collect();
         let mut rank_representative = ranks.clone();
         match find_initial_triangle(&sorted, &ranks, &mut rank_representative) {
@@ -180,26 +181,36 @@ impl Delaunay {
         let mut triangles = large_arrays::zeroed::<u32>(3 * count);
         let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
         let mut twins = large_arrays::zeroed::<u32>(3 * count);
-        for (((sites, ranks), opposites), &old) in triangles
-            .chunks_exact_mut(3)
-            .zip(corner_ranks.chunks_exact_mut(3))
-            .zip(twins.chunks_exact_mut(3))
-            .zip(&old_index)
-        {
-            let triangle = &built[old as usize];
-            for k in 0..3 {
-                let rank = triangle.corners[k];
-                ranks[k] = rank;
-                sites[k] = to_site[rank as usize];
-                let o = triangle.twins[k];
-                let no = new_index[(o / 3) as usize];
-                opposites[k] = if no == INVALID {
-                    INVALID
-                } else {
-                    3 * no + o % 3
-                };
+        // Runs of output triangles are independent: filled in parallel.
+        const RUN: usize = 1 << 15;
+        let runs: Vec<_> = triangles
+            .chunks_mut(3 * RUN)
+            .zip(corner_ranks.chunks_mut(3 * RUN))
+            .zip(twins.chunks_mut(3 * RUN))
+            .zip(old_index.chunks(RUN))
+            .collect();
+        map_each(runs, |_, (((sites, ranks), opposites), olds)| {
+            for (((sites, ranks), opposites), &old) in sites
+                .chunks_exact_mut(3)
+                .zip(ranks.chunks_exact_mut(3))
+                .zip(opposites.chunks_exact_mut(3))
+                .zip(olds)
+            {
+                let triangle = &built[old as usize];
+                for k in 0..3 {
+                    let rank = triangle.corners[k];
+                    ranks[k] = rank;
+                    sites[k] = to_site[rank as usize];
+                    let o = triangle.twins[k];
+                    let no = new_index[(o / 3) as usize];
+                    opposites[k] = if no == INVALID {
+                        INVALID
+                    } else {
+                        3 * no + o % 3
+                    };
+                }
             }
-        }
+        });
         // Hull, counter-clockwise: ghost (u, v, ∞) sits on real hull edge v → u; the next ghost
         // is across its edge ∞ → u (edge 2).
         let mut hull = Vec::new();
@@ -426,6 +437,18 @@ impl Delaunay {
     #[inline(always)]
     pub(crate) fn corner_point(&self, e: u32) -> [f64; 2] {
         self.ranked[self.corner_ranks[e as usize] as usize]
+    }
+
+    /// Scaled coordinates of the corners of triangle `t`, counter-clockwise (an array `map`
+    /// here was left as a call by the compiler).
+    #[inline(always)]
+    pub(crate) fn triangle_points(&self, t: u32) -> [[f64; 2]; 3] {
+        let base = 3 * t;
+        [
+            self.corner_point(base),
+            self.corner_point(base + 1),
+            self.corner_point(base + 2),
+        ]
     }
 
     /// Scaled coordinates used by the exact predicates.

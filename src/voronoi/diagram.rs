@@ -114,14 +114,13 @@ impl Voronoi {
         let same_vertex = |e: u32, here: [f64; 2], radius: f64, there: [f64; 2]| {
             here == there
                 || (may_be_cocircular(here, there, radius) && {
-                    let base = 3 * (e / 3);
-                    let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+                    let [a, b, c] = d.triangle_points(e / 3);
                     incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
                 })
         };
         let unscale = d.scale.recip();
         // A few long runs: enough to share the work among threads, few edges between runs.
-        let run_len = n_tri.div_ceil(8).max(1 << 14);
+        let run_len = n_tri.div_ceil(8).max(1 << 15);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
         let runs = map_each(
             centres.chunks_mut(run_len).collect(),
@@ -174,15 +173,19 @@ impl Voronoi {
                 parent[ra.max(rb) as usize] = ra.min(rb);
             }
         }
+        // Parents only point to smaller triangles, so in increasing order a triangle's parent
+        // already points to its root: one step finds it, and roots (numbered as met) come first.
         let mut triangle_vertex = vec![INVALID; n_tri];
         let mut vertices = Vec::with_capacity(n_tri);
-        for t in 0..n_tri as u32 {
-            let root = find(&mut parent, t);
-            if triangle_vertex[root as usize] == INVALID {
-                triangle_vertex[root as usize] = vertices.len() as u32;
-                vertices.push(centres[root as usize]);
-            }
-            triangle_vertex[t as usize] = triangle_vertex[root as usize];
+        for t in 0..n_tri {
+            let root = parent[parent[t] as usize];
+            parent[t] = root;
+            triangle_vertex[t] = if root as usize == t {
+                vertices.push(centres[t]);
+                (vertices.len() - 1) as u32
+            } else {
+                triangle_vertex[root as usize]
+            };
         }
         self.triangle_vertex = triangle_vertex;
         self.vertices = vertices;
@@ -214,8 +217,7 @@ impl Voronoi {
     #[inline(always)]
     fn circumcircle(&self, t: u32, unscale: f64) -> ([f64; 2], f64) {
         let d = &self.delaunay;
-        let base = 3 * t;
-        let [a, b, c] = [base, base + 1, base + 2].map(|k| d.corner_point(k));
+        let [a, b, c] = d.triangle_points(t);
         let [ux, uy] = circumcentre_offset(a, b, c);
         let centre = [(a[0] + ux) * unscale, (a[1] + uy) * unscale];
         (centre, (ux.abs() + uy.abs()) * unscale)

@@ -59,7 +59,7 @@ pub(crate) struct GhostTriangulation<'a> {
     pub triangles: Vec<Triangle>,
     last: u32,
     cavity: Vec<u32>,
-    boundary: Vec<(u32, u32, u32)>,
+    boundary: Vec<CavityEdge>,
     stack: Vec<u32>,
 }
 
@@ -208,7 +208,7 @@ impl<'a> GhostTriangulation<'a> {
             } else {
                 let corners = &self.triangles[(e / 3) as usize].corners;
                 let k = (e % 3) as usize;
-                self.boundary.push((o, corners[k], corners[(k + 1) % 3]));
+                self.boundary.push(CavityEdge::new(o, corners[k], corners[(k + 1) % 3]));
             }
         }
         let k = self.boundary.len();
@@ -221,37 +221,74 @@ impl<'a> GhostTriangulation<'a> {
         // Fan triangle `i` is (u, v, s) for boundary edge `i` = (u, v), stored rotated so that a
         // vertex at infinity lands in corner 2: its logical edge `j` is half-edge `edge(i, j)`.
         let (cavity, boundary) = (&self.cavity, &self.boundary);
-        let rotation = |i: usize| {
-            let (_, u, v) = boundary[i];
-            if u == GHOST {
-                2
-            } else if v == GHOST {
-                1
-            } else {
-                0
-            }
-        };
-        let edge = |i: usize, j: u32| 3 * cavity[i] + (j + rotation(i)) % 3;
+        let edge = |i: usize, j: u32| 3 * cavity[i] + add_mod3(j, boundary[i].rotation);
         for i in 0..k {
-            let (o, u, v) = boundary[i];
-            debug_assert_eq!(v, boundary[(i + 1) % k].1, "cavity boundary is one loop");
+            let CavityEdge {
+                outside,
+                from,
+                to,
+                rotation,
+            } = boundary[i];
+            debug_assert_eq!(to, boundary[(i + 1) % k].from, "cavity boundary is one loop");
             let next = if i + 1 == k { 0 } else { i + 1 };
             let prev = if i == 0 { k - 1 } else { i - 1 };
-            let mut triangle = Triangle::default();
-            for (j, (corner, twin)) in [(u, o), (v, edge(next, 2)), (s, edge(prev, 1))]
-                .into_iter()
-                .enumerate()
-            {
-                let slot = ((j as u32 + rotation(i)) % 3) as usize;
-                triangle.corners[slot] = corner;
-                triangle.twins[slot] = twin;
-            }
-            self.triangles[cavity[i] as usize] = triangle;
-            self.triangles[(o / 3) as usize].twins[(o % 3) as usize] = edge(i, 0);
+            self.triangles[cavity[i] as usize] = Triangle {
+                corners: rotated([from, to, s], rotation),
+                twins: rotated([outside, edge(next, 2), edge(prev, 1)], rotation),
+            };
+            self.triangles[(outside / 3) as usize].twins[(outside % 3) as usize] = edge(i, 0);
         }
         self.last = self.cavity[0];
         None
     }
+}
+
+/// An edge of the cavity's boundary, `from → to` counter-clockwise, and the half-edge `outside`
+/// across it; `rotation` places the fan triangle `(from, to, new site)` built on it so that a
+/// vertex at infinity lands in corner 2 (see [`rotated`]).
+#[derive(Clone, Copy, Debug)]
+struct CavityEdge {
+    outside: u32,
+    from: u32,
+    to: u32,
+    rotation: u32,
+}
+
+impl CavityEdge {
+    #[inline(always)]
+    fn new(outside: u32, from: u32, to: u32) -> Self {
+        let rotation = if from == GHOST {
+            2
+        } else if to == GHOST {
+            1
+        } else {
+            0
+        };
+        CavityEdge {
+            outside,
+            from,
+            to,
+            rotation,
+        }
+    }
+}
+
+/// `items` with item `j` moved to slot `(j + rotation) mod 3`.
+#[inline(always)]
+fn rotated(items: [u32; 3], rotation: u32) -> [u32; 3] {
+    let [a, b, c] = items;
+    match rotation {
+        0 => [a, b, c],
+        1 => [c, a, b],
+        _ => [b, c, a],
+    }
+}
+
+/// `(j + r) mod 3` for `j, r < 3`, without a division.
+#[inline(always)]
+fn add_mod3(j: u32, r: u32) -> u32 {
+    let x = j + r;
+    if x >= 3 { x - 3 } else { x }
 }
 
 /// `p`, collinear with `a` and `b`, lies strictly between them (exact: compares coordinates).

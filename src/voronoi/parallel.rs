@@ -2,45 +2,44 @@
 
 /// `(0..len).map(f).collect()`, in parallel when the `parallel` feature is on. Every pass it
 /// serves is a pure per-element function over up to millions of elements; runs of at least
-/// 2^14 elements keep the scheduling overhead negligible.
+/// 2^14 elements keep the scheduling overhead negligible, and a pass no longer than one run is
+/// done on the calling thread.
 pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
     #[cfg(feature = "parallel")]
     {
-        use rayon::prelude::*;
-        (0..len)
-            .into_par_iter()
-            .with_min_len(1 << 14)
-            .map(f)
-            .collect()
+        const MIN_RUN: usize = 1 << 14;
+        if len > MIN_RUN {
+            use rayon::prelude::*;
+            return (0..len)
+                .into_par_iter()
+                .with_min_len(MIN_RUN)
+                .map(f)
+                .collect();
+        }
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        (0..len).map(f).collect()
-    }
+    (0..len).map(f).collect()
 }
 
 /// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
 /// feature is on; results in order. Serves passes over a few long runs of elements (slices,
-/// shared or mutable, that the caller splits off), one task per run.
+/// shared or mutable, that the caller splits off), one task per run. A single run is done on the
+/// calling thread: handing it to the pool and waiting for it would only add the round trip.
 pub(crate) fn map_each<I: Send, R: Send>(
     items: Vec<I>,
     f: impl Fn(usize, I) -> R + Sync + Send,
 ) -> Vec<R> {
     #[cfg(feature = "parallel")]
-    {
+    if items.len() > 1 {
         use rayon::prelude::*;
-        items
+        return items
             .into_par_iter()
             .enumerate()
             .map(|(k, item)| f(k, item))
-            .collect()
+            .collect();
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        items
-            .into_iter()
-            .enumerate()
-            .map(|(k, item)| f(k, item))
-            .collect()
-    }
+    items
+        .into_iter()
+        .enumerate()
+        .map(|(k, item)| f(k, item))
+        .collect()
 }

@@ -87,18 +87,20 @@ fn incircle_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], det: f64) -
 /// the floating-point orientation (`bits = 25`) or in-circle (`bits = 12`) determinant is exact:
 /// every product and sum stays below `2^53` units of its lattice.
 fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
-    let mut largest = 0.0_f64;
-    let mut diffs = [0.0; N];
-    for (k, &(x, y)) in pairs.iter().enumerate() {
-        let d = x - y;
+    // Straight-line over all pairs (no early exits), which the compiler unrolls: the slow path
+    // is frequent on integer grids, where many determinants are exactly zero.
+    let diffs = pairs.map(|(x, y)| x - y);
+    let (mut inexact, mut largest) = (false, 0.0_f64);
+    for (&(x, y), &d) in pairs.iter().zip(&diffs) {
         // Exactness of the subtraction (Dekker/Knuth two-difference error term is zero).
         let y_virtual = x - d;
         let x_virtual = d + y_virtual;
-        if (x - x_virtual) + (y_virtual - y) != 0.0 {
-            return false;
-        }
-        diffs[k] = d;
-        largest = largest.max(d.abs());
+        inexact |= (x - x_virtual) + (y_virtual - y) != 0.0;
+        let size = d.abs();
+        largest = if size > largest { size } else { largest };
+    }
+    if inexact {
+        return false;
     }
     if largest == 0.0 {
         return true;
@@ -109,11 +111,19 @@ fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
     if !(-240..=240).contains(&unit_exponent) || biased_exponent == 0 {
         return false;
     }
-    let inverse_unit = pow2(-unit_exponent);
-    diffs.iter().all(|&d| {
+    // 2^-unit_exponent, a normal number (the range check above), built from its bits: `pow2`
+    // would call the software `powi`.
+    let inverse_unit = f64::from_bits(((1023 - unit_exponent) as u64) << 52);
+    // Every `units` is below 2^bits ≤ 2^25 in magnitude (exact: a power-of-two multiple of
+    // `d`), so adding and subtracting 1.5·2^52 rounds it to the nearest integer exactly: it is an
+    // integer when that changes nothing (`trunc` is a library call on baseline x86-64).
+    const ROUND: f64 = 6_755_399_441_055_744.0;
+    let mut off_lattice = false;
+    for d in diffs {
         let units = d * inverse_unit;
-        units == units.trunc()
-    })
+        off_lattice |= (units + ROUND) - ROUND != units;
+    }
+    !off_lattice
 }
 
 /// The power of two by which sites are multiplied before any predicate is evaluated, so that

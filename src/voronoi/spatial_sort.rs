@@ -7,6 +7,8 @@
 //! inputs such as points on a parabola, where a pure space-filling-curve order degrades. The
 //! randomness is a fixed hash of the site index, so results are reproducible.
 
+use super::parallel::map_indexed;
+
 /// Bits per axis of the Hilbert grid (the sort key packs `2 × 14` Hilbert bits and 4 round bits
 /// into 32 bits; ties inside one of the `2^28` cells keep index order).
 const HILBERT_BITS: u32 = 14;
@@ -37,18 +39,15 @@ pub fn brio_hilbert_order(points: &[[f64; 2]]) -> Vec<u32> {
         0.0
     };
     let rounds = round_count(n);
-    let mut keyed: Vec<u64> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let gx = ((p[0] - min[0]) * to_grid) as u32;
-            let gy = ((p[1] - min[1]) * to_grid) as u32;
-            let h = hilbert_index(gx, gy);
-            let round = brio_round(i as u64, rounds);
-            let key = (round << (2 * HILBERT_BITS)) | h;
-            (u64::from(key) << 32) | i as u64
-        })
-        .collect();
+    let mut keyed: Vec<u64> = map_indexed(n, |i| {
+        let p = points[i];
+        let gx = ((p[0] - min[0]) * to_grid) as u32;
+        let gy = ((p[1] - min[1]) * to_grid) as u32;
+        let h = hilbert_index(gx, gy);
+        let round = brio_round(i as u64, rounds);
+        let key = (round << (2 * HILBERT_BITS)) | h;
+        (u64::from(key) << 32) | i as u64
+    });
     radix_sort_by_high_word(&mut keyed);
     keyed.into_iter().map(|k| k as u32).collect()
 }
