@@ -106,7 +106,8 @@ impl EdgeBuckets {
         }
     }
 
-    /// [`EdgeVisitor::visit`], for callers that visit a few edges at a time.
+    /// [`EdgeVisitor::visit`] through a visitor made for the call (the builders' walks keep one
+    /// visitor for all their corners instead).
     #[inline]
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         self.visitor().visit(a, b, value)
