@@ -19,31 +19,34 @@ pub(crate) struct Walked<'a, T> {
     pub(crate) diagnostic: Diagnostic,
 }
 
-/// Runs `walk(table, buckets, positions, degenerate)` — which meets every corner's edge in the
-/// buckets, checks each face into `degenerate` when given one, and gives `None` on an edge
-/// defect — directly on well-formed input, else on the table [`resolve`] makes under `policy`
-/// (where it cannot meet a defect).
+/// A builder's face walk: `walk(table, buckets, positions, degenerate)` meets every corner's edge
+/// in the buckets, checks each face's area into `degenerate` when given one, and gives `None` on
+/// an edge defect.
+pub(crate) trait Walk<T>:
+    Fn(&FaceTable<'_>, EdgeBuckets, &[[f64; 3]], Option<&mut DegenerateFaces<'_>>) -> Option<T> + Sync
+{
+}
+
+impl<T, W> Walk<T> for W where
+    W: Fn(&FaceTable<'_>, EdgeBuckets, &[[f64; 3]], Option<&mut DegenerateFaces<'_>>) -> Option<T>
+        + Sync
+{
+}
+
+/// Runs `walk` (see [`Walk`]) directly on well-formed input, else on the table [`resolve`] makes
+/// under `policy` (where it cannot meet a defect).
 pub(crate) fn walk_faces<'a, T: Send>(
     list: &FaceList<'a>,
     policy: BuildPolicy,
-    walk: impl Fn(
-        &FaceTable<'_>,
-        EdgeBuckets,
-        &[[f64; 3]],
-        Option<&mut DegenerateFaces<'_>>,
-    ) -> Option<T>
-    + Sync,
+    walk: impl Walk<T>,
 ) -> Result<Walked<'a, T>, BuildError> {
     let mut input_copy = None;
     // Lists with more vertices than ids are left to resolve to refuse, before anything the size
     // of the input is allocated.
     if list.positions.len() as u64 <= MAX_VERTICES {
         // The structure's copy of the positions and their check need nothing from the faces:
-        // with two threads they are made beside the bucket count, and the degenerate faces are
-        // found beside the walk; with one, all runs in turn (the copy just before the walk,
-        // which then finds the positions in cache), and the walk checks each face's area as it
-        // reads it.
-        let beside = thread_count() > 1;
+        // with two threads they are made beside the bucket count; with one, just before the
+        // walk, which then finds the positions in cache.
         let (edges, (positions, non_finite_vertices)) = join(
             || well_formed_edges(list),
             || {
@@ -52,21 +55,12 @@ pub(crate) fn walk_faces<'a, T: Send>(
             },
         );
         if let Some((table, buckets)) = edges {
-            let (degenerate_beside, (walked, degenerate_in_walk)) = join(
-                || beside.then(|| DegenerateFaces::of_table(&table, list.positions)),
-                || {
-                    let mut degenerate = (!beside).then(|| DegenerateFaces::new(list.positions));
-                    let walked = walk(&table, buckets, list.positions, degenerate.as_mut());
-                    (walked, degenerate)
-                },
-            );
+            let (walked, degenerate_faces) =
+                walk_checking_areas(&table, buckets, list.positions, &walk);
             // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
             if let Some(walked) = walked
                 && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
             {
-                let degenerate_faces = degenerate_beside
-                    .or(degenerate_in_walk.map(DegenerateFaces::into_faces))
-                    .unwrap_or_default();
                 let diagnostic = Diagnostic {
                     non_finite_vertices,
                     degenerate_faces,
@@ -85,16 +79,11 @@ pub(crate) fn walk_faces<'a, T: Send>(
     let resolved = resolve(list, policy)?;
     let buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len())
         .expect("a resolved face table is well formed");
-    let mut degenerate = DegenerateFaces::new(&resolved.positions);
-    let walked = walk(
-        &resolved.table,
-        buckets,
-        &resolved.positions,
-        Some(&mut degenerate),
-    )
-    .expect("a resolved face table has no edge defects");
+    let (walked, degenerate_faces) =
+        walk_checking_areas(&resolved.table, buckets, &resolved.positions, &walk);
+    let walked = walked.expect("a resolved face table has no edge defects");
     let mut diagnostic = resolved.diagnostic;
-    diagnostic.degenerate_faces = degenerate.into_faces();
+    diagnostic.degenerate_faces = degenerate_faces;
     let positions = match resolved.positions {
         Cow::Borrowed(input) => input_copy.unwrap_or_else(|| large_arrays::copied(input)),
         Cow::Owned(repaired) => repaired,
@@ -107,9 +96,35 @@ pub(crate) fn walk_faces<'a, T: Send>(
     })
 }
 
+/// `walk(table, buckets, positions, degenerate)` with the degenerate faces of `table` (input
+/// face indices, ascending): found in a pass of their own beside the walk when a second thread is
+/// free, else by the walk itself as it reads each face.
+fn walk_checking_areas<T: Send>(
+    table: &FaceTable<'_>,
+    buckets: EdgeBuckets,
+    positions: &[[f64; 3]],
+    walk: &impl Walk<T>,
+) -> (Option<T>, Vec<u32>) {
+    let beside = thread_count() > 1;
+    let (found_beside, (walked, found_in_walk)) = join(
+        || beside.then(|| DegenerateFaces::of_table(table, positions)),
+        || {
+            let mut degenerate = (!beside).then(|| DegenerateFaces::new(positions));
+            (
+                walk(table, buckets, positions, degenerate.as_mut()),
+                degenerate,
+            )
+        },
+    );
+    let degenerate_faces = found_beside
+        .or(found_in_walk.map(DegenerateFaces::into_faces))
+        .unwrap_or_default();
+    (walked, degenerate_faces)
+}
+
 /// `list` laid out as a table, with the buckets of its edges, when no face needs a policy
-/// decision: the list is consistent, no face is too small, out of range or repeats a vertex.
-/// Builders try this fast path first and call [`resolve`] only for the rest (non-finite
+/// decision: the list is consistent, no face is too small, out of range or repeats a vertex
+/// (`list` has at most [`MAX_VERTICES`] vertices). Builders try this fast path first and call [`resolve`] only for the rest (non-finite
 /// coordinates and edge defects are theirs to find on it).
 fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
     let n_vertices = list.positions.len();

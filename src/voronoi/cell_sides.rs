@@ -73,11 +73,7 @@ impl Voronoi {
     /// Hands every side to `visit` in order until it returns `false`; returns whether all were
     /// visited.
     #[inline(always)]
-    fn visit_triangle_sides(
-        &self,
-        first: u32,
-        mut visit: impl FnMut(Side) -> bool,
-    ) -> bool {
+    fn visit_triangle_sides(&self, first: u32, mut visit: impl FnMut(Side) -> bool) -> bool {
         let d = &self.delaunay;
         let vertex = |e: u32| self.triangle_vertex[(e / 3) as usize];
         let mut e = first;

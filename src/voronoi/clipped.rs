@@ -164,7 +164,9 @@ impl Voronoi {
                 // Most cells have every vertex inside: their pieces join end to start, so the
                 // polygon is the pieces' starts in order, written out as the sides are visited.
                 let (s, all_placed) = self.visit_handle_sides(handle, |side| {
-                    placed_piece(side).map(|[from, _]| local.push(from)).is_some()
+                    placed_piece(side)
+                        .map(|[from, _]| local.push(from))
+                        .is_some()
                 });
                 let has_sides = if all_placed {
                     local.len() > first

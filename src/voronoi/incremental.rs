@@ -208,7 +208,8 @@ impl<'a> GhostTriangulation<'a> {
             } else {
                 let corners = &self.triangles[(e / 3) as usize].corners;
                 let k = (e % 3) as usize;
-                self.boundary.push(CavityEdge::new(o, corners[k], corners[(k + 1) % 3]));
+                self.boundary
+                    .push(CavityEdge::new(o, corners[k], corners[(k + 1) % 3]));
             }
         }
         let k = self.boundary.len();
@@ -229,7 +230,11 @@ impl<'a> GhostTriangulation<'a> {
                 to,
                 rotation,
             } = boundary[i];
-            debug_assert_eq!(to, boundary[(i + 1) % k].from, "cavity boundary is one loop");
+            debug_assert_eq!(
+                to,
+                boundary[(i + 1) % k].from,
+                "cavity boundary is one loop"
+            );
             let next = if i + 1 == k { 0 } else { i + 1 };
             let prev = if i == 0 { k - 1 } else { i - 1 };
             self.triangles[cavity[i] as usize] = Triangle {
