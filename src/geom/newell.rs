@@ -84,15 +84,11 @@ pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
 /// [`quad_area_vector`]) against the sum of its squared sides.
 #[inline]
 pub fn is_degenerate_quad(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> bool {
-    let sides = [
-        difference(b, a),
-        difference(c, b),
-        difference(d, c),
-        difference(a, d),
-    ];
-    let squared_perimeter = sides.iter().map(|&side| squared_length(side)).sum();
-    let diagonals = (sum(sides[0], sides[1]), sum(sides[1], sides[2]));
-    is_negligible_area(cross(diagonals.0, diagonals.1), squared_perimeter)
+    let squared_perimeter = squared_distance(a, b)
+        + squared_distance(b, c)
+        + squared_distance(c, d)
+        + squared_distance(d, a);
+    is_negligible_area(quad_area_vector(a, b, c, d), squared_perimeter)
 }
 
 /// `true` when an area vector is rounding noise against the squared perimeter.
@@ -109,10 +105,6 @@ fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
         u[2] * v[0] - u[0] * v[2],
         u[0] * v[1] - u[1] * v[0],
     ]
-}
-
-fn sum(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
 fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

@@ -431,19 +431,22 @@ pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
 /// and only a run with a bad coordinate is searched vertex by vertex.
 fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
     const RUN: usize = 256;
-    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
-    let is_bad = |p: &[f64; 3]| !(p[0].is_finite() && p[1].is_finite() && p[2].is_finite());
+    // All exponent bits set: infinite or NaN (a test without branches, unlike `is_finite`'s).
+    let non_finite = |x: &f64| {
+        const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+        x.to_bits() & EXPONENT == EXPONENT
+    };
     let mut bad = Vec::new();
     for (r, run) in positions.chunks(RUN).enumerate() {
-        // All exponent bits set: infinite or NaN.
-        let any_bad = run.iter().flatten().fold(0, |any, x| {
-            any | u64::from(x.to_bits() & EXPONENT == EXPONENT)
-        });
-        if any_bad != 0 {
+        if run
+            .iter()
+            .flatten()
+            .fold(false, |any, x| any | non_finite(x))
+        {
             let start = first + r * RUN;
             bad.extend(
                 (0..run.len())
-                    .filter(|&i| is_bad(&run[i]))
+                    .filter(|&i| run[i].iter().any(non_finite))
                     .map(|i| (start + i) as u32),
             );
         }
