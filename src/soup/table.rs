@@ -441,7 +441,8 @@ fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
         if run
             .iter()
             .flatten()
-            .fold(false, |any, x| any | non_finite(x))
+            .fold(0, |any, x| any | u64::from(non_finite(x)))
+            != 0
         {
             let start = first + r * RUN;
             bad.extend(
