@@ -10,10 +10,10 @@ use std::path::{Path, PathBuf};
 use halfwing::io::{IoError, read_path};
 use halfwing::soup::PolygonSoup;
 
+mod shared_data;
+
 fn data_dir() -> PathBuf {
-    let dir = std::env::var_os("HALFWING_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"));
+    let dir = shared_data::root();
     assert!(
         dir.join("MANIFEST.md").is_file(),
         "test data not found at {} (set HALFWING_DATA)",

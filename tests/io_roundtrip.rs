@@ -3,13 +3,14 @@
 //! corners of a vertex agree).
 
 use std::collections::HashMap;
-use std::path::Path;
 
 use halfwing::io::{
     MeshFormat, PlyEncoding, read_bytes, read_path, write_obj, write_off, write_path, write_ply,
 };
 use halfwing::soup::PolygonSoup;
 use proptest::prelude::*;
+
+mod shared_data;
 
 /// The encodings a soup is written in.
 #[derive(Clone, Copy, Debug)]
@@ -115,9 +116,7 @@ fn assert_round_trips(soup: &PolygonSoup, what: &str) {
 
 #[test]
 fn data_set_meshes_round_trip_in_every_format() {
-    let dir = std::env::var_os("HALFWING_DATA")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"));
+    let dir = shared_data::root();
     let names = [
         "meshes/polygonal/cgal_mpi.off",
         "meshes/polygonal/igl_cylinder.obj",

@@ -5,13 +5,10 @@ use halfwing::io::read_path;
 use halfwing::mesh::Mesh;
 use halfwing::soup::BuildPolicy;
 
+mod shared_data;
+
 fn broken(name: &str) -> halfwing::soup::PolygonSoup {
-    let data = std::env::var("HALFWING_DATA")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|_| {
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data")
-        });
-    read_path(data.join("meshes/broken").join(name)).expect("the shared model reads")
+    read_path(shared_data::root().join("meshes/broken").join(name)).expect("the shared model reads")
 }
 
 fn repaired(name: &str) -> Mesh {

@@ -6,7 +6,7 @@
 //! The data lives beside the repository (`../shared/data`); set `HALFWING_DATA` to point
 //! elsewhere.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use halfwing::geom::VertexNormalWeighting;
 use halfwing::io::read_path;
@@ -15,10 +15,10 @@ use halfwing::render::{
     MeshBufferOptions, MeshBuffers, Shading, SurfaceOptions, VertexLayout, mesh_buffers,
 };
 
+mod shared_data;
+
 fn mesh_files() -> Vec<PathBuf> {
-    let dir = std::env::var_os("HALFWING_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"));
+    let dir = shared_data::root();
     let mut files = Vec::new();
     let mut pending = vec![dir.join("meshes")];
     while let Some(folder) = pending.pop() {

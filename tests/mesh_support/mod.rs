@@ -7,13 +7,12 @@ use std::path::{Path, PathBuf};
 
 use halfwing::soup::PolygonSoup;
 
-/// Root of the shared, read-only test meshes: `HALFWING_DATA/meshes`, by default the data set
-/// beside the repository (`../shared/data`, as DESIGN.md says), like the other data tests.
+#[path = "../shared_data/mod.rs"]
+mod shared_data;
+
+/// Root of the shared, read-only test meshes.
 pub fn data_dir() -> PathBuf {
-    std::env::var_os("HALFWING_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"))
-        .join("meshes")
+    shared_data::root().join("meshes")
 }
 
 /// Reads an OFF (also NOFF/COFF: extra per-vertex and per-face columns are ignored) or OBJ file
