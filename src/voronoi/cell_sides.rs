@@ -199,7 +199,7 @@ impl Voronoi {
                 }
             }
         };
-        if self.merged.is_empty() {
+        if !self.any_merged() {
             // One vertex per triangle, numbered alike.
             unplaced.iter().for_each(|&t| around_triangle(t));
         } else {

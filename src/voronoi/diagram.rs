@@ -63,9 +63,6 @@ pub struct Voronoi {
     pub(crate) delaunay: Delaunay,
     pub(crate) vertices: Vec<[f64; 2]>,
     pub(crate) triangle_vertex: Vec<u32>,
-    /// Per Delaunay half-edge: are both its sides one Voronoi vertex (no Voronoi edge)? Empty
-    /// when nothing was merged, the usual case for non-degenerate input.
-    pub(crate) merged: Vec<bool>,
     /// The half-edge arrays, built on first use (see [`HalfEdges`]).
     half_edges: OnceLock<HalfEdges>,
 }
@@ -81,7 +78,6 @@ impl Voronoi {
         let mut v = Voronoi {
             vertices: Vec::new(),
             triangle_vertex: Vec::new(),
-            merged: Vec::new(),
             half_edges: OnceLock::new(),
             delaunay,
         };
@@ -147,55 +143,70 @@ impl Voronoi {
                 (merged, later)
             },
         );
-        let mut merged_edges = Vec::new();
-        for (merged, later) in runs {
-            merged_edges.extend(merged);
-            merged_edges.extend(later.into_iter().filter_map(|e| {
+        // The edges between runs, now that every centre is known: a quarter of all edges, as
+        // triangles are numbered in creation order, so they are decided in parallel too.
+        let (merged_in_runs, later): (Vec<_>, Vec<_>) = runs.into_iter().unzip();
+        let centres_known = &centres;
+        let merged_between = map_each(later, |_, edges: Vec<u32>| {
+            let merged = edges.into_iter().filter(|&e| {
                 let twin = d.twins[e as usize];
                 let (here, radius) = self.circumcircle(e / 3, unscale);
-                same_vertex(e, here, radius, centres[(twin / 3) as usize]).then_some(twin)
-            }));
-        }
-        if merged_edges.is_empty() {
+                same_vertex(e, here, radius, centres_known[(twin / 3) as usize])
+            });
+            merged.map(|e| d.twins[e as usize]).collect::<Vec<u32>>()
+        });
+        let merged_edges = || merged_in_runs.iter().chain(&merged_between).flatten();
+        // Each triangle its own group (and vertex) to begin with.
+        let mut group = large_arrays::with_capacity::<u32>(n_tri);
+        group.extend(0..n_tri as u32);
+        if merged_edges().next().is_none() {
             // No cocircular or coincident pair (the usual case): one vertex per triangle.
-            self.triangle_vertex = (0..n_tri as u32).collect();
+            self.triangle_vertex = group;
             self.vertices = centres;
             return;
         }
-        let mut merged = vec![false; d.triangles.len()];
-        let mut parent: Vec<u32> = (0..n_tri as u32).collect();
-        for &e in &merged_edges {
+        for &e in merged_edges() {
             let t = d.twins[e as usize];
-            merged[e as usize] = true;
-            merged[t as usize] = true;
-            let (ra, rb) = (find(&mut parent, e / 3), find(&mut parent, t / 3));
+            let (ra, rb) = (find(&mut group, e / 3), find(&mut group, t / 3));
             if ra != rb {
-                parent[ra.max(rb) as usize] = ra.min(rb);
+                group[ra.max(rb) as usize] = ra.min(rb);
             }
         }
-        // Parents only point to smaller triangles, so in increasing order a triangle's parent
-        // already points to its root: one step finds it, and roots (numbered as met) come first.
-        let mut triangle_vertex = vec![INVALID; n_tri];
-        let mut vertices = Vec::with_capacity(n_tri);
+        // Parents only point to smaller triangles, so in increasing order a triangle's parent is
+        // already numbered: one pass turns the parent links into vertex numbers in place (roots
+        // numbered as met), and moves the roots' centres to the front of `centres`.
+        let mut n_vertices = 0;
         for t in 0..n_tri {
-            let root = parent[parent[t] as usize];
-            parent[t] = root;
-            triangle_vertex[t] = if root as usize == t {
-                vertices.push(centres[t]);
-                (vertices.len() - 1) as u32
+            let parent = group[t] as usize;
+            group[t] = if parent == t {
+                centres[n_vertices] = centres[t];
+                n_vertices += 1;
+                (n_vertices - 1) as u32
             } else {
-                triangle_vertex[root as usize]
+                group[parent]
             };
         }
-        self.triangle_vertex = triangle_vertex;
-        self.vertices = vertices;
-        self.merged = merged;
+        self.triangle_vertex = group;
+        self.vertices = large_arrays::fit(centres, n_vertices);
     }
 
-    /// Is Delaunay half-edge `e` merged away (both its sides one Voronoi vertex)?
+    /// Were any triangles merged into one Voronoi vertex? (Not for non-degenerate input.)
+    #[inline(always)]
+    pub(crate) fn any_merged(&self) -> bool {
+        self.vertices.len() < self.triangle_vertex.len()
+    }
+
+    /// Is Delaunay half-edge `e` merged away (both its sides one Voronoi vertex, so no Voronoi
+    /// edge)? Decided from the vertex numbers, so that no edge of the diagram joins a vertex to
+    /// itself even where a group was joined through other edges.
     #[inline(always)]
     pub(crate) fn is_merged(&self, e: u32) -> bool {
-        !self.merged.is_empty() && self.merged[e as usize]
+        self.any_merged() && {
+            let twin = self.delaunay.twins[e as usize];
+            twin != INVALID
+                && self.triangle_vertex[(e / 3) as usize]
+                    == self.triangle_vertex[(twin / 3) as usize]
+        }
     }
 
     /// The half-edge arrays, built on first use.
