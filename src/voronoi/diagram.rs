@@ -174,17 +174,21 @@ impl Voronoi {
         }
         // Parents only point to smaller triangles, so in increasing order a triangle's parent is
         // already numbered: one pass turns the parent links into vertex numbers in place (roots
-        // numbered as met), and moves the roots' centres to the front of `centres`.
+        // numbered as met), and moves the roots' centres to the front of `centres`. Branch-free
+        // (on grids roots and the rest alternate): slot `n_vertices` is never ahead of `t`, so
+        // copying every centre there is harmless until a root's copy stays.
         let mut n_vertices = 0;
         for t in 0..n_tri {
             let parent = group[t] as usize;
-            group[t] = if parent == t {
-                centres[n_vertices] = centres[t];
-                n_vertices += 1;
-                (n_vertices - 1) as u32
+            let is_root = parent == t;
+            let parents_vertex = group[parent];
+            centres[n_vertices] = centres[t];
+            group[t] = if is_root {
+                n_vertices as u32
             } else {
-                group[parent]
+                parents_vertex
             };
+            n_vertices += usize::from(is_root);
         }
         self.triangle_vertex = group;
         self.vertices = large_arrays::fit(centres, n_vertices);
