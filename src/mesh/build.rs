@@ -303,27 +303,34 @@ mod tests {
         assert_eq!(mesh.valence(VertexId(0)), 3);
     }
 
-    /// The degenerate faces are found in the walk with one thread and beside it with two: both
-    /// ways give the same diagnostic and the same mesh, on the fast path and through resolve.
+    /// The degenerate faces are found in the walk or in a pass of their own (with one thread: in
+    /// the walk when the vertex order follows the faces, before it otherwise; with two: beside
+    /// it). Every way gives the same diagnostic and the same mesh, on the fast path and through
+    /// resolve.
     #[cfg(feature = "parallel")]
     #[test]
     fn degenerate_faces_are_the_same_found_in_the_walk_or_beside_it() {
         // A strip of quads split into triangles, with collapsed and needle triangles among them
-        // and, for the resolve path, one repeated face.
+        // and, for the resolve path, one repeated face; faces in strip order, and with the two
+        // halves of the strip interleaved so that consecutive faces are far apart.
         let mut positions = Vec::new();
-        for i in 0..200 {
+        for i in 0..1001 {
             positions.push([f64::from(i), 0.0, 0.0]);
             positions.push([f64::from(i), 1.0, 0.0]);
         }
         positions[41] = positions[40];
-        positions[101] = [50.0, 1e-17, 0.0];
-        let mut indices = Vec::new();
-        for i in 0..199u32 {
+        positions[1601] = [800.0, 1e-17, 0.0];
+        let mut in_order = Vec::new();
+        for i in 0..1000u32 {
             let (a, b, c, d) = (2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1);
-            indices.extend([a, b, c, a, c, d]);
+            in_order.extend([a, b, c, a, c, d]);
         }
-        let mut repeated = indices.clone();
-        repeated.extend_from_slice(&indices[..3]);
+        let (first_half, second_half) = in_order.split_at(in_order.len() / 2);
+        let interleaved: Vec<u32> = first_half
+            .chunks(3)
+            .zip(second_half.chunks(3))
+            .flat_map(|(f, g)| f.iter().chain(g).copied())
+            .collect();
         let in_pool = |threads: usize, indices: &[u32], policy: BuildPolicy| {
             rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
@@ -333,19 +340,26 @@ mod tests {
                     Mesh::from_face_list(&FaceList::triangles(&positions, indices), policy).unwrap()
                 })
         };
-        for (indices, policy) in [
-            (&indices, BuildPolicy::Strict),
-            (&repeated, BuildPolicy::Skip),
-        ] {
-            let (alone, alone_diagnostic) = in_pool(1, indices, policy);
-            let (beside, beside_diagnostic) = in_pool(2, indices, policy);
-            assert!(
-                alone_diagnostic.degenerate_faces.len() >= 3,
-                "{alone_diagnostic}"
-            );
-            assert_eq!(alone_diagnostic, beside_diagnostic);
-            assert_eq!(alone.halfedge_nexts(), beside.halfedge_nexts());
-            assert_eq!(alone.positions(), beside.positions());
+        for (indices, follows) in [(&in_order, true), (&interleaved, false)] {
+            let table = FaceTable::new(&FaceList::triangles(&positions, indices)).unwrap();
+            let buckets = EdgeBuckets::new(&table, positions.len()).unwrap();
+            assert_eq!(buckets.vertices_follow_faces(), follows);
+            let mut repeated = indices.clone();
+            repeated.extend_from_slice(&indices[..3]);
+            for (indices, policy) in [
+                (indices, BuildPolicy::Strict),
+                (&repeated, BuildPolicy::Skip),
+            ] {
+                let (alone, alone_diagnostic) = in_pool(1, indices, policy);
+                let (beside, beside_diagnostic) = in_pool(2, indices, policy);
+                assert!(
+                    alone_diagnostic.degenerate_faces.len() >= 3,
+                    "{alone_diagnostic}"
+                );
+                assert_eq!(alone_diagnostic, beside_diagnostic);
+                assert_eq!(alone.halfedge_nexts(), beside.halfedge_nexts());
+                assert_eq!(alone.positions(), beside.positions());
+            }
         }
     }
 }

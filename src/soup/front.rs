@@ -98,14 +98,17 @@ pub(crate) fn walk_faces<'a, T: Send>(
 
 /// `walk(table, buckets, positions, degenerate)` with the degenerate faces of `table` (input
 /// face indices, ascending): found in a pass of their own beside the walk when a second thread is
-/// free, else by the walk itself as it reads each face.
+/// free; with one thread, by the walk itself as it reads each face when the vertex order follows
+/// the faces (the position loads then hide in the walk's), else in a pass of their own before
+/// it, where the scattered position loads overlap each other instead of the walk's misses
+/// (8–14% faster on the scanned models, 5% slower on the generated torus).
 fn walk_checking_areas<T: Send>(
     table: &FaceTable<'_>,
     buckets: EdgeBuckets,
     positions: &[[f64; 3]],
     walk: &impl Walk<T>,
 ) -> (Option<T>, Vec<u32>) {
-    let beside = thread_count() > 1;
+    let beside = thread_count() > 1 || !buckets.vertices_follow_faces();
     let (found_beside, (walked, found_in_walk)) = join(
         || beside.then(|| DegenerateFaces::of_table(table, positions)),
         || {
