@@ -105,7 +105,7 @@ impl Voronoi {
         // (so that no edge has zero length in the floating-point output either). Each edge is
         // decided once, from the triangle with the larger index, as soon as both centres are
         // known: in the same pass for neighbours in the same run of triangles (whose centres are
-        // still in cache), after the pass for the others. Only the (rare) merged edges are listed.
+        // still in cache), after the pass for the others, which are listed for it.
         // `e` lies in the triangle whose circumcircle is (`here`, `radius`).
         let same_vertex = |e: u32, here: [f64; 2], radius: f64, there: [f64; 2]| {
             here == there
@@ -118,11 +118,22 @@ impl Voronoi {
         // A few long runs: enough to share the work among threads, few edges between runs.
         let run_len = n_tri.div_ceil(8).max(1 << 15);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
+        // Union-find over triangles, parents as triangle ids. Neighbours in one run are joined
+        // in that run's own part of the array, so runs are independent.
+        let mut group = large_arrays::zeroed::<u32>(n_tri);
         let runs = map_each(
-            centres.chunks_mut(run_len).collect(),
-            |k, run: &mut [[f64; 2]]| {
+            centres
+                .chunks_mut(run_len)
+                .zip(group.chunks_mut(run_len))
+                .collect(),
+            |k, (run, run_group): (&mut [[f64; 2]], &mut [u32])| {
                 let first = (k * run_len) as u32;
-                let (mut merged, mut later) = (Vec::new(), Vec::new());
+                // Each triangle its own group (and vertex) to begin with.
+                run_group
+                    .iter_mut()
+                    .zip(first..)
+                    .for_each(|(slot, t)| *slot = t);
+                let (mut any_merged, mut later) = (false, Vec::new());
                 for i in 0..run.len() {
                     let t = first + i as u32;
                     let (here, radius) = self.circumcircle(t, unscale);
@@ -136,16 +147,17 @@ impl Voronoi {
                         if neighbour < first {
                             later.push(e);
                         } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
-                            merged.push(twin);
+                            join_groups(run_group, first, t, neighbour);
+                            any_merged = true;
                         }
                     }
                 }
-                (merged, later)
+                (any_merged, later)
             },
         );
         // The edges between runs, now that every centre is known: a quarter of all edges, as
         // triangles are numbered in creation order, so they are decided in parallel too.
-        let (merged_in_runs, later): (Vec<_>, Vec<_>) = runs.into_iter().unzip();
+        let (merged_in_runs, later): (Vec<bool>, Vec<_>) = runs.into_iter().unzip();
         let centres_known = &centres;
         let merged_between = map_each(later, |_, edges: Vec<u32>| {
             let merged = edges.into_iter().filter(|&e| {
@@ -153,24 +165,16 @@ impl Voronoi {
                 let (here, radius) = self.circumcircle(e / 3, unscale);
                 same_vertex(e, here, radius, centres_known[(twin / 3) as usize])
             });
-            merged.map(|e| d.twins[e as usize]).collect::<Vec<u32>>()
+            merged.collect::<Vec<u32>>()
         });
-        let merged_edges = || merged_in_runs.iter().chain(&merged_between).flatten();
-        // Each triangle its own group (and vertex) to begin with.
-        let mut group = large_arrays::with_capacity::<u32>(n_tri);
-        group.extend(0..n_tri as u32);
-        if merged_edges().next().is_none() {
+        if !merged_in_runs.contains(&true) && merged_between.iter().all(Vec::is_empty) {
             // No cocircular or coincident pair (the usual case): one vertex per triangle.
             self.triangle_vertex = group;
             self.vertices = centres;
             return;
         }
-        for &e in merged_edges() {
-            let t = d.twins[e as usize];
-            let (ra, rb) = (find(&mut group, e / 3), find(&mut group, t / 3));
-            if ra != rb {
-                group[ra.max(rb) as usize] = ra.min(rb);
-            }
+        for &e in merged_between.iter().flatten() {
+            join_groups(&mut group, 0, e / 3, d.twins[e as usize] / 3);
         }
         // Parents only point to smaller triangles, so in increasing order a triangle's parent is
         // already numbered: one pass turns the parent links into vertex numbers in place (roots
@@ -490,14 +494,27 @@ fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] 
     [ux / (2.0 * det), uy / (2.0 * det)]
 }
 
-/// Union-find root with path halving.
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let grand = parent[parent[x as usize] as usize];
-        parent[x as usize] = grand;
+/// Union-find root of triangle `x` with path halving, in `parent` as for [`join_groups`].
+fn find(parent: &mut [u32], first: u32, mut x: u32) -> u32 {
+    loop {
+        let up = parent[(x - first) as usize];
+        if up == x {
+            return x;
+        }
+        let grand = parent[(up - first) as usize];
+        parent[(x - first) as usize] = grand;
         x = grand;
     }
-    x
+}
+
+/// Joins the groups of triangles `a` and `b` in `parent` (the parents, as triangle ids, of
+/// triangles `first..`): the larger root points to the smaller, so parents only ever point to
+/// smaller triangles.
+fn join_groups(parent: &mut [u32], first: u32, a: u32, b: u32) {
+    let (ra, rb) = (find(parent, first, a), find(parent, first, b));
+    if ra != rb {
+        parent[(ra.max(rb) - first) as usize] = ra.min(rb);
+    }
 }
 
 /// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
