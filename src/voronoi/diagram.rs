@@ -155,8 +155,9 @@ impl Voronoi {
                 (any_merged, later)
             },
         );
-        // The edges between runs, now that every centre is known: a quarter of all edges, as
-        // triangles are numbered in creation order, so they are decided in parallel too.
+        // The edges between runs, now that every centre is known: about a quarter of all edges
+        // (triangles are numbered by their newest corner, and the insertion rounds scatter the
+        // older ones), so they are decided in parallel too.
         let (merged_in_runs, later): (Vec<bool>, Vec<_>) = runs.into_iter().unzip();
         let centres_known = &centres;
         let merged_between = map_each(later, |_, edges: Vec<u32>| {
