@@ -17,6 +17,7 @@ pub mod winged;
 pub mod ffi;
 
 mod cycles;
+mod disjoint_sets;
 mod large_arrays;
 
 /// The crate version, as `Cargo.toml` states it.

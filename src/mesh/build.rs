@@ -5,8 +5,8 @@
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
 //! twin. Each face's loop is written as soon as its corners are known, so half-edges are numbered
 //! in corner order and each face's half-edges sit close together in memory; the face's area is
-//! checked on the way, or beside the walk when a second thread is free (degenerate faces are
-//! reported). Boundary half-edges are then linked into loops through each vertex's outgoing
+//! checked in the walk or in a pass of its own (degenerate faces are reported; `soup::front`
+//! chooses where). Boundary half-edges are then linked into loops through each vertex's outgoing
 //! boundary half-edge (walking the fan only at vertices with several boundary gaps).
 //!
 //! Well-formed input (no face a policy has to act on) is built directly, and the walk itself

@@ -2,6 +2,7 @@
 
 use super::Mesh;
 use super::ids::{EdgeId, FaceId, INVALID_INDEX};
+use crate::disjoint_sets;
 
 /// The faces of a mesh split into edge-connected components.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -38,7 +39,7 @@ impl Mesh {
             {
                 continue;
             }
-            union_towards_smaller(&mut parent, a, b);
+            disjoint_sets::join(&mut parent, 0, a, b);
         }
         // Ascending, every parent is smaller than its child, so it holds its component already.
         let mut count = 0u32;
@@ -56,32 +57,6 @@ impl Mesh {
             count: count as usize,
             face_component: parent,
         }
-    }
-}
-
-/// The root of `f`, halving the path on the way (each visited node skips to its grandparent).
-#[inline]
-fn find_root(parent: &mut [u32], mut f: u32) -> u32 {
-    loop {
-        let p = parent[f as usize];
-        if p == f {
-            return f;
-        }
-        let grandparent = parent[p as usize];
-        parent[f as usize] = grandparent;
-        f = grandparent;
-    }
-}
-
-/// Joins the sets of `a` and `b` under the smaller of their roots, which keeps every parent
-/// below its child.
-#[inline]
-fn union_towards_smaller(parent: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find_root(parent, a), find_root(parent, b));
-    if ra < rb {
-        parent[rb as usize] = ra;
-    } else if rb < ra {
-        parent[ra as usize] = rb;
     }
 }
 

@@ -128,8 +128,9 @@ fn walk_checking_areas<T: Send>(
 
 /// `list` laid out as a table, with the buckets of its edges, when no face needs a policy
 /// decision: the list is consistent, no face is too small, out of range or repeats a vertex
-/// (`list` has at most [`MAX_VERTICES`] vertices). Builders try this fast path first and call [`resolve`] only for the rest (non-finite
-/// coordinates and edge defects are theirs to find on it).
+/// (`list` has at most [`MAX_VERTICES`] vertices). Builders try this fast path first and call
+/// [`resolve`] only for the rest (non-finite coordinates and edge defects are theirs to find on
+/// it).
 fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuckets)> {
     let n_vertices = list.positions.len();
     let table = FaceTable::new(list).ok()?;

@@ -9,27 +9,20 @@ use std::collections::HashMap;
 use super::pairing::{BOUNDARY, EdgePairing, UNPAIRED};
 use super::resolve::VertexCopies;
 use super::{BuildError, FaceTable};
+use crate::disjoint_sets;
 
-/// Disjoint sets of corners, with path halving.
+/// Disjoint sets of corners (see [`disjoint_sets`]).
 struct Fans {
     parent: Vec<u32>,
 }
 
 impl Fans {
-    fn root(&mut self, mut c: u32) -> u32 {
-        while self.parent[c as usize] != c {
-            let grandparent = self.parent[self.parent[c as usize] as usize];
-            self.parent[c as usize] = grandparent;
-            c = grandparent;
-        }
-        c
+    fn root(&mut self, c: u32) -> u32 {
+        disjoint_sets::root(&mut self.parent, 0, c)
     }
 
     fn join(&mut self, a: u32, b: u32) {
-        let (a, b) = (self.root(a), self.root(b));
-        if a != b {
-            self.parent[a.max(b) as usize] = a.min(b);
-        }
+        disjoint_sets::join(&mut self.parent, 0, a, b);
     }
 }
 

@@ -150,6 +150,7 @@ impl ClipPolygon {
         self.edges[i]
     }
 
+    /// Centroid of the polygon.
     pub fn centroid(&self) -> [f64; 2] {
         polygon_area_centroid(&self.vertices).1
     }

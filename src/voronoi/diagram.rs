@@ -9,6 +9,7 @@ use super::expansion::Exact;
 use super::incremental::prev_edge;
 use super::parallel::map_each;
 use super::predicates::incircle;
+use crate::disjoint_sets;
 use crate::large_arrays;
 
 /// Geometry of an undirected Voronoi edge.
@@ -147,7 +148,7 @@ impl Voronoi {
                         if neighbour < first {
                             later.push(e);
                         } else if same_vertex(e, here, radius, run[(neighbour - first) as usize]) {
-                            join_groups(run_group, first, t, neighbour);
+                            disjoint_sets::join(run_group, first, t, neighbour);
                             any_merged = true;
                         }
                     }
@@ -175,7 +176,7 @@ impl Voronoi {
             return;
         }
         for &e in merged_between.iter().flatten() {
-            join_groups(&mut group, 0, e / 3, d.twins[e as usize] / 3);
+            disjoint_sets::join(&mut group, 0, e / 3, d.twins[e as usize] / 3);
         }
         // Parents only point to smaller triangles, so in increasing order a triangle's parent is
         // already numbered: one pass turns the parent links into vertex numbers in place (roots
@@ -493,29 +494,6 @@ fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] 
     let uy = bx.times(&cl).minus(&cx.times(&bl)).value();
     // A Delaunay triangle is never flat (exact orientation), so `det` is not zero.
     [ux / (2.0 * det), uy / (2.0 * det)]
-}
-
-/// Union-find root of triangle `x` with path halving, in `parent` as for [`join_groups`].
-fn find(parent: &mut [u32], first: u32, mut x: u32) -> u32 {
-    loop {
-        let up = parent[(x - first) as usize];
-        if up == x {
-            return x;
-        }
-        let grand = parent[(up - first) as usize];
-        parent[(x - first) as usize] = grand;
-        x = grand;
-    }
-}
-
-/// Joins the groups of triangles `a` and `b` in `parent` (the parents, as triangle ids, of
-/// triangles `first..`): the larger root points to the smaller, so parents only ever point to
-/// smaller triangles.
-fn join_groups(parent: &mut [u32], first: u32, a: u32, b: u32) {
-    let (ra, rb) = (find(parent, first, a), find(parent, first, b));
-    if ra != rb {
-        parent[(ra.max(rb) - first) as usize] = ra.min(rb);
-    }
 }
 
 /// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
