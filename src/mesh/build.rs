@@ -342,8 +342,7 @@ mod tests {
         };
         for (indices, follows) in [(&in_order, true), (&interleaved, false)] {
             let table = FaceTable::new(&FaceList::triangles(&positions, indices)).unwrap();
-            let buckets = EdgeBuckets::new(&table, positions.len()).unwrap();
-            assert_eq!(buckets.vertices_follow_faces(), follows);
+            assert_eq!(table.vertices_follow_faces(), follows);
             let mut repeated = indices.clone();
             repeated.extend_from_slice(&indices[..3]);
             for (indices, policy) in [

@@ -46,14 +46,7 @@ pub(crate) struct EdgeBuckets {
     slots: Vec<u64>,
     /// Edges that found their bucket full, by [`edge_key`].
     spill: HashMap<u64, u64>,
-    /// Does the vertex order follow the face order (see [`Self::vertices_follow_faces`])?
-    vertices_follow_faces: bool,
 }
-
-/// Faces whose first vertex is further than this from the previous face's count as a jump: past
-/// a few hundred vertices a face's vertex data (buckets, positions) is no longer near the last
-/// face's in memory.
-const NEARBY_VERTICES: u32 = 256;
 
 impl EdgeBuckets {
     /// Empty buckets sized for `table`'s edges, or `None` when a face is not well formed (fewer
@@ -65,13 +58,10 @@ impl EdgeBuckets {
         // Branch-free counting: whether a corner runs forward is a coin toss on models whose
         // vertex order is not face-coherent.
         let mut count = |a: u32, b: u32| start[a as usize + 1] += u32::from(a < b);
-        let (mut jumps, mut previous_first) = (0usize, 0u32);
         for face in table.faces() {
             if !is_well_formed(face, n_vertices, &mut scratch) {
                 return None;
             }
-            jumps += usize::from(face[0].abs_diff(previous_first) > NEARBY_VERTICES);
-            previous_first = face[0];
             match *face {
                 [a, b, c] => {
                     count(a, b);
@@ -103,16 +93,7 @@ impl EdgeBuckets {
             start,
             slots,
             spill: HashMap::new(),
-            vertices_follow_faces: jumps <= table.n_faces() / 4,
         })
-    }
-
-    /// Do consecutive faces mostly start near each other in vertex order (generated grids and
-    /// tori, meshes written in a cache-friendly order)? Then a walk over the faces touches
-    /// vertex data almost sequentially; otherwise (scanned models, whose vertex order is not the
-    /// faces') nearly every corner waits on memory.
-    pub(crate) fn vertices_follow_faces(&self) -> bool {
-        self.vertices_follow_faces
     }
 
     /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
