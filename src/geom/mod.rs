@@ -1,6 +1,7 @@
 //! Geometry: vectors, exact predicates, normals, intersections.
 
 mod newell;
+pub(crate) use newell::is_clearly_not_degenerate_triangle;
 mod normals;
 
 pub use newell::{

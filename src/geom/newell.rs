@@ -68,16 +68,23 @@ pub fn quad_area_vector(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> [
 /// every face this way.
 #[inline]
 pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
-    let (ab, ac) = (difference(b, a), difference(c, a));
-    let area_vector = cross(ab, ac);
-    // |bc|² ≤ 2(|ab|² + |ac|²), so the squared perimeter is below four times the two edges'
-    // squares: an area vector that is not negligible against that is not negligible at all.
-    // Almost every face is decided here, without the third edge.
-    let two_edges = squared_length(ab) + squared_length(ac);
-    if !is_negligible_area(area_vector, 4.0 * two_edges) {
+    if is_clearly_not_degenerate_triangle(a, b, c) {
         return false;
     }
-    is_negligible_area(area_vector, two_edges + squared_distance(b, c))
+    let (ab, ac) = (difference(b, a), difference(c, a));
+    let two_edges = squared_length(ab) + squared_length(ac);
+    is_negligible_area(cross(ab, ac), two_edges + squared_distance(b, c))
+}
+
+/// The first test of [`is_degenerate_triangle`], which decides almost every face: `true` when
+/// the area vector is not negligible even against four times the squares of the two edges from
+/// `a`. Since |bc|² ≤ 2(|ab|² + |ac|²), that bounds the squared perimeter, so such a triangle is
+/// not degenerate. Branch-free, for bulk passes that test several faces side by side.
+#[inline(always)]
+pub(crate) fn is_clearly_not_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
+    let (ab, ac) = (difference(b, a), difference(c, a));
+    let two_edges = squared_length(ab) + squared_length(ac);
+    !is_negligible_area(cross(ab, ac), 4.0 * two_edges)
 }
 
 /// [`is_degenerate_polygon`] for a quad, its area vector from the diagonals (as
@@ -92,6 +99,7 @@ pub fn is_degenerate_quad(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) ->
 }
 
 /// `true` when an area vector is rounding noise against the squared perimeter.
+#[inline(always)]
 fn is_negligible_area(area_vector: [f64; 3], squared_perimeter: f64) -> bool {
     /// Relative size of the area vector below which it is rounding noise.
     const RELATIVE_TOLERANCE: f64 = 16.0 * f64::EPSILON;

@@ -148,6 +148,15 @@ impl<'a> FaceTable<'a> {
         &self.corners
     }
 
+    /// The number of corners of every face, when all faces have the same.
+    #[inline]
+    pub(crate) fn uniform_size(&self) -> Option<usize> {
+        match &self.layout {
+            Layout::Uniform { size, .. } => Some(*size as usize),
+            Layout::Offsets(_) => None,
+        }
+    }
+
     /// The corner range of face `f`.
     #[inline]
     pub fn face_range(&self, f: usize) -> Range<usize> {
