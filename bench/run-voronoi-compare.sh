@@ -6,7 +6,8 @@
 #
 # The Rust libraries are timed in one process (benches/voronoi_compare.rs), CGAL in another
 # (bench/voronoi/voronoi_cgal.cpp), back to back, on identical generated inputs (same LCG, same
-# seed). Each time is the best of several runs (7, or 3 for the 1M and grid inputs).
+# seed). Each time is the best of several runs (51 for 10k sites, 15 for 100k, 5 for the 1M and
+# grid inputs: small inputs need more runs for a stall on a shared machine to miss one).
 #
 # Usage: bench/run-voronoi-compare.sh [input-filter]   (e.g. "uniform_1000000")
 # Env:   BUILD_DIR (default build/bench) for the CMake build of the CGAL side.

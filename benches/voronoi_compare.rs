@@ -29,6 +29,17 @@ fn grid(side: usize) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// Runs per measurement for `n_sites` sites (the CGAL side, bench/voronoi/voronoi_cgal.cpp, uses
+/// the same rule): the smaller the input, the more a passing stall on a shared machine weighs in
+/// one run, so small inputs, quick to repeat, get many runs; the best is kept.
+fn runs_for(n_sites: usize) -> usize {
+    match n_sites {
+        ..=10_000 => 51,
+        ..=100_000 => 15,
+        _ => 5,
+    }
+}
+
 /// The best wall-clock time of `runs` runs of `work`, each given a fresh `input` (made outside
 /// the timing, as the crates that take ownership of their input need).
 fn best_of<I, R>(runs: usize, input: impl Fn() -> I, work: impl Fn(I) -> R) -> Duration {
@@ -86,12 +97,21 @@ fn main() {
     let mut inputs: Vec<(String, Vec<[f64; 2]>, ClipPolygon, usize)> = [10_000, 100_000, 1_000_000]
         .iter()
         .map(|&n| {
-            let runs = if n >= 1_000_000 { 3 } else { 7 };
-            (format!("uniform_{n}"), uniform(n, 42), unit.clone(), runs)
+            (
+                format!("uniform_{n}"),
+                uniform(n, 42),
+                unit.clone(),
+                runs_for(n),
+            )
         })
         .collect();
     let grid_box = ClipPolygon::rectangle([-0.5, -0.5], [999.5, 999.5]).expect("grid box");
-    inputs.push(("grid_1000x1000".into(), grid(1000), grid_box, 3));
+    inputs.push((
+        "grid_1000x1000".into(),
+        grid(1000),
+        grid_box,
+        runs_for(1_000_000),
+    ));
 
     for (name, sites, clip, runs) in &inputs {
         if filter.as_ref().is_some_and(|f| !name.contains(f.as_str())) {

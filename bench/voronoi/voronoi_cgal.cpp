@@ -76,16 +76,24 @@ void run(const points2d::PointSet& set, int runs) {
 
 }  // namespace
 
+/// Runs per measurement for `n_sites` sites: the same rule as benches/voronoi_compare.rs.
+int runs_for(std::size_t n_sites) {
+  if (n_sites <= 10000) return 51;
+  if (n_sites <= 100000) return 15;
+  return 5;
+}
+
 int main(int argc, char** argv) {
   const char* filter = argc > 1 ? argv[1] : "";
   std::vector<std::pair<points2d::PointSet, int>> inputs;
   for (std::size_t n : {10000u, 100000u, 1000000u}) {
     points2d::PointSet set = points2d::uniform(n, 42);
-    inputs.emplace_back(std::move(set), n >= 1000000 ? 3 : 7);
+    inputs.emplace_back(std::move(set), runs_for(n));
   }
   points2d::PointSet grid = points2d::integer_grid(1000);
   grid.name = "grid_1000x1000";
-  inputs.emplace_back(std::move(grid), 3);
+  const std::size_t grid_sites = grid.size();
+  inputs.emplace_back(std::move(grid), runs_for(grid_sites));
   for (const auto& [set, runs] : inputs)
     if (set.name.find(filter) != std::string::npos) run(set, runs);
   return 0;
