@@ -35,8 +35,8 @@ fn grid(side: usize) -> Vec<[f64; 2]> {
 fn runs_for(n_sites: usize) -> usize {
     match n_sites {
         ..=10_000 => 51,
-        ..=100_000 => 15,
-        _ => 5,
+        ..=100_000 => 11,
+        _ => 3,
     }
 }
 
