@@ -219,16 +219,29 @@ impl<'a> GhostTriangulation<'a> {
             self.cavity.push(self.triangles.len() as u32);
             self.triangles.push(Triangle::default());
         }
-        // Fan triangle `i` is (u, v, s) for boundary edge `i` = (u, v), stored rotated so that a
-        // vertex at infinity lands in corner 2: its logical edge `j` is half-edge `edge(i, j)`.
+        if self.boundary.iter().all(|edge| edge.rotation == 0) {
+            self.fill_fan::<false>(s);
+        } else {
+            self.fill_fan::<true>(s);
+        }
+        self.last = self.cavity[0];
+        None
+    }
+
+    /// Re-triangulates the cavity as a fan around site `s`: fan triangle `i` is `(u, v, s)` for
+    /// boundary edge `i` = `(u, v)`, stored rotated so that a vertex at infinity lands in corner
+    /// 2 (its logical edge `j` is half-edge `edge(i, j)`). Without `ROTATED` no boundary edge
+    /// touches the vertex at infinity, as for every site inside the hull, and the rotations
+    /// compile away (11% of the insertion's instructions at 10k sites).
+    #[inline(always)]
+    fn fill_fan<const ROTATED: bool>(&mut self, s: u32) {
         let (cavity, boundary) = (&self.cavity, &self.boundary);
-        let edge = |i: usize, j: u32| 3 * cavity[i] + add_mod3(j, boundary[i].rotation);
+        let k = boundary.len();
+        let rotation = |i: usize| if ROTATED { boundary[i].rotation } else { 0 };
+        let edge = |i: usize, j: u32| 3 * cavity[i] + add_mod3(j, rotation(i));
         for i in 0..k {
             let CavityEdge {
-                outside,
-                from,
-                to,
-                rotation,
+                outside, from, to, ..
             } = boundary[i];
             debug_assert_eq!(
                 to,
@@ -238,13 +251,11 @@ impl<'a> GhostTriangulation<'a> {
             let next = if i + 1 == k { 0 } else { i + 1 };
             let prev = if i == 0 { k - 1 } else { i - 1 };
             self.triangles[cavity[i] as usize] = Triangle {
-                corners: rotated([from, to, s], rotation),
-                twins: rotated([outside, edge(next, 2), edge(prev, 1)], rotation),
+                corners: rotated([from, to, s], rotation(i)),
+                twins: rotated([outside, edge(next, 2), edge(prev, 1)], rotation(i)),
             };
             self.triangles[(outside / 3) as usize].twins[(outside % 3) as usize] = edge(i, 0);
         }
-        self.last = self.cavity[0];
-        None
     }
 }
 
