@@ -1,5 +1,6 @@
-//! Zero-area faces, which every builder reports: checked during its face walk when the walk runs
-//! alone, or in a pass of their own beside it when a second thread is free.
+//! Zero-area faces, which every builder reports: checked during its face walk, or in a pass of
+//! their own (beside the walk when a second thread is free, before it when the vertex order does
+//! not follow the faces; see `soup::front`).
 
 use super::FaceTable;
 use crate::geom::{
@@ -7,7 +8,7 @@ use crate::geom::{
     is_degenerate_triangle,
 };
 
-/// The degenerate faces of a table as input face indices, ascending, found face by face.
+/// The degenerate faces of a table as input face indices, ascending, found in face order.
 pub(crate) struct DegenerateFaces<'p> {
     positions: &'p [[f64; 3]],
     faces: Vec<u32>,
