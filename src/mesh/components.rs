@@ -41,20 +41,14 @@ impl Mesh {
             }
             disjoint_sets::join(&mut parent, 0, a, b);
         }
-        // Ascending, every parent is smaller than its child, so it holds its component already.
-        let mut count = 0u32;
-        for f in 0..n_faces {
-            if check_deleted && self.is_face_deleted(FaceId(f as u32)) {
-                parent[f] = INVALID_INDEX;
-            } else if parent[f] as usize == f {
-                parent[f] = count;
-                count += 1;
-            } else {
-                parent[f] = parent[parent[f] as usize];
-            }
-        }
+        // Deleted faces were never joined: they become INVALID_INDEX (u32::MAX), no component.
+        let count = disjoint_sets::number_sets(
+            &mut parent,
+            |f| check_deleted && self.is_face_deleted(FaceId(f as u32)),
+            |_, _| {},
+        );
         Components {
-            count: count as usize,
+            count,
             face_component: parent,
         }
     }

@@ -178,24 +178,9 @@ impl Voronoi {
         for &e in merged_between.iter().flatten() {
             disjoint_sets::join(&mut group, 0, e / 3, d.twins[e as usize] / 3);
         }
-        // Parents only point to smaller triangles, so in increasing order a triangle's parent is
-        // already numbered: one pass turns the parent links into vertex numbers in place (roots
-        // numbered as met), and moves the roots' centres to the front of `centres`. Branch-free
-        // (on grids roots and the rest alternate): slot `n_vertices` is never ahead of `t`, so
-        // copying every centre there is harmless until a root's copy stays.
-        let mut n_vertices = 0;
-        for t in 0..n_tri {
-            let parent = group[t] as usize;
-            let is_root = parent == t;
-            let parents_vertex = group[parent];
-            centres[n_vertices] = centres[t];
-            group[t] = if is_root {
-                n_vertices as u32
-            } else {
-                parents_vertex
-            };
-            n_vertices += usize::from(is_root);
-        }
+        // The groups become vertex numbers in place, and the roots' centres move to the front.
+        let n_vertices =
+            disjoint_sets::number_sets(&mut group, |_| false, |t, slot| centres[slot] = centres[t]);
         self.triangle_vertex = group;
         self.vertices = large_arrays::fit(centres, n_vertices);
     }
