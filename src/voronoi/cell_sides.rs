@@ -13,6 +13,7 @@
 
 use super::delaunay::{Dimension, INVALID};
 use super::diagram::{EdgeEnds, Voronoi};
+use super::id_set::IdSet;
 use super::incremental::{next_edge, prev_edge};
 
 /// A Voronoi edge seen from one of its cells (which lies on the side's left).
@@ -187,15 +188,14 @@ impl Voronoi {
         // The edges around unplaced vertices, and the rays: the hull edges, one leaving each
         // hull site. Marked in a bit set, which lists them in order without sorting.
         let d = &self.delaunay;
-        let mut marked = vec![0u64; d.triangles.len().div_ceil(64)];
-        let mut mark = |e: u32| marked[(e / 64) as usize] |= 1 << (e % 64);
+        let mut marked = IdSet::new(d.triangles.len());
         for &s in &d.hull {
-            mark(d.vertex_edge[s as usize]);
+            marked.insert(d.vertex_edge[s as usize]);
         }
         let mut around_triangle = |t: u32| {
             for e in 3 * t..3 * t + 3 {
                 if !self.is_merged(e) {
-                    mark(e.min(d.twins[e as usize]));
+                    marked.insert(e.min(d.twins[e as usize]));
                 }
             }
         };
@@ -207,14 +207,6 @@ impl Voronoi {
                 .filter(|&t| !placed(self.triangle_vertex[t as usize]))
                 .for_each(around_triangle);
         }
-        let mut keys = Vec::new();
-        for (word_index, &word) in marked.iter().enumerate() {
-            let mut bits = word;
-            while bits != 0 {
-                keys.push(64 * word_index as u32 + bits.trailing_zeros());
-                bits &= bits - 1;
-            }
-        }
-        keys
+        marked.into_sorted(0)
     }
 }

@@ -5,7 +5,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
-use super::parallel::map_each;
+use super::parallel::{map_each, run_length};
 use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
@@ -185,7 +185,10 @@ impl Voronoi {
             }
             (local, spans)
         };
-        let runs = map_each(order.chunks(1 << 15).collect(), assemble_run);
+        let runs = map_each(
+            order.chunks(run_length(order.len())).collect(),
+            assemble_run,
+        );
         // A single run's list is the whole output; several are concatenated.
         let single = runs.len() == 1;
         let mut indices = if single {

@@ -1,8 +1,9 @@
 //! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
 
 use super::error::VoronoiError;
+use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
-use super::parallel::{map_each, map_indexed};
+use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
@@ -182,12 +183,12 @@ impl Delaunay {
         let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
         let mut twins = large_arrays::zeroed::<u32>(3 * count);
         // Runs of output triangles are independent: filled in parallel.
-        const RUN: usize = 1 << 15;
+        let run = run_length(count);
         let runs: Vec<_> = triangles
-            .chunks_mut(3 * RUN)
-            .zip(corner_ranks.chunks_mut(3 * RUN))
-            .zip(twins.chunks_mut(3 * RUN))
-            .zip(old_index.chunks(RUN))
+            .chunks_mut(3 * run)
+            .zip(corner_ranks.chunks_mut(3 * run))
+            .zip(twins.chunks_mut(3 * run))
+            .zip(old_index.chunks(run))
             .collect();
         map_each(runs, |_, (((sites, ranks), opposites), olds)| {
             for (((sites, ranks), opposites), &old) in sites
@@ -241,9 +242,12 @@ impl Delaunay {
                 self.vertex_edge[site as usize] = e;
             }
         }
-        self.cell_starts = (0..corner_ranks.len() as u32)
-            .filter(|&e| rank_edge[corner_ranks[e as usize] as usize] == e)
-            .collect();
+        let mut starts = IdSet::new(corner_ranks.len());
+        rank_edge
+            .iter()
+            .filter(|&&e| e != INVALID)
+            .for_each(|&e| starts.insert(e));
+        self.cell_starts = starts.into_sorted(to_site.len());
         self.triangles = triangles;
         self.corner_ranks = corner_ranks;
         self.twins = twins;

@@ -22,6 +22,7 @@ mod diagram;
 mod error;
 mod exact_distance;
 mod expansion;
+mod id_set;
 mod incremental;
 mod lloyd;
 mod nearest;

@@ -255,6 +255,26 @@ fn grid_gives_degree_four_vertices() {
 }
 
 #[test]
+fn grid_split_into_parallel_runs_merges_across_their_seams() {
+    // 120 × 120 sites: about 28k triangles and 14k cells, so every parallel pass splits them
+    // into several runs (`parallel::run_length`), and cocircular squares straddle the seams.
+    let side = 120;
+    let pts: Vec<[f64; 2]> = (0..side * side)
+        .map(|i| [(i % side) as f64, (i / side) as f64])
+        .collect();
+    let v = Voronoi::new(&pts).unwrap();
+    check_voronoi(&v);
+    assert_eq!(v.n_vertices(), (side - 1) * (side - 1));
+    let clip =
+        ClipPolygon::rectangle([-0.5, -0.5], [side as f64 - 0.5, side as f64 - 0.5]).unwrap();
+    let cells = v.clip(&clip);
+    for s in 0..pts.len() as u32 {
+        assert!((cells.cell_area(s).unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(cells.cell(s).unwrap().len(), 4);
+    }
+}
+
+#[test]
 fn collinear_and_single_site_diagrams_clip_to_slabs() {
     let clip = ClipPolygon::rectangle([-1.0, -1.0], [4.0, 4.0]).unwrap();
     let v = Voronoi::new(&[[0.0, 0.0], [1.0, 1.0], [3.0, 3.0], [2.0, 2.0]]).unwrap();
