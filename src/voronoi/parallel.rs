@@ -31,14 +31,15 @@ pub(crate) fn run_length(len: usize) -> usize {
 
 /// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
 /// feature is on; results in order. Serves passes over a few long runs of elements (slices,
-/// shared or mutable, that the caller splits off), one task per run. A single run is done on the
-/// calling thread: handing it to the pool and waiting for it would only add the round trip.
+/// shared or mutable, that the caller splits off), one task per run. A single run, or a pool of
+/// one thread, is served on the calling thread: handing the work to the pool and waiting for it
+/// would only add the round trip.
 pub(crate) fn map_each<I: Send, R: Send>(
     items: Vec<I>,
     f: impl Fn(usize, I) -> R + Sync + Send,
 ) -> Vec<R> {
     #[cfg(feature = "parallel")]
-    if items.len() > 1 {
+    if items.len() > 1 && rayon::current_num_threads() > 1 {
         use rayon::prelude::*;
         return items
             .into_par_iter()
