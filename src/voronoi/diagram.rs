@@ -7,7 +7,7 @@ use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
-use super::parallel::{map_each, run_length};
+use super::parallel::{map_each, seamed_run_length};
 use super::predicates::incircle;
 use crate::disjoint_sets;
 use crate::large_arrays;
@@ -117,7 +117,7 @@ impl Voronoi {
         };
         let unscale = d.scale.recip();
         // A few long runs: enough to share the work among threads, few edges between runs.
-        let run_len = run_length(n_tri);
+        let run_len = seamed_run_length(n_tri);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
         // Union-find over triangles, parents as triangle ids. Neighbours in one run are joined
         // in that run's own part of the array, so runs are independent.

@@ -20,14 +20,22 @@ pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + S
     (0..len).map(f).collect()
 }
 
-/// Length of the runs that a pass over `len` elements is split into for [`map_each`]: an eighth
-/// of the pass (work for every thread of a small machine, few seams between runs), but at least
-/// 2^12 elements. From 10k sites on, the passes over cells and triangles take tenths of a
-/// millisecond, well above a task's round trip through the pool.
+/// Length of the runs that a pass over `len` independent elements is split into for
+/// [`map_each`]: an eighth of the pass, but at least 2^12 elements (from 10k sites on, such a run
+/// takes tenths of a millisecond, well above a task's round trip through the pool) and at most
+/// 2^15 (many runs keep the threads evenly loaded when one of them is slowed down).
 pub(crate) fn run_length(len: usize) -> usize {
-    const MIN_RUN: usize = 1 << 12;
+    len.div_ceil(8).clamp(MIN_RUN, MAX_RUN)
+}
+
+/// Length of the runs of a pass that does extra work at the seams between runs: an eighth of the
+/// pass (work for every thread of a small machine, few seams), but at least 2^12 elements.
+pub(crate) fn seamed_run_length(len: usize) -> usize {
     len.div_ceil(8).max(MIN_RUN)
 }
+
+const MIN_RUN: usize = 1 << 12;
+const MAX_RUN: usize = 1 << 15;
 
 /// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
 /// feature is on; results in order. Serves passes over a few long runs of elements (slices,
