@@ -19,6 +19,7 @@ pub mod ffi;
 mod cycles;
 mod disjoint_sets;
 mod large_arrays;
+mod prefetch;
 
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -7,6 +7,7 @@ use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{normalising_scale, orient2d};
 use super::spatial_sort::brio_hilbert_order;
 use crate::large_arrays;
+use crate::prefetch::prefetch;
 
 /// Invalid index (no half-edge, no twin, no site).
 pub const INVALID: u32 = u32::MAX;
@@ -191,12 +192,24 @@ impl Delaunay {
             .zip(old_index.chunks(run))
             .collect();
         map_each(runs, |_, (((sites, ranks), opposites), olds)| {
-            for (((sites, ranks), opposites), &old) in sites
+            for (j, (((sites, ranks), opposites), &old)) in sites
                 .chunks_exact_mut(3)
                 .zip(ranks.chunks_exact_mut(3))
                 .zip(opposites.chunks_exact_mut(3))
                 .zip(olds)
+                .enumerate()
             {
+                // A gather through `old_index`: each triangle is asked for 16 ahead, and the new
+                // numbers of its neighbours 8 ahead, once its record has arrived (1M sites:
+                // this fill 32.6 -> 22.4 ms, best of 12).
+                if let Some(&ahead) = olds.get(j + 16) {
+                    prefetch(&built[ahead as usize]);
+                }
+                if let Some(&near) = olds.get(j + 8) {
+                    for o in built[near as usize].twins {
+                        prefetch(&new_index[(o / 3) as usize]);
+                    }
+                }
                 let triangle = &built[old as usize];
                 for k in 0..3 {
                     let rank = triangle.corners[k];
