@@ -257,7 +257,8 @@ fn grid_gives_degree_four_vertices() {
 #[test]
 fn grid_split_into_parallel_runs_merges_across_their_seams() {
     // 120 × 120 sites: about 28k triangles and 14k cells, so every parallel pass splits them
-    // into several runs (`parallel::run_length`), and cocircular squares straddle the seams.
+    // into several runs (`parallel::run_length`, `seamed_run_length`), and cocircular squares
+    // straddle the seams between the Voronoi vertices' runs.
     let side = 120;
     let pts: Vec<[f64; 2]> = (0..side * side)
         .map(|i| [(i % side) as f64, (i / side) as f64])
