@@ -154,9 +154,16 @@ impl Delaunay {
         // Real triangles are renumbered by their newest corner (a counting sort on insertion
         // rank): slot reuse during construction scatters neighbours across the array, and every
         // later pass (Voronoi vertices, links, clipping) walks neighbours, so the output order is
-        // made spatially coherent once here.
-        let mut start = vec![0u32; to_site.len() + 1];
-        let newest = |t: &Triangle| t.corners[0].max(t.corners[1]).max(t.corners[2]) as usize;
+        // made spatially coherent once here. The key is the rank in steps of 64 (consecutive
+        // sites along the curve), so that the counts stay in cache (62 KB instead of 4 MB at 1M
+        // sites; count and index passes there, median of 18: 22.1 -> 15.6 ms). Within a step,
+        // triangles keep their order in the construction array.
+        const RANK_STEP_LOG2: u32 = 6;
+        let n_keys = (to_site.len() >> RANK_STEP_LOG2) + 1;
+        let mut start = vec![0u32; n_keys + 1];
+        let newest = |t: &Triangle| {
+            (t.corners[0].max(t.corners[1]).max(t.corners[2]) >> RANK_STEP_LOG2) as usize
+        };
         let mut some_ghost = INVALID;
         for (t, triangle) in built.iter().enumerate() {
             if triangle.is_ghost() {
@@ -168,7 +175,7 @@ impl Delaunay {
         for k in 1..start.len() {
             start[k] += start[k - 1];
         }
-        let count = start[to_site.len()] as usize;
+        let count = start[n_keys] as usize;
         let mut new_index = vec![INVALID; n_all];
         let mut old_index = large_arrays::zeroed::<u32>(count);
         for (t, (slot, triangle)) in new_index.iter_mut().zip(built).enumerate() {
