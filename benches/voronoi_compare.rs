@@ -108,12 +108,9 @@ fn main() {
         })
         .collect();
     let grid_box = ClipPolygon::rectangle([-0.5, -0.5], [999.5, 999.5]).expect("grid box");
-    inputs.push((
-        "grid_1000x1000".into(),
-        grid(1000),
-        grid_box,
-        runs_for(1_000_000),
-    ));
+    let grid_sites = grid(1000);
+    let grid_runs = runs_for(grid_sites.len());
+    inputs.push(("grid_1000x1000".into(), grid_sites, grid_box, grid_runs));
 
     for (name, sites, clip, runs) in &inputs {
         if filter.as_ref().is_some_and(|f| !name.contains(f.as_str())) {

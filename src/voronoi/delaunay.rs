@@ -257,16 +257,14 @@ impl Delaunay {
         for &e in &hull_edges {
             rank_edge[corner_ranks[e as usize] as usize] = e;
         }
+        // The same edges, in increasing order, are where the per-site passes start.
+        let mut starts = IdSet::new(corner_ranks.len());
         for (&e, &site) in rank_edge.iter().zip(to_site) {
             if e != INVALID {
                 self.vertex_edge[site as usize] = e;
+                starts.insert(e);
             }
         }
-        let mut starts = IdSet::new(corner_ranks.len());
-        rank_edge
-            .iter()
-            .filter(|&&e| e != INVALID)
-            .for_each(|&e| starts.insert(e));
         self.cell_starts = starts.into_sorted(to_site.len());
         self.triangles = triangles;
         self.corner_ranks = corner_ranks;

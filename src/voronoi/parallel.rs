@@ -1,23 +1,30 @@
 //! Data-parallel passes of the Voronoi construction (rayon behind the `parallel` feature).
 
 /// `(0..len).map(f).collect()`, in parallel when the `parallel` feature is on. Every pass it
-/// serves is a pure per-element function over up to millions of elements; runs of at least
-/// 2^14 elements keep the scheduling overhead negligible, and a pass no longer than one run is
-/// done on the calling thread.
+/// serves is a pure per-element function over up to millions of elements, too cheap per element
+/// for [`run_length`]'s runs: runs of at least 2^14 elements keep the scheduling overhead
+/// negligible, and a pass no longer than one run is done on the calling thread.
 pub(crate) fn map_indexed<T: Send>(len: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
     #[cfg(feature = "parallel")]
     {
-        const MIN_RUN: usize = 1 << 14;
-        if len > MIN_RUN {
+        const MIN_INDEXED_RUN: usize = 1 << 14;
+        if len > MIN_INDEXED_RUN && pool_can_help() {
             use rayon::prelude::*;
             return (0..len)
                 .into_par_iter()
-                .with_min_len(MIN_RUN)
+                .with_min_len(MIN_INDEXED_RUN)
                 .map(f)
                 .collect();
         }
     }
     (0..len).map(f).collect()
+}
+
+/// Does the pool have a thread besides the one that would wait for it? With one thread, handing
+/// a pass to the pool and sleeping until it is done only adds the round trip.
+#[cfg(feature = "parallel")]
+fn pool_can_help() -> bool {
+    rayon::current_num_threads() > 1
 }
 
 /// Length of the runs that a pass over `len` independent elements is split into for
@@ -40,14 +47,13 @@ const MAX_RUN: usize = 1 << 15;
 /// `f(k, item)` for every item of `items` (`k` its position), in parallel when the `parallel`
 /// feature is on; results in order. Serves passes over a few long runs of elements (slices,
 /// shared or mutable, that the caller splits off), one task per run. A single run, or a pool of
-/// one thread, is served on the calling thread: handing the work to the pool and waiting for it
-/// would only add the round trip.
+/// one thread, is served on the calling thread.
 pub(crate) fn map_each<I: Send, R: Send>(
     items: Vec<I>,
     f: impl Fn(usize, I) -> R + Sync + Send,
 ) -> Vec<R> {
     #[cfg(feature = "parallel")]
-    if items.len() > 1 && rayon::current_num_threads() > 1 {
+    if items.len() > 1 && pool_can_help() {
         use rayon::prelude::*;
         return items
             .into_par_iter()
