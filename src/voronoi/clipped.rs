@@ -216,9 +216,10 @@ impl Voronoi {
                 indices.extend(0..m as u32);
             }
         }
+        let n_positions = b.positions.len();
         ClippedCells {
-            positions: b.positions,
-            ranges,
+            positions: large_arrays::fit(b.positions, n_positions),
+            ranges: large_arrays::fit(ranges, n_sites),
             indices,
             clip: clip.clone(),
         }
