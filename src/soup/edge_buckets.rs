@@ -15,6 +15,7 @@ use std::collections::HashMap;
 use super::FaceTable;
 use super::table::{face_edges, is_well_formed};
 use crate::large_arrays::zeroed;
+use crate::prefetch::prefetch;
 
 /// A slot: larger vertex in the high half, then whether the first corner ran from the smaller
 /// vertex to the larger (bit 31), then the value (bits 0..31), which becomes [`CLOSED`] once a
@@ -114,6 +115,21 @@ impl EdgeBuckets {
     }
 }
 
+/// How many faces ahead of its current face a walk over `table` prefetches buckets
+/// ([`EdgeVisitor::prefetch_face`]): when the vertex order does not follow the faces (scanned
+/// models) nearly every bucket is a cache miss, and sixteen faces give the loads time to arrive
+/// (armadillo, 86k faces, one thread: walk about 15% faster). When it does, the buckets are in
+/// cache already and the hints only cost instructions: the distance is then past any table.
+pub(crate) fn prefetch_distance(table: &FaceTable<'_>) -> usize {
+    if table.vertices_follow_faces() {
+        usize::MAX
+    } else {
+        PREFETCH_FACES_AHEAD
+    }
+}
+
+const PREFETCH_FACES_AHEAD: usize = 16;
+
 /// The buckets' arrays borrowed for a walk. A walk keeps this on its stack, so the arrays'
 /// addresses and lengths stay in registers across the walk's own stores (read through
 /// [`EdgeBuckets`] itself they are reloaded after every store the compiler cannot tell apart).
@@ -124,6 +140,25 @@ pub(crate) struct EdgeVisitor<'b> {
 }
 
 impl EdgeVisitor<'_> {
+    /// Starts loading the buckets of table face `f`'s edges, for a walk that will visit them a
+    /// few faces later (see [`prefetch_distance`]); nothing when `f` is past the table.
+    #[inline(always)]
+    pub(crate) fn prefetch_face(&self, table: &FaceTable<'_>, f: usize) {
+        if f < table.n_faces() {
+            for (a, b) in face_edges(table.face(f)) {
+                let low = a.min(b) as usize;
+                // A vertex without forward corners starts where the slots end.
+                if let Some(slot) = self
+                    .start
+                    .get(low)
+                    .and_then(|&s| self.slots.get(s as usize))
+                {
+                    prefetch(slot);
+                }
+            }
+        }
+    }
+
     /// Meets the edge of a corner running `a → b` (`a != b`) with `value` (at most
     /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
     #[inline(always)]
@@ -207,6 +242,34 @@ mod tests {
         assert_eq!(buckets.visit(3, 0, 0), EdgeVisit::Opened);
         assert_eq!(buckets.visit(3, 0, 1), EdgeVisit::Defective);
         assert_eq!(buckets.visit(0, 3, 1), EdgeVisit::Defective);
+    }
+
+    #[test]
+    fn prefetching_any_face_changes_no_visit() {
+        // Vertex 3, the largest, has no forward corner: its bucket is empty and starts where the
+        // slots end.
+        let positions = vec![[0.0; 3]; 4];
+        let indices = [0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2];
+        let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
+        let visits = |prefetch: bool| {
+            let mut buckets = EdgeBuckets::new(&table, 4).unwrap();
+            let mut visitor = buckets.visitor();
+            let mut seen = Vec::new();
+            for f in 0..table.n_faces() {
+                if prefetch {
+                    visitor.prefetch_face(&table, f);
+                    visitor.prefetch_face(&table, f + 2);
+                    visitor.prefetch_face(&table, usize::MAX);
+                }
+                for (a, b) in face_edges(table.face(f)) {
+                    seen.push(visitor.visit(a, b, f as u32));
+                }
+            }
+            seen
+        };
+        let plain = visits(false);
+        assert_eq!(plain.iter().filter(|v| **v == EdgeVisit::Opened).count(), 6);
+        assert_eq!(visits(true), plain);
     }
 
     #[test]
