@@ -212,7 +212,7 @@ static void obj_texture_coordinates_round_trip(void) {
   hw_mesh *mesh = NULL, *again = NULL;
   const double *uv = NULL, *uv_again = NULL;
   size_t n = 0, n_again = 0;
-  const char *written = "test_attributes_spot.obj";
+  const char *written = TEST_TMP_DIR "/test_attributes_spot.obj";
   CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/closed/c3d_spot.obj", HW_BUILD_STRICT, &mesh,
                      NULL) == HW_OK);
   CHECK(hw_mesh_corner_uvs_view(mesh, &uv, &n) == HW_OK && n == 3 * 5856);
