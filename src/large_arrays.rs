@@ -12,34 +12,25 @@
 //! whole, and its first, where the allocator's header write has already put a small page, is
 //! collapsed into a huge page (`MADV_COLLAPSE`) before the array is touched. The slack at the end
 //! (under 2 MiB) is returned by [`fit`], which every array that is kept goes through once it has
-//! its final length (an array of 300 KB would otherwise hold a whole huge page). A block the
-//! allocator put in its heap instead gets no rounding (see [`settle`]). Where
+//! its final length (an array of 300 KB would otherwise hold a whole huge page). Where
 //! advice, collapse or alignment is not available, the arrays are ordinary `Vec`s and nothing
 //! changes but speed.
-
-use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Arrays smaller than this keep small pages. Measured here (a 2-core VM): a first touch costs
 /// about 1.4 µs per 4 KiB page, a 2 MiB huge page 40–90 µs (fault or collapse), so a huge page
 /// pays from about 64 small pages on, and the 0.1M-face builds of the real models touch a dozen
-/// arrays of 0.3–1 MB each (armadillo, 86k faces, cold memory: 1960 faults per build at a
-/// 2 MiB threshold, 93 now).
+/// arrays of 0.3–1 MB each (armadillo, 86k faces: 1960 faults per build before, 360 after).
 const ADVICE_THRESHOLD_BYTES: usize = 256 << 10;
 const HUGE_PAGE: usize = 2 << 20;
-/// Room for the allocator's header in a block sized to end just before a huge-page boundary
-/// (glibc's is 16 bytes): the block with its header then ends within the mapping's last small
-/// page, so the mapping is a whole number of huge pages for items of any size under a page.
-const HEADER_ROOM: usize = 64;
-/// How far past a huge-page boundary (for the header) and before one (for the allocator's
-/// rounding to small pages) a block may start and end and still be a mapping of its own.
-const MAPPING_SLACK: usize = 4096;
+/// Room for the allocator's header in a block sized to end just before a huge-page boundary.
+const HEADER_ROOM: usize = 4096;
 
 /// `len` zeros, for arrays every slot of which is written later. For integers the standard
 /// library takes zeroed memory from the allocator (`calloc`), so fresh pages are not written
 /// twice; the advice comes before the first touch.
 pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
     let mut array = vec![T::default(); huge_page_capacity::<T>(len)];
-    settle(&mut array, len);
+    advise_huge_pages(array.as_ptr().cast(), array.len() * size_of::<T>());
     array.truncate(len);
     array
 }
@@ -53,37 +44,10 @@ pub(crate) fn filled<T: Copy>(len: usize, value: T) -> Vec<T> {
 
 /// An empty array with room for `capacity` items, for arrays built by pushing.
 pub(crate) fn with_capacity<T>(capacity: usize) -> Vec<T> {
-    let mut array: Vec<T> = Vec::with_capacity(huge_page_capacity::<T>(capacity));
-    settle(&mut array, capacity);
+    let array: Vec<T> = Vec::with_capacity(huge_page_capacity::<T>(capacity));
+    advise_huge_pages(array.as_ptr().cast(), array.capacity() * size_of::<T>());
     array
 }
-
-/// Advises a freshly allocated `array`, whose capacity [`huge_page_capacity`] rounded up from
-/// `capacity`. A block the allocator placed in its heap instead of mapping it on its own (glibc
-/// maps blocks only above a threshold that rises to the largest mapped block freed, so in a
-/// process that has freed a large array nearly none are) cannot be huge pages of its own: its
-/// rounding is given back first, and only the whole huge pages inside what is left are advised.
-/// Kept, the rounding would stay resident in the heap after [`fit`], and advice on it would make
-/// the heap's later small blocks there fault in whole huge pages.
-fn settle<T>(array: &mut Vec<T>, capacity: usize) {
-    let block_bytes = |array: &Vec<T>| array.capacity() * size_of::<T>();
-    if block_bytes(array) >= ADVICE_THRESHOLD_BYTES {
-        let own = is_own_mapping(array.as_ptr().cast(), block_bytes(array));
-        LAST_BLOCK_OWN.store(own, Ordering::Relaxed);
-        if !own {
-            array.truncate(capacity);
-            array.shrink_to(capacity);
-        }
-    }
-    advise_huge_pages(array.as_ptr().cast(), block_bytes(array));
-}
-
-/// Was the last block [`settle`] saw a mapping of its own? Blocks under one huge page are only
-/// rounded up while the allocator is mapping them: once it has moved them to its heap, rounding
-/// them and giving the rounding back changes how the heap is reused (50 armadillo meshes held
-/// under glibc's default policy, every block rounded first: 471 MB resident instead of 291 MB).
-/// Larger blocks are always rounded and tell when mapping resumes.
-static LAST_BLOCK_OWN: AtomicBool = AtomicBool::new(true);
 
 /// A copy of `items`.
 pub(crate) fn copied<T: Copy>(items: &[T]) -> Vec<T> {
@@ -103,14 +67,8 @@ pub(crate) fn fit<T>(mut array: Vec<T>, len: usize) -> Vec<T> {
 /// A capacity of at least `len` whose block, with the allocator's header, is a whole number of
 /// huge pages, for arrays large enough to be advised.
 fn huge_page_capacity<T>(len: usize) -> usize {
-    capacity_for_mapping::<T>(len, LAST_BLOCK_OWN.load(Ordering::Relaxed))
-}
-
-/// [`huge_page_capacity`] given whether blocks under one huge page are rounded too.
-fn capacity_for_mapping<T>(len: usize, round_small: bool) -> usize {
     let bytes = len.saturating_mul(size_of::<T>());
-    if bytes < ADVICE_THRESHOLD_BYTES || size_of::<T>() == 0 || (bytes < HUGE_PAGE && !round_small)
-    {
+    if bytes < ADVICE_THRESHOLD_BYTES || size_of::<T>() == 0 {
         return len;
     }
     match bytes
@@ -131,9 +89,9 @@ fn advise_huge_pages(start: *const u8, bytes: usize) {
     if bytes < ADVICE_THRESHOLD_BYTES {
         return;
     }
-    let own_mapping = is_own_mapping(start, bytes);
     let (start, end) = (start as usize, start as usize + bytes);
     let (page_start, page_end) = (start & !(HUGE_PAGE - 1), end.next_multiple_of(HUGE_PAGE));
+    let own_mapping = start - page_start < HEADER_ROOM && page_end - end < HEADER_ROOM;
     let advise = |first: usize, end: usize, advice: libc::c_int| {
         if end > first {
             // SAFETY: MADV_HUGEPAGE and MADV_COLLAPSE change how pages are backed, never their
@@ -156,20 +114,10 @@ fn advise_huge_pages(start: *const u8, bytes: usize) {
     }
 }
 
-/// Is `[start, start + bytes)` (at least [`ADVICE_THRESHOLD_BYTES`] long) a block sized by
-/// [`huge_page_capacity`] that the allocator mapped on its own: only its header before it in its
-/// first huge page, only the mapping's rounding to small pages after it in its last?
-fn is_own_mapping(start: *const u8, bytes: usize) -> bool {
-    if cfg!(not(target_os = "linux")) || bytes < ADVICE_THRESHOLD_BYTES {
-        return false;
-    }
-    let (start, end) = (start as usize, start as usize + bytes);
-    let (page_start, page_end) = (start & !(HUGE_PAGE - 1), end.next_multiple_of(HUGE_PAGE));
-    start - page_start < MAPPING_SLACK && page_end - end < MAPPING_SLACK
-}
-
 #[cfg(not(target_os = "linux"))]
-fn advise_huge_pages(_start: *const u8, _bytes: usize) {}
+fn advise_huge_pages(_start: *const u8, _bytes: usize) {
+    let _ = (ADVICE_THRESHOLD_BYTES, HUGE_PAGE, HEADER_ROOM);
+}
 
 #[cfg(test)]
 mod tests {
@@ -191,45 +139,19 @@ mod tests {
     }
 
     #[test]
-    fn a_block_that_is_not_a_mapping_of_its_own_gives_its_rounding_back() {
-        // Exactly 2 MiB of items: with the allocator's header, never a whole number of huge
-        // pages, so never a mapping of its own.
-        let mut array: Vec<u32> = Vec::with_capacity(1 << 19);
-        settle(&mut array, 1 << 18);
-        assert_eq!(array.capacity(), 1 << 18);
-        let mut zeros = vec![0u32; 1 << 19];
-        settle(&mut zeros, 1 << 18);
-        assert_eq!((zeros.len(), zeros.capacity()), (1 << 18, 1 << 18));
-    }
-
-    #[test]
     fn large_capacities_fill_whole_huge_pages_and_small_ones_are_exact() {
+        assert_eq!(huge_page_capacity::<u32>(1000), 1000);
         let threshold_items = ADVICE_THRESHOLD_BYTES / 4;
-        for round_small in [true, false] {
-            let capacity = |len| capacity_for_mapping::<u32>(len, round_small);
-            assert_eq!(capacity(1000), 1000);
-            assert_eq!(capacity(threshold_items - 1), threshold_items - 1);
-            for len in [threshold_items, 1 << 18, 1 << 20, 3 << 20, (5 << 20) + 7] {
-                if len * 4 < HUGE_PAGE && !round_small {
-                    // The allocator is placing such blocks in its heap: no rounding.
-                    assert_eq!(capacity(len), len);
-                    continue;
-                }
-                assert!(capacity(len) >= len);
-                let end = (capacity(len) * 4 + HEADER_ROOM) % HUGE_PAGE;
-                assert!(
-                    end == 0 || end > HUGE_PAGE - 4,
-                    "{len}: ends {end} past a boundary"
-                );
-                assert!(capacity(len) * 4 - len * 4 < HUGE_PAGE);
-            }
-            assert_eq!(
-                capacity_for_mapping::<u64>(usize::MAX, round_small),
-                usize::MAX
-            );
-            // Positions: the block with a 16-byte header ends in the mapping's last small page.
-            let positions = capacity_for_mapping::<[f64; 3]>(1 << 17, round_small) * 24;
-            assert!((positions + 16) % HUGE_PAGE > HUGE_PAGE - MAPPING_SLACK);
+        assert_eq!(
+            huge_page_capacity::<u32>(threshold_items - 1),
+            threshold_items - 1
+        );
+        for len in [threshold_items, 1 << 20, 3 << 20, (5 << 20) + 7] {
+            let capacity = huge_page_capacity::<u32>(len);
+            assert!(capacity >= len);
+            assert_eq!((capacity * 4 + HEADER_ROOM) % HUGE_PAGE, 0);
+            assert!(capacity * 4 - len * 4 < HUGE_PAGE);
         }
+        assert_eq!(huge_page_capacity::<u64>(usize::MAX), usize::MAX);
     }
 }
