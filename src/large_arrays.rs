@@ -11,16 +11,12 @@
 //! just past a huge-page boundary and ends just before one; its last huge page is advised as a
 //! whole, and its first, where the allocator's header write has already put a small page, is
 //! collapsed into a huge page (`MADV_COLLAPSE`) before the array is touched. The slack at the end
-//! (under 2 MiB) is returned by [`fit`], which every array that is kept goes through once it has
-//! its final length (an array of 300 KB would otherwise hold a whole huge page). Where
+//! (under 2 MiB) is returned by [`fit`] once an array that is kept has its final length. Where
 //! advice, collapse or alignment is not available, the arrays are ordinary `Vec`s and nothing
 //! changes but speed.
 
-/// Arrays smaller than this keep small pages. Measured here (a 2-core VM): a first touch costs
-/// about 1.4 µs per 4 KiB page, a 2 MiB huge page 40–90 µs (fault or collapse), so a huge page
-/// pays from about 64 small pages on, and the 0.1M-face builds of the real models touch a dozen
-/// arrays of 0.3–1 MB each (armadillo, 86k faces: 1960 faults per build before, 360 after).
-const ADVICE_THRESHOLD_BYTES: usize = 256 << 10;
+/// Arrays smaller than this are not worth a system call (and rarely span a whole huge page).
+const ADVICE_THRESHOLD_BYTES: usize = 2 << 20;
 const HUGE_PAGE: usize = 2 << 20;
 /// Room for the allocator's header in a block sized to end just before a huge-page boundary.
 const HEADER_ROOM: usize = 4096;
@@ -141,12 +137,7 @@ mod tests {
     #[test]
     fn large_capacities_fill_whole_huge_pages_and_small_ones_are_exact() {
         assert_eq!(huge_page_capacity::<u32>(1000), 1000);
-        let threshold_items = ADVICE_THRESHOLD_BYTES / 4;
-        assert_eq!(
-            huge_page_capacity::<u32>(threshold_items - 1),
-            threshold_items - 1
-        );
-        for len in [threshold_items, 1 << 20, 3 << 20, (5 << 20) + 7] {
+        for len in [1 << 20, 3 << 20, (5 << 20) + 7] {
             let capacity = huge_page_capacity::<u32>(len);
             assert!(capacity >= len);
             assert_eq!((capacity * 4 + HEADER_ROOM) % HUGE_PAGE, 0);

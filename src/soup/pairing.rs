@@ -8,7 +8,7 @@
 
 use super::FaceTable;
 use super::edge_buckets::{EdgeBuckets, EdgeVisit, edge_key};
-use crate::large_arrays::{filled, fit};
+use crate::large_arrays::filled;
 
 /// `partner` value of a corner whose edge no other face uses.
 pub const BOUNDARY: u32 = u32::MAX;
@@ -70,7 +70,6 @@ pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
     } else {
         gather_problems(table, problem_keys, &mut partner)
     };
-    let partner = fit(partner, table.n_corners());
     EdgePairing { partner, problems }
 }
 

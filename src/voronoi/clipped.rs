@@ -216,10 +216,9 @@ impl Voronoi {
                 indices.extend(0..m as u32);
             }
         }
-        let n_positions = b.positions.len();
         ClippedCells {
-            positions: large_arrays::fit(b.positions, n_positions),
-            ranges: large_arrays::fit(ranges, n_sites),
+            positions: b.positions,
+            ranges,
             indices,
             clip: clip.clone(),
         }

@@ -266,10 +266,9 @@ impl Delaunay {
             }
         }
         self.cell_starts = starts.into_sorted(to_site.len());
-        // Kept: their room beyond the count goes back (see `large_arrays::fit`).
-        self.triangles = large_arrays::fit(triangles, 3 * count);
-        self.corner_ranks = large_arrays::fit(corner_ranks, 3 * count);
-        self.twins = large_arrays::fit(twins, 3 * count);
+        self.triangles = triangles;
+        self.corner_ranks = corner_ranks;
+        self.twins = twins;
         self.hull = hull;
         self.dimension = Dimension::Plane;
     }
