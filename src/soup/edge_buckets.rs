@@ -118,10 +118,10 @@ impl EdgeBuckets {
 /// How many faces ahead of its current face a walk over `table` prefetches buckets
 /// ([`EdgeVisitor::prefetch_face`]): when the vertex order does not follow the faces (scanned
 /// models) nearly every bucket is a cache miss, and sixteen faces give the loads time to arrive
-/// (armadillo, 86k faces, one thread, cold memory: build best of 300 from 7.9–9.8 to 7.1–7.6 ms
-/// over three rounds). When it does, the buckets are in cache already and the hints only cost
-/// instructions (the 1M-triangle torus built 5% slower with them): the distance is then past any
-/// table.
+/// (armadillo, 86k faces, one thread, cold memory, four rounds of 400 builds: best 10.2–11.4 ->
+/// 9.5–11.0 ms, median 17.1–18.9 -> 14.7–16.1 ms). When it does, the buckets are in cache
+/// already and the hints only cost instructions (the 1M-triangle torus built 5% slower with
+/// them): the distance is then past any table.
 pub(crate) fn prefetch_distance(table: &FaceTable<'_>) -> usize {
     if table.vertices_follow_faces() {
         usize::MAX
