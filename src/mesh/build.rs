@@ -16,7 +16,7 @@
 use crate::large_arrays::{filled, fit, zeroed};
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
-    FaceList, FaceTable, Walked, face_edges, prefetch_distance, walk_faces,
+    FaceList, FaceTable, Walked, face_edges, walk_faces,
 };
 
 use super::Mesh;
@@ -133,11 +133,10 @@ impl FaceLoops {
             n_edges: 0,
         };
         let mut polygon = Vec::new();
-        let ahead = prefetch_distance(table);
         let faces = table.faces().zip(&mut loops.face_halfedge);
         for (f, (corners, face_halfedge)) in faces.enumerate() {
             let f32 = f as u32;
-            writer.edges.prefetch_face(table, f.saturating_add(ahead));
+            writer.edges.prefetch_ahead_of(table, f);
             // Before the topology: the position loads overlap the walk's bucket misses.
             if let Some(degenerate) = degenerate.as_deref_mut() {
                 degenerate.check(table, f, corners);

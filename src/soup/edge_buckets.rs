@@ -47,6 +47,9 @@ pub(crate) struct EdgeBuckets {
     slots: Vec<u64>,
     /// Edges that found their bucket full, by [`edge_key`].
     spill: HashMap<u64, u64>,
+    /// Whether the table's vertex order follows its faces
+    /// ([`FaceTable::vertices_follow_faces`]): then a walk meets its buckets nearly in order.
+    vertices_follow_faces: bool,
 }
 
 impl EdgeBuckets {
@@ -94,7 +97,14 @@ impl EdgeBuckets {
             start,
             slots,
             spill: HashMap::new(),
+            vertices_follow_faces: table.vertices_follow_faces(),
         })
+    }
+
+    /// Does the table's vertex order follow its faces (judged once, when the buckets were
+    /// made)? Builders also choose where to check face areas by it.
+    pub(crate) fn vertices_follow_faces(&self) -> bool {
+        self.vertices_follow_faces
     }
 
     /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
@@ -104,6 +114,11 @@ impl EdgeBuckets {
             start: &self.start,
             slots: &mut self.slots,
             spill: &mut self.spill,
+            prefetch_ahead: if self.vertices_follow_faces {
+                usize::MAX
+            } else {
+                PREFETCH_FACES_AHEAD
+            },
         }
     }
 
@@ -115,21 +130,13 @@ impl EdgeBuckets {
     }
 }
 
-/// How many faces ahead of its current face a walk over `table` prefetches buckets
-/// ([`EdgeVisitor::prefetch_face`]): when the vertex order does not follow the faces (scanned
-/// models) nearly every bucket is a cache miss, and sixteen faces give the loads time to arrive
-/// (armadillo, 86k faces, one thread, cold memory, four rounds of 400 builds: best 10.2–11.4 ->
-/// 9.5–11.0 ms, median 17.1–18.9 -> 14.7–16.1 ms). When it does, the buckets are in cache
-/// already and the hints only cost instructions (the 1M-triangle torus built 5% slower with
-/// them): the distance is then past any table.
-pub(crate) fn prefetch_distance(table: &FaceTable<'_>) -> usize {
-    if table.vertices_follow_faces() {
-        usize::MAX
-    } else {
-        PREFETCH_FACES_AHEAD
-    }
-}
-
+/// How many faces ahead of its current face a walk prefetches buckets
+/// ([`EdgeVisitor::prefetch_ahead_of`]) when the vertex order does not follow the faces (scanned
+/// models): nearly every bucket is then a cache miss, and sixteen faces give the loads time to
+/// arrive (armadillo, 86k faces, one thread, cold memory, four rounds of 400 builds: best
+/// 10.2–11.4 -> 9.5–11.0 ms, median 17.1–18.9 -> 14.7–16.1 ms). When it does, the buckets are in
+/// cache already and the hints would only cost instructions (the 1M-triangle torus built 5%
+/// slower with them), so the visitor's distance is then past any table.
 const PREFETCH_FACES_AHEAD: usize = 16;
 
 /// The buckets' arrays borrowed for a walk. A walk keeps this on its stack, so the arrays'
@@ -139,13 +146,22 @@ pub(crate) struct EdgeVisitor<'b> {
     start: &'b [u32],
     slots: &'b mut [u64],
     spill: &'b mut HashMap<u64, u64>,
+    /// See [`PREFETCH_FACES_AHEAD`].
+    prefetch_ahead: usize,
 }
 
 impl EdgeVisitor<'_> {
-    /// Starts loading the buckets of table face `f`'s edges, for a walk that will visit them a
-    /// few faces later (see [`prefetch_distance`]); nothing when `f` is past the table.
+    /// For a walk at table face `f`: starts loading the buckets of the face it will reach a few
+    /// faces later, when its vertex order does not follow the faces (see
+    /// [`PREFETCH_FACES_AHEAD`]).
     #[inline(always)]
-    pub(crate) fn prefetch_face(&self, table: &FaceTable<'_>, f: usize) {
+    pub(crate) fn prefetch_ahead_of(&self, table: &FaceTable<'_>, f: usize) {
+        self.prefetch_face(table, f.saturating_add(self.prefetch_ahead));
+    }
+
+    /// Starts loading the buckets of table face `f`'s edges; nothing when `f` is past the table.
+    #[inline(always)]
+    fn prefetch_face(&self, table: &FaceTable<'_>, f: usize) {
         if f < table.n_faces() {
             for (a, b) in face_edges(table.face(f)) {
                 let low = a.min(b) as usize;
@@ -259,6 +275,7 @@ mod tests {
             let mut seen = Vec::new();
             for f in 0..table.n_faces() {
                 if prefetch {
+                    visitor.prefetch_ahead_of(&table, f);
                     visitor.prefetch_face(&table, f);
                     visitor.prefetch_face(&table, f + 2);
                     visitor.prefetch_face(&table, usize::MAX);

@@ -109,7 +109,7 @@ fn walk_checking_areas<T: Send>(
     positions: &[[f64; 3]],
     walk: &impl Walk<T>,
 ) -> (Option<T>, Vec<u32>) {
-    let beside = thread_count() > 1 || !table.vertices_follow_faces();
+    let beside = thread_count() > 1 || !buckets.vertices_follow_faces();
     let (found_beside, (walked, found_in_walk)) = join(
         || beside.then(|| DegenerateFaces::of_table(table, positions)),
         || {

@@ -21,7 +21,7 @@ mod umbrellas;
 
 pub(crate) use degenerate::DegenerateFaces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
-pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor, prefetch_distance};
+pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Walked, walk_faces};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};

@@ -18,7 +18,7 @@ use super::structure::Winged;
 use crate::large_arrays;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, FaceList,
-    FaceTable, Walked, face_edges, prefetch_distance, walk_faces,
+    FaceTable, Walked, face_edges, walk_faces,
 };
 
 impl Winged {
@@ -259,10 +259,9 @@ impl WingedFaces {
         let mut loop_edges: Vec<EdgeId> = Vec::new();
         let mut vertex_edges = VertexEdgeChoice::new(positions.len());
         let mut buckets = buckets.visitor();
-        let ahead = prefetch_distance(table);
         for (f, corners) in table.faces().enumerate() {
             let face = FaceId(f as u32);
-            buckets.prefetch_face(table, f.saturating_add(ahead));
+            buckets.prefetch_ahead_of(table, f);
             if let Some(degenerate) = degenerate.as_deref_mut() {
                 degenerate.check(table, f, corners);
             }
