@@ -20,6 +20,7 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -29,6 +30,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "halfwing.hpp"
@@ -54,27 +56,30 @@ double elapsed_ms(Clock::time_point start, Clock::time_point stop) {
   return std::chrono::duration<double, std::milli>(stop - start).count();
 }
 
-/// Best of `repeats` wall-clock runs of `work`, in milliseconds.
+/// Wall-clock time of one run of `work`, in milliseconds. When `work` returns a structure (a
+/// build), the clock stops before the structure is destroyed.
 template <class Work>
-double best_ms(int repeats, Work work) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = Clock::now();
+double time_once(Work& work) {
+  const auto start = Clock::now();
+  if constexpr (std::is_void_v<decltype(work())>) {
     work();
-    best = std::min(best, elapsed_ms(start, Clock::now()));
+    return elapsed_ms(start, Clock::now());
+  } else {
+    const auto built = work();
+    return elapsed_ms(start, Clock::now());
   }
-  return best;
 }
 
-/// Best of `repeats` runs of `build`, each building a fresh structure; its destruction is not
-/// timed.
-template <class Build>
-double best_build_ms(int repeats, Build build) {
-  double best = std::numeric_limits<double>::infinity();
+/// The best of `repeats` runs of each of `contenders`, in milliseconds. The runs take turns, one
+/// of each contender per round: on a shared machine a busy or a quiet minute then falls on all of
+/// them alike instead of on whichever ran in it (back-to-back blocks moved ratios by up to 40%).
+template <class... Work>
+std::array<double, sizeof...(Work)> best_ms(int repeats, Work... contenders) {
+  std::array<double, sizeof...(Work)> best;
+  best.fill(std::numeric_limits<double>::infinity());
   for (int i = 0; i < repeats; ++i) {
-    const auto start = Clock::now();
-    const auto built = build();
-    best = std::min(best, elapsed_ms(start, Clock::now()));
+    std::size_t k = 0;
+    ((best[k] = std::min(best[k], time_once(contenders)), ++k), ...);
   }
   return best;
 }
@@ -269,15 +274,16 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   const std::string om_name = std::string("OpenMesh ") + openmesh_kind;
 
   // Bulk build: every library builds a fresh structure from the same indexed list.
-  hw::check(hw_set_thread_count(1));
-  const double hw_build_1 = best_build_ms(repeats, [&] { return halfwing_build(m); });
-  hw::check(hw_set_thread_count(2));
-  const double hw_build_2 = best_build_ms(repeats, [&] { return halfwing_build(m); });
-  hw::check(hw_set_thread_count(1));
-  const double om_add = best_build_ms(repeats, [&] { return openmesh_build<OM>(m); });
+  // The single-threaded builds take turns; the 2-thread build (a thread count is a pool to start,
+  // not part of a build) comes after them.
   const Soup soup = cgal_soup(m);
-  const double cgal_soup_ms = best_build_ms(repeats, [&] { return cgal_build_soup(soup); });
-  const double cgal_add = best_build_ms(repeats, [&] { return cgal_build_add_face(m); });
+  hw::check(hw_set_thread_count(1));
+  const auto [hw_build_1, om_add, cgal_soup_ms, cgal_add] = best_ms(
+      repeats, [&] { return halfwing_build(m); }, [&] { return openmesh_build<OM>(m); },
+      [&] { return cgal_build_soup(soup); }, [&] { return cgal_build_add_face(m); });
+  hw::check(hw_set_thread_count(2));
+  const double hw_build_2 = best_ms(repeats, [&] { return halfwing_build(m); })[0];
+  hw::check(hw_set_thread_count(1));
   const double fastest = std::min({om_add, cgal_soup_ms, cgal_add});
   row("build 1 thread (ms)", hw_build_1, om_add, om_name + " add_face");
   row("build 1 thread (ms)", hw_build_1, cgal_soup_ms, "CGAL soup_to_polygon_mesh");
@@ -292,11 +298,13 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   om.request_vertex_normals();
   const hw::mesh mesh = halfwing_build(m);
   std::vector<double> face_normals(3 * mesh.n_faces()), vertex_normals(3 * mesh.n_vertices());
-  const double hw_normals = best_ms(repeats, [&] {
-    hw::check(hw_mesh_normals(mesh.get(), HW_WEIGHT_UNIFORM, face_normals.data(), mesh.n_faces(),
-                              vertex_normals.data(), mesh.n_vertices()));
-  });
-  const double om_normals = best_ms(repeats, [&] { om.update_normals(); });
+  const auto [hw_normals, om_normals] = best_ms(
+      repeats,
+      [&] {
+        hw::check(hw_mesh_normals(mesh.get(), HW_WEIGHT_UNIFORM, face_normals.data(),
+                                  mesh.n_faces(), vertex_normals.data(), mesh.n_vertices()));
+      },
+      [&] { om.update_normals(); });
   double worst_normal_gap = 0;
   for (auto v : om.vertices())
     for (int k = 0; k < 3; ++k)
@@ -308,23 +316,24 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
 
   // One-ring traversal.
   std::size_t hw_sum = 0, om_sum = 0;
-  const double hw_ring = best_ms(repeats, [&] { hw_sum = halfwing_valence_sum(mesh); });
-  const double om_ring = best_ms(repeats, [&] { om_sum = openmesh_valence_sum(om); });
+  const auto [hw_ring, om_ring] = best_ms(
+      repeats, [&] { hw_sum = halfwing_valence_sum(mesh); },
+      [&] { om_sum = openmesh_valence_sum(om); });
   expect_equal("valence sums", hw_sum, om_sum);
   row("one-ring valence sum (ms)", hw_ring, om_ring, om_name + " vv_iter", 1.0);
 
   // Boundary loops.
   std::size_t hw_loops = 0, om_loops = 0, cgal_loops = 0;
   SurfaceMesh sm = cgal_build_soup(soup);
-  const double hw_loops_ms =
-      best_ms(repeats, [&] { hw::check(hw_mesh_n_boundary_loops(mesh.get(), &hw_loops)); });
-  const double om_loops_ms = best_ms(repeats, [&] { om_loops = openmesh_boundary_loops(om); });
   std::vector<SurfaceMesh::Halfedge_index> cycles;
-  const double cgal_loops_ms = best_ms(repeats, [&] {
-    cycles.clear();
-    PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
-    cgal_loops = cycles.size();
-  });
+  const auto [hw_loops_ms, om_loops_ms, cgal_loops_ms] = best_ms(
+      repeats, [&] { hw::check(hw_mesh_n_boundary_loops(mesh.get(), &hw_loops)); },
+      [&] { om_loops = openmesh_boundary_loops(om); },
+      [&] {
+        cycles.clear();
+        PMP::extract_boundary_cycles(sm, std::back_inserter(cycles));
+        cgal_loops = cycles.size();
+      });
   expect_equal("boundary loops (OpenMesh)", hw_loops, om_loops);
   expect_equal("boundary loops (CGAL)", hw_loops, cgal_loops);
   row("boundary loops (ms)", hw_loops_ms, om_loops_ms, om_name + " loop walk");
@@ -332,11 +341,10 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
 
   // Connected components; CGAL's face property map is allocated outside the timed region.
   std::size_t hw_components = 0, cgal_components = 0;
-  const double hw_cc =
-      best_ms(repeats, [&] { hw::check(hw_mesh_n_components(mesh.get(), &hw_components)); });
   auto face_component = sm.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:cc").first;
-  const double cgal_cc =
-      best_ms(repeats, [&] { cgal_components = PMP::connected_components(sm, face_component); });
+  const auto [hw_cc, cgal_cc] = best_ms(
+      repeats, [&] { hw::check(hw_mesh_n_components(mesh.get(), &hw_components)); },
+      [&] { cgal_components = PMP::connected_components(sm, face_component); });
   sm.remove_property_map(face_component);
   expect_equal("component counts", hw_components, cgal_components);
   row("connected components (ms)", hw_cc, cgal_cc, "CGAL connected_components", 0.5);
