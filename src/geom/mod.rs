@@ -3,6 +3,7 @@
 mod newell;
 pub(crate) use newell::is_clearly_not_degenerate_triangle;
 mod normals;
+pub(crate) use normals::normalized;
 
 pub use newell::{
     is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle, newell_vector,

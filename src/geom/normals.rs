@@ -390,7 +390,7 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 
 /// `v / |v|`, or zero when `v` is zero or not finite. One division and three products (within
 /// an ulp of three divisions): this runs once per face and once per vertex in every normal pass.
-fn normalized(v: [f64; 3]) -> [f64; 3] {
+pub(crate) fn normalized(v: [f64; 3]) -> [f64; 3] {
     let length = dot(v, v).sqrt();
     // Also false for NaN.
     if length > 0.0 && length < f64::INFINITY {

@@ -3,16 +3,7 @@
 use super::error::WingedError;
 use super::ids::{FaceId, VertexId};
 use super::structure::Winged;
-
-/// `v / |v|`, or the zero vector when `v` has no length (a degenerate face or vertex).
-fn normalized(v: [f64; 3]) -> [f64; 3] {
-    let length = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    if length > 0.0 && length.is_finite() {
-        v.map(|c| c / length)
-    } else {
-        [0.0; 3]
-    }
-}
+use crate::geom::{newell_vector, normalized};
 
 impl Winged {
     /// The unit normal of `f` by Newell's method over its loop (exact for planar polygons,
@@ -20,15 +11,10 @@ impl Winged {
     ///
     /// Points outward for a counter-clockwise face.
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
-        let mut n = [0.0; 3];
-        for u in self.face_loop(f)? {
-            let p = self.positions[self.tail_of(u).index()];
-            let q = self.positions[self.head_of(u).index()];
-            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        }
-        Ok(normalized(n))
+        let corners = self
+            .face_loop(f)?
+            .map(|u| self.positions[self.tail_of(u).index()]);
+        Ok(normalized(newell_vector(corners)))
     }
 
     /// Unit normals of all faces, indexed by face id (zero for deleted and degenerate faces).
