@@ -72,7 +72,8 @@ double time_once(Work& work) {
 
 /// The best of `repeats` runs of each of `contenders`, in milliseconds. The runs take turns, one
 /// of each contender per round: on a shared machine a busy or a quiet minute then falls on all of
-/// them alike instead of on whichever ran in it (back-to-back blocks moved ratios by up to 40%).
+/// them alike instead of on whichever ran in it (with back-to-back blocks, two runs minutes apart
+/// gave the torus normals 0.42x and 0.61x).
 template <class... Work>
 std::array<double, sizeof...(Work)> best_ms(int repeats, Work... contenders) {
   std::array<double, sizeof...(Work)> best;
