@@ -73,14 +73,16 @@ double time_once(Work& work) {
 /// The best of `repeats` runs of each of `contenders`, in milliseconds. The runs take turns, one
 /// of each contender per round: on a shared machine a busy or a quiet minute then falls on all of
 /// them alike instead of on whichever ran in it (with back-to-back blocks, two runs minutes apart
-/// gave the torus normals 0.42x and 0.61x).
+/// gave the torus normals 0.42x and 0.61x). Each timed run follows an untimed one of the same
+/// contender, so that it finds its own data in the caches, as in back-to-back runs, and not the
+/// previous contender's (on the 86k-face armadillo that alone doubled halfwing's normals time).
 template <class... Work>
 std::array<double, sizeof...(Work)> best_ms(int repeats, Work... contenders) {
   std::array<double, sizeof...(Work)> best;
   best.fill(std::numeric_limits<double>::infinity());
   for (int i = 0; i < repeats; ++i) {
     std::size_t k = 0;
-    ((best[k] = std::min(best[k], time_once(contenders)), ++k), ...);
+    ((time_once(contenders), best[k] = std::min(best[k], time_once(contenders)), ++k), ...);
   }
   return best;
 }
