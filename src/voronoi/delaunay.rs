@@ -4,8 +4,8 @@ use super::error::VoronoiError;
 use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
-use super::predicates::{normalising_scale, orient2d};
-use super::spatial_sort::brio_hilbert_order;
+use super::predicates::{incircle_set_bound, normalising_scale, orient2d};
+use super::spatial_sort::{bounding_box, brio_hilbert_order};
 use crate::large_arrays;
 use crate::prefetch::prefetch;
 
@@ -99,7 +99,8 @@ impl Delaunay {
         let scale = normalising_scale(sites);
         let scaled = map_indexed(n, |i| [sites[i][0] * scale, sites[i][1] * scale]);
         let mut representative: Vec<u32> = (0..n as u32).collect();
-        let order = brio_hilbert_order(&scaled);
+        let bounds = bounding_box(&scaled);
+        let order = brio_hilbert_order(&scaled, bounds);
 
         let mut result = Delaunay {
             sites: sites.to_vec(),
@@ -120,15 +121,15 @@ impl Delaunay {
         // stored in that (space-filling-curve) order: walks and cavities then touch memory
         // sequentially instead of jumping across the input. Ranks map back to sites at the end.
         let sorted = map_indexed(n, |k| result.scaled[order[k] as usize]);
-        let ranks: Vec<u32> = (0..n as u32).collect();
-        let mut rank_representative = ranks.clone();
-        match find_initial_triangle(&sorted, &ranks, &mut rank_representative) {
+        let mut rank_representative: Vec<u32> = (0..n as u32).collect();
+        match find_initial_triangle(&sorted, &mut rank_representative) {
             Seed::Empty => {}
             Seed::Degenerate => result.build_collinear(&mut representative),
-            Seed::Triangle { a, b, c, position } => {
-                let mut tri = GhostTriangulation::new(&sorted, a, b, c, n);
+            Seed::Triangle { a, b, c } => {
+                let incircle_bound = incircle_set_bound(bounds);
+                let mut tri = GhostTriangulation::new(&sorted, [a, b, c], n, incircle_bound);
                 // Sites skipped while looking for the seed triangle come first, then the rest.
-                for k in (0..n as u32).filter(|&k| k as usize != position) {
+                for k in (0..n as u32).filter(|&k| k != c) {
                     if k == a || k == b || rank_representative[k as usize] != k {
                         continue;
                     }
@@ -519,45 +520,33 @@ impl Iterator for OutgoingEdges<'_> {
 enum Seed {
     Empty,
     Degenerate,
+    /// Corners counter-clockwise; `c` is the last of the points looked at.
     Triangle {
         a: u32,
         b: u32,
         c: u32,
-        position: usize,
     },
 }
 
-/// First non-degenerate triangle in insertion order; duplicates of the first two sites met on
-/// the way are recorded. `position` is the index in `order` of the third corner.
-fn find_initial_triangle(points: &[[f64; 2]], order: &[u32], representative: &mut [u32]) -> Seed {
-    let Some(&a) = order.first() else {
+/// First non-degenerate triangle of `points` taken in order (the insertion order); duplicates
+/// of the first two sites met on the way are recorded.
+fn find_initial_triangle(points: &[[f64; 2]], representative: &mut [u32]) -> Seed {
+    let Some(&pa) = points.first() else {
         return Seed::Empty;
     };
-    let pa = points[a as usize];
+    let a = 0;
     let mut b = None;
-    for (position, &s) in order.iter().enumerate().skip(1) {
-        let ps = points[s as usize];
+    for (s, &ps) in (0..).zip(points).skip(1) {
         match b {
             None if ps == pa => representative[s as usize] = a,
             None => b = Some(s),
             Some(b) => {
-                let pb = points[b as usize];
-                let o = orient2d(pa, pb, ps);
+                let o = orient2d(pa, points[b as usize], ps);
                 if o > 0.0 {
-                    return Seed::Triangle {
-                        a,
-                        b,
-                        c: s,
-                        position,
-                    };
+                    return Seed::Triangle { a, b, c: s };
                 }
                 if o < 0.0 {
-                    return Seed::Triangle {
-                        a: b,
-                        b: a,
-                        c: s,
-                        position,
-                    };
+                    return Seed::Triangle { a: b, b: a, c: s };
                 }
             }
         }

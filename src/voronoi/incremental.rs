@@ -18,7 +18,7 @@
 //! Corners and twins of a triangle are stored side by side ([`Triangle`]): walking to a neighbour
 //! and testing it reads one record, usually one cache line, instead of two arrays.
 
-use super::predicates::{incircle, orient2d};
+use super::predicates::{incircle_in_set, orient2d};
 use crate::large_arrays;
 
 /// The vertex at infinity.
@@ -55,6 +55,8 @@ impl Triangle {
 /// A triangulation under construction (or finished), ghosts included.
 pub(crate) struct GhostTriangulation<'a> {
     points: &'a [[f64; 2]],
+    /// [`super::predicates::incircle_set_bound`] of `points`.
+    incircle_bound: f64,
     /// Triangle `t` owns half-edges `3t..3t + 3`.
     pub triangles: Vec<Triangle>,
     last: u32,
@@ -74,7 +76,13 @@ enum Location {
 impl<'a> GhostTriangulation<'a> {
     /// Starts from the counter-clockwise triangle `a, b, c` (`orient2d > 0`) and its three
     /// ghosts, with room for `n_sites` vertices (`2n - 2` triangles, ghosts included).
-    pub fn new(points: &'a [[f64; 2]], a: u32, b: u32, c: u32, n_sites: usize) -> Self {
+    /// `incircle_bound` is the in-circle set bound of `points`.
+    pub fn new(
+        points: &'a [[f64; 2]],
+        [a, b, c]: [u32; 3],
+        n_sites: usize,
+        incircle_bound: f64,
+    ) -> Self {
         let mut triangles = large_arrays::with_capacity(2 * n_sites + 4);
         let triangle = |corners, twins| Triangle { corners, twins };
         triangles.extend_from_slice(&[
@@ -85,6 +93,7 @@ impl<'a> GhostTriangulation<'a> {
         ]);
         GhostTriangulation {
             points,
+            incircle_bound,
             triangles,
             last: 0,
             cavity: Vec::new(),
@@ -118,7 +127,8 @@ impl<'a> GhostTriangulation<'a> {
         if c == GHOST {
             self.ghost_conflict(a, b, p)
         } else {
-            incircle(self.point(a), self.point(b), self.point(c), p) > 0.0
+            let (pa, pb, pc) = (self.point(a), self.point(b), self.point(c));
+            incircle_in_set(pa, pb, pc, p, self.incircle_bound) > 0.0
         }
     }
 

@@ -17,12 +17,8 @@ const MAX_ROUNDS: u32 = 16;
 /// Sites in the first round when there are enough of them.
 const FIRST_ROUND_SIZE: usize = 64;
 
-/// Returns the indices of `points` (all finite) in BRIO-Hilbert insertion order.
-pub fn brio_hilbert_order(points: &[[f64; 2]]) -> Vec<u32> {
-    let n = points.len();
-    if n == 0 {
-        return Vec::new();
-    }
+/// The smallest and largest coordinate of `points` on each axis (infinities when empty).
+pub fn bounding_box(points: &[[f64; 2]]) -> [[f64; 2]; 2] {
     let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in points {
         for k in 0..2 {
@@ -30,6 +26,17 @@ pub fn brio_hilbert_order(points: &[[f64; 2]]) -> Vec<u32> {
             max[k] = max[k].max(p[k]);
         }
     }
+    [min, max]
+}
+
+/// Returns the indices of `points` (all finite, with [`bounding_box`] `bounds`) in BRIO-Hilbert
+/// insertion order.
+pub fn brio_hilbert_order(points: &[[f64; 2]], bounds: [[f64; 2]; 2]) -> Vec<u32> {
+    let n = points.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let [min, max] = bounds;
     let side = (1u32 << HILBERT_BITS) as f64;
     // Same scale on both axes keeps the curve's locality isotropic.
     let extent = (max[0] - min[0]).max(max[1] - min[1]);
@@ -169,7 +176,7 @@ mod tests {
         let pts: Vec<[f64; 2]> = (0..1000)
             .map(|i| [(i * 37 % 101) as f64, (i * 59 % 103) as f64])
             .collect();
-        let mut order = brio_hilbert_order(&pts);
+        let mut order = brio_hilbert_order(&pts, bounding_box(&pts));
         order.sort_unstable();
         assert_eq!(order, (0..1000).collect::<Vec<u32>>());
     }
