@@ -7,7 +7,7 @@
 # The Rust libraries are timed in one process (benches/voronoi_compare.rs), CGAL in another
 # (bench/voronoi/voronoi_cgal.cpp), back to back, on identical generated inputs (same LCG, same
 # seed). The two processes alternate for a few rounds, and each time is the best of all its runs
-# (per round 51 for 10k sites, 11 for 100k, 3 for the 1M and grid inputs): on a shared machine a
+# (per round 201 for 10k sites, 31 for 100k, 3 for the 1M and grid inputs): on a shared machine a
 # quiet or a busy minute would otherwise favour whichever side ran in it.
 #
 # Usage: bench/run-voronoi-compare.sh [input-filter]   (e.g. "uniform_1000000")

@@ -34,9 +34,9 @@ fn grid(side: usize) -> Vec<[f64; 2]> {
 /// one run, so small inputs, quick to repeat, get many runs; the best is kept.
 fn runs_for(n_sites: usize) -> usize {
     if n_sites <= 10_000 {
-        51
+        201
     } else if n_sites <= 100_000 {
-        11
+        31
     } else {
         3
     }

@@ -78,8 +78,8 @@ void run(const points2d::PointSet& set, int runs) {
 
 /// Runs per measurement for `n_sites` sites: the same rule as benches/voronoi_compare.rs.
 int runs_for(std::size_t n_sites) {
-  if (n_sites <= 10000) return 51;
-  if (n_sites <= 100000) return 11;
+  if (n_sites <= 10000) return 201;
+  if (n_sites <= 100000) return 31;
   return 3;
 }
 

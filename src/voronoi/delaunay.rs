@@ -4,7 +4,7 @@ use super::error::VoronoiError;
 use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
-use super::predicates::{incircle_set_bound, normalising_scale, orient2d};
+use super::predicates::{SetBounds, normalising_scale, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
 use crate::large_arrays;
 use crate::prefetch::prefetch;
@@ -126,8 +126,8 @@ impl Delaunay {
             Seed::Empty => {}
             Seed::Degenerate => result.build_collinear(&mut representative),
             Seed::Triangle { a, b, c } => {
-                let incircle_bound = incircle_set_bound(bounds);
-                let mut tri = GhostTriangulation::new(&sorted, [a, b, c], n, incircle_bound);
+                let set_bounds = SetBounds::of(&sorted, bounds);
+                let mut tri = GhostTriangulation::new(&sorted, [a, b, c], n, set_bounds);
                 // Sites skipped while looking for the seed triangle come first, then the rest.
                 for k in (0..n as u32).filter(|&k| k != c) {
                     if k == a || k == b || rank_representative[k as usize] != k {

@@ -18,7 +18,7 @@
 //! Corners and twins of a triangle are stored side by side ([`Triangle`]): walking to a neighbour
 //! and testing it reads one record, usually one cache line, instead of two arrays.
 
-use super::predicates::{incircle_in_set, orient2d};
+use super::predicates::{SetBounds, incircle_in, orient2d_in};
 use crate::large_arrays;
 
 /// The vertex at infinity.
@@ -55,8 +55,8 @@ impl Triangle {
 /// A triangulation under construction (or finished), ghosts included.
 pub(crate) struct GhostTriangulation<'a> {
     points: &'a [[f64; 2]],
-    /// [`super::predicates::incircle_set_bound`] of `points`.
-    incircle_bound: f64,
+    /// Error bounds of the predicates over `points`.
+    bounds: SetBounds,
     /// Triangle `t` owns half-edges `3t..3t + 3`.
     pub triangles: Vec<Triangle>,
     last: u32,
@@ -76,12 +76,12 @@ enum Location {
 impl<'a> GhostTriangulation<'a> {
     /// Starts from the counter-clockwise triangle `a, b, c` (`orient2d > 0`) and its three
     /// ghosts, with room for `n_sites` vertices (`2n - 2` triangles, ghosts included).
-    /// `incircle_bound` is the in-circle set bound of `points`.
+    /// `bounds` are the predicates' error bounds over `points`.
     pub fn new(
         points: &'a [[f64; 2]],
         [a, b, c]: [u32; 3],
         n_sites: usize,
-        incircle_bound: f64,
+        bounds: SetBounds,
     ) -> Self {
         let mut triangles = large_arrays::with_capacity(2 * n_sites + 4);
         let triangle = |corners, twins| Triangle { corners, twins };
@@ -93,7 +93,7 @@ impl<'a> GhostTriangulation<'a> {
         ]);
         GhostTriangulation {
             points,
-            incircle_bound,
+            bounds,
             triangles,
             last: 0,
             cavity: Vec::new(),
@@ -107,6 +107,12 @@ impl<'a> GhostTriangulation<'a> {
         self.points[v as usize]
     }
 
+    /// Exact orientation of three of the points.
+    #[inline(always)]
+    fn orient(&self, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+        orient2d_in(a, b, c, &self.bounds)
+    }
+
     /// The opposite of half-edge `e`.
     #[inline(always)]
     fn twin(&self, e: u32) -> u32 {
@@ -117,7 +123,7 @@ impl<'a> GhostTriangulation<'a> {
     #[inline(always)]
     fn ghost_conflict(&self, u: u32, v: u32, p: [f64; 2]) -> bool {
         let (pu, pv) = (self.point(u), self.point(v));
-        let o = orient2d(pu, pv, p);
+        let o = self.orient(pu, pv, p);
         o > 0.0 || (o == 0.0 && strictly_between(pu, pv, p))
     }
 
@@ -128,7 +134,7 @@ impl<'a> GhostTriangulation<'a> {
             self.ghost_conflict(a, b, p)
         } else {
             let (pa, pb, pc) = (self.point(a), self.point(b), self.point(c));
-            incircle_in_set(pa, pb, pc, p, self.incircle_bound) > 0.0
+            incircle_in(pa, pb, pc, p, &self.bounds) > 0.0
         }
     }
 
@@ -155,7 +161,7 @@ impl<'a> GhostTriangulation<'a> {
             }
             let corners = [self.point(a), self.point(b), self.point(c)];
             for k in 0..3 {
-                if k != entry && orient2d(corners[k], corners[(k + 1) % 3], p) < 0.0 {
+                if k != entry && self.orient(corners[k], corners[(k + 1) % 3], p) < 0.0 {
                     let o = triangle.twins[k];
                     (t, entry) = (o / 3, (o % 3) as usize);
                     continue 'walk;
@@ -185,7 +191,7 @@ impl<'a> GhostTriangulation<'a> {
                 continue;
             }
             let corners = triangle.corners.map(|v| self.point(v));
-            if (0..3).all(|k| orient2d(corners[k], corners[(k + 1) % 3], p) >= 0.0) {
+            if (0..3).all(|k| self.orient(corners[k], corners[(k + 1) % 3], p) >= 0.0) {
                 return self.inside_real_triangle(t, p);
             }
         }

@@ -15,6 +15,52 @@ const ORIENT_BOUND: f64 = (3.0 + 16.0 * HALF_EPSILON) * HALF_EPSILON;
 /// Error bound of the floating-point in-circle determinant (Shewchuk's `iccerrboundA`).
 const INCIRCLE_BOUND: f64 = (10.0 + 96.0 * HALF_EPSILON) * HALF_EPSILON;
 
+/// Error bounds of the floating-point orientation and in-circle determinants that hold for any
+/// points of one set, from its bounding box, so that most calls of a construction are decided
+/// before their own error bound is computed (a third of the in-circle filter's instructions).
+/// Negative when every determinant of the set is exact: all its points on a small lattice, as
+/// integer grids are, whose many exact zeros would otherwise all take the slow path.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SetBounds {
+    orient: f64,
+    incircle: f64,
+}
+
+impl SetBounds {
+    /// Nothing known of the set: every call computes its own bound.
+    pub(crate) const NONE: SetBounds = SetBounds {
+        orient: f64::INFINITY,
+        incircle: f64::INFINITY,
+    };
+
+    /// The bounds for `points`, whose bounding box is `[min, max]`.
+    ///
+    /// Shewchuk's bounds are `ORIENT_BOUND` and `INCIRCLE_BOUND` times the determinants'
+    /// permanents, and when no coordinate difference exceeds `w` in magnitude these are at most
+    /// `2 w^2` (two products of differences) and `12 w^4` (three terms, each two products of
+    /// differences, `<= 2 w^2`, times a squared length, `<= 2 w^2`). `w` is the box's larger
+    /// side, rounded up, and each bound is rounded up once more for its own evaluation, which is
+    /// monotone in `w` as the permanents are in the differences.
+    pub(crate) fn of(points: &[[f64; 2]], [min, max]: [[f64; 2]; 2]) -> Self {
+        let w = (max[0] - min[0]).max(max[1] - min[1]);
+        if !w.is_finite() {
+            return Self::NONE;
+        }
+        if set_on_small_lattice(points, min, w, INCIRCLE_LATTICE_BITS) {
+            return SetBounds {
+                orient: -1.0,
+                incircle: -1.0,
+            };
+        }
+        let w = w * (1.0 + 4.0 * f64::EPSILON);
+        let rounding = 1.0 + 64.0 * f64::EPSILON;
+        SetBounds {
+            orient: ORIENT_BOUND * 2.0 * (w * w) * rounding,
+            incircle: INCIRCLE_BOUND * 12.0 * (w * w) * (w * w) * rounding,
+        }
+    }
+}
+
 /// Orientation of the triangle `a, b, c`: positive when counter-clockwise (`c` left of `a → b`),
 /// negative when clockwise, exactly zero when collinear.
 ///
@@ -24,11 +70,17 @@ const INCIRCLE_BOUND: f64 = (10.0 + 96.0 * HALF_EPSILON) * HALF_EPSILON;
 /// Shewchuk's adaptive exact arithmetic.
 #[inline(always)]
 pub fn orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    orient2d_in(a, b, c, &SetBounds::NONE)
+}
+
+/// [`orient2d`] for three points of the set of `set`.
+#[inline(always)]
+pub(crate) fn orient2d_in(a: [f64; 2], b: [f64; 2], c: [f64; 2], set: &SetBounds) -> f64 {
     let (acx, acy, bcx, bcy) = (a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]);
     let left = acx * bcy;
     let right = acy * bcx;
     let det = left - right;
-    if (det).abs() > ORIENT_BOUND * (left.abs() + right.abs()) {
+    if det.abs() > set.orient || det.abs() > ORIENT_BOUND * (left.abs() + right.abs()) {
         return det;
     }
     orient2d_slow(a, b, c, det)
@@ -47,14 +99,18 @@ fn orient2d_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], det: f64) -> f64 {
 /// cocircular. (For a clockwise triangle the sign flips.) Evaluated like [`orient2d`].
 #[inline(always)]
 pub fn incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
-    incircle_in_set(a, b, c, d, f64::INFINITY)
+    incircle_in(a, b, c, d, &SetBounds::NONE)
 }
 
-/// [`incircle`] for four points of a set whose [`incircle_set_bound`] is `set_bound`: a
-/// determinant above that bound is decided before the per-call error bound is computed (a third
-/// of the filter's instructions, and most calls of a construction need no more).
+/// [`incircle`] for four points of the set of `set`.
 #[inline(always)]
-pub fn incircle_in_set(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], set_bound: f64) -> f64 {
+pub(crate) fn incircle_in(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+    d: [f64; 2],
+    set: &SetBounds,
+) -> f64 {
     let (adx, ady) = (a[0] - d[0], a[1] - d[1]);
     let (bdx, bdy) = (b[0] - d[0], b[1] - d[1]);
     let (cdx, cdy) = (c[0] - d[0], c[1] - d[1]);
@@ -65,7 +121,7 @@ pub fn incircle_in_set(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], set_b
     let blift = bdx * bdx + bdy * bdy;
     let clift = cdx * cdx + cdy * cdy;
     let det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    if det.abs() > set_bound {
+    if det.abs() > set.incircle {
         return det;
     }
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
@@ -75,24 +131,6 @@ pub fn incircle_in_set(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], set_b
         return det;
     }
     incircle_slow(a, b, c, d, det)
-}
-
-/// An error bound of the floating-point in-circle determinant that holds for any four points
-/// inside the box `[min, max]`: Shewchuk's bound is `INCIRCLE_BOUND` times the determinant's
-/// permanent, and when no coordinate difference exceeds `w` in magnitude the permanent is at most
-/// `12 w^4` (each of its three terms is two products of differences, `<= 2 w^2`, times a squared
-/// length, `<= 2 w^2`). `w` is the box's larger side, rounded up, and the bound is rounded up
-/// once more for its own evaluation, which is monotone in `w` as the permanent's is in the
-/// differences.
-pub fn incircle_set_bound([min, max]: [[f64; 2]; 2]) -> f64 {
-    let w = (max[0] - min[0]).max(max[1] - min[1]) * (1.0 + 4.0 * f64::EPSILON);
-    let bound = INCIRCLE_BOUND * 12.0 * (w * w) * (w * w) * (1.0 + 64.0 * f64::EPSILON);
-    // An empty or unbounded box: no set bound, every call takes the per-call filter.
-    if bound.is_finite() {
-        bound
-    } else {
-        f64::INFINITY
-    }
 }
 
 #[cold]
@@ -105,11 +143,14 @@ fn incircle_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], det: f64) -
         (c[0], d[0]),
         (c[1], d[1]),
     ];
-    if on_small_lattice(diffs, 12) {
+    if on_small_lattice(diffs, INCIRCLE_LATTICE_BITS) {
         return det;
     }
     robust::incircle(coord(a), coord(b), coord(c), coord(d))
 }
+
+/// Lattice span (in units, as a power of two) that keeps the in-circle determinant exact.
+const INCIRCLE_LATTICE_BITS: i32 = 12;
 
 /// True when every difference `x - y` is computed exactly and all of them are integer multiples
 /// of one power of two `u` with magnitude below `2^bits · u` (and `u` far from underflow). Then
@@ -121,10 +162,7 @@ fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
     let diffs = pairs.map(|(x, y)| x - y);
     let (mut inexact, mut largest) = (false, 0.0_f64);
     for (&(x, y), &d) in pairs.iter().zip(&diffs) {
-        // Exactness of the subtraction (Dekker/Knuth two-difference error term is zero).
-        let y_virtual = x - d;
-        let x_virtual = d + y_virtual;
-        inexact |= (x - x_virtual) + (y_virtual - y) != 0.0;
+        inexact |= !is_exact_difference(x, y, d);
         let size = d.abs();
         largest = if size > largest { size } else { largest };
     }
@@ -134,25 +172,66 @@ fn on_small_lattice<const N: usize>(pairs: [(f64, f64); N], bits: i32) -> bool {
     if largest == 0.0 {
         return true;
     }
-    // u = 2^(e + 1 - bits) where 2^e <= largest < 2^(e+1).
+    let Some(inverse_unit) = inverse_lattice_unit(largest, bits) else {
+        return false;
+    };
+    let mut off_lattice = false;
+    for d in diffs {
+        off_lattice |= !is_integer(d * inverse_unit);
+    }
+    !off_lattice
+}
+
+/// [`on_small_lattice`] for the differences of any two of `points`, whose bounding box has
+/// lower corner `min` and larger side `w`: every `p - min` exact and on the lattice of unit
+/// `u` for `w` makes every difference of two points exact (an integer below `2^bits` times `u`
+/// is representable) and on that lattice.
+fn set_on_small_lattice(points: &[[f64; 2]], min: [f64; 2], w: f64, bits: i32) -> bool {
+    if w == 0.0 {
+        return true;
+    }
+    let Some(inverse_unit) = inverse_lattice_unit(w, bits) else {
+        return false;
+    };
+    // Stops at the first point off the lattice: the first one, for almost any non-grid input.
+    points.iter().all(|p| {
+        (0..2).all(|k| {
+            let d = p[k] - min[k];
+            is_exact_difference(p[k], min[k], d) && is_integer(d * inverse_unit)
+        })
+    })
+}
+
+/// Is `d = x - y`, as computed, exact? (The Dekker/Knuth two-difference error term is zero.)
+#[inline(always)]
+fn is_exact_difference(x: f64, y: f64, d: f64) -> bool {
+    let y_virtual = x - d;
+    let x_virtual = d + y_virtual;
+    (x - x_virtual) + (y_virtual - y) == 0.0
+}
+
+/// `1 / u` for the lattice unit `u = 2^(e + 1 - bits)`, where `2^e <= largest < 2^(e+1)`, so
+/// that magnitudes up to `largest` are below `2^bits` units; `None` when `u` would be too close
+/// to underflow or overflow for the determinants (or `largest` is subnormal).
+#[inline(always)]
+fn inverse_lattice_unit(largest: f64, bits: i32) -> Option<f64> {
     let biased_exponent = ((largest.to_bits() >> 52) & 0x7ff) as i32;
     let unit_exponent = biased_exponent - 1023 + 1 - bits;
     if !(-240..=240).contains(&unit_exponent) || biased_exponent == 0 {
-        return false;
+        return None;
     }
     // 2^-unit_exponent, a normal number (the range check above), built from its bits: `pow2`
     // would call the software `powi`.
-    let inverse_unit = f64::from_bits(((1023 - unit_exponent) as u64) << 52);
-    // Every `units` is below 2^bits ≤ 2^25 in magnitude (exact: a power-of-two multiple of
-    // `d`), so adding and subtracting 1.5·2^52 rounds it to the nearest integer exactly: it is an
-    // integer when that changes nothing (`trunc` is a library call on baseline x86-64).
+    Some(f64::from_bits(((1023 - unit_exponent) as u64) << 52))
+}
+
+/// Is `units`, of magnitude below `2^25`, an integer? Adding and subtracting `1.5 · 2^52` rounds
+/// it to the nearest integer exactly, so it is one when that changes nothing (`trunc` is a
+/// library call on baseline x86-64).
+#[inline(always)]
+fn is_integer(units: f64) -> bool {
     const ROUND: f64 = 6_755_399_441_055_744.0;
-    let mut off_lattice = false;
-    for d in diffs {
-        let units = d * inverse_unit;
-        off_lattice |= (units + ROUND) - ROUND != units;
-    }
-    !off_lattice
+    (units + ROUND) - ROUND == units
 }
 
 /// The power of two by which sites are multiplied before any predicate is evaluated, so that
@@ -226,8 +305,32 @@ mod tests {
         assert!(incircle([0.0, 0.0], [1.0, 0.0], [0.0, 1.0], d) < 0.0);
     }
 
+    /// Orientation and in-circle signs of `pts`'s triples and quadruples under `set` against
+    /// the adaptive arithmetic; returns how many in-circle calls the set bound decided, of all.
+    fn check_set(pts: &[[f64; 2]], set: &SetBounds) -> (usize, usize) {
+        let coord = |p: [f64; 2]| Coord { x: p[0], y: p[1] };
+        let same_sign = |x: f64, y: f64| (x > 0.0, x < 0.0) == (y > 0.0, y < 0.0);
+        let (mut decided_by_set, mut total) = (0, 0);
+        for &a in pts.iter().step_by(3) {
+            for &b in pts.iter().skip(1).step_by(4) {
+                for &c in pts.iter().skip(2).step_by(5) {
+                    let o = robust::orient2d(coord(a), coord(b), coord(c));
+                    assert!(same_sign(orient2d_in(a, b, c, set), o));
+                    for &d in pts {
+                        let exact = robust::incircle(coord(a), coord(b), coord(c), coord(d));
+                        let mine = incircle_in(a, b, c, d, set);
+                        assert!(same_sign(mine, exact), "{a:?} {b:?} {c:?} {d:?}");
+                        total += 1;
+                        decided_by_set += usize::from(mine.abs() > set.incircle);
+                    }
+                }
+            }
+        }
+        (decided_by_set, total)
+    }
+
     #[test]
-    fn set_bound_agrees_with_adaptive_arithmetic() {
+    fn set_bounds_agree_with_adaptive_arithmetic() {
         // Points near one circle (rounded, so cocircular only up to an ulp or so: determinants
         // on both sides of the set bound), and random points, in boxes of several sizes.
         let mut state = 7_u64;
@@ -237,7 +340,6 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
-        let coord = |p: [f64; 2]| Coord { x: p[0], y: p[1] };
         for scale in [1.0, 0.75, 2.0_f64.powi(-20)] {
             let mut pts: Vec<[f64; 2]> = (0..40)
                 .map(|_| {
@@ -246,30 +348,50 @@ mod tests {
                 })
                 .collect();
             pts.extend((0..20).map(|_| [scale * random(), scale * random()]));
-            let bound = incircle_set_bound(spatial_sort::bounding_box(&pts));
-            assert!(bound > 0.0 && bound.is_finite());
-            let (mut decided_by_set, mut total) = (0, 0);
-            for a in pts.iter().step_by(3) {
-                for b in pts.iter().skip(1).step_by(4) {
-                    for c in pts.iter().skip(2).step_by(5) {
-                        for &d in &pts {
-                            let exact = robust::incircle(coord(*a), coord(*b), coord(*c), coord(d));
-                            let mine = incircle_in_set(*a, *b, *c, d, bound);
-                            assert_eq!((mine > 0.0, mine < 0.0), (exact > 0.0, exact < 0.0));
-                            total += 1;
-                            decided_by_set += usize::from(mine.abs() > bound);
-                        }
-                    }
-                }
-            }
+            let set = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            assert!(set.incircle > 0.0 && set.incircle.is_finite() && set.orient > 0.0);
+            let (decided_by_set, total) = check_set(&pts, &set);
             // The set bound decides most calls, and not all (the near-circle quadruples).
             assert!(
                 decided_by_set > total / 2 && decided_by_set < total,
                 "{decided_by_set}/{total}"
             );
         }
-        let empty = spatial_sort::bounding_box(&[]);
-        assert_eq!(incircle_set_bound(empty), f64::INFINITY);
+        let empty = SetBounds::of(&[], spatial_sort::bounding_box(&[]));
+        assert_eq!(empty.incircle, f64::INFINITY);
+    }
+
+    #[test]
+    fn lattice_sets_are_exact() {
+        // An integer grid, offset and scaled by powers of two: every determinant exact, the
+        // many zeros included.
+        for (unit, offset) in [(1.0, 0.0), (0.25, -3.0), (2.0_f64.powi(-30), 1.5)] {
+            let mut pts: Vec<[f64; 2]> = (0..49)
+                .map(|i| {
+                    [
+                        offset + (i % 7) as f64 * unit,
+                        offset + (i / 7) as f64 * unit,
+                    ]
+                })
+                .collect();
+            let set = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            assert!(set.incircle < 0.0 && set.orient < 0.0, "unit {unit}");
+            let (decided_by_set, total) = check_set(&pts, &set);
+            assert_eq!(decided_by_set, total);
+            // Off the lattice by one point, or too wide a lattice: the usual bounds.
+            pts.push([offset + 0.1 * unit, offset]);
+            assert!(SetBounds::of(&pts, spatial_sort::bounding_box(&pts)).incircle > 0.0);
+            pts.pop();
+            pts.push([offset + 5000.0 * unit, offset]);
+            let wide = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            assert!(wide.incircle > 0.0);
+            check_set(&pts, &wide);
+        }
+        // One distinct point: every determinant is zero, exactly.
+        let same = [[0.3, 0.7]; 4];
+        let set = SetBounds::of(&same, spatial_sort::bounding_box(&same));
+        assert!(set.incircle < 0.0);
+        check_set(&same, &set);
     }
 
     #[test]
