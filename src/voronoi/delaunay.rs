@@ -55,6 +55,8 @@ pub struct Delaunay {
     /// Sites multiplied by `scale` (a power of two) for exact predicates.
     pub(crate) scaled: Vec<[f64; 2]>,
     pub(crate) scale: f64,
+    /// Error bounds of the predicates over the scaled sites.
+    pub(crate) set_bounds: SetBounds,
     pub(crate) representative: Vec<u32>,
     pub(crate) n_unique: usize,
     pub(crate) triangles: Vec<u32>,
@@ -106,6 +108,7 @@ impl Delaunay {
             sites: sites.to_vec(),
             scaled,
             scale,
+            set_bounds: SetBounds::NONE,
             representative: Vec::new(),
             n_unique: 0,
             triangles: Vec::new(),
@@ -126,8 +129,8 @@ impl Delaunay {
             Seed::Empty => {}
             Seed::Degenerate => result.build_collinear(&mut representative),
             Seed::Triangle { a, b, c } => {
-                let set_bounds = SetBounds::of(&sorted, bounds);
-                let mut tri = GhostTriangulation::new(&sorted, [a, b, c], n, set_bounds);
+                result.set_bounds = SetBounds::of(&sorted, bounds);
+                let mut tri = GhostTriangulation::new(&sorted, [a, b, c], n, result.set_bounds);
                 // Sites skipped while looking for the seed triangle come first, then the rest.
                 for k in (0..n as u32).filter(|&k| k != c) {
                     if k == a || k == b || rank_representative[k as usize] != k {

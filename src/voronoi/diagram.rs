@@ -8,7 +8,7 @@ use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
-use super::predicates::incircle;
+use super::predicates::incircle_in;
 use crate::disjoint_sets;
 use crate::large_arrays;
 
@@ -112,7 +112,8 @@ impl Voronoi {
             here == there
                 || (may_be_cocircular(here, there, radius) && {
                     let [a, b, c] = d.triangle_points(e / 3);
-                    incircle(a, b, c, d.corner_point(prev_edge(d.twins[e as usize]))) == 0.0
+                    let apex = d.corner_point(prev_edge(d.twins[e as usize]));
+                    incircle_in(a, b, c, apex, &d.set_bounds) == 0.0
                 })
         };
         let unscale = d.scale.recip();

@@ -1,5 +1,6 @@
-//! Exact geometric predicates (Shewchuk's adaptive arithmetic through the `robust` crate) and the
-//! power-of-two rescaling that keeps them exact for very large and very small coordinates.
+//! Exact geometric predicates (Shewchuk's adaptive arithmetic through the `robust` crate), error
+//! bounds shared by all points of one set ([`SetBounds`]), and the power-of-two rescaling that
+//! keeps them exact for very large and very small coordinates.
 
 use robust::Coord;
 
