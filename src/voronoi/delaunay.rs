@@ -1,5 +1,7 @@
 //! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
 
+use std::sync::OnceLock;
+
 use super::error::VoronoiError;
 use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
@@ -52,8 +54,9 @@ pub enum Dimension {
 #[derive(Clone, Debug)]
 pub struct Delaunay {
     pub(crate) sites: Vec<[f64; 2]>,
-    /// Sites multiplied by `scale` (a power of two) for exact predicates.
-    pub(crate) scaled: Vec<[f64; 2]>,
+    /// Sites multiplied by `scale` (a power of two) for exact predicates, in site order, made
+    /// on first use (queries and rasters; the construction reads them through `ranked`).
+    scaled: OnceLock<Vec<[f64; 2]>>,
     pub(crate) scale: f64,
     /// Error bounds of the predicates over the scaled sites.
     pub(crate) set_bounds: SetBounds,
@@ -99,14 +102,14 @@ impl Delaunay {
             });
         }
         let scale = normalising_scale(sites);
-        let scaled = map_indexed(n, |i| [sites[i][0] * scale, sites[i][1] * scale]);
         let mut representative: Vec<u32> = (0..n as u32).collect();
-        let bounds = bounding_box(&scaled);
-        let order = brio_hilbert_order(&scaled, bounds);
+        // The scaled sites' box: scaling by a power of two is monotone, so it maps the box.
+        let bounds = bounding_box(sites).map(|corner| corner.map(|x| x * scale));
+        let order = brio_hilbert_order(sites, scale, bounds);
 
         let mut result = Delaunay {
             sites: sites.to_vec(),
-            scaled,
+            scaled: OnceLock::new(),
             scale,
             set_bounds: SetBounds::NONE,
             representative: Vec::new(),
@@ -123,7 +126,7 @@ impl Delaunay {
         // The triangulation is built on vertices numbered by insertion rank, with coordinates
         // stored in that (space-filling-curve) order: walks and cavities then touch memory
         // sequentially instead of jumping across the input. Ranks map back to sites at the end.
-        let sorted = map_indexed(n, |k| result.scaled[order[k] as usize]);
+        let sorted = map_indexed(n, |k| result.scaled_point(order[k]));
         let mut rank_representative: Vec<u32> = (0..n as u32).collect();
         match find_initial_triangle(&sorted, &mut rank_representative) {
             Seed::Empty => {}
@@ -281,7 +284,7 @@ impl Delaunay {
     fn build_collinear(&mut self, representative: &mut [u32]) {
         let mut order: Vec<u32> = (0..self.sites.len() as u32).collect();
         // Lexicographic order is the order along any line.
-        let pts = &self.scaled;
+        let pts = self.scaled();
         order.sort_unstable_by(|&i, &j| {
             pts[i as usize]
                 .partial_cmp(&pts[j as usize])
@@ -477,11 +480,17 @@ impl Delaunay {
         ]
     }
 
-    /// Scaled coordinates used by the exact predicates.
-    #[cfg(test)]
+    /// Scaled coordinates of site `v`, as the exact predicates see it.
     #[inline(always)]
     pub(crate) fn scaled_point(&self, v: u32) -> [f64; 2] {
-        self.scaled[v as usize]
+        let p = self.sites[v as usize];
+        [p[0] * self.scale, p[1] * self.scale]
+    }
+
+    /// Every site multiplied by `scale`, in site order.
+    pub(crate) fn scaled(&self) -> &[[f64; 2]] {
+        self.scaled
+            .get_or_init(|| map_indexed(self.sites.len(), |v| self.scaled_point(v as u32)))
     }
 
     /// Exact orientation in the triangulation's own (scaled) coordinates.

@@ -108,7 +108,7 @@ impl Delaunay {
     fn query_frame(&self, p: [f64; 2]) -> (&[[f64; 2]], [f64; 2]) {
         let q = [p[0] * self.scale, p[1] * self.scale];
         if q[0].is_finite() && q[1].is_finite() {
-            (&self.scaled, q)
+            (self.scaled(), q)
         } else {
             (&self.sites, p)
         }

@@ -169,7 +169,7 @@ impl Delaunay {
             .iter()
             .all(|p| (p[0] * scale).is_finite() && (p[1] * scale).is_finite());
         let (frame, scale) = if scaled_ok {
-            (&self.scaled[..], scale)
+            (self.scaled(), scale)
         } else {
             (&self.sites[..], 1.0)
         };
@@ -240,8 +240,8 @@ mod tests {
                         let better = best == INVALID
                             || match metric.compare(
                                 q,
-                                d.scaled[s as usize],
-                                d.scaled[best as usize],
+                                d.scaled()[s as usize],
+                                d.scaled()[best as usize],
                             ) {
                                 Ordering::Less => true,
                                 Ordering::Equal => s < best,

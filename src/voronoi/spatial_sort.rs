@@ -29,9 +29,9 @@ pub fn bounding_box(points: &[[f64; 2]]) -> [[f64; 2]; 2] {
     [min, max]
 }
 
-/// Returns the indices of `points` (all finite, with [`bounding_box`] `bounds`) in BRIO-Hilbert
-/// insertion order.
-pub fn brio_hilbert_order(points: &[[f64; 2]], bounds: [[f64; 2]; 2]) -> Vec<u32> {
+/// Returns the indices of `points` (all finite) in BRIO-Hilbert insertion order, the order of
+/// the points multiplied by `scale` (a power of two), whose [`bounding_box`] is `bounds`.
+pub fn brio_hilbert_order(points: &[[f64; 2]], scale: f64, bounds: [[f64; 2]; 2]) -> Vec<u32> {
     let n = points.len();
     if n == 0 {
         return Vec::new();
@@ -47,7 +47,7 @@ pub fn brio_hilbert_order(points: &[[f64; 2]], bounds: [[f64; 2]; 2]) -> Vec<u32
     };
     let rounds = round_count(n);
     let mut keyed: Vec<u64> = map_indexed(n, |i| {
-        let p = points[i];
+        let p = [points[i][0] * scale, points[i][1] * scale];
         let gx = ((p[0] - min[0]) * to_grid) as u32;
         let gy = ((p[1] - min[1]) * to_grid) as u32;
         let h = hilbert_index(gx, gy);
@@ -176,7 +176,7 @@ mod tests {
         let pts: Vec<[f64; 2]> = (0..1000)
             .map(|i| [(i * 37 % 101) as f64, (i * 59 % 103) as f64])
             .collect();
-        let mut order = brio_hilbert_order(&pts, bounding_box(&pts));
+        let mut order = brio_hilbert_order(&pts, 1.0, bounding_box(&pts));
         order.sort_unstable();
         assert_eq!(order, (0..1000).collect::<Vec<u32>>());
     }
