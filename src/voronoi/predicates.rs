@@ -1,6 +1,6 @@
 //! Exact geometric predicates (Shewchuk's adaptive arithmetic through the `robust` crate), error
-//! bounds shared by all points of one set ([`SetBounds`]), and the power-of-two rescaling that
-//! keeps them exact for very large and very small coordinates.
+//! bounds shared by all points of one set (for the crate's constructions), and the power-of-two
+//! rescaling that keeps them exact for very large and very small coordinates.
 
 use robust::Coord;
 
