@@ -6,7 +6,7 @@ use super::error::VoronoiError;
 use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
-use super::predicates::{SetBounds, normalising_scale, orient2d};
+use super::predicates::{SetBounds, normalising_scale_of_box, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
 use crate::large_arrays;
 use crate::prefetch::prefetch;
@@ -101,10 +101,12 @@ impl Delaunay {
                 y: p[1],
             });
         }
-        let scale = normalising_scale(sites);
+        // One pass over the sites gives the scale and, scaled (a power of two is monotone, so
+        // it maps the box), the scaled sites' box.
+        let site_box = bounding_box(sites);
+        let scale = normalising_scale_of_box(site_box);
         let mut representative: Vec<u32> = (0..n as u32).collect();
-        // The scaled sites' box: scaling by a power of two is monotone, so it maps the box.
-        let bounds = bounding_box(sites).map(|corner| corner.map(|x| x * scale));
+        let bounds = site_box.map(|corner| corner.map(|x| x * scale));
         let order = brio_hilbert_order(sites, scale, bounds);
 
         let mut result = Delaunay {

@@ -4,6 +4,8 @@
 
 use robust::Coord;
 
+use super::spatial_sort::bounding_box;
+
 #[inline(always)]
 fn coord(p: [f64; 2]) -> Coord<f64> {
     Coord { x: p[0], y: p[1] }
@@ -243,10 +245,15 @@ fn is_integer(units: f64) -> bool {
 /// it. Scaling by a power of two is exact (barring underflow of individual coordinates) and does
 /// not change any orientation or in-circle sign.
 pub fn normalising_scale(points: &[[f64; 2]]) -> f64 {
-    let max_abs = points
+    normalising_scale_of_box(bounding_box(points))
+}
+
+/// [`normalising_scale`] of points whose [`bounding_box`] is `[min, max]` (the largest magnitude
+/// is at a corner).
+pub(crate) fn normalising_scale_of_box([min, max]: [[f64; 2]; 2]) -> f64 {
+    let max_abs = [min[0], min[1], max[0], max[1]]
         .iter()
-        .flat_map(|p| [p[0].abs(), p[1].abs()])
-        .fold(0.0_f64, f64::max);
+        .fold(0.0_f64, |m, c| m.max(c.abs()));
     if max_abs == 0.0 || !max_abs.is_finite() {
         return 1.0;
     }
@@ -272,7 +279,6 @@ pub fn pow2(e: i32) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::spatial_sort;
     use super::*;
 
     #[test]
@@ -349,7 +355,7 @@ mod tests {
                 })
                 .collect();
             pts.extend((0..20).map(|_| [scale * random(), scale * random()]));
-            let set = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            let set = SetBounds::of(&pts, bounding_box(&pts));
             assert!(set.incircle > 0.0 && set.incircle.is_finite() && set.orient > 0.0);
             let (decided_by_set, total) = check_set(&pts, &set);
             // The set bound decides most calls, and not all (the near-circle quadruples).
@@ -358,7 +364,7 @@ mod tests {
                 "{decided_by_set}/{total}"
             );
         }
-        let empty = SetBounds::of(&[], spatial_sort::bounding_box(&[]));
+        let empty = SetBounds::of(&[], bounding_box(&[]));
         assert_eq!(empty.incircle, f64::INFINITY);
     }
 
@@ -375,22 +381,22 @@ mod tests {
                     ]
                 })
                 .collect();
-            let set = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            let set = SetBounds::of(&pts, bounding_box(&pts));
             assert!(set.incircle < 0.0 && set.orient < 0.0, "unit {unit}");
             let (decided_by_set, total) = check_set(&pts, &set);
             assert_eq!(decided_by_set, total);
             // Off the lattice by one point, or too wide a lattice: the usual bounds.
             pts.push([offset + 0.1 * unit, offset]);
-            assert!(SetBounds::of(&pts, spatial_sort::bounding_box(&pts)).incircle > 0.0);
+            assert!(SetBounds::of(&pts, bounding_box(&pts)).incircle > 0.0);
             pts.pop();
             pts.push([offset + 5000.0 * unit, offset]);
-            let wide = SetBounds::of(&pts, spatial_sort::bounding_box(&pts));
+            let wide = SetBounds::of(&pts, bounding_box(&pts));
             assert!(wide.incircle > 0.0);
             check_set(&pts, &wide);
         }
         // One distinct point: every determinant is zero, exactly.
         let same = [[0.3, 0.7]; 4];
-        let set = SetBounds::of(&same, spatial_sort::bounding_box(&same));
+        let set = SetBounds::of(&same, bounding_box(&same));
         assert!(set.incircle < 0.0);
         check_set(&same, &set);
     }
