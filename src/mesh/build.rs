@@ -3,21 +3,28 @@
 //! The faces are walked once, in order, and each corner meets its edge in
 //! [`EdgeBuckets`](crate::soup::EdgeBuckets): the first corner on an edge opens edge `e`
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
-//! twin. Each face's loop is written as soon as its corners are known, so half-edges are numbered
-//! in corner order and each face's half-edges sit close together in memory; the face's area is
-//! checked in the walk or in a pass of its own (degenerate faces are reported; `soup::front`
-//! chooses where). Boundary half-edges are then linked into loops through each vertex's outgoing
-//! boundary half-edge (walking the fan only at vertices with several boundary gaps).
+//! twin. Each face's loop is written as soon as its corners are known (with two threads, one
+//! numbers the corners' half-edges a chunk of faces ahead while the other writes), so half-edges
+//! are numbered in corner order and each face's half-edges sit close together in memory; the
+//! face's area is checked in the walk or in a pass of its own (degenerate faces are reported;
+//! `soup::front` chooses where). Boundary half-edges are then linked into loops through each
+//! vertex's outgoing boundary half-edge (walking the fan only at vertices with several boundary
+//! gaps).
 //!
 //! Well-formed input (no face a policy has to act on) is built directly, and the walk itself
 //! finds edge defects; only input that needs a decision goes through
 //! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
+
+#[cfg(feature = "parallel")]
+use std::ops::Range;
 
 use crate::large_arrays::{filled, fit, zeroed};
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
     FaceList, FaceTable, Walked, face_edges, walk_faces,
 };
+#[cfg(feature = "parallel")]
+use crate::soup::{join, thread_count};
 
 use super::Mesh;
 use super::connectivity::Deletions;
@@ -100,15 +107,26 @@ struct FaceLoops {
     n_edges: u32,
 }
 
+/// Faces per chunk of the walk on two threads ([`walk_in_two`]): a chunk's half-edge numbers
+/// (tens of KB) are still in cache when the writing thread reads them, and the hand-overs are
+/// few (a few hundred on a million faces).
+#[cfg(feature = "parallel")]
+const CHUNK_FACES: usize = 4096;
+
 impl FaceLoops {
     /// The connectivity walk (see the module documentation) over a well-formed table whose
     /// vertices are at `positions`, checking each face's area into `degenerate` when given.
     /// `None` when an edge is walked by more than two faces or twice in one direction.
+    ///
+    /// The corners meet their edges in the buckets, which numbers their half-edges
+    /// ([`EdgeNumbering`]), and the half-edges are written into the loops ([`LoopWriter`]):
+    /// corner by corner on one thread; on two, the numbering runs chunks of faces ahead on one
+    /// while the other writes. The mesh is the same either way.
     fn walk(
         table: &FaceTable<'_>,
         mut buckets: EdgeBuckets,
         positions: &[[f64; 3]],
-        mut degenerate: Option<&mut DegenerateFaces<'_>>,
+        degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<FaceLoops> {
         let capacity = 2 * table.n_corners();
         let mut loops = FaceLoops {
@@ -123,54 +141,26 @@ impl FaceLoops {
         // Every array cut to one of two lengths the compiler can see are shared, so the walk's
         // bounds checks need two registers, not one per array.
         let (n_edges, n_vertices) = (capacity / 2, positions.len());
-        let mut writer = LoopWriter {
-            edges: buckets.visitor(),
+        let writer = LoopWriter {
             origin: &mut loops.origin.as_chunks_mut().0[..n_edges],
             face: &mut loops.face.as_chunks_mut().0[..n_edges],
             next: &mut loops.next[..2 * n_edges],
             prev: &mut loops.prev[..2 * n_edges],
             vertex_halfedge: &mut loops.vertex_halfedge[..n_vertices],
+            face_halfedge: &mut loops.face_halfedge,
+            degenerate,
+        };
+        let numbering = EdgeNumbering {
+            edges: buckets.visitor(),
             n_edges: 0,
         };
-        let mut polygon = Vec::new();
-        let faces = table.faces().zip(&mut loops.face_halfedge);
-        for (f, (corners, face_halfedge)) in faces.enumerate() {
-            let f32 = f as u32;
-            writer.edges.prefetch_ahead_of(table, f);
-            // Before the topology: the position loads overlap the walk's bucket misses.
-            if let Some(degenerate) = degenerate.as_deref_mut() {
-                degenerate.check(table, f, corners);
+        loops.n_edges = match () {
+            #[cfg(feature = "parallel")]
+            () if thread_count() > 1 && table.n_faces() > CHUNK_FACES => {
+                walk_in_two(table, numbering, writer)?
             }
-            *face_halfedge = match *corners {
-                // Triangles and quads, the usual faces, written out with their loops in
-                // registers: measurably faster than the generic loop.
-                [a, b, c] => {
-                    let triangle = [
-                        writer.corner(a, b, f32)?,
-                        writer.corner(b, c, f32)?,
-                        writer.corner(c, a, f32)?,
-                    ];
-                    writer.close_face(triangle)
-                }
-                [a, b, c, d] => {
-                    let quad = [
-                        writer.corner(a, b, f32)?,
-                        writer.corner(b, c, f32)?,
-                        writer.corner(c, d, f32)?,
-                        writer.corner(d, a, f32)?,
-                    ];
-                    writer.close_face(quad)
-                }
-                _ => {
-                    polygon.clear();
-                    for (a, b) in face_edges(corners) {
-                        polygon.push(writer.corner(a, b, f32)?);
-                    }
-                    writer.close_face(&polygon)
-                }
-            };
-        }
-        loops.n_edges = writer.n_edges;
+            () => walk_in_one(table, numbering, writer)?,
+        };
         Some(loops)
     }
 
@@ -214,48 +204,228 @@ impl FaceLoops {
     }
 }
 
-/// The walk's view of [`FaceLoops`]' arrays and the edge buckets: slices on the walk's stack,
-/// so their addresses and lengths stay in registers; origins and faces by edge, as pairs.
-struct LoopWriter<'a> {
-    edges: EdgeVisitor<'a>,
+/// The walk on this thread, corner by corner: each corner's edge is met in the buckets and its
+/// half-edge written at once (the bucket loads of one corner then overlap the stores of the
+/// last; taken in chunks, as [`walk_in_two`] does, the walk is about 5% slower on one thread).
+fn walk_in_one(
+    table: &FaceTable<'_>,
+    numbering: EdgeNumbering<'_>,
+    writer: LoopWriter<'_, '_>,
+) -> Option<u32> {
+    let mut walk = OneThreadWalk { numbering, writer };
+    let mut polygon = Vec::new();
+    let faces = table
+        .faces()
+        .zip(std::mem::take(&mut walk.writer.face_halfedge));
+    for (f, (corners, face_halfedge)) in faces.enumerate() {
+        let f32 = f as u32;
+        walk.numbering.edges.prefetch_ahead_of(table, f);
+        walk.writer.check_area(table, f, corners);
+        *face_halfedge = match *corners {
+            [a, b, c] => {
+                let triangle = [
+                    walk.corner(a, b, f32)?,
+                    walk.corner(b, c, f32)?,
+                    walk.corner(c, a, f32)?,
+                ];
+                walk.writer.close_face(&triangle)
+            }
+            [a, b, c, d] => {
+                let quad = [
+                    walk.corner(a, b, f32)?,
+                    walk.corner(b, c, f32)?,
+                    walk.corner(c, d, f32)?,
+                    walk.corner(d, a, f32)?,
+                ];
+                walk.writer.close_face(&quad)
+            }
+            _ => {
+                polygon.clear();
+                for (a, b) in face_edges(corners) {
+                    polygon.push(walk.corner(a, b, f32)?);
+                }
+                walk.writer.close_face(&polygon)
+            }
+        };
+    }
+    Some(walk.numbering.n_edges)
+}
+
+/// Both halves of the walk on one thread, owned by its loop so that their fields stay in
+/// registers.
+struct OneThreadWalk<'b, 'a, 'd> {
+    numbering: EdgeNumbering<'b>,
+    writer: LoopWriter<'a, 'd>,
+}
+
+impl OneThreadWalk<'_, '_, '_> {
+    /// The half-edge of the corner of face `f` running `a → b`, numbered and written.
+    #[inline(always)]
+    fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
+        Some(match self.numbering.corner(a, b)? {
+            CornerEdge::Opened(e) => self.writer.open_edge(e, a, b, f),
+            CornerEdge::Paired(e) => self.writer.pair_edge(e, a, f),
+        })
+    }
+}
+
+/// [`walk_in_one`] on two threads, a chunk of faces at a time: the numbering runs ahead on one,
+/// handing over each numbered chunk; the writer hands the chunk's array back for reuse. The
+/// numbering never waits for the writer (so it cannot wait on a task of its own thread), and
+/// stops at the first edge defect, which ends the writer's chunks too.
+#[cfg(feature = "parallel")]
+fn walk_in_two(
+    table: &FaceTable<'_>,
+    mut numbering: EdgeNumbering<'_>,
+    mut writer: LoopWriter<'_, '_>,
+) -> Option<u32> {
+    use std::sync::mpsc::channel;
+    let n_faces = table.n_faces();
+    let chunks = (0..n_faces)
+        .step_by(CHUNK_FACES)
+        .map(move |first| first..n_faces.min(first + CHUNK_FACES));
+    let (numbered, to_write) = channel::<(Range<usize>, Vec<u32>)>();
+    let (written, to_reuse) = channel::<Vec<u32>>();
+    let (n_edges, ()) = join(
+        move || {
+            for faces in chunks {
+                let mut halfedges = to_reuse.try_recv().unwrap_or_default();
+                halfedges.clear();
+                let corners =
+                    table.face_range(faces.start).start..table.face_range(faces.end - 1).end;
+                halfedges.reserve(corners.len());
+                for (f, corners) in faces.clone().zip(table.faces_in(faces.clone())) {
+                    numbering.edges.prefetch_ahead_of(table, f);
+                    for (a, b) in face_edges(corners) {
+                        halfedges.push(numbering.corner(a, b)?.halfedge());
+                    }
+                }
+                numbered.send((faces, halfedges)).ok()?;
+            }
+            Some(numbering.n_edges)
+        },
+        move || {
+            for (faces, halfedges) in to_write {
+                let mut rest = halfedges.as_slice();
+                for (f, corners) in faces.clone().zip(table.faces_in(faces)) {
+                    writer.check_area(table, f, corners);
+                    let (numbers, after) = rest.split_at(corners.len());
+                    rest = after;
+                    for ((a, b), &h) in face_edges(corners).zip(numbers) {
+                        writer.numbered_corner(a, b, f as u32, h);
+                    }
+                    writer.face_halfedge[f] = writer.close_face(numbers);
+                }
+                // The numbering may have finished: then nobody reuses the array.
+                let _ = written.send(halfedges);
+            }
+        },
+    );
+    n_edges
+}
+
+/// The walk's first half: the corners meet their edges in the buckets, in corner order. The
+/// first corner on an edge opens edge `e` and takes half-edge `2e`; the second, running the
+/// other way, takes the twin `2e + 1`.
+struct EdgeNumbering<'b> {
+    edges: EdgeVisitor<'b>,
+    n_edges: u32,
+}
+
+/// The edge a corner met, and how.
+#[derive(Clone, Copy)]
+enum CornerEdge {
+    /// The corner opened the edge: its half-edge is the edge's first.
+    Opened(u32),
+    /// An earlier corner opened the edge: this one has the twin.
+    Paired(u32),
+}
+
+#[cfg(feature = "parallel")]
+impl CornerEdge {
+    /// The corner's half-edge.
+    #[inline(always)]
+    fn halfedge(self) -> u32 {
+        match self {
+            CornerEdge::Opened(e) => 2 * e,
+            CornerEdge::Paired(e) => 2 * e + 1,
+        }
+    }
+}
+
+impl EdgeNumbering<'_> {
+    /// The edge of the next corner, running `a → b`; `None` when the edge was walked this way
+    /// already or by two faces. (Edge ids stay below the corner count, at most `MAX_CORNERS`,
+    /// so they fit an edge's value.)
+    #[inline(always)]
+    fn corner(&mut self, a: u32, b: u32) -> Option<CornerEdge> {
+        match self.edges.visit(a, b, self.n_edges) {
+            EdgeVisit::Opened => {
+                self.n_edges += 1;
+                Some(CornerEdge::Opened(self.n_edges - 1))
+            }
+            EdgeVisit::Paired(e) => Some(CornerEdge::Paired(e)),
+            EdgeVisit::Defective => None,
+        }
+    }
+}
+
+/// The walk's second half: numbered half-edges written into [`FaceLoops`]' arrays, through
+/// slices kept on the writer's stack so their addresses and lengths stay in registers; origins
+/// and faces by edge, as pairs.
+struct LoopWriter<'a, 'd> {
     origin: &'a mut [[u32; 2]],
     face: &'a mut [[u32; 2]],
     next: &'a mut [u32],
     prev: &'a mut [u32],
     vertex_halfedge: &'a mut [u32],
-    n_edges: u32,
+    face_halfedge: &'a mut [u32],
+    degenerate: Option<&'a mut DegenerateFaces<'d>>,
 }
 
-impl LoopWriter<'_> {
-    /// The half-edge of the corner of face `f` running `a → b`: a new edge's first half-edge,
-    /// or the twin of the edge's first corner when that ran `b → a`. `None` when the edge was
-    /// walked this way already or by two faces. (Edge ids stay below the corner count, at most
-    /// `MAX_CORNERS`, so they fit an edge's value.)
-    // Inlined into the walk: it is the whole per-corner work.
+impl LoopWriter<'_, '_> {
+    /// Checks the area of table face `f` (vertices `corners`) when asked to: before the face's
+    /// topology, so that the position loads overlap the walk's bucket misses.
     #[inline(always)]
-    fn corner(&mut self, a: u32, b: u32, f: u32) -> Option<u32> {
-        let h = match self.edges.visit(a, b, self.n_edges) {
-            EdgeVisit::Opened => {
-                let e = self.n_edges;
-                self.n_edges += 1;
-                self.origin[e as usize] = [a, b];
-                self.face[e as usize] = [f, INVALID_INDEX];
-                2 * e
-            }
-            EdgeVisit::Paired(e) => {
-                self.face[e as usize][1] = f;
-                2 * e + 1
-            }
-            EdgeVisit::Defective => return None,
-        };
-        self.vertex_halfedge[a as usize] = h;
-        Some(h)
+    fn check_area(&mut self, table: &FaceTable<'_>, f: usize, corners: &[u32]) {
+        if let Some(degenerate) = self.degenerate.as_deref_mut() {
+            degenerate.check(table, f, corners);
+        }
+    }
+
+    /// The corner of face `f` running `a → b` opened edge `e`: writes and gives its first
+    /// half-edge (its twin stays a boundary half-edge until a second corner pairs with it).
+    #[inline(always)]
+    fn open_edge(&mut self, e: u32, a: u32, b: u32, f: u32) -> u32 {
+        self.origin[e as usize] = [a, b];
+        self.face[e as usize] = [f, INVALID_INDEX];
+        self.vertex_halfedge[a as usize] = 2 * e;
+        2 * e
+    }
+
+    /// The corner of face `f` leaving `a` paired with edge `e`: writes and gives its twin.
+    #[inline(always)]
+    fn pair_edge(&mut self, e: u32, a: u32, f: u32) -> u32 {
+        self.face[e as usize][1] = f;
+        self.vertex_halfedge[a as usize] = 2 * e + 1;
+        2 * e + 1
+    }
+
+    /// [`LoopWriter::open_edge`] or [`LoopWriter::pair_edge`] for a corner numbered `h` by
+    /// [`EdgeNumbering`] (on another thread: the half-edge's parity tells which).
+    #[cfg(feature = "parallel")]
+    #[inline(always)]
+    fn numbered_corner(&mut self, a: u32, b: u32, f: u32, h: u32) -> u32 {
+        if h & 1 == 0 {
+            self.open_edge(h / 2, a, b, f)
+        } else {
+            self.pair_edge(h / 2, a, f)
+        }
     }
 
     /// Links a face's half-edges (in corner order) into its loop; returns the first.
     #[inline(always)]
-    fn close_face(&mut self, halfedges: impl AsRef<[u32]>) -> u32 {
-        let halfedges = halfedges.as_ref();
+    fn close_face(&mut self, halfedges: &[u32]) -> u32 {
         let mut previous = halfedges[halfedges.len() - 1];
         for &h in halfedges {
             self.next[previous as usize] = h;
@@ -360,6 +530,71 @@ mod tests {
                 assert_eq!(alone.halfedge_nexts(), beside.halfedge_nexts());
                 assert_eq!(alone.positions(), beside.positions());
             }
+        }
+    }
+
+    /// With two threads the numbering of a chunk of faces runs ahead of its writing: the mesh,
+    /// the diagnostic and the refusals are those of the walk on one thread, for triangles, quads
+    /// and hexagons over several chunks, with a hole, and with an edge defect in the last chunk
+    /// (found while the writer is still at work).
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn two_threads_build_what_one_thread_builds() {
+        let n = 120u32;
+        let at = |i: u32, j: u32| i * (n + 1) + j;
+        let positions: Vec<[f64; 3]> = (0..=n)
+            .flat_map(|i| (0..=n).map(move |j| (f64::from(i), f64::from(j))))
+            .map(|(x, y)| [x, y, 0.1 * (x * 0.3).sin() * (y * 0.2).cos()])
+            .collect();
+        let (mut sizes, mut indices) = (Vec::new(), Vec::new());
+        for i in 0..n {
+            for j in 0..n {
+                let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                match j % 5 {
+                    _ if (i, j) == (60, 60) => {}
+                    0 => {
+                        // A hexagon over this cell and the next.
+                        sizes.push(6);
+                        indices.extend([a, b, c, at(i + 1, j + 2), at(i, j + 2), d]);
+                    }
+                    1 => {}
+                    3 => {
+                        sizes.extend([3, 3]);
+                        indices.extend([a, b, c, a, c, d]);
+                    }
+                    _ => {
+                        sizes.push(4);
+                        indices.extend([a, b, c, d]);
+                    }
+                }
+            }
+        }
+        assert!(sizes.len() > 3 * CHUNK_FACES);
+        let mut defective = (sizes.clone(), indices.clone());
+        defective.0.push(4);
+        defective.1.extend_from_slice(&indices[indices.len() - 4..]);
+        let in_pool = |threads: usize, (sizes, indices): &(Vec<u32>, Vec<u32>), policy| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| {
+                    Mesh::from_face_list(&FaceList::polygons(&positions, sizes, indices), policy)
+                })
+        };
+        let clean = (sizes, indices);
+        let (one, diagnostic) = in_pool(1, &clean, BuildPolicy::Strict).unwrap();
+        assert_eq!(one.check(), Ok(()));
+        assert_eq!(one.n_faces(), clean.0.len());
+        assert!(diagnostic.is_clean(), "{diagnostic}");
+        assert!(in_pool(2, &clean, BuildPolicy::Strict).unwrap() == (one, diagnostic));
+        for policy in [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair] {
+            let (alone, beside) = (
+                in_pool(1, &defective, policy),
+                in_pool(2, &defective, policy),
+            );
+            assert_eq!(alone.is_err(), policy == BuildPolicy::Strict);
+            assert!(alone == beside, "{policy:?}");
         }
     }
 }

@@ -139,7 +139,7 @@ fn well_formed_edges<'a>(list: &FaceList<'a>) -> Option<(FaceTable<'a>, EdgeBuck
 }
 
 /// Threads of the pool the build runs in (1 without the `parallel` feature).
-fn thread_count() -> usize {
+pub(crate) fn thread_count() -> usize {
     #[cfg(feature = "parallel")]
     {
         rayon::current_num_threads()
@@ -151,7 +151,10 @@ fn thread_count() -> usize {
 }
 
 /// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
-fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
+pub(crate) fn join<A: Send, B: Send>(
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
     #[cfg(feature = "parallel")]
     {
         rayon::join(a, b)

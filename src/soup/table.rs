@@ -197,13 +197,22 @@ impl<'a> FaceTable<'a> {
     /// uniform face size walks the corner array in fixed steps (no offsets, no bounds checks).
     #[inline]
     pub fn faces(&self) -> Faces<'_> {
+        self.faces_in(0..self.n_faces())
+    }
+
+    /// The vertex indices of faces `range` (within `0..n_faces`), in order, as [`FaceTable::faces`].
+    #[inline]
+    pub fn faces_in(&self, range: Range<usize>) -> Faces<'_> {
         match &self.layout {
             Layout::Uniform { size, .. } => {
-                Faces::Uniform(self.corners.chunks_exact(*size as usize))
+                let size = *size as usize;
+                Faces::Uniform(
+                    self.corners[range.start * size..range.end * size].chunks_exact(size),
+                )
             }
             Layout::Offsets(offsets) => Faces::Offsets {
                 corners: &self.corners,
-                offsets: offsets.windows(2),
+                offsets: offsets[range.start..range.end + 1].windows(2),
             },
         }
     }
