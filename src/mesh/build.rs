@@ -341,7 +341,6 @@ enum CornerEdge {
     Paired(u32),
 }
 
-#[cfg(feature = "parallel")]
 impl CornerEdge {
     /// The corner's half-edge.
     #[inline(always)]
@@ -397,18 +396,20 @@ impl LoopWriter<'_, '_> {
     /// half-edge (its twin stays a boundary half-edge until a second corner pairs with it).
     #[inline(always)]
     fn open_edge(&mut self, e: u32, a: u32, b: u32, f: u32) -> u32 {
+        let h = CornerEdge::Opened(e).halfedge();
         self.origin[e as usize] = [a, b];
         self.face[e as usize] = [f, INVALID_INDEX];
-        self.vertex_halfedge[a as usize] = 2 * e;
-        2 * e
+        self.vertex_halfedge[a as usize] = h;
+        h
     }
 
     /// The corner of face `f` leaving `a` paired with edge `e`: writes and gives its twin.
     #[inline(always)]
     fn pair_edge(&mut self, e: u32, a: u32, f: u32) -> u32 {
+        let h = CornerEdge::Paired(e).halfedge();
         self.face[e as usize][1] = f;
-        self.vertex_halfedge[a as usize] = 2 * e + 1;
-        2 * e + 1
+        self.vertex_halfedge[a as usize] = h;
+        h
     }
 
     /// [`LoopWriter::open_edge`] or [`LoopWriter::pair_edge`] for a corner numbered `h` by
