@@ -21,9 +21,9 @@ const HUGE_PAGE: usize = 2 << 20;
 /// Room for the allocator's header in a block sized to end just before a huge-page boundary.
 const HEADER_ROOM: usize = 4096;
 
-/// `len` zeros, for arrays every slot of which is written later. For integers the standard
-/// library takes zeroed memory from the allocator (`calloc`), so fresh pages are not written
-/// twice; the advice comes before the first touch.
+/// `len` zeros, for arrays whose zeros mean something (counts, empty slots). For integers the
+/// standard library takes zeroed memory from the allocator (`calloc`), so fresh pages are not
+/// written twice; the advice comes before the first touch.
 pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
     let mut array = vec![T::default(); huge_page_capacity::<T>(len)];
     advise_huge_pages(array.as_ptr().cast(), array.len() * size_of::<T>());

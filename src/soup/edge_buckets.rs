@@ -58,32 +58,14 @@ impl EdgeBuckets {
     /// that counts the buckets' room checks them too). `n_vertices` is below 2^32 − 1.
     pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Option<Self> {
         let mut start = zeroed::<u32>(n_vertices + 1);
-        let mut scratch = Vec::new();
-        // Branch-free counting: whether a corner runs forward is a coin toss on models whose
-        // vertex order is not face-coherent.
-        let mut count = |a: u32, b: u32| start[a as usize + 1] += u32::from(a < b);
-        for face in table.faces() {
-            if !is_well_formed(face, n_vertices, &mut scratch) {
-                return None;
-            }
-            match *face {
-                [a, b, c] => {
-                    count(a, b);
-                    count(b, c);
-                    count(c, a);
-                }
-                [a, b, c, d] => {
-                    count(a, b);
-                    count(b, c);
-                    count(c, d);
-                    count(d, a);
-                }
-                _ => {
-                    for (a, b) in face_edges(face) {
-                        count(a, b);
-                    }
-                }
-            }
+        let vertices_follow_faces = table.vertices_follow_faces();
+        let counted = if vertices_follow_faces {
+            count_forward_corners::<true>(table, n_vertices, &mut start)
+        } else {
+            count_forward_corners::<false>(table, n_vertices, &mut start)
+        };
+        if !counted {
+            return None;
         }
         // The running total stays in a register: reading back each sum just stored would wait
         // on the store every step.
@@ -97,7 +79,7 @@ impl EdgeBuckets {
             start,
             slots,
             spill: HashMap::new(),
-            vertices_follow_faces: table.vertices_follow_faces(),
+            vertices_follow_faces,
         })
     }
 
@@ -128,6 +110,50 @@ impl EdgeBuckets {
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         self.visitor().visit(a, b, value)
     }
+}
+
+/// Counts into `start[v + 1]` the corners of `table` running from `v` to a larger vertex, or
+/// gives `false` when a face is not well formed (see [`EdgeBuckets::new`]). When the vertex order
+/// follows the faces (`FOLLOW`), whether a corner runs forward has a pattern the branch predictor
+/// learns, and only forward corners touch their count; otherwise it is a coin toss, and every
+/// corner adds 0 or 1 without a branch.
+fn count_forward_corners<const FOLLOW: bool>(
+    table: &FaceTable<'_>,
+    n_vertices: usize,
+    start: &mut [u32],
+) -> bool {
+    let mut scratch = Vec::new();
+    let mut count = |a: u32, b: u32| {
+        if !FOLLOW {
+            start[a as usize + 1] += u32::from(a < b);
+        } else if a < b {
+            start[a as usize + 1] += 1;
+        }
+    };
+    for face in table.faces() {
+        if !is_well_formed(face, n_vertices, &mut scratch) {
+            return false;
+        }
+        match *face {
+            [a, b, c] => {
+                count(a, b);
+                count(b, c);
+                count(c, a);
+            }
+            [a, b, c, d] => {
+                count(a, b);
+                count(b, c);
+                count(c, d);
+                count(d, a);
+            }
+            _ => {
+                for (a, b) in face_edges(face) {
+                    count(a, b);
+                }
+            }
+        }
+    }
+    true
 }
 
 /// How many faces ahead of its current face a walk prefetches buckets

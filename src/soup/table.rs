@@ -178,7 +178,8 @@ impl<'a> FaceTable<'a> {
     /// faces') nearly every corner waits on memory. Judged from about a thousand pairs of
     /// consecutive faces spread over the table: a pair is a jump when the faces' first vertices
     /// are more than a few hundred ids apart (their vertex data no longer near in memory), and
-    /// the order follows the faces when at most a quarter of the pairs jump.
+    /// the order follows the faces when at most a quarter of the pairs jump. (Faces without
+    /// corners count as jumps: the table need not be well formed.)
     pub(crate) fn vertices_follow_faces(&self) -> bool {
         const SAMPLES: usize = 1024;
         const NEARBY_VERTICES: u32 = 256;
@@ -186,9 +187,12 @@ impl<'a> FaceTable<'a> {
         let step = ((n_faces.saturating_sub(1)) / SAMPLES).max(1);
         let (mut pairs, mut jumps) = (0, 0);
         for f in (1..n_faces).step_by(step) {
-            let (first, previous) = (self.face(f)[0], self.face(f - 1)[0]);
+            let nearby = match (self.face(f).first(), self.face(f - 1).first()) {
+                (Some(first), Some(previous)) => first.abs_diff(*previous) <= NEARBY_VERTICES,
+                _ => false,
+            };
             pairs += 1;
-            jumps += usize::from(first.abs_diff(previous) > NEARBY_VERTICES);
+            jumps += usize::from(!nearby);
         }
         4 * jumps <= pairs
     }
