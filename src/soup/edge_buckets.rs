@@ -115,8 +115,9 @@ impl EdgeBuckets {
 /// Counts into `start[v + 1]` the corners of `table` running from `v` to a larger vertex, or
 /// gives `false` when a face is not well formed (see [`EdgeBuckets::new`]). When the vertex order
 /// follows the faces (`FOLLOW`), whether a corner runs forward has a pattern the branch predictor
-/// learns, and only forward corners touch their count; otherwise it is a coin toss, and every
-/// corner adds 0 or 1 without a branch.
+/// learns, and only forward corners touch their count (fewer chained read-modify-writes of one
+/// count: the 1M-triangle torus built in 32.2–33.4 ms against 33.1–34.6, four rounds taking
+/// turns); otherwise it is a coin toss, and every corner adds 0 or 1 without a branch.
 fn count_forward_corners<const FOLLOW: bool>(
     table: &FaceTable<'_>,
     n_vertices: usize,
