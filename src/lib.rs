@@ -18,6 +18,7 @@ pub mod ffi;
 
 mod cycles;
 mod disjoint_sets;
+mod id_set;
 mod large_arrays;
 mod prefetch;
 

@@ -3,11 +3,11 @@
 use std::sync::OnceLock;
 
 use super::error::VoronoiError;
-use super::id_set::IdSet;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{SetBounds, normalising_scale_of_box, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
+use crate::id_set::IdSet;
 use crate::large_arrays;
 use crate::prefetch::prefetch;
 

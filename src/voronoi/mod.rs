@@ -22,7 +22,6 @@ mod diagram;
 mod error;
 mod exact_distance;
 mod expansion;
-mod id_set;
 mod incremental;
 mod lloyd;
 mod nearest;

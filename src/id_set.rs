@@ -19,6 +19,12 @@ impl IdSet {
         self.words[(id / 64) as usize] |= 1 << (id % 64);
     }
 
+    /// Is `id` (below the bound) in the set?
+    #[inline(always)]
+    pub fn contains(&self, id: u32) -> bool {
+        self.words[(id / 64) as usize] & (1 << (id % 64)) != 0
+    }
+
     /// The ids in increasing order; `expected` is a guess of how many there are.
     pub fn into_sorted(self, expected: usize) -> Vec<u32> {
         let mut ids = Vec::with_capacity(expected);
@@ -43,6 +49,7 @@ mod tests {
         for id in [199, 0, 64, 63, 5, 64, 128, 5] {
             set.insert(id);
         }
+        assert!(set.contains(63) && set.contains(199) && !set.contains(62) && !set.contains(1));
         assert_eq!(set.into_sorted(0), vec![0, 5, 63, 64, 128, 199]);
         assert!(IdSet::new(0).into_sorted(4).is_empty());
     }
