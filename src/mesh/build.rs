@@ -186,12 +186,13 @@ impl FaceLoops {
         Some(loops)
     }
 
-    /// Takes as written the entries of the walk's `self.n_edges` edges and of its `n_faces` faces.
+    /// Takes as written the entries of the walk's `self.n_edges` edges and of its `n_faces`
+    /// faces.
     ///
     /// # Safety
     /// A walk through all `n_faces` faces with a [`LoopWriter`] over this room opened the
-    /// `self.n_edges` edges: opening edge `e` wrote its `origin` and `face` pairs and the `next` and
-    /// `prev` of its twin `2e + 1`; closing each face wrote `next` and `prev` of each of its
+    /// `self.n_edges` edges: opening edge `e` wrote its `origin` and `face` pairs and the `next`
+    /// and `prev` of its twin `2e + 1`; closing each face wrote `next` and `prev` of each of its
     /// half-edges (`2e` among them) and its `face_halfedge`.
     unsafe fn claim_written(&mut self, n_faces: usize) {
         let n_halfedges = 2 * self.n_edges as usize;

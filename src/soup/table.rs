@@ -204,7 +204,8 @@ impl<'a> FaceTable<'a> {
         self.faces_in(0..self.n_faces())
     }
 
-    /// The vertex indices of faces `range` (within `0..n_faces`), in order, as [`FaceTable::faces`].
+    /// The vertex indices of faces `range` (within `0..n_faces`), in order, as
+    /// [`FaceTable::faces`].
     #[inline]
     pub fn faces_in(&self, range: Range<usize>) -> Faces<'_> {
         match &self.layout {
