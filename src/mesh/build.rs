@@ -272,21 +272,18 @@ fn walk_in_one(
 ) -> Option<u32> {
     let mut walk = OneThreadWalk { numbering, writer };
     let mut polygon = Vec::new();
-    let faces = table
-        .faces()
-        .zip(std::mem::take(&mut walk.writer.face_halfedge));
-    for (f, (corners, face_halfedge)) in faces.enumerate() {
+    for (f, corners) in table.faces().enumerate() {
         let f32 = f as u32;
         walk.numbering.edges.prefetch_ahead_of(table, f);
         walk.writer.check_area(table, f, corners);
-        let first = match *corners {
+        match *corners {
             [a, b, c] => {
                 let triangle = [
                     walk.corner(a, b, f32)?,
                     walk.corner(b, c, f32)?,
                     walk.corner(c, a, f32)?,
                 ];
-                walk.writer.close_face(&triangle)
+                walk.writer.close_face(f, &triangle);
             }
             [a, b, c, d] => {
                 let quad = [
@@ -295,17 +292,16 @@ fn walk_in_one(
                     walk.corner(c, d, f32)?,
                     walk.corner(d, a, f32)?,
                 ];
-                walk.writer.close_face(&quad)
+                walk.writer.close_face(f, &quad);
             }
             _ => {
                 polygon.clear();
                 for (a, b) in face_edges(corners) {
                     polygon.push(walk.corner(a, b, f32)?);
                 }
-                walk.writer.close_face(&polygon)
+                walk.writer.close_face(f, &polygon);
             }
-        };
-        face_halfedge.write(first);
+        }
     }
     Some(walk.numbering.n_edges)
 }
@@ -350,9 +346,9 @@ fn walk_in_two(
             for faces in chunks {
                 let mut halfedges = to_reuse.try_recv().unwrap_or_default();
                 halfedges.clear();
-                let corners =
-                    table.face_range(faces.start).start..table.face_range(faces.end - 1).end;
-                halfedges.reserve(corners.len());
+                halfedges.reserve(
+                    table.face_range(faces.end - 1).end - table.face_range(faces.start).start,
+                );
                 for (f, corners) in faces.clone().zip(table.faces_in(faces.clone())) {
                     numbering.edges.prefetch_ahead_of(table, f);
                     for (a, b) in face_edges(corners) {
@@ -373,8 +369,7 @@ fn walk_in_two(
                     for ((a, b), &h) in face_edges(corners).zip(numbers) {
                         writer.numbered_corner(a, b, f as u32, h);
                     }
-                    let first = writer.close_face(numbers);
-                    writer.face_halfedge[f].write(first);
+                    writer.close_face(f, numbers);
                 }
                 // The numbering may have finished: then nobody reuses the array.
                 let _ = written.send(halfedges);
@@ -489,16 +484,17 @@ impl LoopWriter<'_, '_> {
         }
     }
 
-    /// Links a face's half-edges (in corner order) into its loop; returns the first.
+    /// Links the half-edges of table face `f` (in corner order) into its loop, the first being
+    /// the face's half-edge.
     #[inline(always)]
-    fn close_face(&mut self, halfedges: &[u32]) -> u32 {
+    fn close_face(&mut self, f: usize, halfedges: &[u32]) {
         let mut previous = halfedges[halfedges.len() - 1];
         for &h in halfedges {
             self.next[previous as usize].write(h);
             self.prev[h as usize].write(previous);
             previous = h;
         }
-        halfedges[0]
+        self.face_halfedge[f].write(halfedges[0]);
     }
 }
 
