@@ -31,6 +31,43 @@ pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
     array
 }
 
+/// `len` zeros in a block that can hold `later` items of `U` once the zeros are spent (see
+/// [`reused_as`]): a temporary array whose pages, already faulted in, then take a kept array
+/// instead of fresh ones.
+pub(crate) fn zeroed_reusable<T: Copy + Default, U>(len: usize, later: usize) -> Vec<T> {
+    let mut array = vec![T::default(); reusable_capacity::<T, U>(len, later)];
+    advise_huge_pages(array.as_ptr().cast(), array.len() * size_of::<T>());
+    array.truncate(len);
+    array
+}
+
+/// A copy of `items` in the block of `spent` (whose contents are dropped) when that block has
+/// the room and suits `U`'s layout, as the blocks of [`zeroed_reusable`] do; in a new block
+/// otherwise.
+pub(crate) fn copied_into<T, U: Copy>(spent: Vec<T>, items: &[U]) -> Vec<U> {
+    let mut array = reused_as::<T, U>(spent).unwrap_or_default();
+    if array.capacity() < items.len() {
+        array = with_capacity(items.len());
+    }
+    array.extend_from_slice(items);
+    array
+}
+
+/// The block of `array`, emptied, as an empty `Vec<U>`: `None` unless `U` has `T`'s alignment
+/// and the block's size is a whole number of `U`s (the layout a `Vec<U>` must free it with).
+fn reused_as<T, U>(mut array: Vec<T>) -> Option<Vec<U>> {
+    let bytes = array.capacity().checked_mul(size_of::<T>())?;
+    if align_of::<T>() != align_of::<U>() || size_of::<U>() == 0 || bytes % size_of::<U>() != 0 {
+        return None;
+    }
+    array.clear();
+    let mut array = std::mem::ManuallyDrop::new(array);
+    // SAFETY: the block was allocated by the global allocator with `T`'s alignment, which is
+    // `U`'s, and `bytes` of size, which is `bytes / size_of::<U>()` items of `U`; the `Vec<T>`
+    // is emptied and forgotten, so the block has one owner, which holds no item yet.
+    Some(unsafe { Vec::from_raw_parts(array.as_mut_ptr().cast::<U>(), 0, bytes / size_of::<U>()) })
+}
+
 /// `len` copies of `value`.
 pub(crate) fn filled<T: Copy>(len: usize, value: T) -> Vec<T> {
     let mut array = with_capacity(len);
@@ -58,6 +95,26 @@ pub(crate) fn fit<T>(mut array: Vec<T>, len: usize) -> Vec<T> {
     array.truncate(len);
     array.shrink_to_fit();
     array
+}
+
+/// A capacity of at least `len` items of `T`, and room for `later` items of `U`, in a block
+/// that is a whole number of `U`s (so [`reused_as`] takes it) and, for large arrays, of huge
+/// pages with the allocator's header, like [`huge_page_capacity`]'s (less than one `U` short of
+/// that: the header's room absorbs it).
+fn reusable_capacity<T, U>(len: usize, later: usize) -> usize {
+    let (t, u) = (size_of::<T>(), size_of::<U>());
+    if t == 0 || u == 0 || align_of::<T>() != align_of::<U>() {
+        return huge_page_capacity::<T>(len);
+    }
+    let needed = len.max(later.saturating_mul(u).div_ceil(t));
+    // Items of `T` per whole number of `U`s: lcm(t, u) / t.
+    let step = u / gcd(t, u);
+    let capacity = huge_page_capacity::<T>(needed.saturating_add(step - 1));
+    capacity - capacity % step
+}
+
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 { a } else { gcd(b, a % b) }
 }
 
 /// A capacity of at least `len` whose block, with the allocator's header, is a whole number of
@@ -132,6 +189,41 @@ mod tests {
             let fitted = fit(zeroed::<u32>(len + 10), len);
             assert!(fitted.len() == len && fitted.capacity() == len);
         }
+    }
+
+    #[test]
+    fn reusable_blocks_take_the_later_array_in_place() {
+        for (len, later) in [
+            (0, 0),
+            (5, 0),
+            (10, 7),
+            (1000, 3000),
+            (1 << 16, 1 << 20),
+            (3 << 20, 1 << 20),
+        ] {
+            let zeros = zeroed_reusable::<u64, [f64; 3]>(len, later);
+            assert!(zeros.len() == len && zeros.iter().all(|&x| x == 0));
+            let bytes = zeros.capacity() * 8;
+            assert!(bytes % 24 == 0 && bytes >= later * 24 && zeros.capacity() >= len);
+            if bytes >= ADVICE_THRESHOLD_BYTES {
+                // Whole huge pages with the header, less than one position short.
+                let block = bytes + HEADER_ROOM;
+                assert!(block.next_multiple_of(HUGE_PAGE) - block < 24, "{len} {later}");
+            }
+            let block = zeros.as_ptr() as usize;
+            let items: Vec<[f64; 3]> = (0..later).map(|i| [i as f64; 3]).collect();
+            let copy = copied_into(zeros, &items);
+            assert_eq!(copy, items);
+            if later > 0 {
+                assert_eq!(copy.as_ptr() as usize, block);
+            }
+        }
+        // Too small a block, or one of another alignment or size: the copy is made elsewhere.
+        let positions = [[1.0, 2.0, 3.0]; 4];
+        for spent in [zeroed_reusable::<u64, [f64; 3]>(1, 1), vec![0u64; 2]] {
+            assert_eq!(copied_into(spent, &positions), positions);
+        }
+        assert_eq!(copied_into(vec![0u32; 30], &positions), positions);
     }
 
     #[test]

@@ -144,7 +144,7 @@ impl FaceLoops {
     /// while the other writes. The mesh is the same either way.
     fn walk(
         table: &FaceTable<'_>,
-        mut buckets: EdgeBuckets,
+        buckets: &mut EdgeBuckets,
         positions: &[[f64; 3]],
         degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<FaceLoops> {

@@ -14,7 +14,7 @@ use std::collections::HashMap;
 
 use super::FaceTable;
 use super::table::{face_edges, is_well_formed};
-use crate::large_arrays::zeroed;
+use crate::large_arrays::{copied_into, zeroed, zeroed_reusable};
 use crate::prefetch::prefetch;
 
 /// A slot: larger vertex in the high half, then whether the first corner ran from the smaller
@@ -55,8 +55,14 @@ pub(crate) struct EdgeBuckets {
 impl EdgeBuckets {
     /// Empty buckets sized for `table`'s edges, or `None` when a face is not well formed (fewer
     /// than 3 corners, an index `>= n_vertices`, a repeated vertex: the one pass over the faces
-    /// that counts the buckets' room checks them too). `n_vertices` is below 2^32 − 1.
-    pub(crate) fn new(table: &FaceTable<'_>, n_vertices: usize) -> Option<Self> {
+    /// that counts the buckets' room checks them too). `n_vertices` is below 2^32 − 1. The
+    /// slots' block has room for `later_positions` positions once the walk is done (see
+    /// [`EdgeBuckets::into_positions`]).
+    pub(crate) fn new(
+        table: &FaceTable<'_>,
+        n_vertices: usize,
+        later_positions: usize,
+    ) -> Option<Self> {
         let mut start = zeroed::<u32>(n_vertices + 1);
         let vertices_follow_faces = table.vertices_follow_faces();
         let counted = if vertices_follow_faces {
@@ -74,7 +80,7 @@ impl EdgeBuckets {
             total += *room;
             *room = total;
         }
-        let slots = zeroed(start[n_vertices] as usize);
+        let slots = zeroed_reusable::<_, [f64; 3]>(start[n_vertices] as usize, later_positions);
         Some(EdgeBuckets {
             start,
             slots,
@@ -87,6 +93,13 @@ impl EdgeBuckets {
     /// made)? Builders also choose where to check face areas by it.
     pub(crate) fn vertices_follow_faces(&self) -> bool {
         self.vertices_follow_faces
+    }
+
+    /// Spends the buckets on a copy of `positions`, in the slots' block when it has the room
+    /// ([`EdgeBuckets::new`]): its pages, faulted in by the walk, then hold the positions
+    /// instead of fresh ones.
+    pub(crate) fn into_positions(self, positions: &[[f64; 3]]) -> Vec<[f64; 3]> {
+        copied_into(self.slots, positions)
     }
 
     /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
@@ -272,7 +285,7 @@ mod tests {
         // vertex 0's bucket (room 1) overflows into the spill map.
         let indices = [0, 1, 2, 1, 3, 2];
         let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
-        let mut buckets = EdgeBuckets::new(&table, 4).unwrap();
+        let mut buckets = EdgeBuckets::new(&table, 4, 0).unwrap();
         assert_eq!(buckets.visit(0, 1, 7), EdgeVisit::Opened);
         assert_eq!(buckets.visit(2, 0, 8), EdgeVisit::Opened);
         assert_eq!(buckets.visit(1, 0, 9), EdgeVisit::Paired(7));
@@ -297,7 +310,7 @@ mod tests {
         let indices = [0, 1, 2, 0, 2, 3, 0, 3, 1, 1, 3, 2];
         let table = FaceTable::new(&FaceList::triangles(&positions, &indices)).unwrap();
         let visits = |prefetch: bool| {
-            let mut buckets = EdgeBuckets::new(&table, 4).unwrap();
+            let mut buckets = EdgeBuckets::new(&table, 4, 0).unwrap();
             let mut visitor = buckets.visitor();
             let mut seen = Vec::new();
             for f in 0..table.n_faces() {
@@ -328,7 +341,7 @@ mod tests {
             (&[4], &[0, 1, 2, 1]),
         ] {
             let table = FaceTable::new(&FaceList::polygons(&positions, sizes, indices)).unwrap();
-            assert!(EdgeBuckets::new(&table, 4).is_none(), "{indices:?}");
+            assert!(EdgeBuckets::new(&table, 4, 0).is_none(), "{indices:?}");
         }
     }
 }

@@ -49,8 +49,8 @@ pub struct EdgePairing {
 /// [`FaceTable::face_defects`]): every index is below `n_vertices` and no face repeats a vertex.
 pub fn pair_edges(table: &FaceTable<'_>, n_vertices: usize) -> EdgePairing {
     let corners = table.corners();
-    let mut buckets =
-        EdgeBuckets::new(table, n_vertices).expect("pair_edges' precondition: well-formed faces");
+    let mut buckets = EdgeBuckets::new(table, n_vertices, 0)
+        .expect("pair_edges' precondition: well-formed faces");
     let mut partner = filled(table.n_corners(), BOUNDARY);
     let mut problem_keys: Vec<u64> = Vec::new();
     table.for_each_corner_edge(|_, c, n| {

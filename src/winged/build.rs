@@ -249,7 +249,7 @@ impl WingedFaces {
     /// [`EdgeVisit::Defective`]).
     fn walk(
         table: &FaceTable<'_>,
-        mut buckets: EdgeBuckets,
+        buckets: &mut EdgeBuckets,
         positions: &[[f64; 3]],
         mut degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<WingedFaces> {
