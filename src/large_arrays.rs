@@ -204,7 +204,7 @@ mod tests {
             let zeros = zeroed_reusable::<u64, [f64; 3]>(len, later);
             assert!(zeros.len() == len && zeros.iter().all(|&x| x == 0));
             let bytes = zeros.capacity() * 8;
-            assert!(bytes % 24 == 0 && bytes >= later * 24 && zeros.capacity() >= len);
+            assert!(bytes.is_multiple_of(24) && bytes >= later * 24 && zeros.capacity() >= len);
             if bytes >= ADVICE_THRESHOLD_BYTES {
                 // Whole huge pages with the header, less than one position short.
                 let block = bytes + HEADER_ROOM;
