@@ -208,7 +208,10 @@ mod tests {
             if bytes >= ADVICE_THRESHOLD_BYTES {
                 // Whole huge pages with the header, less than one position short.
                 let block = bytes + HEADER_ROOM;
-                assert!(block.next_multiple_of(HUGE_PAGE) - block < 24, "{len} {later}");
+                assert!(
+                    block.next_multiple_of(HUGE_PAGE) - block < 24,
+                    "{len} {later}"
+                );
             }
             let block = zeros.as_ptr() as usize;
             let items: Vec<[f64; 3]> = (0..later).map(|i| [i as f64; 3]).collect();

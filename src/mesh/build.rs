@@ -272,37 +272,41 @@ fn walk_in_one(
 ) -> Option<u32> {
     let mut walk = OneThreadWalk { numbering, writer };
     let mut polygon = Vec::new();
-    for (f, corners) in table.faces().enumerate() {
-        let f32 = f as u32;
-        walk.numbering.edges.prefetch_ahead_of(table, f);
-        walk.writer.check_area(table, f, corners);
-        match *corners {
-            [a, b, c] => {
-                let triangle = [
-                    walk.corner(a, b, f32)?,
-                    walk.corner(b, c, f32)?,
-                    walk.corner(c, a, f32)?,
-                ];
-                walk.writer.close_face(f, &triangle);
-            }
-            [a, b, c, d] => {
-                let quad = [
-                    walk.corner(a, b, f32)?,
-                    walk.corner(b, c, f32)?,
-                    walk.corner(c, d, f32)?,
-                    walk.corner(d, a, f32)?,
-                ];
-                walk.writer.close_face(f, &quad);
-            }
-            _ => {
-                polygon.clear();
-                for (a, b) in face_edges(corners) {
-                    polygon.push(walk.corner(a, b, f32)?);
+    table.try_for_each_face(
+        #[inline(always)]
+        |f, corners| {
+            let f32 = f as u32;
+            walk.numbering.edges.prefetch_ahead_of(table, f);
+            walk.writer.check_area(table, f, corners);
+            match *corners {
+                [a, b, c] => {
+                    let triangle = [
+                        walk.corner(a, b, f32)?,
+                        walk.corner(b, c, f32)?,
+                        walk.corner(c, a, f32)?,
+                    ];
+                    walk.writer.close_face(f, &triangle);
                 }
-                walk.writer.close_face(f, &polygon);
+                [a, b, c, d] => {
+                    let quad = [
+                        walk.corner(a, b, f32)?,
+                        walk.corner(b, c, f32)?,
+                        walk.corner(c, d, f32)?,
+                        walk.corner(d, a, f32)?,
+                    ];
+                    walk.writer.close_face(f, &quad);
+                }
+                _ => {
+                    polygon.clear();
+                    for (a, b) in face_edges(corners) {
+                        polygon.push(walk.corner(a, b, f32)?);
+                    }
+                    walk.writer.close_face(f, &polygon);
+                }
             }
-        }
-    }
+            Some(())
+        },
+    )?;
     Some(walk.numbering.n_edges)
 }
 

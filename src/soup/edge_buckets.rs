@@ -144,30 +144,35 @@ fn count_forward_corners<const FOLLOW: bool>(
             start[a as usize + 1] += 1;
         }
     };
-    for face in table.faces() {
-        if !is_well_formed(face, n_vertices, &mut scratch) {
-            return false;
-        }
-        match *face {
-            [a, b, c] => {
-                count(a, b);
-                count(b, c);
-                count(c, a);
-            }
-            [a, b, c, d] => {
-                count(a, b);
-                count(b, c);
-                count(c, d);
-                count(d, a);
-            }
-            _ => {
-                for (a, b) in face_edges(face) {
-                    count(a, b);
+    table
+        .try_for_each_face(
+            #[inline(always)]
+            |_, face| {
+                if !is_well_formed(face, n_vertices, &mut scratch) {
+                    return None;
                 }
-            }
-        }
-    }
-    true
+                match *face {
+                    [a, b, c] => {
+                        count(a, b);
+                        count(b, c);
+                        count(c, a);
+                    }
+                    [a, b, c, d] => {
+                        count(a, b);
+                        count(b, c);
+                        count(c, d);
+                        count(d, a);
+                    }
+                    _ => {
+                        for (a, b) in face_edges(face) {
+                            count(a, b);
+                        }
+                    }
+                }
+                Some(())
+            },
+        )
+        .is_some()
 }
 
 /// How many faces ahead of its current face a walk prefetches buckets

@@ -204,6 +204,40 @@ impl<'a> FaceTable<'a> {
         self.faces_in(0..self.n_faces())
     }
 
+    /// Calls `visit(f, corners)` for every face `f` in order, stopping at the first `None` (and
+    /// giving it). Triangle and quad tables are walked as arrays of that size, so a `visit` that
+    /// matches on the face's size (and is inlined: callers mark it `#[inline(always)]`, as it is
+    /// compiled three times) is compiled for that size alone, with no per-face dispatch. For
+    /// the bucket count and the one-thread walk, against [`FaceTable::faces`] (cold memory, one
+    /// thread, best of 60 or 30 builds, four rounds taking turns): 1M-triangle torus
+    /// 31.9-32.8 -> 30.5-31.1 ms, 1M-quad torus 43.5-47.4 -> 42.0-43.0 ms).
+    #[inline(always)]
+    pub(crate) fn try_for_each_face(
+        &self,
+        mut visit: impl FnMut(usize, &[u32]) -> Option<()>,
+    ) -> Option<()> {
+        match self.uniform_size() {
+            Some(3) => self
+                .corners
+                .as_chunks::<3>()
+                .0
+                .iter()
+                .enumerate()
+                .try_for_each(|(f, face)| visit(f, face)),
+            Some(4) => self
+                .corners
+                .as_chunks::<4>()
+                .0
+                .iter()
+                .enumerate()
+                .try_for_each(|(f, face)| visit(f, face)),
+            _ => self
+                .faces()
+                .enumerate()
+                .try_for_each(|(f, face)| visit(f, face)),
+        }
+    }
+
     /// The vertex indices of faces `range` (within `0..n_faces`), in order, as
     /// [`FaceTable::faces`].
     #[inline]
