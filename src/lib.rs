@@ -21,6 +21,7 @@ mod disjoint_sets;
 mod id_set;
 mod large_arrays;
 mod prefetch;
+mod rare_hits;
 
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -5,16 +5,14 @@ use std::ops::Range;
 use super::Mesh;
 use super::ids::{HalfedgeId, INVALID_INDEX, VertexId};
 use crate::cycles::for_each_cycle_length;
+use crate::rare_hits::rare_hits;
 
 impl Mesh {
     /// Live vertices with no half-edge, ascending.
     pub fn isolated_vertices(&self) -> Vec<u32> {
-        (0..self.vertex_capacity() as u32)
-            .filter(|&v| {
-                self.vertex_halfedge[v as usize] == INVALID_INDEX
-                    && !self.is_vertex_deleted(VertexId(v))
-            })
-            .collect()
+        let mut isolated = rare_hits(&self.vertex_halfedge, 0, |&h| h == INVALID_INDEX);
+        isolated.retain(|&v| !self.is_vertex_deleted(VertexId(v)));
+        isolated
     }
 
     /// Vertices whose outgoing half-edges form more than one fan (the circulator from

@@ -5,6 +5,7 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use super::{FaceList, FaceSizes, ListProblem};
+use crate::rare_hits::rare_hits;
 
 /// Largest number of corners a table may hold: every corner may need two half-edges and
 /// half-edge ids must stay below `u32::MAX`.
@@ -504,33 +505,16 @@ pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
     non_finite_in(0, positions)
 }
 
-/// [`non_finite_vertices`] of the vertices `first..` at `positions`. Every run of vertices is
-/// tested as a whole first, branch-free (so the test runs packed): nearly all of them are clean,
-/// and only a run with a bad coordinate is searched vertex by vertex.
+/// [`non_finite_vertices`] of the vertices `first..` at `positions`, by runs ([`rare_hits`]).
 fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
-    const RUN: usize = 256;
     // All exponent bits set: infinite or NaN (a test without branches, unlike `is_finite`'s).
     let non_finite = |x: &f64| {
         const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
         x.to_bits() & EXPONENT == EXPONENT
     };
-    let mut bad = Vec::new();
-    for (r, run) in positions.chunks(RUN).enumerate() {
-        if run
-            .iter()
-            .flatten()
-            .fold(0, |any, x| any | u64::from(non_finite(x)))
-            != 0
-        {
-            let start = first + r * RUN;
-            bad.extend(
-                (0..run.len())
-                    .filter(|&i| run[i].iter().any(non_finite))
-                    .map(|i| (start + i) as u32),
-            );
-        }
-    }
-    bad
+    rare_hits(positions, first, |point| {
+        point.iter().fold(false, |any, x| any | non_finite(x))
+    })
 }
 
 #[cfg(test)]
