@@ -50,6 +50,8 @@ pub(crate) struct EdgeBuckets {
     /// Whether the table's vertex order follows its faces
     /// ([`FaceTable::vertices_follow_faces`]): then a walk meets its buckets nearly in order.
     vertices_follow_faces: bool,
+    /// Whether a visitor was made: until then every slot is empty.
+    visited: bool,
 }
 
 impl EdgeBuckets {
@@ -86,6 +88,7 @@ impl EdgeBuckets {
             slots,
             spill: HashMap::new(),
             vertices_follow_faces,
+            visited: false,
         })
     }
 
@@ -102,9 +105,15 @@ impl EdgeBuckets {
         copied_into(self.slots, positions)
     }
 
+    /// The vertex count the buckets were made for.
+    pub(crate) fn n_vertices(&self) -> usize {
+        self.start.len() - 1
+    }
+
     /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
     #[inline]
     pub(crate) fn visitor(&mut self) -> EdgeVisitor<'_> {
+        self.visited = true;
         EdgeVisitor {
             start: &self.start,
             slots: &mut self.slots,
@@ -115,6 +124,14 @@ impl EdgeBuckets {
                 PREFETCH_FACES_AHEAD
             },
         }
+    }
+
+    /// The buckets' first visitor (this panics if they had one): every value it meets was then
+    /// stored through it.
+    #[inline]
+    pub(crate) fn first_visitor(&mut self) -> EdgeVisitor<'_> {
+        assert!(!self.visited, "edge buckets are walked once");
+        self.visitor()
     }
 
     /// [`EdgeVisitor::visit`] through a visitor made for the call (the builders' walks keep one
@@ -222,15 +239,46 @@ impl EdgeVisitor<'_> {
         }
     }
 
-    /// Meets the edge of a corner running `a → b` (`a != b`) with `value` (at most
-    /// [`MAX_EDGE_VALUE`]), which is stored if this corner opens the edge.
+    /// The vertex count the buckets were made for: every vertex a visit names is below it.
+    #[inline(always)]
+    pub(crate) fn n_vertices(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// Meets the edge of a corner running `a → b` (`a != b`, both below
+    /// [`EdgeVisitor::n_vertices`], else this panics) with `value` (at most [`MAX_EDGE_VALUE`]),
+    /// which is stored if this corner opens the edge.
     #[inline(always)]
     pub(crate) fn visit(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
+        assert!(
+            (a.max(b) as usize) < self.n_vertices(),
+            "a vertex beyond the buckets"
+        );
+        // SAFETY: just checked.
+        unsafe { self.visit_unchecked(a, b, value) }
+    }
+
+    /// [`EdgeVisitor::visit`] for a walk that has checked its vertices: the walks check a whole
+    /// face's at once, and the checks per corner (the vertex, the slots' range) took registers
+    /// the walk spilled (see `LoopWriter` in `mesh::build` for what that gained).
+    ///
+    /// # Safety
+    /// `a` and `b` are below [`EdgeVisitor::n_vertices`].
+    #[inline(always)]
+    pub(crate) unsafe fn visit_unchecked(&mut self, a: u32, b: u32, value: u32) -> EdgeVisit {
         debug_assert!(value <= MAX_EDGE_VALUE && a != b);
         let (low, high, forward) = if a < b { (a, b, FORWARD) } else { (b, a, 0) };
         let opened = (u64::from(high) << 32) | forward | u64::from(value);
-        let room = &self.start[low as usize..low as usize + 2];
-        let bucket = &mut self.slots[room[0] as usize..room[1] as usize];
+        // SAFETY: `low` is below the vertex count, `start`'s length minus one; `start` never
+        // decreases and ends at the slot count (`EdgeBuckets::new` makes it so, and nothing
+        // changes it after), so every bucket is a range of the slots.
+        let bucket = unsafe {
+            let (first, end) = (
+                *self.start.get_unchecked(low as usize),
+                *self.start.get_unchecked(low as usize + 1),
+            );
+            self.slots.get_unchecked_mut(first as usize..end as usize)
+        };
         for slot in bucket {
             if *slot == 0 {
                 *slot = opened;
@@ -334,6 +382,28 @@ mod tests {
         let plain = visits(false);
         assert_eq!(plain.iter().filter(|v| **v == EdgeVisit::Opened).count(), 6);
         assert_eq!(visits(true), plain);
+    }
+
+    /// The guards the walks' unchecked visits rest on: a vertex beyond the buckets is refused,
+    /// and the first visitor is the only one.
+    #[test]
+    fn a_vertex_beyond_the_buckets_or_a_second_first_visitor_panics() {
+        let positions = vec![[0.0; 3]; 3];
+        let table = FaceTable::new(&FaceList::triangles(&positions, &[0, 1, 2])).unwrap();
+        let mut buckets = EdgeBuckets::new(&table, 3, 0).unwrap();
+        assert_eq!(buckets.n_vertices(), 3);
+        let beyond = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            buckets.visit(1, 3, 0);
+        }));
+        assert!(beyond.is_err());
+        assert!(
+            std::panic::catch_unwind(|| {
+                let mut fresh = EdgeBuckets::new(&table, 3, 0).unwrap();
+                assert_eq!(fresh.first_visitor().visit(0, 1, 0), EdgeVisit::Opened);
+                fresh.first_visitor();
+            })
+            .is_err()
+        );
     }
 
     #[test]
