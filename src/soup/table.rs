@@ -211,27 +211,24 @@ impl<'a> FaceTable<'a> {
     /// compiled three times) is compiled for that size alone, with no per-face dispatch. For
     /// the bucket count and the one-thread walk, against [`FaceTable::faces`] (cold memory, one
     /// thread, best of 60 or 30 builds, four rounds taking turns): 1M-triangle torus
-    /// 31.9-32.8 -> 30.5-31.1 ms, 1M-quad torus 43.5-47.4 -> 42.0-43.0 ms).
+    /// 31.9-32.8 → 30.5-31.1 ms, 1M-quad torus 43.5-47.4 → 42.0-43.0 ms).
     #[inline(always)]
     pub(crate) fn try_for_each_face(
         &self,
         mut visit: impl FnMut(usize, &[u32]) -> Option<()>,
     ) -> Option<()> {
+        /// `visit` over `corners` taken `N` at a time.
+        #[inline(always)]
+        fn in_steps<const N: usize>(
+            corners: &[u32],
+            mut visit: impl FnMut(usize, &[u32]) -> Option<()>,
+        ) -> Option<()> {
+            let faces = corners.as_chunks::<N>().0.iter();
+            faces.enumerate().try_for_each(|(f, face)| visit(f, face))
+        }
         match self.uniform_size() {
-            Some(3) => self
-                .corners
-                .as_chunks::<3>()
-                .0
-                .iter()
-                .enumerate()
-                .try_for_each(|(f, face)| visit(f, face)),
-            Some(4) => self
-                .corners
-                .as_chunks::<4>()
-                .0
-                .iter()
-                .enumerate()
-                .try_for_each(|(f, face)| visit(f, face)),
+            Some(3) => in_steps::<3>(&self.corners, visit),
+            Some(4) => in_steps::<4>(&self.corners, visit),
             _ => self
                 .faces()
                 .enumerate()
