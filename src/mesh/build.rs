@@ -159,9 +159,8 @@ impl FaceLoops {
             face_halfedge: unwritten_room(table.n_faces()),
             n_edges: 0,
         };
-        // Every array cut to one of two lengths the compiler can see are shared, so the walk's
-        // bounds checks need two registers, not one per array.
-        // The vertex count is the buckets', so a vertex below it is one of `vertex_halfedge` too
+        // Every array cut to the counts its unchecked stores rely on (see `LoopWriter`). The
+        // vertex count is the buckets', so a vertex below it is one of `vertex_halfedge` too
         // (slicing it to that count fails otherwise).
         let (n_edges, n_vertices, n_faces) = (capacity / 2, buckets.n_vertices(), table.n_faces());
         let writer = LoopWriter {
@@ -510,9 +509,9 @@ impl EdgeNumbering<'_> {
 /// below the room's count, which [`EdgeNumbering`] guarantees, and vertices and faces the walks
 /// check a face at a time (see [`all_below`]): the checks per store, and their lengths, took
 /// registers the walk spilled. With the buckets' unchecked visits, against checked ones (cold,
-/// one thread, best of 40 or 30 builds, rounds taking turns): 1M-triangle torus 29.4-30.3 ->
-/// 28.2-28.8 ms in eight rounds, open grid 30.2-30.8 -> 28.7-29.6 in six, 1M-quad torus
-/// 41.2-43.2 -> 41.1-43.5 (no change) in six.
+/// one thread, best of 40 or 30 builds, rounds taking turns): 1M-triangle torus 29.4-30.3 →
+/// 28.2-28.8 ms in eight rounds, open grid 30.2-30.8 → 28.7-29.6 in six, 1M-quad torus
+/// 41.2-43.2 → 41.1-43.5 (no change) in six.
 struct LoopWriter<'a, 'd> {
     origin: &'a mut [[MaybeUninit<u32>; 2]],
     face: &'a mut [[MaybeUninit<u32>; 2]],
