@@ -25,10 +25,7 @@ const HEADER_ROOM: usize = 4096;
 /// standard library takes zeroed memory from the allocator (`calloc`), so fresh pages are not
 /// written twice; the advice comes before the first touch.
 pub(crate) fn zeroed<T: Copy + Default>(len: usize) -> Vec<T> {
-    let mut array = vec![T::default(); huge_page_capacity::<T>(len)];
-    advise_huge_pages(array.as_ptr().cast(), array.len() * size_of::<T>());
-    array.truncate(len);
-    array
+    zeroed_reusable::<T, T>(len, 0)
 }
 
 /// `len` zeros in a block that can hold `later` items of `U` once the zeros are spent (see

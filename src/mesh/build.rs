@@ -159,10 +159,18 @@ impl FaceLoops {
             face_halfedge: unwritten_room(table.n_faces()),
             n_edges: 0,
         };
+        // The numbering gives edges below its count, which the walk's one call per corner keeps
+        // within the writer's room, so the writer stores without bounds checks (see
+        // `EdgeNumbering` and `LoopWriter`).
+        let numbering = EdgeNumbering {
+            edges: buckets.first_visitor(),
+            n_edges: 0,
+        };
         // Every array cut to the counts its unchecked stores rely on (see `LoopWriter`). The
         // vertex count is the buckets', so a vertex below it is one of `vertex_halfedge` too
         // (slicing it to that count fails otherwise).
-        let (n_edges, n_vertices, n_faces) = (capacity / 2, buckets.n_vertices(), table.n_faces());
+        let (n_edges, n_vertices, n_faces) =
+            (capacity / 2, numbering.edges.n_vertices(), table.n_faces());
         let writer = LoopWriter {
             origin: &mut loops.origin.spare_capacity_mut().as_chunks_mut().0[..n_edges],
             face: &mut loops.face.spare_capacity_mut().as_chunks_mut().0[..n_edges],
@@ -171,13 +179,6 @@ impl FaceLoops {
             vertex_halfedge: &mut loops.vertex_halfedge[..n_vertices],
             face_halfedge: &mut loops.face_halfedge.spare_capacity_mut()[..n_faces],
             degenerate,
-        };
-        // The numbering gives edges below its count, which the walk's one call per corner keeps
-        // within the writer's room, so the writer stores without bounds checks (see
-        // `EdgeNumbering` and `LoopWriter`).
-        let numbering = EdgeNumbering {
-            edges: buckets.first_visitor(),
-            n_edges: 0,
         };
         loops.n_edges = match () {
             #[cfg(feature = "parallel")]

@@ -105,11 +105,6 @@ impl EdgeBuckets {
         copied_into(self.slots, positions)
     }
 
-    /// The vertex count the buckets were made for.
-    pub(crate) fn n_vertices(&self) -> usize {
-        self.start.len() - 1
-    }
-
     /// The buckets as a visitor for one walk (see [`EdgeVisitor`]).
     #[inline]
     pub(crate) fn visitor(&mut self) -> EdgeVisitor<'_> {
@@ -391,7 +386,7 @@ mod tests {
         let positions = vec![[0.0; 3]; 3];
         let table = FaceTable::new(&FaceList::triangles(&positions, &[0, 1, 2])).unwrap();
         let mut buckets = EdgeBuckets::new(&table, 3, 0).unwrap();
-        assert_eq!(buckets.n_vertices(), 3);
+        assert_eq!(buckets.visitor().n_vertices(), 3);
         let beyond = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             buckets.visit(1, 3, 0);
         }));

@@ -89,16 +89,8 @@ pub(crate) fn walk_faces<'a, T: Send>(
         }
     }
     let resolved = resolve(list, policy)?;
-    let mut buckets = EdgeBuckets::new(
-        &resolved.table,
-        resolved.positions.len(),
-        if input_copy.is_some() {
-            0
-        } else {
-            later_positions
-        },
-    )
-    .expect("a resolved face table is well formed");
+    let mut buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len(), later_positions)
+        .expect("a resolved face table is well formed");
     let (walked, degenerate_faces) =
         walk_checking_areas(&resolved.table, &mut buckets, &resolved.positions, &walk);
     let walked = walked.expect("a resolved face table has no edge defects");
