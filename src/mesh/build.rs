@@ -3,9 +3,9 @@
 //! The faces are walked once, in order, and each corner meets its edge in
 //! [`EdgeBuckets`](crate::soup::EdgeBuckets): the first corner on an edge opens edge `e`
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
-//! twin. Each face's loop is written as soon as its corners are known (with two threads, one
-//! numbers the corners' half-edges a chunk of faces ahead while the other writes), so half-edges
-//! are numbered in corner order and each face's half-edges sit close together in memory; the
+//! twin. Each face's loop is written as soon as its corners are known (with two threads on a
+//! table whose vertex order does not follow its faces, one numbers the corners' half-edges a
+//! chunk of faces ahead while the other writes), so half-edges are numbered in corner order and each face's half-edges sit close together in memory; the
 //! face's area is checked in the walk or in a pass of its own (degenerate faces are reported;
 //! `soup::front` chooses where). Boundary half-edges are then linked into loops through each
 //! vertex's outgoing boundary half-edge (walking the fan only at vertices with several boundary
@@ -140,9 +140,17 @@ impl FaceLoops {
     /// `None` when an edge is walked by more than two faces or twice in one direction.
     ///
     /// The corners meet their edges in the buckets, which numbers their half-edges
-    /// ([`EdgeNumbering`]), and the half-edges are written into the loops ([`LoopWriter`]):
-    /// corner by corner on one thread; on two, the numbering runs chunks of faces ahead on one
-    /// while the other writes. The mesh is the same either way.
+    /// ([`EdgeNumbering`]), and the half-edges are written into the loops ([`LoopWriter`]),
+    /// corner by corner on one thread. With two threads, when the vertex order does not follow
+    /// the faces (scanned models), the numbering runs chunks of faces ahead on one while the
+    /// other writes: both halves then wait on memory, and their misses overlap. When it does, the
+    /// walk stays on one thread and the other checks the face areas beside it
+    /// (`soup::front`): the walk mostly hits the cache then, and handing chunks across costs more
+    /// than it saves (cold memory, both threads, best of 40 or 30 builds, five or six rounds
+    /// taking turns: 1M-triangle torus 25.9-37.3 ms in two halves, 25.6-29.8 on one thread;
+    /// 1M-quad torus 36.2-47.8 against 30.8-41.0; open grid 30.8-38.3 against 27.0-33.2; but
+    /// armadillo, 86k faces, 8.3-9.7 in two halves against 9.9-11.9). The mesh is the same
+    /// either way.
     fn walk(
         table: &FaceTable<'_>,
         buckets: &mut EdgeBuckets,
@@ -162,6 +170,9 @@ impl FaceLoops {
         // The numbering gives edges below its count, which the walk's one call per corner keeps
         // within the writer's room, so the writer stores without bounds checks (see
         // `EdgeNumbering` and `LoopWriter`).
+        #[cfg(feature = "parallel")]
+        let in_two =
+            thread_count() > 1 && table.n_faces() > CHUNK_FACES && !buckets.vertices_follow_faces();
         let numbering = EdgeNumbering {
             edges: buckets.first_visitor(),
             n_edges: 0,
@@ -182,9 +193,7 @@ impl FaceLoops {
         };
         loops.n_edges = match () {
             #[cfg(feature = "parallel")]
-            () if thread_count() > 1 && table.n_faces() > CHUNK_FACES => {
-                walk_in_two(table, numbering, writer)?
-            }
+            () if in_two => walk_in_two(table, numbering, writer)?,
             () => walk_in_one(table, numbering, writer)?,
         };
         // SAFETY: the walk went through every face of the table (see `LoopWriter`).
@@ -713,10 +722,11 @@ mod tests {
         }
     }
 
-    /// With two threads the numbering of a chunk of faces runs ahead of its writing: the mesh,
-    /// the diagnostic and the refusals are those of the walk on one thread, for triangles, quads
-    /// and hexagons over several chunks, with a hole, and with an edge defect in the last chunk
-    /// (found while the writer is still at work).
+    /// With two threads the numbering of a chunk of faces runs ahead of its writing (when the
+    /// vertex order does not follow the faces), or the walk runs beside the area check (when it
+    /// does): either way the mesh, the diagnostic and the refusals are those of the walk on one
+    /// thread, for triangles, quads and hexagons over several chunks, with a hole, and with an
+    /// edge defect in the last chunk (found while the writer is still at work).
     #[cfg(feature = "parallel")]
     #[test]
     fn two_threads_build_what_one_thread_builds() {
@@ -750,31 +760,48 @@ mod tests {
             }
         }
         assert!(sizes.len() > 3 * CHUNK_FACES);
-        let mut defective = (sizes.clone(), indices.clone());
-        defective.0.push(4);
-        defective.1.extend_from_slice(&indices[indices.len() - 4..]);
-        let in_pool = |threads: usize, (sizes, indices): &(Vec<u32>, Vec<u32>), policy| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap()
-                .install(|| {
-                    Mesh::from_face_list(&FaceList::polygons(&positions, sizes, indices), policy)
-                })
-        };
-        let clean = (sizes, indices);
-        let (one, diagnostic) = in_pool(1, &clean, BuildPolicy::Strict).unwrap();
-        assert_eq!(one.check(), Ok(()));
-        assert_eq!(one.n_faces(), clean.0.len());
-        assert!(diagnostic.is_clean(), "{diagnostic}");
-        assert!(in_pool(2, &clean, BuildPolicy::Strict).unwrap() == (one, diagnostic));
-        for policy in [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair] {
-            let (alone, beside) = (
-                in_pool(1, &defective, policy),
-                in_pool(2, &defective, policy),
-            );
-            assert_eq!(alone.is_err(), policy == BuildPolicy::Strict);
-            assert!(alone == beside, "{policy:?}");
+        // The grid's own vertex order, and the vertices renumbered by a stride prime to their
+        // count (121^2 = 11^4), which scatters them.
+        let n_vertices = positions.len() as u32;
+        for renumber in [|v: u32, _| v, |v: u32, n: u32| v * 7919 % n] {
+            let indices: Vec<u32> = indices.iter().map(|&v| renumber(v, n_vertices)).collect();
+            let mut renumbered = positions.clone();
+            for (v, &position) in positions.iter().enumerate() {
+                renumbered[renumber(v as u32, n_vertices) as usize] = position;
+            }
+            let list = FaceList::polygons(&renumbered, &sizes, &indices);
+            let follows = FaceTable::new(&list).unwrap().vertices_follow_faces();
+            assert_eq!(follows, renumber(1, n_vertices) == 1);
+            let mut defective = (sizes.clone(), indices.clone());
+            defective.0.push(4);
+            defective.1.extend_from_slice(&indices[indices.len() - 4..]);
+            let in_pool = |threads: usize, (sizes, indices): &(Vec<u32>, Vec<u32>), policy| {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap()
+                    .install(|| {
+                        let list = FaceList::polygons(&renumbered, sizes, indices);
+                        Mesh::from_face_list(&list, policy)
+                    })
+            };
+            let clean = (sizes.clone(), indices);
+            let (one, diagnostic) = in_pool(1, &clean, BuildPolicy::Strict).unwrap();
+            assert_eq!(one.check(), Ok(()));
+            assert_eq!(one.n_faces(), clean.0.len());
+            assert!(diagnostic.is_clean(), "{diagnostic}");
+            assert!(in_pool(2, &clean, BuildPolicy::Strict).unwrap() == (one, diagnostic));
+            for policy in [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair] {
+                let (alone, beside) = (
+                    in_pool(1, &defective, policy),
+                    in_pool(2, &defective, policy),
+                );
+                assert_eq!(alone.is_err(), policy == BuildPolicy::Strict);
+                assert!(
+                    alone == beside,
+                    "{policy:?} (vertices follow faces: {follows})"
+                );
+            }
         }
     }
 }
