@@ -19,7 +19,7 @@ use std::mem::MaybeUninit;
 #[cfg(feature = "parallel")]
 use std::ops::Range;
 
-use crate::large_arrays::{filled, fit, with_capacity};
+use crate::large_arrays::{filled, fit, with_capacity_written};
 use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
@@ -114,10 +114,10 @@ struct FaceLoops {
 }
 
 /// Room for `capacity` entries of a half-edge or face array, none written yet (see
-/// [`FaceLoops`]). Debug builds fill it with [`UNWRITTEN`], so that tests catch an entry the
-/// walk failed to write.
-fn unwritten_room(capacity: usize) -> Vec<u32> {
-    let mut room = with_capacity(capacity);
+/// [`FaceLoops`]), of which the walk is sure to write the first `written`. Debug builds fill it
+/// with [`UNWRITTEN`], so that tests catch an entry the walk failed to write.
+fn unwritten_room(capacity: usize, written: usize) -> Vec<u32> {
+    let mut room = with_capacity_written(capacity, written);
     if cfg!(debug_assertions) {
         room.spare_capacity_mut().fill(MaybeUninit::new(UNWRITTEN));
     }
@@ -157,14 +157,16 @@ impl FaceLoops {
         positions: &[[f64; 3]],
         degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<FaceLoops> {
-        let capacity = 2 * table.n_corners();
+        // Every corner opens or pairs an edge, so there are at least half as many edges as
+        // corners: the walk writes at least the first `n_corners` half-edges.
+        let (capacity, written) = (2 * table.n_corners(), table.n_corners());
         let mut loops = FaceLoops {
-            origin: unwritten_room(capacity),
-            next: unwritten_room(capacity),
-            prev: unwritten_room(capacity),
-            face: unwritten_room(capacity),
+            origin: unwritten_room(capacity, written),
+            next: unwritten_room(capacity, written),
+            prev: unwritten_room(capacity, written),
+            face: unwritten_room(capacity, written),
             vertex_halfedge: filled(positions.len(), INVALID_INDEX),
-            face_halfedge: unwritten_room(table.n_faces()),
+            face_halfedge: unwritten_room(table.n_faces(), table.n_faces()),
             n_edges: 0,
         };
         // The numbering gives edges below its count, which the walk's one call per corner keeps

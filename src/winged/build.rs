@@ -253,9 +253,10 @@ impl WingedFaces {
         positions: &[[f64; 3]],
         mut degenerate: Option<&mut DegenerateFaces<'_>>,
     ) -> Option<WingedFaces> {
-        // At most one edge per corner; fitted to the count afterwards.
-        let mut edges: Vec<EdgeRecord> = large_arrays::with_capacity(table.n_corners());
-        let mut face_edge = large_arrays::with_capacity(table.n_faces());
+        // At most one edge per corner, and at least one per two; fitted to the count afterwards.
+        let mut edges: Vec<EdgeRecord> =
+            large_arrays::with_capacity_written(table.n_corners(), table.n_corners() / 2);
+        let mut face_edge = large_arrays::with_capacity_written(table.n_faces(), table.n_faces());
         let mut loop_edges: Vec<EdgeId> = Vec::new();
         let mut vertex_edges = VertexEdgeChoice::new(positions.len());
         let mut buckets = buckets.visitor();
