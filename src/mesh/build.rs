@@ -3,11 +3,10 @@
 //! The faces are walked once, in order, and each corner meets its edge in
 //! [`EdgeBuckets`](crate::soup::EdgeBuckets): the first corner on an edge opens edge `e`
 //! (half-edge `2e`, its twin `2e + 1` starts out as a boundary half-edge), the second takes the
-//! twin. Each face's loop is written as soon as its corners are known (with two threads on a
-//! table whose vertex order does not follow its faces, one numbers the corners' half-edges a
-//! chunk of faces ahead while the other writes), so half-edges are numbered in corner order and each face's half-edges sit close together in memory; the
-//! face's area is checked in the walk or in a pass of its own (degenerate faces are reported;
-//! `soup::front` chooses where). Boundary half-edges are then linked into loops through each
+//! twin. Each face's loop is written as soon as its corners are known, so half-edges are
+//! numbered in corner order and each face's half-edges sit close together in memory; the face's
+//! area is checked in the walk or in a pass of its own, on a second thread when there is one
+//! (degenerate faces are reported; `soup::front` chooses where). Boundary half-edges are then linked into loops through each
 //! vertex's outgoing boundary half-edge (walking the fan only at vertices with several boundary
 //! gaps).
 //!
@@ -16,8 +15,6 @@
 //! [`soup::resolve`](crate::soup::resolve) first, and is then built the same way.
 
 use std::mem::MaybeUninit;
-#[cfg(feature = "parallel")]
-use std::ops::Range;
 
 use crate::large_arrays::{filled, fit, with_capacity_written};
 use crate::rare_hits::rare_hits;
@@ -25,8 +22,6 @@ use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
     FaceList, FaceTable, Walked, face_edges, walk_faces,
 };
-#[cfg(feature = "parallel")]
-use crate::soup::{join, thread_count};
 
 use super::Mesh;
 use super::connectivity::Deletions;
@@ -128,12 +123,6 @@ fn unwritten_room(capacity: usize, written: usize) -> Vec<u32> {
 /// nor [`INVALID_INDEX`].
 const UNWRITTEN: u32 = u32::MAX - 1;
 
-/// Faces per chunk of the walk on two threads ([`walk_in_two`]): a chunk's half-edge numbers
-/// (tens of KB) are still in cache when the writing thread reads them, and the hand-overs are
-/// few (a few hundred on a million faces).
-#[cfg(feature = "parallel")]
-const CHUNK_FACES: usize = 4096;
-
 impl FaceLoops {
     /// The connectivity walk (see the module documentation) over a well-formed table whose
     /// vertices are at `positions`, checking each face's area into `degenerate` when given.
@@ -141,16 +130,14 @@ impl FaceLoops {
     ///
     /// The corners meet their edges in the buckets, which numbers their half-edges
     /// ([`EdgeNumbering`]), and the half-edges are written into the loops ([`LoopWriter`]),
-    /// corner by corner on one thread. With two threads, when the vertex order does not follow
-    /// the faces (scanned models), the numbering runs chunks of faces ahead on one while the
-    /// other writes: both halves then wait on memory, and their misses overlap. When it does, the
-    /// walk stays on one thread and the other checks the face areas beside it
-    /// (`soup::front`): the walk mostly hits the cache then, and handing chunks across costs more
-    /// than it saves (cold memory, both threads, best of 40 or 30 builds, five or six rounds
-    /// taking turns: 1M-triangle torus 25.9-37.3 ms in two halves, 25.6-29.8 on one thread;
-    /// 1M-quad torus 36.2-47.8 against 30.8-41.0; open grid 30.8-38.3 against 27.0-33.2; but
-    /// armadillo, 86k faces, 8.3-9.7 in two halves against 9.9-11.9). The mesh is the same
-    /// either way.
+    /// corner by corner, on one thread: with two, the other checks the face areas beside the
+    /// walk (`soup::front`). Splitting the walk itself, the numbering running chunks of faces
+    /// ahead on one thread while the other wrote, was slower on every model measured once the
+    /// arrays of small pages were faulted in at once (`large_arrays::populate`; cold memory,
+    /// both threads, best of 150 or 30 builds, five rounds taking turns: armadillo, 86k faces,
+    /// 7.8-8.4 ms split against 7.0-8.0 on one thread, the bunny 5.3-6.0 against 5.2-5.6,
+    /// nefertiti 7.6-8.1 against 6.7-7.6; before it, the 1M-triangle torus 25.9-37.3 against
+    /// 25.6-29.8, the 1M-quad torus 36.2-47.8 against 30.8-41.0).
     fn walk(
         table: &FaceTable<'_>,
         buckets: &mut EdgeBuckets,
@@ -172,9 +159,6 @@ impl FaceLoops {
         // The numbering gives edges below its count, which the walk's one call per corner keeps
         // within the writer's room, so the writer stores without bounds checks (see
         // `EdgeNumbering` and `LoopWriter`).
-        #[cfg(feature = "parallel")]
-        let in_two =
-            thread_count() > 1 && table.n_faces() > CHUNK_FACES && !buckets.vertices_follow_faces();
         let numbering = EdgeNumbering {
             edges: buckets.first_visitor(),
             n_edges: 0,
@@ -193,11 +177,7 @@ impl FaceLoops {
             face_halfedge: &mut loops.face_halfedge.spare_capacity_mut()[..n_faces],
             degenerate,
         };
-        loops.n_edges = match () {
-            #[cfg(feature = "parallel")]
-            () if in_two => walk_in_two(table, numbering, writer)?,
-            () => walk_in_one(table, numbering, writer)?,
-        };
+        loops.n_edges = walk_in_one(table, numbering, writer)?;
         // SAFETY: the walk went through every face of the table (see `LoopWriter`).
         unsafe { loops.claim_written(n_faces) };
         Some(loops)
@@ -299,7 +279,7 @@ fn all_below(corners: &[u32], n_vertices: usize) -> bool {
 
 /// The walk on this thread, corner by corner: each corner's edge is met in the buckets and its
 /// half-edge written at once (the bucket loads of one corner then overlap the stores of the
-/// last; taken in chunks, as [`walk_in_two`] does, the walk is about 5% slower on one thread).
+/// last; numbered a chunk of faces at a time and then written, the walk was about 5% slower).
 fn walk_in_one(
     table: &FaceTable<'_>,
     numbering: EdgeNumbering<'_>,
@@ -385,74 +365,6 @@ impl OneThreadWalk<'_, '_, '_> {
             }
         })
     }
-}
-
-/// [`walk_in_one`] on two threads, a chunk of faces at a time: the numbering runs ahead on one,
-/// handing over each numbered chunk; the writer hands the chunk's array back for reuse. The
-/// numbering never waits for the writer (so it cannot wait on a task of its own thread), and
-/// stops at the first edge defect, which ends the writer's chunks too.
-#[cfg(feature = "parallel")]
-fn walk_in_two(
-    table: &FaceTable<'_>,
-    mut numbering: EdgeNumbering<'_>,
-    mut writer: LoopWriter<'_, '_>,
-) -> Option<u32> {
-    use std::sync::mpsc::channel;
-    let (n_faces, n_vertices) = (table.n_faces(), writer.vertex_halfedge.len());
-    let chunks = (0..n_faces)
-        .step_by(CHUNK_FACES)
-        .map(move |first| first..n_faces.min(first + CHUNK_FACES));
-    let (numbered, to_write) = channel::<(Range<usize>, Vec<u32>)>();
-    let (written, to_reuse) = channel::<Vec<u32>>();
-    let (n_edges, ()) = join(
-        move || {
-            for faces in chunks {
-                let mut halfedges = to_reuse.try_recv().unwrap_or_default();
-                halfedges.clear();
-                halfedges.reserve(
-                    table.face_range(faces.end - 1).end - table.face_range(faces.start).start,
-                );
-                for (f, corners) in faces.clone().zip(table.faces_in(faces.clone())) {
-                    numbering.edges.prefetch_ahead_of(table, f);
-                    if !all_below(corners, n_vertices) {
-                        return None;
-                    }
-                    for (a, b) in face_edges(corners) {
-                        // SAFETY: the face's vertices were just checked, and this is the one
-                        // call for this corner of the table.
-                        halfedges.push(unsafe { numbering.corner(a, b)? }.halfedge());
-                    }
-                }
-                numbered.send((faces, halfedges)).ok()?;
-            }
-            Some(numbering.n_edges)
-        },
-        move || {
-            for (faces, halfedges) in to_write {
-                let mut rest = halfedges.as_slice();
-                for (f, corners) in faces.clone().zip(table.faces_in(faces)) {
-                    writer.check_area(table, f, corners);
-                    let (numbers, after) = rest.split_at(corners.len());
-                    rest = after;
-                    // The numbering checked the same vertices, on its thread.
-                    assert!(all_below(corners, n_vertices));
-                    // SAFETY: the face's vertices were just checked; `f` is a face of the table,
-                    // whose faces the writer has room for; the numbering pushed only half-edges
-                    // of its edges, below the table's corner count, the writer's room
-                    // (`FaceLoops::walk`).
-                    unsafe {
-                        for ((a, b), &h) in face_edges(corners).zip(numbers) {
-                            writer.numbered_corner(a, b, f as u32, h);
-                        }
-                        writer.close_face(f, numbers);
-                    }
-                }
-                // The numbering may have finished: then nobody reuses the array.
-                let _ = written.send(halfedges);
-            }
-        },
-    );
-    n_edges
 }
 
 /// The walk's first half: the corners meet their edges in the buckets, in corner order. The
@@ -586,25 +498,6 @@ impl LoopWriter<'_, '_> {
         CornerEdge::Paired(e).halfedge()
     }
 
-    /// [`LoopWriter::open_edge`] or [`LoopWriter::pair_edge`] for a corner numbered `h` by
-    /// [`EdgeNumbering`] (on another thread: the half-edge's parity tells which).
-    ///
-    /// # Safety
-    /// `h` is a half-edge of the room (below `self.next.len()`), `a` a vertex (below
-    /// `self.vertex_halfedge.len()`).
-    #[cfg(feature = "parallel")]
-    #[inline(always)]
-    unsafe fn numbered_corner(&mut self, a: u32, b: u32, f: u32, h: u32) -> u32 {
-        // SAFETY: the half-edge's edge is an edge of the room, and `a` a vertex.
-        unsafe {
-            if h & 1 == 0 {
-                self.open_edge(h / 2, a, b, f)
-            } else {
-                self.pair_edge(h / 2, f)
-            }
-        }
-    }
-
     /// Links the half-edges of table face `f` (in corner order) into its loop, the first being
     /// the face's half-edge.
     ///
@@ -724,11 +617,11 @@ mod tests {
         }
     }
 
-    /// With two threads the numbering of a chunk of faces runs ahead of its writing (when the
-    /// vertex order does not follow the faces), or the walk runs beside the area check (when it
-    /// does): either way the mesh, the diagnostic and the refusals are those of the walk on one
-    /// thread, for triangles, quads and hexagons over several chunks, with a hole, and with an
-    /// edge defect in the last chunk (found while the writer is still at work).
+    /// With two threads the positions are copied beside the bucket count and the areas checked
+    /// beside the walk: the mesh, the diagnostic and the refusals are those of one thread, for
+    /// triangles, quads and hexagons, with a hole, with an edge defect in the last face, and in
+    /// a vertex order that follows the faces (areas checked in the walk on one thread) or not
+    /// (in a pass of their own).
     #[cfg(feature = "parallel")]
     #[test]
     fn two_threads_build_what_one_thread_builds() {
@@ -761,7 +654,6 @@ mod tests {
                 }
             }
         }
-        assert!(sizes.len() > 3 * CHUNK_FACES);
         // The grid's own vertex order, and the vertices renumbered by a stride prime to their
         // count (121^2 = 11^4), which scatters them.
         let n_vertices = positions.len() as u32;

@@ -154,7 +154,7 @@ fn well_formed_edges<'a>(
 }
 
 /// Threads of the pool the build runs in (1 without the `parallel` feature).
-pub(crate) fn thread_count() -> usize {
+fn thread_count() -> usize {
     #[cfg(feature = "parallel")]
     {
         rayon::current_num_threads()
@@ -166,10 +166,7 @@ pub(crate) fn thread_count() -> usize {
 }
 
 /// Runs `a` and `b`, in parallel when the `parallel` feature and the thread pool allow.
-pub(crate) fn join<A: Send, B: Send>(
-    a: impl FnOnce() -> A + Send,
-    b: impl FnOnce() -> B + Send,
-) -> (A, B) {
+fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
     #[cfg(feature = "parallel")]
     {
         rayon::join(a, b)

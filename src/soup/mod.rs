@@ -24,8 +24,6 @@ pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Walked, walk_faces};
-#[cfg(feature = "parallel")]
-pub(crate) use front::{join, thread_count};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
 pub use resolve::{Resolved, resolve};
