@@ -309,6 +309,7 @@ mod tests {
     #[cfg(target_os = "linux")]
     #[test]
     fn populate_faults_in_the_part_given_of_fresh_memory_only() {
+        // SAFETY: sysconf only reads a system setting.
         let page = usize::try_from(unsafe { libc::sysconf(libc::_SC_PAGESIZE) }).unwrap();
         let (block_bytes, part) = (1 << 20, 1 << 19);
         let resident_pages = |start: *mut u8, bytes: usize| {

@@ -6,9 +6,9 @@
 //! twin. Each face's loop is written as soon as its corners are known, so half-edges are
 //! numbered in corner order and each face's half-edges sit close together in memory; the face's
 //! area is checked in the walk or in a pass of its own, on a second thread when there is one
-//! (degenerate faces are reported; `soup::front` chooses where). Boundary half-edges are then linked into loops through each
-//! vertex's outgoing boundary half-edge (walking the fan only at vertices with several boundary
-//! gaps).
+//! (degenerate faces are reported; `soup::front` chooses where). Boundary half-edges are then
+//! linked into loops through each vertex's outgoing boundary half-edge (walking the fan only at
+//! vertices with several boundary gaps).
 //!
 //! Well-formed input (no face a policy has to act on) is built directly, and the walk itself
 //! finds edge defects; only input that needs a decision goes through
