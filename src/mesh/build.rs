@@ -177,7 +177,7 @@ impl FaceLoops {
             face_halfedge: &mut loops.face_halfedge.spare_capacity_mut()[..n_faces],
             degenerate,
         };
-        loops.n_edges = walk_in_one(table, numbering, writer)?;
+        loops.n_edges = walk_corners(table, numbering, writer)?;
         // SAFETY: the walk went through every face of the table (see `LoopWriter`).
         unsafe { loops.claim_written(n_faces) };
         Some(loops)
@@ -277,16 +277,16 @@ fn all_below(corners: &[u32], n_vertices: usize) -> bool {
     (corners.iter().fold(0, |largest, &v| largest.max(v)) as usize) < n_vertices
 }
 
-/// The walk on this thread, corner by corner: each corner's edge is met in the buckets and its
+/// The walk, corner by corner: each corner's edge is met in the buckets and its
 /// half-edge written at once (the bucket loads of one corner then overlap the stores of the
 /// last; numbered a chunk of faces at a time and then written, the walk was about 5% slower).
-fn walk_in_one(
+fn walk_corners(
     table: &FaceTable<'_>,
     numbering: EdgeNumbering<'_>,
     writer: LoopWriter<'_, '_>,
 ) -> Option<u32> {
     let n_vertices = writer.vertex_halfedge.len();
-    let mut walk = OneThreadWalk { numbering, writer };
+    let mut walk = CornerWalk { numbering, writer };
     let mut polygon = Vec::new();
     table.try_for_each_face(
         #[inline(always)]
@@ -310,7 +310,7 @@ fn walk_in_one(
                     };
                     // SAFETY: `f` is a face of the table, whose faces the writer has room for, with
                     // half-edges of the numbering's edges, below the table's corner count, the
-                    // writer's room (see `OneThreadWalk::corner`).
+                    // writer's room (see `CornerWalk::corner`).
                     unsafe { walk.writer.close_face(f, &triangle) };
                 }
                 [a, b, c, d] => {
@@ -340,14 +340,14 @@ fn walk_in_one(
     Some(walk.numbering.n_edges)
 }
 
-/// Both halves of the walk on one thread, owned by its loop so that their fields stay in
-/// registers.
-struct OneThreadWalk<'b, 'a, 'd> {
+/// Both halves of the walk (numbering and writing), owned by its loop so that their fields
+/// stay in registers.
+struct CornerWalk<'b, 'a, 'd> {
     numbering: EdgeNumbering<'b>,
     writer: LoopWriter<'a, 'd>,
 }
 
-impl OneThreadWalk<'_, '_, '_> {
+impl CornerWalk<'_, '_, '_> {
     /// The half-edge of the corner of face `f` running `a → b`, numbered and written.
     ///
     /// # Safety

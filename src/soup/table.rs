@@ -209,7 +209,7 @@ impl<'a> FaceTable<'a> {
     /// giving it). Triangle and quad tables are walked as arrays of that size, so a `visit` that
     /// matches on the face's size (and is inlined: callers mark it `#[inline(always)]`, as it is
     /// compiled three times) is compiled for that size alone, with no per-face dispatch. For
-    /// the bucket count and the one-thread walk, against [`FaceTable::faces`] (cold memory, one
+    /// the bucket count and the build's walk, against [`FaceTable::faces`] (cold memory, one
     /// thread, best of 60 or 30 builds, four rounds taking turns): 1M-triangle torus
     /// 31.9-32.8 → 30.5-31.1 ms, 1M-quad torus 43.5-47.4 → 42.0-43.0 ms).
     #[inline(always)]
