@@ -6,10 +6,28 @@
 /// `hit` has no branches either), and only a run with a hit is searched item by item.
 #[inline]
 pub(crate) fn rare_hits<T>(items: &[T], first: usize, hit: impl Fn(&T) -> bool) -> Vec<u32> {
+    rare_hits_by_runs(
+        items,
+        first,
+        |run| run.iter().fold(false, |any, item| any | hit(item)),
+        &hit,
+    )
+}
+
+/// [`rare_hits`] with the test of a whole run given apart (`run_has_hit(run)` holds when `hit`
+/// holds for an item of `run`), for items whose test packs better over the run's raw contents
+/// than item by item.
+#[inline]
+pub(crate) fn rare_hits_by_runs<T>(
+    items: &[T],
+    first: usize,
+    run_has_hit: impl Fn(&[T]) -> bool,
+    hit: impl Fn(&T) -> bool,
+) -> Vec<u32> {
     const RUN: usize = 256;
     let mut hits = Vec::new();
     for (r, run) in items.chunks(RUN).enumerate() {
-        if run.iter().fold(false, |any, item| any | hit(item)) {
+        if run_has_hit(run) {
             let start = first + r * RUN;
             hits.extend(
                 (0..run.len())

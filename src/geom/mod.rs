@@ -1,7 +1,10 @@
 //! Geometry: vectors, exact predicates, normals, intersections.
 
 mod newell;
-pub(crate) use newell::is_clearly_not_degenerate_triangle;
+pub(crate) use newell::{
+    is_clearly_not_degenerate_triangle, polygon_area_test, quad_squared_perimeter,
+    triangle_squared_size,
+};
 mod normals;
 pub(crate) use normals::normalized;
 

@@ -28,9 +28,15 @@ pub fn newell_vector(points: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
 /// positions and needles thinner than ~1e-15 of their length count as degenerate). One pass;
 /// non-finite coordinates give `false` (they are reported as such, not as degenerate).
 pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool {
+    polygon_area_test(points).0
+}
+
+/// [`is_degenerate_polygon`], with the polygon's squared perimeter, the size it judged the area
+/// against (finite as [`triangle_squared_size`] is; zero for no points).
+pub(crate) fn polygon_area_test(points: impl IntoIterator<Item = [f64; 3]>) -> (bool, f64) {
     let mut points = points.into_iter();
     let Some(first) = points.next() else {
-        return true;
+        return (true, 0.0);
     };
     let mut area_vector = [0.0; 3];
     let mut squared_perimeter = 0.0;
@@ -46,7 +52,10 @@ pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool
         previous = point;
     }
     add(previous, first);
-    is_negligible_area(area_vector, squared_perimeter)
+    (
+        is_negligible_area(area_vector, squared_perimeter),
+        squared_perimeter,
+    )
 }
 
 /// The area vector of triangle `abc` (as [`newell_vector`]: along its normal, twice its area
@@ -72,8 +81,10 @@ pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
         return false;
     }
     let (ab, ac) = (difference(b, a), difference(c, a));
-    let two_edges = squared_length(ab) + squared_length(ac);
-    is_negligible_area(cross(ab, ac), two_edges + squared_distance(b, c))
+    is_negligible_area(
+        cross(ab, ac),
+        triangle_squared_size(a, b, c) + squared_distance(b, c),
+    )
 }
 
 /// The first test of [`is_degenerate_triangle`], which decides almost every face: `true` when
@@ -83,19 +94,35 @@ pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
 #[inline(always)]
 pub(crate) fn is_clearly_not_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
     let (ab, ac) = (difference(b, a), difference(c, a));
-    let two_edges = squared_length(ab) + squared_length(ac);
-    !is_negligible_area(cross(ab, ac), 4.0 * two_edges)
+    !is_negligible_area(cross(ab, ac), 4.0 * triangle_squared_size(a, b, c))
+}
+
+/// The size the triangle tests judge `abc`'s area against: the squares of its two edges from `a`.
+/// Like every squared size here it is finite only when all the coordinates it reads are (or
+/// when the squares overflow), so bulk checks learn from it whether their corners were finite.
+#[inline(always)]
+pub(crate) fn triangle_squared_size(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    squared_distance(b, a) + squared_distance(c, a)
 }
 
 /// [`is_degenerate_polygon`] for a quad, its area vector from the diagonals (as
 /// [`quad_area_vector`]) against the sum of its squared sides.
 #[inline]
 pub fn is_degenerate_quad(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> bool {
-    let squared_perimeter = squared_distance(a, b)
+    is_negligible_area(
+        quad_area_vector(a, b, c, d),
+        quad_squared_perimeter(a, b, c, d),
+    )
+}
+
+/// The sum of quad `abcd`'s squared sides, the size [`is_degenerate_quad`] judges its area
+/// against (finite as [`triangle_squared_size`] is).
+#[inline(always)]
+pub(crate) fn quad_squared_perimeter(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> f64 {
+    squared_distance(a, b)
         + squared_distance(b, c)
         + squared_distance(c, d)
-        + squared_distance(d, a);
-    is_negligible_area(quad_area_vector(a, b, c, d), squared_perimeter)
+        + squared_distance(d, a)
 }
 
 /// `true` when an area vector is rounding noise against the squared perimeter.

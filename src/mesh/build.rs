@@ -20,12 +20,13 @@ use crate::large_arrays::{filled, fit, with_capacity_written};
 use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
-    FaceList, FaceTable, Walked, face_edges, walk_faces,
+    FaceList, FaceTable, Unreached, Walked, face_edges, walk_faces,
 };
 
 use super::Mesh;
 use super::connectivity::Deletions;
 use super::ids::INVALID_INDEX;
+use super::vertex_fans::vertices_without_halfedge;
 
 impl Mesh {
     /// Builds a mesh from an indexed face list under `policy` (see [`BuildPolicy`]).
@@ -220,7 +221,7 @@ impl FaceLoops {
     }
 
     /// The mesh of the walked faces of `table`, with boundary loops, and `diagnostic` completed
-    /// with what the mesh shows: non-manifold and isolated vertices.
+    /// with what the mesh shows: non-manifold vertices.
     fn into_mesh(
         self,
         table: &FaceTable<'_>,
@@ -251,8 +252,15 @@ impl FaceLoops {
         diagnostic.non_manifold_vertices =
             mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
         mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
-        diagnostic.isolated_vertices = mesh.isolated_vertices();
         (mesh, diagnostic)
+    }
+}
+
+impl Unreached for FaceLoops {
+    /// Every vertex of a walked face has a half-edge: the first face walked around it opened the
+    /// edge leaving it.
+    fn unreached_vertices(&self) -> Vec<u32> {
+        vertices_without_halfedge(&self.vertex_halfedge)
     }
 }
 

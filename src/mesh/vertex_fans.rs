@@ -10,7 +10,7 @@ use crate::rare_hits::rare_hits;
 impl Mesh {
     /// Live vertices with no half-edge, ascending.
     pub fn isolated_vertices(&self) -> Vec<u32> {
-        let mut isolated = rare_hits(&self.vertex_halfedge, 0, |&h| h == INVALID_INDEX);
+        let mut isolated = vertices_without_halfedge(&self.vertex_halfedge);
         isolated.retain(|&v| !self.is_vertex_deleted(VertexId(v)));
         isolated
     }
@@ -74,4 +74,9 @@ impl Mesh {
         let step = |h: u32| Some(prev[h as usize] ^ 1);
         for_each_cycle_length(starts, self.halfedge_capacity(), step, visit);
     }
+}
+
+/// The vertices whose entry of `vertex_halfedge` is [`INVALID_INDEX`], ascending.
+pub(super) fn vertices_without_halfedge(vertex_halfedge: &[u32]) -> Vec<u32> {
+    rare_hits(vertex_halfedge, 0, |&h| h == INVALID_INDEX)
 }

@@ -1,17 +1,22 @@
 //! Zero-area faces, which every builder reports: checked during its face walk, or in a pass of
 //! their own (beside the walk when a second thread is free, before it when the vertex order does
-//! not follow the faces; see `soup::front`).
+//! not follow the faces; see `soup::front`). The check also learns whether every corner's
+//! coordinates are finite, from the sizes it measures the areas against, so that builders need
+//! no pass of their own over the positions of input without NaN.
 
 use super::FaceTable;
 use crate::geom::{
-    is_clearly_not_degenerate_triangle, is_degenerate_polygon, is_degenerate_quad,
-    is_degenerate_triangle,
+    is_clearly_not_degenerate_triangle, is_degenerate_quad, is_degenerate_triangle,
+    polygon_area_test, quad_squared_perimeter, triangle_squared_size,
 };
 
 /// The degenerate faces of a table as input face indices, ascending, found in face order.
 pub(crate) struct DegenerateFaces<'p> {
     positions: &'p [[f64; 3]],
     faces: Vec<u32>,
+    /// The sum of the squared sizes the checked faces' areas were judged against: finite only
+    /// when every coordinate of their corners is (see `geom::triangle_squared_size`).
+    squared_sizes: f64,
 }
 
 impl<'p> DegenerateFaces<'p> {
@@ -20,48 +25,60 @@ impl<'p> DegenerateFaces<'p> {
         DegenerateFaces {
             positions,
             faces: Vec::new(),
+            squared_sizes: 0.0,
         }
     }
 
     /// Checks table face `f`, whose vertices are `corners` (faces are checked in order).
     #[inline(always)]
     pub(crate) fn check(&mut self, table: &FaceTable<'_>, f: usize, corners: &[u32]) {
-        if is_degenerate_face(corners, self.positions) {
+        let (degenerate, squared_size) = area_test(corners, self.positions);
+        self.squared_sizes += squared_size;
+        if degenerate {
             self.faces.push(table.input_face(f));
         }
     }
 
     /// The degenerate faces of all of `table`. Triangle and quad tables are tested a block of
     /// faces at a time (see [`DegenerateFaces::check_uniform`]).
-    pub(crate) fn of_table(table: &FaceTable<'_>, positions: &'p [[f64; 3]]) -> Vec<u32> {
+    pub(crate) fn of_table(table: &FaceTable<'_>, positions: &'p [[f64; 3]]) -> Self {
         let mut found = DegenerateFaces::new(positions);
         match table.uniform_size() {
             Some(3) => found.check_uniform(table, |[a, b, c]| {
-                is_clearly_not_degenerate_triangle(a, b, c)
+                (
+                    is_clearly_not_degenerate_triangle(a, b, c),
+                    triangle_squared_size(a, b, c),
+                )
             }),
-            Some(4) => found.check_uniform(table, |[a, b, c, d]| !is_degenerate_quad(a, b, c, d)),
+            Some(4) => found.check_uniform(table, |[a, b, c, d]| {
+                (
+                    !is_degenerate_quad(a, b, c, d),
+                    quad_squared_perimeter(a, b, c, d),
+                )
+            }),
             _ => {
                 for (f, corners) in table.faces().enumerate() {
                     found.check(table, f, corners);
                 }
             }
         }
-        found.faces
+        found
     }
 
     /// Checks every face of `table`, all of which have `N` corners. A block of faces has its
-    /// positions gathered coordinate by coordinate, so `clearly_not_degenerate` (branch-free)
-    /// runs on all of them in vector registers; only blocks where it clears some face not are
-    /// checked face by face. (A pass over the 1M-triangle torus: 4.0 ms, against 5.4 face by
-    /// face.)
+    /// positions gathered coordinate by coordinate, so `clearly_not_degenerate` (branch-free,
+    /// giving its verdict and the face's squared size) runs on all of them in vector registers;
+    /// only blocks where it clears some face not are checked face by face. (A pass over the
+    /// 1M-triangle torus: 4.0 ms, against 5.4 face by face.)
     fn check_uniform<const N: usize>(
         &mut self,
         table: &FaceTable<'_>,
-        clearly_not_degenerate: impl Fn([[f64; 3]; N]) -> bool,
+        clearly_not_degenerate: impl Fn([[f64; 3]; N]) -> (bool, f64),
     ) {
         const BLOCK: usize = 8;
         let blocks = table.corners().chunks_exact(N * BLOCK);
         let n_blocked = blocks.len() * BLOCK;
+        let mut squared_sizes = [0.0; BLOCK];
         for (b, block) in blocks.enumerate() {
             // coordinates[k][j][i]: coordinate k of corner j of the block's face i.
             let mut coordinates = [[[0.0; BLOCK]; N]; 3];
@@ -73,23 +90,33 @@ impl<'p> DegenerateFaces<'p> {
                     }
                 }
             }
-            let cleared: [bool; BLOCK] = std::array::from_fn(|i| {
-                clearly_not_degenerate(std::array::from_fn(|j| {
+            let mut cleared = [false; BLOCK];
+            for i in 0..BLOCK {
+                let (clear, squared_size) = clearly_not_degenerate(std::array::from_fn(|j| {
                     std::array::from_fn(|k| coordinates[k][j][i])
-                }))
-            });
+                }));
+                cleared[i] = clear;
+                squared_sizes[i] += squared_size;
+            }
             if cleared.contains(&false) {
                 for (i, face) in block.chunks_exact(N).enumerate() {
-                    if !cleared[i] {
-                        self.check(table, b * BLOCK + i, face);
+                    if !cleared[i] && area_test(face, self.positions).0 {
+                        self.faces.push(table.input_face(b * BLOCK + i));
                     }
                 }
             }
         }
+        self.squared_sizes += squared_sizes.iter().sum::<f64>();
         let rest = table.corners()[n_blocked * N..].chunks_exact(N);
         for (i, face) in rest.enumerate() {
             self.check(table, n_blocked + i, face);
         }
+    }
+
+    /// Are the coordinates of every corner checked so far finite? (Only `true` is sure: squared
+    /// sizes that overflow give `false` too.)
+    pub(crate) fn corners_finite(&self) -> bool {
+        self.squared_sizes.is_finite()
     }
 
     /// The faces found.
@@ -98,24 +125,28 @@ impl<'p> DegenerateFaces<'p> {
     }
 }
 
-/// `true` when the face with corners `face` has negligible area (see
-/// [`is_degenerate_polygon`]; non-finite positions are not degenerate but non-finite, reported
-/// apart); triangles and quads unrolled.
+/// Whether the face with corners `face` has negligible area (see
+/// [`crate::geom::is_degenerate_polygon`]; non-finite positions are not degenerate but
+/// non-finite, reported apart), and the squared size it was judged against; triangles and quads
+/// unrolled.
 #[inline(always)]
-fn is_degenerate_face(face: &[u32], positions: &[[f64; 3]]) -> bool {
+fn area_test(face: &[u32], positions: &[[f64; 3]]) -> (bool, f64) {
     match *face {
-        [a, b, c] => is_degenerate_triangle(
-            positions[a as usize],
-            positions[b as usize],
-            positions[c as usize],
-        ),
-        [a, b, c, d] => is_degenerate_quad(
-            positions[a as usize],
-            positions[b as usize],
-            positions[c as usize],
-            positions[d as usize],
-        ),
-        ref face => is_degenerate_polygon(face.iter().map(|&v| positions[v as usize])),
+        [a, b, c] => {
+            let [a, b, c] = [a, b, c].map(|v| positions[v as usize]);
+            (
+                is_degenerate_triangle(a, b, c),
+                triangle_squared_size(a, b, c),
+            )
+        }
+        [a, b, c, d] => {
+            let [a, b, c, d] = [a, b, c, d].map(|v| positions[v as usize]);
+            (
+                is_degenerate_quad(a, b, c, d),
+                quad_squared_perimeter(a, b, c, d),
+            )
+        }
+        ref face => polygon_area_test(face.iter().map(|&v| positions[v as usize])),
     }
 }
 
@@ -154,7 +185,10 @@ mod tests {
             let one_by_one = one_by_one.into_faces();
             assert!(one_by_one.len() > 10, "{one_by_one:?}");
             assert!(one_by_one.len() < table.n_faces(), "{one_by_one:?}");
-            assert_eq!(DegenerateFaces::of_table(&table, &positions), one_by_one);
+            assert_eq!(
+                DegenerateFaces::of_table(&table, &positions).into_faces(),
+                one_by_one
+            );
         }
     }
 }

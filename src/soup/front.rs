@@ -19,6 +19,12 @@ pub(crate) struct Walked<'a, T> {
     pub(crate) diagnostic: Diagnostic,
 }
 
+/// What a builder's walk made, which knows the vertices no face reached.
+pub(crate) trait Unreached {
+    /// The vertices no walked face has, ascending: the isolated vertices of the build.
+    fn unreached_vertices(&self) -> Vec<u32>;
+}
+
 /// A builder's face walk: `walk(table, buckets, positions, degenerate)` meets every corner's edge
 /// in the buckets, checks each face's area into `degenerate` when given one, and gives `None` on
 /// an edge defect.
@@ -40,8 +46,8 @@ impl<T, W> Walk<T> for W where
 }
 
 /// Runs `walk` (see [`Walk`]) directly on well-formed input, else on the table [`resolve`] makes
-/// under `policy` (where it cannot meet a defect).
-pub(crate) fn walk_faces<'a, T: Send>(
+/// under `policy` (where it cannot meet a defect). The diagnostic has the isolated vertices.
+pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     list: &FaceList<'a>,
     policy: BuildPolicy,
     walk: impl Walk<T>,
@@ -57,45 +63,53 @@ pub(crate) fn walk_faces<'a, T: Send>(
     // Lists with more vertices than ids are left to resolve to refuse, before anything the size
     // of the input is allocated.
     if list.positions.len() as u64 <= MAX_VERTICES {
-        let (edges, (early_copy, non_finite_vertices)) = join(
+        let (edges, early_copy) = join(
             || well_formed_edges(list, later_positions),
-            || {
-                let copy = copy_early.then(|| large_arrays::copied(list.positions));
-                (copy, non_finite_vertices(list.positions))
-            },
+            || copy_early.then(|| large_arrays::copied(list.positions)),
         );
         input_copy = early_copy;
         if let Some((table, mut buckets)) = edges {
-            let (walked, degenerate_faces) =
-                walk_checking_areas(&table, &mut buckets, list.positions, &walk);
-            // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
-            if let Some(walked) = walked
-                && (non_finite_vertices.is_empty() || policy != BuildPolicy::Strict)
-            {
-                let diagnostic = Diagnostic {
-                    non_finite_vertices,
-                    degenerate_faces,
-                    ..Diagnostic::default()
+            let (walked, areas) = walk_checking_areas(&table, &mut buckets, list.positions, &walk);
+            if let Some(walked) = walked {
+                let isolated_vertices = walked.unreached_vertices();
+                // Every corner's coordinates were read by the area check: when all were finite,
+                // only isolated vertices can have others.
+                let non_finite_vertices = if areas.corners_finite() {
+                    (isolated_vertices.iter().copied())
+                        .filter(|&v| !is_finite(list.positions[v as usize]))
+                        .collect()
+                } else {
+                    non_finite_vertices(list.positions)
                 };
-                let positions =
-                    input_copy.unwrap_or_else(|| buckets.into_positions(list.positions));
-                return Ok(Walked {
-                    walked,
-                    table,
-                    positions,
-                    diagnostic,
-                });
+                // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
+                if non_finite_vertices.is_empty() || policy != BuildPolicy::Strict {
+                    let diagnostic = Diagnostic {
+                        non_finite_vertices,
+                        degenerate_faces: areas.into_faces(),
+                        isolated_vertices,
+                        ..Diagnostic::default()
+                    };
+                    let positions =
+                        input_copy.unwrap_or_else(|| buckets.into_positions(list.positions));
+                    return Ok(Walked {
+                        walked,
+                        table,
+                        positions,
+                        diagnostic,
+                    });
+                }
             }
         }
     }
     let resolved = resolve(list, policy)?;
     let mut buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len(), later_positions)
         .expect("a resolved face table is well formed");
-    let (walked, degenerate_faces) =
+    let (walked, areas) =
         walk_checking_areas(&resolved.table, &mut buckets, &resolved.positions, &walk);
     let walked = walked.expect("a resolved face table has no edge defects");
     let mut diagnostic = resolved.diagnostic;
-    diagnostic.degenerate_faces = degenerate_faces;
+    diagnostic.degenerate_faces = areas.into_faces();
+    diagnostic.isolated_vertices = walked.unreached_vertices();
     let positions = match resolved.positions {
         Cow::Borrowed(input) => input_copy.unwrap_or_else(|| buckets.into_positions(input)),
         Cow::Owned(repaired) => repaired,
@@ -108,19 +122,24 @@ pub(crate) fn walk_faces<'a, T: Send>(
     })
 }
 
-/// `walk(table, buckets, positions, degenerate)` with the degenerate faces of `table` (input
-/// face indices, ascending): found in a pass of their own beside the walk when a second thread is
-/// free; with one thread, by the walk itself as it reads each face when the vertex order follows
-/// the faces (the position loads then hide in the walk's), else in a pass of their own before
-/// it, where the scattered position loads overlap each other instead of the walk's misses
-/// (measured: about 10% faster on the scanned models; on the generated torus the pass of its
-/// own is 5% slower than checking in the walk).
-fn walk_checking_areas<T: Send>(
+fn is_finite(point: [f64; 3]) -> bool {
+    point.iter().all(|x| x.is_finite())
+}
+
+/// `walk(table, buckets, positions, degenerate)` with the area check of every face of `table`
+/// (its degenerate faces as input face indices, ascending, and whether every corner was finite):
+/// made in a pass of its own beside the walk when a second thread is free; with one thread, by
+/// the walk itself as it reads each face when the vertex order follows the faces (the position
+/// loads then hide in the walk's), else in a pass of its own before it, where the scattered
+/// position loads overlap each other instead of the walk's misses (measured: about 10% faster on
+/// the scanned models; on the generated torus the pass of its own is 5% slower than checking in
+/// the walk).
+fn walk_checking_areas<'p, T: Send>(
     table: &FaceTable<'_>,
     buckets: &mut EdgeBuckets,
-    positions: &[[f64; 3]],
+    positions: &'p [[f64; 3]],
     walk: &impl Walk<T>,
-) -> (Option<T>, Vec<u32>) {
+) -> (Option<T>, DegenerateFaces<'p>) {
     let beside = thread_count() > 1 || !buckets.vertices_follow_faces();
     let (found_beside, (walked, found_in_walk)) = join(
         || beside.then(|| DegenerateFaces::of_table(table, positions)),
@@ -132,10 +151,10 @@ fn walk_checking_areas<T: Send>(
             )
         },
     );
-    let degenerate_faces = found_beside
-        .or(found_in_walk.map(DegenerateFaces::into_faces))
-        .unwrap_or_default();
-    (walked, degenerate_faces)
+    let areas = found_beside
+        .or(found_in_walk)
+        .expect("the areas are checked beside the walk or in it");
+    (walked, areas)
 }
 
 /// `list` laid out as a table, with the buckets of its edges, when no face needs a policy
@@ -174,5 +193,131 @@ fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + 
     #[cfg(not(feature = "parallel"))]
     {
         (a(), b())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::Mesh;
+    use crate::winged::Winged;
+
+    /// The diagnostic's non-finite and isolated vertices under `policy` (of the refusal, if it is
+    /// one), from both kernels, with
+    /// one thread and, with the `parallel` feature, two (the area check, which finds the
+    /// non-finite corners, then runs beside the walk instead of in it or before it).
+    fn vertex_findings(list: &FaceList<'_>, policy: BuildPolicy) -> Vec<(Vec<u32>, Vec<u32>)> {
+        let findings = || {
+            let diagnostics = [
+                Mesh::from_face_list(list, policy).map(|(_, d)| d),
+                Winged::from_face_list(list, policy).map(|(_, d)| d),
+            ];
+            diagnostics.map(|built| {
+                let diagnostic = built.unwrap_or_else(|error| error.diagnostic().clone());
+                (diagnostic.non_finite_vertices, diagnostic.isolated_vertices)
+            })
+        };
+        #[cfg(feature = "parallel")]
+        let pools = [1, 2];
+        #[cfg(not(feature = "parallel"))]
+        let pools = [1];
+        pools
+            .into_iter()
+            .flat_map(|_threads| {
+                #[cfg(feature = "parallel")]
+                return rayon::ThreadPoolBuilder::new()
+                    .num_threads(_threads)
+                    .build()
+                    .unwrap()
+                    .install(findings);
+                #[cfg(not(feature = "parallel"))]
+                findings()
+            })
+            .collect()
+    }
+
+    /// A NaN or infinite coordinate is reported wherever it is, at a corner of a triangle, a quad
+    /// or a hexagon, or at a vertex no face has; in a vertex order that follows the faces (one
+    /// thread checks the areas in the walk) or not (in a pass before it). Finite coordinates
+    /// whose squares overflow are not reported, and no position is changed.
+    #[test]
+    fn non_finite_vertices_are_found_at_corners_and_isolated_vertices() {
+        let n = 24u32;
+        let at = |i: u32, j: u32| i * (n + 1) + j;
+        let grid: Vec<[f64; 3]> = (0..=n)
+            .flat_map(|i| (0..=n).map(move |j| [f64::from(i), f64::from(j), 0.0]))
+            .collect();
+        let isolated = grid.len() as u32;
+        let (mut triangles, mut quads, mut mixed, mut mixed_sizes) =
+            (vec![], vec![], vec![], vec![]);
+        for i in 0..n {
+            for j in 0..n {
+                let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                triangles.extend([a, b, c, a, c, d]);
+                quads.extend([a, b, c, d]);
+                match j % 3 {
+                    0 => {
+                        mixed_sizes.push(6);
+                        mixed.extend([a, b, c, at(i + 1, j + 2), at(i, j + 2), d]);
+                    }
+                    1 => {}
+                    _ => {
+                        mixed_sizes.push(4);
+                        mixed.extend([a, b, c, d]);
+                    }
+                }
+            }
+        }
+        let n_vertices = isolated + 1;
+        let scatter = |v: u32| v * 7919 % n_vertices;
+        for renumber in [&(|v| v) as &dyn Fn(u32) -> u32, &scatter] {
+            let mut positions = vec![[0.0; 3]; n_vertices as usize];
+            for (v, &point) in grid.iter().chain(&[[0.5, 0.5, 1.0]]).enumerate() {
+                positions[renumber(v as u32) as usize] = point;
+            }
+            let renumbered = |indices: &[u32]| indices.iter().map(|&v| renumber(v)).collect();
+            let (triangles, quads, mixed): (Vec<u32>, Vec<u32>, Vec<u32>) = (
+                renumbered(&triangles),
+                renumbered(&quads),
+                renumbered(&mixed),
+            );
+            let isolated = renumber(isolated);
+            let corner = renumber(at(n / 2, n / 2));
+            let quad_sizes = vec![4; quads.len() / 4];
+            for bad in [corner, isolated] {
+                for value in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    let mut positions = positions.clone();
+                    positions[bad as usize][1] = value;
+                    let lists = [
+                        FaceList::triangles(&positions, &triangles),
+                        FaceList::polygons(&positions, &quad_sizes, &quads),
+                        FaceList::polygons(&positions, &mixed_sizes, &mixed),
+                    ];
+                    for list in &lists {
+                        for policy in [BuildPolicy::Strict, BuildPolicy::Skip] {
+                            for (non_finite, isolated_found) in vertex_findings(list, policy) {
+                                assert_eq!(non_finite, [bad], "{value} at {bad}, {policy:?}");
+                                // A refusal stops before the vertices are looked at.
+                                let built = policy == BuildPolicy::Skip;
+                                assert_eq!(isolated_found, [isolated][..usize::from(built)]);
+                            }
+                        }
+                        assert!(Mesh::from_face_list(list, BuildPolicy::Strict).is_err());
+                        let (mesh, _) = Mesh::from_face_list(list, BuildPolicy::Skip).unwrap();
+                        assert_eq!(mesh.positions()[bad as usize][1].to_bits(), value.to_bits());
+                    }
+                }
+            }
+            let huge: Vec<[f64; 3]> = positions.iter().map(|p| p.map(|x| x * 1e200)).collect();
+            for list in [
+                FaceList::triangles(&huge, &triangles),
+                FaceList::polygons(&huge, &mixed_sizes, &mixed),
+            ] {
+                for (non_finite, isolated_found) in vertex_findings(&list, BuildPolicy::Strict) {
+                    assert!(non_finite.is_empty());
+                    assert_eq!(isolated_found, [isolated]);
+                }
+            }
+        }
     }
 }

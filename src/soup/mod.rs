@@ -23,7 +23,7 @@ pub(crate) use degenerate::DegenerateFaces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
-pub(crate) use front::{Walked, walk_faces};
+pub(crate) use front::{Unreached, Walked, walk_faces};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
 pub use resolve::{Resolved, resolve};

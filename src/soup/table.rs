@@ -5,7 +5,7 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use super::{FaceList, FaceSizes, ListProblem};
-use crate::rare_hits::rare_hits;
+use crate::rare_hits::rare_hits_by_runs;
 
 /// Largest number of corners a table may hold: every corner may need two half-edges and
 /// half-edge ids must stay below `u32::MAX`.
@@ -67,7 +67,7 @@ impl<'a> FaceTable<'a> {
             FaceSizes::PerFace(&[size, ref rest @ ..])
                 if size > 0
                     && u64::from(size) * (rest.len() as u64 + 1) == n_corners
-                    && rest.iter().all(|&s| s == size) =>
+                    && all_equal_to(rest, size) =>
             {
                 Layout::Uniform {
                     size,
@@ -470,6 +470,15 @@ pub(crate) fn is_well_formed(face: &[u32], n_vertices: usize, scratch: &mut Vec<
     }
 }
 
+/// Is every one of `sizes` equal to `size`? Tested a run at a time without branches, so the
+/// test runs packed (face by face, stopping at the first other size, it took 0.7 ms over the
+/// 1M-quad torus's sizes).
+fn all_equal_to(sizes: &[u32], size: u32) -> bool {
+    sizes
+        .chunks(1024)
+        .all(|run| run.iter().fold(0, |differ, &s| differ | (s ^ size)) == 0)
+}
+
 /// Quadratic scan for the small faces that dominate real meshes, a sort for big polygons.
 pub(crate) fn has_repeated_vertex(face: &[u32], scratch: &mut Vec<u32>) -> bool {
     const QUADRATIC_LIMIT: usize = 12;
@@ -502,16 +511,28 @@ pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
     non_finite_in(0, positions)
 }
 
-/// [`non_finite_vertices`] of the vertices `first..` at `positions`, by runs ([`rare_hits`]).
+/// [`non_finite_vertices`] of the vertices `first..` at `positions`, by runs
+/// ([`rare_hits_by_runs`]): a run's coordinates are tested as one flat array of bits, which packs
+/// into vector registers (the 1M-triangle torus's 500k vertices, warm, best of 10: 1.56 ms tested
+/// point by point, 1.35 ms so).
 fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
     // All exponent bits set: infinite or NaN (a test without branches, unlike `is_finite`'s).
-    let non_finite = |x: &f64| {
-        const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
-        x.to_bits() & EXPONENT == EXPONENT
-    };
-    rare_hits(positions, first, |point| {
-        point.iter().fold(false, |any, x| any | non_finite(x))
-    })
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    let non_finite = |x: &f64| x.to_bits() & EXPONENT == EXPONENT;
+    // 1 for a non-finite coordinate, else 0: the masked exponent xor `EXPONENT` is 0 only then,
+    // and only 0 wraps below zero (the others are below 2^63), setting the top bit.
+    let non_finite_bit = |x: &f64| ((x.to_bits() & EXPONENT) ^ EXPONENT).wrapping_sub(1) >> 63;
+    rare_hits_by_runs(
+        positions,
+        first,
+        |run| {
+            run.as_flattened()
+                .iter()
+                .fold(0, |any, x| any | non_finite_bit(x))
+                != 0
+        },
+        |point| point.iter().any(non_finite),
+    )
 }
 
 #[cfg(test)]

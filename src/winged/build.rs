@@ -16,9 +16,10 @@ use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 use super::record::EdgeRecord;
 use super::structure::Winged;
 use crate::large_arrays;
+use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, FaceList,
-    FaceTable, Walked, face_edges, walk_faces,
+    FaceTable, Unreached, Walked, face_edges, walk_faces,
 };
 
 impl Winged {
@@ -54,13 +55,6 @@ impl Winged {
             w.link_boundary_loops();
         }
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
-        diagnostic.isolated_vertices = w
-            .vertex_edge
-            .iter()
-            .enumerate()
-            .filter(|(_, e)| !e.is_valid())
-            .map(|(v, _)| v as u32)
-            .collect();
         Ok((w, diagnostic))
     }
 
@@ -230,6 +224,14 @@ impl VertexEdgeChoice {
                 self.offer(r.tail(side), e, Self::BORDERS_HOLE);
             }
         }
+    }
+}
+
+impl Unreached for WingedFaces {
+    /// A vertex of a walked face was offered the edges that start and end at it.
+    fn unreached_vertices(&self) -> Vec<u32> {
+        let kind = &self.vertex_edges.kind;
+        rare_hits(kind, 0, |&k| k == VertexEdgeChoice::NONE)
     }
 }
 
