@@ -20,6 +20,7 @@ mod cycles;
 mod disjoint_sets;
 mod id_set;
 mod large_arrays;
+mod order;
 mod prefetch;
 mod rare_hits;
 

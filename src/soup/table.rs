@@ -5,6 +5,7 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use super::{FaceList, FaceSizes, ListProblem};
+use crate::order::mostly_nearby;
 use crate::rare_hits::rare_hits_by_runs;
 
 /// Largest number of corners a table may hold: every corner may need two half-edges and
@@ -176,26 +177,15 @@ impl<'a> FaceTable<'a> {
     /// Do consecutive faces mostly start near each other in vertex order (generated grids and
     /// tori, meshes written in a cache-friendly order)? Then a walk over the faces touches
     /// vertex data almost sequentially; otherwise (scanned models, whose vertex order is not the
-    /// faces') nearly every corner waits on memory. Judged from about a thousand pairs of
-    /// consecutive faces spread over the table: a pair is a jump when the faces' first vertices
-    /// are more than a few hundred ids apart (their vertex data no longer near in memory), and
-    /// the order follows the faces when at most a quarter of the pairs jump. (Faces without
-    /// corners count as jumps: the table need not be well formed.)
+    /// faces') nearly every corner waits on memory. Judged by [`mostly_nearby`] on the faces'
+    /// first vertices: a pair of faces jumps when those are more than a few hundred ids apart
+    /// (their vertex data no longer near in memory). Faces without corners count as jumps: the
+    /// table need not be well formed.
     pub(crate) fn vertices_follow_faces(&self) -> bool {
-        const SAMPLES: usize = 1024;
         const NEARBY_VERTICES: u32 = 256;
-        let n_faces = self.n_faces();
-        let step = ((n_faces.saturating_sub(1)) / SAMPLES).max(1);
-        let (mut pairs, mut jumps) = (0, 0);
-        for f in (1..n_faces).step_by(step) {
-            let nearby = match (self.face(f).first(), self.face(f - 1).first()) {
-                (Some(first), Some(previous)) => first.abs_diff(*previous) <= NEARBY_VERTICES,
-                _ => false,
-            };
-            pairs += 1;
-            jumps += usize::from(!nearby);
-        }
-        4 * jumps <= pairs
+        mostly_nearby(self.n_faces(), NEARBY_VERTICES, |f| {
+            self.face(f).first().copied()
+        })
     }
 
     /// The vertex indices of every face, in order: the builders' walks go through here, and a
