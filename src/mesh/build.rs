@@ -169,6 +169,14 @@ impl FaceLoops {
         // (slicing it to that count fails otherwise).
         let (n_edges, n_vertices, n_faces) =
             (capacity / 2, numbering.edges.n_vertices(), table.n_faces());
+        // The area check reads positions of vertices below that count unchecked (see
+        // `LoopWriter::check_area`).
+        assert!(
+            degenerate
+                .as_ref()
+                .is_none_or(|d| n_vertices <= d.n_positions()),
+            "a position for every vertex of the buckets"
+        );
         let writer = LoopWriter {
             origin: &mut loops.origin.spare_capacity_mut().as_chunks_mut().0[..n_edges],
             face: &mut loops.face.spare_capacity_mut().as_chunks_mut().0[..n_edges],
@@ -301,10 +309,11 @@ fn walk_corners(
         |f, corners| {
             let f32 = f as u32;
             walk.numbering.edges.prefetch_ahead_of(table, f);
-            walk.writer.check_area(table, f, corners);
             if !all_below(corners, n_vertices) {
                 return None;
             }
+            // SAFETY: the face's vertices were just checked.
+            unsafe { walk.writer.check_area(table, f, corners) };
             // SAFETY (every `walk.corner`): the face's vertices were just checked, and the walk
             // calls it once per corner of the table.
             match *corners {
@@ -457,10 +466,14 @@ struct LoopWriter<'a, 'd> {
 impl LoopWriter<'_, '_> {
     /// Checks the area of table face `f` (vertices `corners`) when asked to: before the face's
     /// topology, so that the position loads overlap the walk's bucket misses.
+    ///
+    /// # Safety
+    /// Every one of `corners` is below the vertex count (`self.vertex_halfedge.len()`).
     #[inline(always)]
-    fn check_area(&mut self, table: &FaceTable<'_>, f: usize, corners: &[u32]) {
+    unsafe fn check_area(&mut self, table: &FaceTable<'_>, f: usize, corners: &[u32]) {
         if let Some(degenerate) = self.degenerate.as_deref_mut() {
-            degenerate.check(table, f, corners);
+            // SAFETY: the vertex count is at most the positions' (`FaceLoops::walk` asserts it).
+            unsafe { degenerate.check_in_range(table, f, corners) };
         }
     }
 
