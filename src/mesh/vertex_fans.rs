@@ -28,12 +28,11 @@ impl Mesh {
         let interleaved = !self.fans_follow_vertices();
         let walked_in = |vertices: Range<usize>| {
             if interleaved {
-                let step = |h: u32| self.prev[h as usize] ^ 1;
                 let starts = self.fan_starts(vertices).map(|(_, h)| h);
                 return total_cycle_length_interleaved::<_, FANS_SIDE_BY_SIDE>(
                     starts,
                     self.halfedge_capacity(),
-                    step,
+                    |h| self.fan_step(h),
                 );
             }
             let mut walked = 0;
@@ -74,9 +73,15 @@ impl Mesh {
     /// being the number of half-edges of the fan walked from it (`h = twin(prev(h))` on the raw
     /// arrays, bounded by the half-edge count like the circulators).
     fn for_each_fan_size(&self, vertices: Range<usize>, visit: impl FnMut(usize, usize)) {
-        let step = |h: u32| Some(self.prev[h as usize] ^ 1);
+        let step = |h: u32| Some(self.fan_step(h));
         let starts = self.fan_starts(vertices);
         for_each_cycle_length(starts, self.halfedge_capacity(), step, visit);
+    }
+
+    /// The next half-edge of `h`'s fan, on the raw arrays: `twin(prev(h))`.
+    #[inline(always)]
+    fn fan_step(&self, h: u32) -> u32 {
+        self.prev[h as usize] ^ 1
     }
 
     /// The live vertices of `vertices` with a half-edge, and that half-edge: where their fans

@@ -5,7 +5,7 @@ use std::borrow::Cow;
 
 use super::edge_buckets::EdgeBuckets;
 use super::resolve::resolve;
-use super::table::{MAX_VERTICES, non_finite_vertices};
+use super::table::{MAX_VERTICES, non_finite_among, non_finite_vertices};
 use super::{BuildError, BuildPolicy, DegenerateFaces, Diagnostic, FaceList, FaceTable};
 use crate::large_arrays;
 
@@ -75,9 +75,7 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
                 // Every corner's coordinates were read by the area check: when all were finite,
                 // only isolated vertices can have others.
                 let non_finite_vertices = if areas.corners_finite() {
-                    (isolated_vertices.iter().copied())
-                        .filter(|&v| !is_finite(list.positions[v as usize]))
-                        .collect()
+                    non_finite_among(list.positions, &isolated_vertices)
                 } else {
                     non_finite_vertices(list.positions)
                 };
@@ -120,10 +118,6 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
         positions,
         diagnostic,
     })
-}
-
-fn is_finite(point: [f64; 3]) -> bool {
-    point.iter().all(|x| x.is_finite())
 }
 
 /// `walk(table, buckets, positions, degenerate)` with the area check of every face of `table`

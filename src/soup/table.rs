@@ -506,9 +506,6 @@ pub fn non_finite_vertices(positions: &[[f64; 3]]) -> Vec<u32> {
 /// into vector registers (the 1M-triangle torus's 500k vertices, warm, best of 10: 1.56 ms tested
 /// point by point, 1.35 ms so).
 fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
-    // All exponent bits set: infinite or NaN (a test without branches, unlike `is_finite`'s).
-    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
-    let non_finite = |x: &f64| x.to_bits() & EXPONENT == EXPONENT;
     // 1 for a non-finite coordinate, else 0: the masked exponent xor `EXPONENT` is 0 only then,
     // and only 0 wraps below zero (the others are below 2^63), setting the top bit.
     let non_finite_bit = |x: &f64| ((x.to_bits() & EXPONENT) ^ EXPONENT).wrapping_sub(1) >> 63;
@@ -521,8 +518,24 @@ fn non_finite_in(first: usize, positions: &[[f64; 3]]) -> Vec<u32> {
                 .fold(0, |any, x| any | non_finite_bit(x))
                 != 0
         },
-        |point| point.iter().any(non_finite),
+        is_non_finite,
     )
+}
+
+/// The vertices of `candidates` (ascending) with a NaN or infinite coordinate at `positions`:
+/// [`non_finite_vertices`] for builders that know only those few vertices can have one.
+pub(crate) fn non_finite_among(positions: &[[f64; 3]], candidates: &[u32]) -> Vec<u32> {
+    (candidates.iter().copied())
+        .filter(|&v| is_non_finite(&positions[v as usize]))
+        .collect()
+}
+
+/// All exponent bits set in a coordinate: infinite or NaN.
+const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+
+/// Has `point` a NaN or infinite coordinate? (A test without branches, unlike `is_finite`'s.)
+fn is_non_finite(point: &[f64; 3]) -> bool {
+    point.iter().any(|x| x.to_bits() & EXPONENT == EXPONENT)
 }
 
 #[cfg(test)]
