@@ -19,12 +19,28 @@ fn panic_message(payload: &(dyn Any + Send)) -> String {
     format!("internal error, please report it: panic caught at the C boundary: {what}")
 }
 
+/// Drops a caught panic payload without letting a second panic out: a payload whose destructor
+/// panics would otherwise unwind from here into C, outside every `catch_unwind`. Such a payload
+/// is leaked instead.
+pub(crate) fn drop_payload(payload: Box<dyn Any + Send>) {
+    if let Err(second) = catch_unwind(AssertUnwindSafe(move || drop(payload))) {
+        std::mem::forget(second);
+    }
+}
+
+/// Records a caught panic as `HW_ERR_PANIC` with its message.
+fn record_panic(payload: Box<dyn Any + Send>) -> hw_status {
+    let status = record(FfiError::new(HW_ERR_PANIC, panic_message(&*payload)));
+    drop_payload(payload);
+    status
+}
+
 /// Runs the body of a status-returning exported function.
 pub(crate) fn guard(body: impl FnOnce() -> Result<(), FfiError>) -> hw_status {
     match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(())) => HW_OK,
         Ok(Err(error)) => record(error),
-        Err(payload) => record(FfiError::new(HW_ERR_PANIC, panic_message(&*payload))),
+        Err(payload) => record_panic(payload),
     }
 }
 
@@ -38,7 +54,7 @@ pub(crate) fn guard_value<T>(fallback: T, body: impl FnOnce() -> Result<T, FfiEr
             fallback
         }
         Err(payload) => {
-            record(FfiError::new(HW_ERR_PANIC, panic_message(&*payload)));
+            record_panic(payload);
             fallback
         }
     }
@@ -295,4 +311,28 @@ pub(crate) unsafe fn next_element<T>(
         unsafe { out.write(element) };
         Ok(true)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A panic payload whose destructor panics in turn.
+    struct PanicsOnDrop;
+
+    impl Drop for PanicsOnDrop {
+        fn drop(&mut self) {
+            panic!("payload destructor");
+        }
+    }
+
+    #[test]
+    fn a_payload_that_panics_on_drop_stays_inside_the_guard() {
+        // Before: the payload was dropped after `catch_unwind` returned, and its panic left the
+        // guard (in an `extern "C"` function: an abort).
+        let status = guard(|| std::panic::panic_any(PanicsOnDrop));
+        assert_eq!(status, HW_ERR_PANIC);
+        let value = guard_value(7u32, || std::panic::panic_any(PanicsOnDrop));
+        assert_eq!(value, 7);
+    }
 }
