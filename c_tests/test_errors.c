@@ -1,5 +1,8 @@
 /* The error model: status text, the thread-local last-error message and its buffer protocol,
  * and the version macros against Cargo.toml's version (passed in by CMake). */
+#define _POSIX_C_SOURCE 200809L /* pthread keys under -std=c11 */
+
+#include <pthread.h>
 #include <stdlib.h>
 
 #include "check.h"
@@ -43,6 +46,45 @@ static void last_error_buffer_protocol(void) {
   }
 }
 
+/* A failing call from a thread-local destructor that runs after halfwing's own thread-local
+ * storage is gone (glibc runs pthread key destructors after the C++/Rust `thread_local` ones)
+ * still returns its status instead of aborting the process. */
+static pthread_key_t late_key;
+static hw_status late_status = HW_OK;
+static size_t late_count = 99;
+static hw_status late_message_status = HW_ERR_PANIC;
+static size_t late_needed = 0;
+
+static void late_destructor(void *unused) {
+  char message[64];
+  (void)unused;
+  late_status = hw_mesh_check(NULL);
+  late_count = hw_mesh_n_vertices(NULL);
+  late_message_status = hw_last_error_message(message, sizeof message, &late_needed);
+}
+
+static void *late_thread(void *unused) {
+  (void)unused;
+  /* A failure first, so that the last-error storage exists on this thread. */
+  CHECK(hw_mesh_n_faces(NULL) == 0);
+  pthread_setspecific(late_key, &late_key);
+  return NULL;
+}
+
+static void failures_in_thread_local_destructors(void) {
+  pthread_t thread;
+  CHECK(pthread_key_create(&late_key, late_destructor) == 0);
+  CHECK(pthread_create(&thread, NULL, late_thread, NULL) == 0);
+  CHECK(pthread_join(thread, NULL) == 0);
+  CHECK(late_status == HW_ERR_NULL_ARGUMENT);
+  CHECK(late_count == 0);
+  /* The message could not be kept; it reads empty (or, if the storage was still there, names
+   * the argument). */
+  CHECK(late_message_status == HW_OK);
+  CHECK(late_needed >= 1);
+  pthread_key_delete(late_key);
+}
+
 static void version_matches_cargo_toml(void) {
   CHECK(HW_VERSION_MAJOR == EXPECTED_VERSION_MAJOR);
   CHECK(HW_VERSION_MINOR == EXPECTED_VERSION_MINOR);
@@ -56,6 +98,7 @@ static void version_matches_cargo_toml(void) {
 int main(void) {
   status_text();
   last_error_buffer_protocol();
+  failures_in_thread_local_destructors();
   version_matches_cargo_toml();
   return check_summary("test_errors");
 }

@@ -1432,7 +1432,9 @@ void hw_index_maps_free(hw_index_maps *maps);
  * `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
  * included — also when the buffer is too small, so a caller can allocate and call again. The
  * message is empty (`needed` = 1) when no call has failed on this thread yet. Successful calls
- * do not clear it, and neither does this function, so it can be read as often as wanted.
+ * do not clear it, and neither does this function, so it can be read as often as wanted. Calls
+ * made from a thread-local destructor after this thread's storage is torn down still return
+ * their status, but record no message (it reads empty).
  *
  * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
  * needed (nothing is written to `buf` then).

@@ -3,7 +3,7 @@
 use std::cell::RefCell;
 use std::ffi::c_char;
 
-use super::boundary::copy_text;
+use super::boundary::{copy_text, drop_payload};
 use super::status::*;
 
 /// A failure inside an exported function: the status to return and the message to record.
@@ -39,9 +39,15 @@ thread_local! {
 }
 
 /// Records `error` as this thread's last error and returns its status.
+///
+/// Runs outside `catch_unwind` (it reports what the guard caught), so it must not panic: a call
+/// made from a thread-local destructor (a pthread key's, a C++ `thread_local`'s) after this
+/// thread's own storage is gone still returns its status, and only the message is lost.
 pub(crate) fn record(error: FfiError) -> hw_status {
-    LAST_ERROR.with(|last| {
-        let mut last = last.borrow_mut();
+    let _ = LAST_ERROR.try_with(|last| {
+        let Ok(mut last) = last.try_borrow_mut() else {
+            return;
+        };
         last.clear();
         // An interior NUL would cut the C string short: show it instead.
         last.extend(
@@ -59,7 +65,9 @@ pub(crate) fn record(error: FfiError) -> hw_status {
 /// `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
 /// included — also when the buffer is too small, so a caller can allocate and call again. The
 /// message is empty (`needed` = 1) when no call has failed on this thread yet. Successful calls
-/// do not clear it, and neither does this function, so it can be read as often as wanted.
+/// do not clear it, and neither does this function, so it can be read as often as wanted. Calls
+/// made from a thread-local destructor after this thread's storage is torn down still return
+/// their status, but record no message (it reads empty).
 ///
 /// Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
 /// needed (nothing is written to `buf` then).
@@ -76,9 +84,15 @@ pub unsafe extern "C" fn hw_last_error_message(
     // Not through `guard`: reading the last error must not overwrite it.
     let result = std::panic::catch_unwind(|| {
         // SAFETY: the caller's guarantees are those of `copy_text`.
+        let copy = |text: &str| unsafe { copy_text(text, buf, len, needed) };
+        // Storage already torn down (see `record`): nothing was recorded, the message is empty.
         LAST_ERROR
-            .with(|last| unsafe { copy_text(&last.borrow(), buf, len, needed) })
+            .try_with(|last| copy(&last.borrow()))
+            .unwrap_or_else(|_| copy(""))
             .map_or_else(|error| error.status, |()| HW_OK)
     });
-    result.unwrap_or(HW_ERR_PANIC)
+    result.unwrap_or_else(|payload| {
+        drop_payload(payload);
+        HW_ERR_PANIC
+    })
 }
