@@ -85,11 +85,25 @@ static void corner_normals_and_uvs(void) {
                "element slots");
   normals[5] = NAN;
   CHECK_STATUS(hw_mesh_corner_normals_set(mesh, normals, n), HW_ERR_INVALID_INPUT, "finite");
-  CHECK_STATUS(hw_mesh_corner_normals_set(mesh, NULL, n), HW_ERR_NULL_ARGUMENT, "data");
+  /* Messages name the arguments as the C signatures spell them. */
+  CHECK_STATUS(hw_mesh_corner_normals_set(mesh, NULL, n), HW_ERR_NULL_ARGUMENT, "`xyz`");
+  CHECK_STATUS(hw_mesh_corner_uvs_set(mesh, NULL, n), HW_ERR_NULL_ARGUMENT, "`uv`");
   CHECK_STATUS(hw_mesh_corner_normals_set(NULL, normals, n), HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_corner_uvs_view(NULL, &view, &len), HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_corner_uvs_view(mesh, NULL, &len), HW_ERR_NULL_ARGUMENT, "out_data");
-  CHECK_STATUS(hw_mesh_corner_uvs_view(mesh, &view, NULL), HW_ERR_NULL_ARGUMENT, "out_n");
+  CHECK_STATUS(hw_mesh_corner_uvs_set(NULL, uvs, n), HW_ERR_NULL_ARGUMENT, "mesh");
+  {
+    const double *const kept_view = view;
+    const size_t kept_len = len;
+    CHECK_STATUS(hw_mesh_corner_uvs_view(NULL, &view, &len), HW_ERR_NULL_ARGUMENT, "mesh");
+    CHECK_STATUS(hw_mesh_corner_uvs_view(mesh, NULL, &len), HW_ERR_NULL_ARGUMENT, "`out_uv`");
+    CHECK_STATUS(hw_mesh_corner_uvs_view(mesh, &view, NULL), HW_ERR_NULL_ARGUMENT,
+                 "`out_n_halfedges`");
+    CHECK_STATUS(hw_mesh_corner_normals_view(NULL, &view, &len), HW_ERR_NULL_ARGUMENT, "mesh");
+    CHECK_STATUS(hw_mesh_corner_normals_view(mesh, NULL, &len), HW_ERR_NULL_ARGUMENT,
+                 "`out_xyz`");
+    CHECK_STATUS(hw_mesh_corner_normals_view(mesh, &view, NULL), HW_ERR_NULL_ARGUMENT,
+                 "`out_n_halfedges`");
+    CHECK(view == kept_view && len == kept_len); /* outputs untouched on failure */
+  }
   /* Corner normals are the half-edge attribute "hw:corner_normal": writable in place. */
   {
     void *data = NULL;

@@ -295,7 +295,8 @@ pub unsafe extern "C" fn hw_mesh_attribute_name(
     })
 }
 
-/// A view of a corner attribute as `N` doubles per half-edge slot.
+/// A view of a corner attribute as `N` doubles per half-edge slot. `data_name` is the pointer
+/// output's name in the C signature (`out_xyz`, `out_uv`), for the message.
 ///
 /// # Safety
 /// As for hw_mesh_corner_normals_view().
@@ -304,10 +305,11 @@ unsafe fn corner_view<const N: usize>(
     values: fn(&Mesh) -> Option<&[[f64; N]]>,
     name: &str,
     out_data: *mut *const f64,
+    data_name: &str,
     out_n_halfedges: *mut usize,
 ) -> hw_status {
     guard(|| {
-        let out_data = Out::new(out_data, "out_data")?;
+        let out_data = Out::new(out_data, data_name)?;
         let out_n = Out::new(out_n_halfedges, "out_n_halfedges")?;
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
@@ -327,7 +329,8 @@ unsafe fn corner_view<const N: usize>(
     })
 }
 
-/// Sets a corner attribute from `N` doubles per half-edge slot.
+/// Sets a corner attribute from `N` doubles per half-edge slot. `data_name` is the array's name
+/// in the C signature (`xyz`, `uv`), for the message.
 ///
 /// # Safety
 /// As for hw_mesh_corner_normals_set().
@@ -335,13 +338,14 @@ unsafe fn corner_set<const N: usize>(
     mesh: *mut hw_mesh,
     set: fn(&mut Mesh, &[[f64; N]]) -> Result<(), AttributeError>,
     data: *const f64,
+    data_name: &str,
     n_halfedges: usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
         // SAFETY: forwarded from the caller: `n_halfedges` vectors of N doubles.
-        let values = unsafe { arg_slice(data.cast::<[f64; N]>(), n_halfedges, "data") }?;
+        let values = unsafe { arg_slice(data.cast::<[f64; N]>(), n_halfedges, data_name) }?;
         if let Some(bad) = values.iter().position(|v| v.iter().any(|x| !x.is_finite())) {
             return Err(FfiError::invalid_input(format!(
                 "half-edge {bad}: value {:?} is not finite",
@@ -373,6 +377,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_view(
             Mesh::corner_normals,
             "corner normals",
             out_xyz,
+            "out_xyz",
             out_n_halfedges,
         )
     }
@@ -392,7 +397,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_set(
     n_halfedges: usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { corner_set(mesh, Mesh::set_corner_normals, xyz, n_halfedges) }
+    unsafe { corner_set(mesh, Mesh::set_corner_normals, xyz, "xyz", n_halfedges) }
 }
 
 /// A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
@@ -413,6 +418,7 @@ pub unsafe extern "C" fn hw_mesh_corner_uvs_view(
             Mesh::corner_uvs,
             "corner texture coordinates",
             out_uv,
+            "out_uv",
             out_n_halfedges,
         )
     }
@@ -431,5 +437,5 @@ pub unsafe extern "C" fn hw_mesh_corner_uvs_set(
     n_halfedges: usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { corner_set(mesh, Mesh::set_corner_uvs, uv, n_halfedges) }
+    unsafe { corner_set(mesh, Mesh::set_corner_uvs, uv, "uv", n_halfedges) }
 }
