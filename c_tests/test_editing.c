@@ -177,6 +177,108 @@ static void collapse(void) {
   hw_mesh_free(mesh);
 }
 
+/* Every id-taking call on elements that are deleted (marked, not yet compacted) refuses them
+ * with HW_ERR_INVALID_HANDLE naming the deletion, leaves its outputs and the mesh untouched; a
+ * NULL output of an edit is refused before the mesh changes. */
+static void deleted_elements_and_null_outputs(void) {
+  hw_mesh *mesh = cube();
+  const hw_vertex v0 = {0}, live_v = {6};
+  const hw_face f0 = {0}, top = {1}; /* the top face keeps clear of v0 */
+  const double point[3] = {0.5, 0.5, 0.5};
+  hw_halfedge h, h_live;
+  hw_edge e;
+  hw_circulator c, c_before;
+  hw_vertex out_v = {4242};
+  hw_face out_f = {4242};
+  hw_halfedge out_h = {4242};
+  double xyz[3] = {7, 7, 7};
+  size_t n_out = 4242, n_v, n_f, n_e;
+  h = hw_mesh_vertex_halfedge(mesh, v0);
+  e.idx = h.idx >> 1;
+  h_live = hw_mesh_face_halfedge(mesh, top);
+  CHECK(hw_mesh_delete_vertex(mesh, v0) == HW_OK);
+  n_v = hw_mesh_n_vertices(mesh);
+  n_f = hw_mesh_n_faces(mesh);
+  n_e = hw_mesh_n_edges(mesh);
+  CHECK(n_v == 7 && n_f == 3);
+
+  /* Navigation: an invalid id, false or 0, and the message. */
+  CHECK(hw_mesh_he_origin(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_target(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_next(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_prev(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_twin(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_face(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(hw_mesh_he_edge(mesh, h).idx == HW_INVALID_INDEX && last_error_contains("deleted"));
+  CHECK(!hw_mesh_he_is_boundary(mesh, h) && last_error_contains("deleted"));
+  CHECK(hw_mesh_edge_halfedge(mesh, e, 0).idx == HW_INVALID_INDEX &&
+        last_error_contains("deleted"));
+  CHECK(!hw_mesh_edge_is_boundary(mesh, e) && last_error_contains("deleted"));
+  CHECK(hw_mesh_vertex_halfedge(mesh, v0).idx == HW_INVALID_INDEX &&
+        last_error_contains("vertex 0 is deleted"));
+  CHECK(!hw_mesh_vertex_is_boundary(mesh, v0) && last_error_contains("deleted"));
+  CHECK(hw_mesh_vertex_valence(mesh, v0) == 0 && last_error_contains("deleted"));
+  CHECK(hw_mesh_face_degree(mesh, f0) == 0 && last_error_contains("face 0 is deleted"));
+  CHECK(!hw_mesh_face_is_boundary(mesh, f0) && last_error_contains("deleted"));
+
+  /* Status calls: refused, outputs untouched. */
+  CHECK_STATUS(hw_mesh_vertex_position(mesh, v0, xyz), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK(xyz[0] == 7 && xyz[1] == 7 && xyz[2] == 7);
+  CHECK_STATUS(hw_mesh_set_vertex_position(mesh, v0, point), HW_ERR_INVALID_HANDLE, "deleted");
+  memset(&c, 0xA5, sizeof c);
+  c_before = c;
+  CHECK_STATUS(hw_circ_around_vertex(mesh, v0, HW_CIRC_VERTICES, &c), HW_ERR_INVALID_HANDLE,
+               "deleted");
+  CHECK_STATUS(hw_circ_around_face(mesh, f0, HW_CIRC_VERTICES, &c), HW_ERR_INVALID_HANDLE,
+               "deleted");
+  CHECK_STATUS(hw_circ_along_loop(mesh, h, &c), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK(memcmp(&c, &c_before, sizeof c) == 0);
+
+  /* Edits: refused, outputs and mesh untouched. */
+  CHECK_STATUS(hw_mesh_split_edge(mesh, e, point, &out_v), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_flip_edge(mesh, e), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_collapse_halfedge(mesh, h, &out_v), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_split_face(mesh, h, h_live, &out_h), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_triangulate_face(mesh, f0, &n_out), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_delete_edge(mesh, e, true), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_delete_face(mesh, f0, true), HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_mesh_delete_vertex(mesh, v0), HW_ERR_INVALID_HANDLE, "deleted");
+  {
+    const hw_vertex corners[3] = {{0}, {1}, {2}};
+    CHECK_STATUS(hw_mesh_add_face(mesh, corners, 3, &out_f), HW_ERR_INVALID_HANDLE,
+                 "vertex 0 is deleted");
+  }
+  CHECK(out_v.idx == 4242 && out_f.idx == 4242 && out_h.idx == 4242 && n_out == 4242);
+
+  /* NULL outputs (and inputs) of edits, on live elements: refused before anything changes. */
+  CHECK_STATUS(hw_mesh_add_vertex(mesh, point, NULL), HW_ERR_NULL_ARGUMENT, "out_vertex");
+  CHECK_STATUS(hw_mesh_add_vertex(mesh, NULL, &out_v), HW_ERR_NULL_ARGUMENT, "xyz");
+  CHECK_STATUS(hw_mesh_add_vertex(NULL, point, &out_v), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_split_edge(mesh, hw_mesh_he_edge(mesh, h_live), NULL, &out_v),
+               HW_ERR_NULL_ARGUMENT, "xyz");
+  CHECK_STATUS(hw_mesh_collapse_halfedge(mesh, h_live, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_vertex");
+  out_h = hw_mesh_he_next(mesh, hw_mesh_he_next(mesh, h_live));
+  CHECK_STATUS(hw_mesh_split_face(mesh, h_live, out_h, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_halfedge");
+  out_h.idx = 4242;
+  {
+    const hw_vertex corners[3] = {{4}, {5}, {6}};
+    CHECK_STATUS(hw_mesh_add_face(mesh, corners, 3, NULL), HW_ERR_NULL_ARGUMENT, "out_face");
+  }
+  CHECK_STATUS(hw_mesh_set_vertex_position(mesh, live_v, NULL), HW_ERR_NULL_ARGUMENT, "xyz");
+  CHECK_STATUS(hw_mesh_set_vertex_position(NULL, live_v, point), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_vertex_position(mesh, live_v, NULL), HW_ERR_NULL_ARGUMENT, "out_xyz");
+  CHECK_STATUS(hw_mesh_triangulate_face(NULL, f0, &n_out), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_garbage_collect(NULL, NULL), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK(out_v.idx == 4242 && out_f.idx == 4242 && out_h.idx == 4242 && n_out == 4242);
+  CHECK(hw_mesh_n_vertices(mesh) == n_v && hw_mesh_n_faces(mesh) == n_f &&
+        hw_mesh_n_edges(mesh) == n_e);
+  CHECK(hw_mesh_vertex_position(mesh, live_v, xyz) == HW_OK && xyz[0] == 1 && xyz[2] == 1);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  hw_mesh_free(mesh);
+}
+
 static void thread_count(void) {
   hw_mesh *mesh = NULL;
   CHECK(hw_set_thread_count(1) == HW_OK);
@@ -192,6 +294,7 @@ int main(void) {
   normals();
   editing();
   collapse();
+  deleted_elements_and_null_outputs();
   thread_count();
   return check_summary("test_editing");
 }
