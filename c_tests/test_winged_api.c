@@ -488,6 +488,59 @@ static void null_and_freed_handles(void) {
   CHECK(last_error_contains("already freed"));
 }
 
+/* Ids killed by the Euler operators (deleted, not yet collected) are refused like ids out of
+ * range: HW_ERR_INVALID_HANDLE (or an invalid id / false), outputs untouched. */
+static void killed_ids(void) {
+  hw_winged *w = hw_winged_new();
+  const double p0[3] = {0, 0, 0}, p1[3] = {1, 0, 0};
+  hw_wvertex v0, v1, out_v = {4242};
+  hw_wface f0, out_f = {4242};
+  hw_wedge e1, out_e = {4242};
+  hw_wedge_record r;
+  hw_wcirculator c, c_before;
+  double xyz[3] = {7, 7, 7};
+  CHECK(w != NULL);
+  CHECK(hw_winged_mvfs(w, p0, &v0, &f0) == HW_OK);
+  CHECK(hw_winged_mev(w, f0, v0, p1, &e1, &v1) == HW_OK);
+  CHECK(hw_winged_kev(w, e1, v1) == HW_OK); /* v1 and e1 are dead, their slots remain */
+  CHECK(hw_winged_vertex_capacity(w) == 2 && hw_winged_edge_capacity(w) == 1);
+  CHECK(!hw_winged_is_vertex(w, v1) && !hw_winged_is_edge(w, e1));
+  memset(&r, 0xA5, sizeof r);
+  memset(&c, 0xA5, sizeof c);
+  c_before = c;
+  CHECK_STATUS(hw_winged_edge(w, e1, &r), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK(r.start.idx == 0xA5A5A5A5u);
+  CHECK_STATUS(hw_winged_position(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_vertex_normal(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK(xyz[0] == 7 && xyz[1] == 7 && xyz[2] == 7);
+  CHECK_STATUS(hw_winged_set_position(w, v1, p0), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK(hw_winged_vertex_edge(w, v1).idx == HW_INVALID_INDEX);
+  CHECK(last_error_contains("does not exist"));
+  CHECK_STATUS(hw_wcirc_around_vertex(w, v1, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
+               "does not exist");
+  CHECK_STATUS(hw_winged_kev(w, e1, v1), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_kef(w, e1, f0), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_mev(w, f0, v1, p1, &out_e, &out_v), HW_ERR_INVALID_HANDLE,
+               "does not exist");
+  CHECK_STATUS(hw_winged_mef(w, f0, v0, v1, &out_e, &out_f), HW_ERR_INVALID_HANDLE,
+               "does not exist");
+  /* The point face and its vertex go too: the face is dead. */
+  CHECK(hw_winged_kvfs(w, f0) == HW_OK);
+  CHECK(!hw_winged_is_face(w, f0) && hw_winged_n_faces(w) == 0);
+  CHECK_STATUS(hw_winged_kvfs(w, f0), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_face_normal(w, f0, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK(hw_winged_face_edge(w, f0).idx == HW_INVALID_INDEX);
+  CHECK(last_error_contains("does not exist"));
+  CHECK_STATUS(hw_wcirc_around_face(w, f0, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
+               "does not exist");
+  CHECK_STATUS(hw_winged_mev(w, f0, v0, p1, &out_e, &out_v), HW_ERR_INVALID_HANDLE,
+               "does not exist");
+  CHECK(memcmp(&c, &c_before, sizeof c) == 0);
+  CHECK(xyz[0] == 7 && out_v.idx == 4242 && out_f.idx == 4242 && out_e.idx == 4242);
+  CHECK(hw_winged_check(w) == HW_OK);
+  hw_winged_free(w);
+}
+
 int main(void) {
   seed_cube_tables();
   records_and_views();
@@ -497,5 +550,6 @@ int main(void) {
   bad_face_lists();
   euler_cube();
   null_and_freed_handles();
+  killed_ids();
   return check_summary("test_winged_api");
 }
