@@ -302,6 +302,30 @@ static void bad_files(void) {
   CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_PARSE, "line 12");
   CHECK(soup == NULL && mesh == NULL);
   hw_soup_free(NULL);
+
+  /* NULL for each pointer of the file calls; a bad policy; a soup freed twice. */
+  snprintf(path, sizeof path, "%s/meshes/closed/lapy_torus.off", HALFWING_DATA_DIR);
+  CHECK_STATUS(hw_soup_read(path, NULL), HW_ERR_NULL_ARGUMENT, "out_soup");
+  CHECK_STATUS(hw_mesh_read(NULL, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_NULL_ARGUMENT, "path");
+  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, NULL, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_mesh");
+  CHECK_STATUS(hw_mesh_read(path, 7u, &mesh, NULL), HW_ERR_INVALID_INPUT, "policy 7");
+  CHECK(mesh == NULL);
+  CHECK(hw_soup_read(path, &soup) == HW_OK);
+  {
+    const double *xyz = NULL;
+    size_t n_vertices = 4242, n_faces = 0;
+    CHECK_STATUS(hw_soup_view(NULL, &xyz, &n_vertices, NULL, NULL, NULL, NULL),
+                 HW_ERR_NULL_ARGUMENT, "soup");
+    CHECK(xyz == NULL && n_vertices == 4242);
+    /* Every output is optional; a count alone is given without its array. */
+    CHECK(hw_soup_view(soup, NULL, NULL, NULL, NULL, NULL, NULL) == HW_OK);
+    CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, &n_faces, NULL, NULL) == HW_OK);
+    CHECK(n_vertices > 0 && n_faces > 0);
+  }
+  hw_soup_free(soup);
+  hw_soup_free(soup);
+  CHECK(last_error_contains("already freed"));
 }
 
 int main(void) {
