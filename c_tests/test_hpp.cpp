@@ -79,6 +79,41 @@ static void circulation_and_normals() {
   }
 }
 
+/// hw::mesh::visit: every live element once, a callable that stops the visit by returning false,
+/// and an exception from the callable rethrown to the caller after the visit stopped.
+static void visits() {
+  const std::string path = std::string(HALFWING_DATA_DIR) + "/meshes/closed/lapy_icosahedron.off";
+  hw::mesh m = hw::mesh::read(path);
+  std::size_t valence_sum = 0;
+  CHECK(m.visit(HW_ELEMENT_VERTEX, [&](uint32_t v) { valence_sum += m.valence(hw_vertex{v}); }) ==
+        m.n_vertices());
+  CHECK(valence_sum == 2 * m.n_edges());
+  std::vector<uint32_t> faces;
+  CHECK(m.visit(HW_ELEMENT_FACE, [&](uint32_t f) {
+    faces.push_back(f);
+    return faces.size() < 4;
+  }) == 4);
+  CHECK((faces == std::vector<uint32_t>{0, 1, 2, 3}));
+  std::size_t calls = 0;
+  bool thrown = false;
+  try {
+    m.visit(HW_ELEMENT_EDGE, [&](uint32_t e) {
+      ++calls;
+      if (e == 2) throw std::runtime_error("edge 2");
+    });
+  } catch (const std::runtime_error& e) {
+    thrown = std::string(e.what()) == "edge 2";
+  }
+  CHECK(thrown && calls == 3);
+  bool refused = false;
+  try {
+    m.visit(99, [](uint32_t) {});
+  } catch (const hw::error& e) {
+    refused = e.status() == HW_ERR_INVALID_INPUT;
+  }
+  CHECK(refused);
+}
+
 static void editing() {
   hw::mesh m = hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {3, 3},
                                       {0, 1, 2, 0, 2, 3});
@@ -259,6 +294,7 @@ int main() {
   exceptions_carry_status_and_message();
   ownership_moves();
   circulation_and_normals();
+  visits();
   editing();
   faces_and_attributes();
   winged_kernel();

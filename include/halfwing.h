@@ -23,6 +23,13 @@
  *
  * Element ids (`hw_vertex`, `hw_halfedge`, `hw_edge`, `hw_face`) are small structs passed by
  * value, so the compiler keeps their kinds apart; `idx == HW_INVALID_INDEX` means none.
+ *
+ * Many ids at once, four ways: copies into a caller's buffer (the size needed is always
+ * reported, so a caller can ask, allocate and call again); zero-copy views of the internal arrays
+ * (hw_mesh_view(), valid until the next mutating call); stack circulators (`hw_circ_*`, for the
+ * course notes' `do { ... } while (h != start);` loops); and callbacks (hw_mesh_visit(),
+ * hw_circ_visit(): a function and a `void *userdata`; the function stops a visit by returning
+ * false and must not throw or `longjmp` through the call).
  */
 
 #ifndef HALFWING_H
@@ -294,6 +301,12 @@ typedef uint32_t hw_caps;
  * Which internal array hw_mesh_view() shows.
  */
 typedef uint32_t hw_mesh_array;
+
+/**
+ * A caller's function called once per id by the `_visit` calls, with the `userdata` given to
+ * them. Returns `true` to go on, `false` to stop the visit there.
+ */
+typedef bool (*hw_visit_fn)(uint32_t idx, void *userdata);
 
 /**
  * The dimension of the site set, as hw_voronoi_dimension() reports it.
@@ -2134,6 +2147,43 @@ hw_status hw_mesh_view(const hw_mesh *mesh,
 hw_status hw_mesh_view_positions(const hw_mesh *mesh,
                                  const double **out_xyz,
                                  size_t *out_n_vertices);
+
+/**
+ * Calls `visit(id, userdata)` for every live (not deleted) element of `kind`
+ * (::HW_ELEMENT_VERTEX, ::HW_ELEMENT_HALFEDGE, ::HW_ELEMENT_EDGE or ::HW_ELEMENT_FACE), in
+ * increasing id order, until `visit` returns `false`. `*out_visited`, when `out_visited` is not
+ * NULL, receives the number of calls made. `visit` may read the mesh but must not free it, and
+ * must not throw or `longjmp` through this call. An empty mesh makes no call.
+ *
+ * Returns `HW_ERR_NULL_ARGUMENT` for a NULL mesh or `visit`, `HW_ERR_INVALID_INPUT` for an
+ * unknown kind (no call is made then).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_visited` NULL or writable.
+ */
+hw_status hw_mesh_visit(const hw_mesh *mesh,
+                        hw_element_kind kind,
+                        hw_visit_fn visit,
+                        void *userdata,
+                        size_t *out_visited);
+
+/**
+ * Calls `visit(id, userdata)` for each element `circulator` yields (ids of the kind it was
+ * started with: half-edges, vertices, edges or faces), until the walk ends or `visit` returns
+ * `false`; the circulator is left where the visit stopped. `*out_visited`, when `out_visited` is
+ * not NULL, receives the number of calls made. `visit` may read the mesh but must not modify or
+ * free it, and must not throw or `longjmp` through this call.
+ *
+ * Returns `HW_ERR_NULL_ARGUMENT` for a NULL circulator or `visit`.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out_visited` NULL or
+ * writable.
+ */
+hw_status hw_circ_visit(hw_circulator *circulator,
+                        hw_visit_fn visit,
+                        void *userdata,
+                        size_t *out_visited);
 
 /**
  * Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`

@@ -11,8 +11,9 @@
 
 #include <array>
 #include <cstddef>
-#include <iterator>
 #include <cstdint>
+#include <exception>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -231,6 +232,29 @@ T* build_indexed(Builder build, const std::vector<double>& positions,
   return raw;
 }
 
+/// Adapts a C++ callable to hw_visit_fn. An exception thrown by the callable must not unwind
+/// through the library: it is caught here, stops the visit, and is rethrown by the caller.
+template <class F>
+struct visitor {
+  F& f;
+  std::exception_ptr thrown;
+
+  static bool call(uint32_t idx, void* self) noexcept {
+    visitor& v = *static_cast<visitor*>(self);
+    try {
+      if constexpr (std::is_same_v<std::invoke_result_t<F&, uint32_t>, bool>) {
+        return v.f(idx);
+      } else {
+        v.f(idx);
+        return true;
+      }
+    } catch (...) {
+      v.thrown = std::current_exception();
+      return false;
+    }
+  }
+};
+
 }  // namespace detail
 
 /// A half-edge polygon mesh (owns an hw_mesh). Const methods may run concurrently; the others
@@ -308,6 +332,19 @@ class mesh {
     hw_circulator c;
     check(hw_circ_along_loop(get(), h, &c));
     return halfedge_circulation(c);
+  }
+
+  /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` (HW_ELEMENT_VERTEX,
+  /// HW_ELEMENT_HALFEDGE, HW_ELEMENT_EDGE, HW_ELEMENT_FACE) in increasing id order; an `f` that
+  /// returns bool stops the visit by returning false. Returns the number of calls. An exception
+  /// thrown by `f` ends the visit and is rethrown here. See hw_mesh_visit().
+  template <class F>
+  std::size_t visit(hw_element_kind kind, F&& f) const {
+    detail::visitor<std::remove_reference_t<F>> v{f, nullptr};
+    std::size_t visited = 0;
+    check(hw_mesh_visit(get(), kind, &decltype(v)::call, &v, &visited));
+    if (v.thrown) std::rethrow_exception(v.thrown);
+    return visited;
   }
 
   // Topology.

@@ -163,7 +163,7 @@ pub unsafe extern "C" fn hw_circ_along_loop(
 ///
 /// # Safety
 /// `circulator` must be NULL or point to a circulator whose mesh is still live.
-unsafe fn advance(
+pub(crate) unsafe fn advance(
     circulator: *mut hw_circulator,
     kind: hw_circulator_kind,
 ) -> Result<Option<u32>, FfiError> {

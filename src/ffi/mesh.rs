@@ -5,9 +5,7 @@ use crate::soup::{BuildError, BuildPolicy};
 
 use super::boundary::{arg_ref, guard_value, guard_void};
 use super::diagnostic::{give_built, hw_diagnostic};
-use super::elements::{
-    HW_ELEMENT_EDGE, HW_ELEMENT_FACE, HW_ELEMENT_HALFEDGE, HW_ELEMENT_VERTEX, hw_element_kind,
-};
+use super::elements::{element_kind, hw_element_kind};
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
@@ -196,15 +194,5 @@ pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
 /// `mesh` must be NULL or a live mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_slot_count(mesh: *const hw_mesh, kind: hw_element_kind) -> usize {
-    unsafe {
-        query(mesh, 0, |mesh| match kind {
-            HW_ELEMENT_VERTEX => Ok(mesh.vertex_capacity()),
-            HW_ELEMENT_HALFEDGE => Ok(mesh.halfedge_capacity()),
-            HW_ELEMENT_EDGE => Ok(mesh.edge_capacity()),
-            HW_ELEMENT_FACE => Ok(mesh.face_capacity()),
-            other => Err(FfiError::invalid_input(format!(
-                "unknown element kind {other}"
-            ))),
-        })
-    }
+    unsafe { query(mesh, 0, |mesh| Ok(mesh.capacity_of(element_kind(kind)?))) }
 }

@@ -1,5 +1,6 @@
 //! The half-edge mesh's struct-of-arrays storage.
 
+use super::ElementKind;
 use super::attributes::Attributes;
 use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 
@@ -113,6 +114,16 @@ impl Mesh {
     /// `true` when face `f` is marked deleted.
     pub fn is_face_deleted(&self, f: FaceId) -> bool {
         self.deleted.faces.get(f.idx()).copied().unwrap_or(false)
+    }
+
+    /// `true` when element `idx` of `kind` is marked deleted (out-of-range ids are not).
+    pub fn is_deleted_of(&self, kind: ElementKind, idx: u32) -> bool {
+        match kind {
+            ElementKind::Vertex => self.is_vertex_deleted(VertexId(idx)),
+            ElementKind::Halfedge => self.is_halfedge_deleted(HalfedgeId(idx)),
+            ElementKind::Edge => self.is_edge_deleted(EdgeId(idx)),
+            ElementKind::Face => self.is_face_deleted(FaceId(idx)),
+        }
     }
 
     /// `true` when some element is marked deleted (so the arrays have holes).
