@@ -150,6 +150,80 @@ fn collapsing_an_interior_edge_of_a_triangle_grid() {
     assert_eq!(euler(&mesh), 1);
 }
 
+/// Builds `indices` (triangles) over `n_vertices` vertices on a circle, expecting the builder to
+/// report vertex 0 pinched: its fans are kept apart, each a cycle of its own.
+fn pinched_at_vertex_0(n_vertices: u32, indices: &[u32]) -> Mesh {
+    let positions: Vec<[f64; 3]> = (0..n_vertices)
+        .map(|i| {
+            let angle = f64::from(i) * 0.7;
+            [angle.cos(), angle.sin(), f64::from(i % 2)]
+        })
+        .collect();
+    let (mesh, diagnostic) = Mesh::from_face_list(
+        &FaceList::triangles(&positions, indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap();
+    assert_eq!(diagnostic.non_manifold_vertices, [0]);
+    mesh
+}
+
+/// Two triangles touching at vertex 0 only (a bow tie).
+fn bow_tie() -> Mesh {
+    pinched_at_vertex_0(5, &[0, 1, 2, 0, 3, 4])
+}
+
+#[test]
+fn deleting_a_face_at_a_pinched_vertex_keeps_the_vertex_for_its_other_fan() {
+    for delete_isolated_vertices in [false, true] {
+        let mut mesh = bow_tie();
+        mesh.delete_face(FaceId(0), delete_isolated_vertices)
+            .unwrap();
+        assert_eq!(mesh.check(), Ok(()));
+        assert!(!mesh.is_vertex_deleted(VertexId(0)));
+        assert_eq!(
+            mesh.vertex_faces(VertexId(0)).collect::<Vec<_>>(),
+            [FaceId(1)]
+        );
+        assert!(mesh.is_boundary_halfedge(mesh.vertex_halfedge(VertexId(0))));
+    }
+}
+
+#[test]
+fn deleting_a_pinched_vertex_deletes_the_faces_of_all_its_fans() {
+    let mut mesh = bow_tie();
+    mesh.delete_vertex(VertexId(0)).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!((mesh.n_faces(), mesh.n_edges()), (0, 0));
+    assert!(mesh.is_vertex_deleted(VertexId(0)));
+}
+
+#[test]
+fn opening_either_cone_of_a_pinched_vertex_stores_a_boundary_half_edge() {
+    // Vertex 0 is the apex of two cones (closed fans, bases open): it stores an interior
+    // half-edge of one of them. Deleting a face of either cone gives it a boundary half-edge,
+    // which it must store, whichever cone its stored half-edge is in.
+    let cones = [0, 1, 2, 0, 2, 3, 0, 3, 1, 0, 4, 5, 0, 5, 6, 0, 6, 4];
+    for face in [FaceId(0), FaceId(3)] {
+        let mut mesh = pinched_at_vertex_0(7, &cones);
+        mesh.delete_face(face, false).unwrap();
+        assert_eq!(mesh.check(), Ok(()));
+        assert!(mesh.is_boundary_halfedge(mesh.vertex_halfedge(VertexId(0))));
+    }
+}
+
+#[test]
+fn collapsing_beside_a_pinched_vertex_keeps_its_boundary_half_edge() {
+    // Vertex 0: the centre of a closed disk fan over the rim 1-2-3-4-5, and the corner of a lone
+    // triangle 0-6-7, whose boundary half-edge it stores. Collapsing the rim edge 1 -> 2 removes
+    // the triangle 0-1-2, whose edge 0-1 merges into 0-2: vertex 0 keeps a boundary half-edge.
+    let mut mesh = pinched_at_vertex_0(8, &[0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1, 0, 6, 7]);
+    let rim = mesh.find_halfedge(VertexId(1), VertexId(2)).unwrap();
+    mesh.collapse_halfedge(rim).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    assert!(mesh.is_boundary_halfedge(mesh.vertex_halfedge(VertexId(0))));
+}
+
 #[derive(Clone, Debug)]
 enum Edit {
     Flip(u32),

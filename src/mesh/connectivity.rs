@@ -29,9 +29,11 @@ pub struct Mesh {
     pub(super) positions: Vec<[f64; 3]>,
     pub(super) face_halfedge: Vec<u32>,
     pub(super) deleted: Deletions,
-    /// `false` only when no vertex can have more than one fan (known after a build or a garbage
-    /// collection); deleting faces may pinch vertices, so it sets this. Operators that must see a
-    /// vertex's every half-edge check the slow way while it is set.
+    /// `false` only when no vertex can have a fan that its circulator misses (known after a build
+    /// or a garbage collection: the builder keeps the fans of a pinched vertex apart). Edits never
+    /// make such a vertex: a vertex that deleting faces pinches keeps its fans linked in one
+    /// cycle, which its circulator walks whole. Operators that must see a vertex's every
+    /// half-edge check the slow way while it is set.
     pub(super) may_have_pinched_vertices: bool,
     /// Named per-element columns, corner normals and texture coordinates (see
     /// [`attributes`](super::attributes)); empty sets cost nothing.

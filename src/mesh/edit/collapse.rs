@@ -90,9 +90,9 @@ impl Mesh {
     /// Deleted elements are marked (see [`Mesh::garbage_collect`]). Returns the kept vertex.
     /// Refused, with the mesh unchanged, when [`Mesh::can_collapse_halfedge`] fails: that
     /// includes a face other than the two beside the edge holding both ends (polygon meshes), and
-    /// an origin with several fans (found by a linear scan, run only while the mesh may have such
-    /// vertices: after a build that reported some, or after face deletions until the next
-    /// [`Mesh::garbage_collect`]).
+    /// an origin with several fans that its circulator does not link (found by a linear scan, run
+    /// only while the mesh may have such vertices: after a build that reported some, until a
+    /// [`Mesh::garbage_collect`] finds none).
     pub fn collapse_halfedge(&mut self, h: HalfedgeId) -> Result<VertexId, EditError> {
         self.can_collapse_halfedge(h)?;
         let kept = self.target(h);
@@ -137,7 +137,7 @@ impl Mesh {
         if self.vertex_halfedge(kept) == o {
             self.vertex_halfedge[kept.idx()] = hn.0;
         }
-        self.adjust_outgoing_halfedge(kept);
+        self.adjust_outgoing_halfedge_in_fan(kept, hn);
         self.mark_vertex_deleted(gone);
         self.mark_edge_deleted(h);
     }
@@ -154,10 +154,13 @@ impl Mesh {
         self.link(o0_prev, h1);
         self.face[h1.idx()] = fo.0;
         self.copy_halfedge_attributes(o0, h1);
-        self.vertex_halfedge[v0.idx()] = h1.0;
-        self.adjust_outgoing_halfedge(v0);
-        self.vertex_halfedge[v1.idx()] = o1.0;
-        self.adjust_outgoing_halfedge(v1);
+        // `h`'s edge is gone: an end that stored one of its half-edges takes `h1`'s instead.
+        for (v, removed, in_fan) in [(v0, o0, h1), (v1, h, o1)] {
+            if self.vertex_halfedge(v) == removed {
+                self.vertex_halfedge[v.idx()] = in_fan.0;
+            }
+            self.adjust_outgoing_halfedge_in_fan(v, in_fan);
+        }
         if fo.is_valid() && self.face_halfedge(fo) == o0 {
             self.face_halfedge[fo.idx()] = h1.0;
         }

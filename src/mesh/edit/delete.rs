@@ -16,25 +16,44 @@ impl Mesh {
         self.check_face(f)?;
         let sides: Vec<HalfedgeId> = self.face_loop(f).collect();
         let mut dead_edges = Vec::new();
-        let mut vertices = Vec::with_capacity(sides.len());
         for &h in &sides {
             self.face[h.idx()] = u32::MAX;
             if self.is_boundary_halfedge(h.twin()) {
                 dead_edges.push(h.edge());
             }
-            vertices.push(self.target(h));
         }
         self.mark_face_deleted(f);
-        self.may_have_pinched_vertices = true;
         for e in dead_edges {
             self.remove_faceless_edge(e, delete_isolated_vertices);
         }
-        for v in vertices {
-            if !self.is_vertex_deleted(v) && self.vertex_halfedge(v).is_valid() {
-                self.adjust_outgoing_halfedge(v);
-            }
+        for (i, &leaving) in sides.iter().enumerate() {
+            let arriving = sides[(i + sides.len() - 1) % sides.len()];
+            self.store_boundary_halfedge_of_corner(arriving, leaving);
         }
         Ok(())
+    }
+
+    /// After its face is deleted, makes the corner between the face's sides `arriving` and
+    /// `leaving` store a boundary half-edge. The half-edge is taken from the face, not found by
+    /// walking the corner's fan: at a vertex whose fans the builder kept apart, the fan of the
+    /// stored half-edge may not be the one that gained the boundary.
+    fn store_boundary_halfedge_of_corner(&mut self, arriving: HalfedgeId, leaving: HalfedgeId) {
+        let v = self.origin(leaving);
+        let stored = self.vertex_halfedge(v);
+        if self.is_vertex_deleted(v) || !stored.is_valid() || self.is_boundary_halfedge(stored) {
+            return;
+        }
+        // A live side of the deleted face is a boundary half-edge now, and the boundary half-edge
+        // after one that arrives at `v` leaves `v`. With both sides gone the corner's fan is gone
+        // and `remove_faceless_edge` chose what `v` stores.
+        let boundary = if !self.is_edge_deleted(leaving.edge()) {
+            leaving
+        } else if !self.is_edge_deleted(arriving.edge()) {
+            self.next(arriving)
+        } else {
+            return;
+        };
+        self.vertex_halfedge[v.idx()] = boundary.0;
     }
 
     /// Unlinks and deletes an edge whose two sides are boundary, merging or splitting the
@@ -50,8 +69,11 @@ impl Mesh {
         for (v, leaving, following) in [(v0, h1, next0), (v1, h0, next1)] {
             if self.vertex_halfedge(v) == leaving {
                 if following == leaving {
-                    // `v` had this edge only.
-                    if delete_isolated_vertices {
+                    // `v` had this edge only in this fan, but a vertex whose fans the builder
+                    // kept apart has edges in other fans, which the fan walk does not reach.
+                    if let Some(other) = self.halfedge_in_another_fan(v) {
+                        self.vertex_halfedge[v.idx()] = other.0;
+                    } else if delete_isolated_vertices {
                         self.mark_vertex_deleted(v);
                     } else {
                         self.vertex_halfedge[v.idx()] = u32::MAX;
@@ -61,6 +83,25 @@ impl Mesh {
                 }
             }
         }
+    }
+
+    /// A live half-edge leaving `v`, a boundary one if there is one, or `None`. It scans all
+    /// half-edges, so it runs only while the mesh may have vertices whose fans the builder kept
+    /// apart (edits never make such vertices); elsewhere a vertex's one fan holds all its edges.
+    fn halfedge_in_another_fan(&self, v: VertexId) -> Option<HalfedgeId> {
+        if !self.may_have_pinched_vertices {
+            return None;
+        }
+        let mut found = None;
+        for h in (0..self.halfedge_capacity() as u32).map(HalfedgeId) {
+            if self.origin(h) == v && !self.is_halfedge_deleted(h) {
+                if self.is_boundary_halfedge(h) {
+                    return Some(h);
+                }
+                found.get_or_insert(h);
+            }
+        }
+        found
     }
 
     /// Deletes edge `e` and the faces beside it (see [`Mesh::delete_face`]).
@@ -79,13 +120,20 @@ impl Mesh {
         Ok(())
     }
 
-    /// Deletes vertex `v`, the faces around it (its fan) and so its edges; `v` itself is deleted
-    /// even when isolated.
+    /// Deletes vertex `v`, the faces around it (all its fans) and so its edges; `v` itself is
+    /// deleted even when isolated.
     pub fn delete_vertex(&mut self, v: VertexId) -> Result<(), EditError> {
         self.check_vertex(v)?;
-        let faces: Vec<FaceId> = self.vertex_faces(v).collect();
-        for f in faces {
-            self.delete_face(f, true)?;
+        // The circulator sees one fan; once its faces are gone, `v` stores a half-edge of the next
+        // fan, if the builder kept several apart. Every round deletes at least one face.
+        while !self.is_vertex_deleted(v) && self.vertex_halfedge(v).is_valid() {
+            let faces: Vec<FaceId> = self.vertex_faces(v).collect();
+            if faces.is_empty() {
+                break;
+            }
+            for f in faces {
+                self.delete_face(f, true)?;
+            }
         }
         if !self.is_vertex_deleted(v) {
             self.mark_vertex_deleted(v);

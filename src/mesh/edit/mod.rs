@@ -14,6 +14,7 @@ mod triangulate;
 pub use garbage::IndexMaps;
 
 use super::Mesh;
+use super::circulators::{HalfedgeWalk, Step};
 use super::ids::{FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 use super::navigation::HandleError;
 
@@ -100,8 +101,18 @@ impl Mesh {
 
     /// Makes `v`'s half-edge a boundary one if `v`'s fan has one (the vertex invariant).
     pub(super) fn adjust_outgoing_halfedge(&mut self, v: VertexId) {
-        if let Some(h) = self
-            .outgoing_halfedges(v)
+        self.adjust_outgoing_halfedge_in_fan(v, self.vertex_halfedge(v));
+    }
+
+    /// After an edit that changed only the fan of `in_fan` (a live half-edge leaving `v`): makes
+    /// `v`'s half-edge a boundary one of that fan if `v` stores none and the fan has one. The fan
+    /// is named rather than walked from `v`'s half-edge because at a vertex whose fans the
+    /// builder kept apart, `v` may store a half-edge of another fan.
+    pub(super) fn adjust_outgoing_halfedge_in_fan(&mut self, v: VertexId, in_fan: HalfedgeId) {
+        if self.is_boundary_halfedge(self.vertex_halfedge(v)) {
+            return;
+        }
+        if let Some(h) = HalfedgeWalk::with_step(self, in_fan, Step::RotateCcw)
             .find(|&h| self.is_boundary_halfedge(h))
         {
             self.vertex_halfedge[v.idx()] = h.0;
