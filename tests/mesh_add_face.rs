@@ -174,6 +174,31 @@ fn a_face_between_two_fans_relinks_the_patch() {
     assert_eq!(boundary.len(), 1);
 }
 
+#[test]
+fn a_face_closing_one_fan_of_a_vertex_with_several_is_refused() {
+    // Three triangles touching at vertex 0 only, added face by face, so the one-ring walk links
+    // their fans. The triangle 0-6-5 is the back of 0-5-6: it would close that fan into a pillow
+    // and leave the other two fans no gap to move to, so no one-ring walk could reach them.
+    let mut mesh = Mesh::new();
+    for i in 0..7 {
+        let angle = f64::from(i) * 0.8;
+        mesh.add_vertex([angle.cos(), angle.sin(), 0.0]).unwrap();
+    }
+    let v = VertexId;
+    for face in [[0, 1, 2], [0, 3, 4], [0, 5, 6]] {
+        mesh.add_face(&face.map(v)).unwrap();
+    }
+    assert_eq!(
+        mesh.valence(v(0)),
+        6,
+        "the three fans are on the one-ring walk"
+    );
+    let before = mesh.clone();
+    let error = mesh.add_face(&[v(0), v(6), v(5)]).unwrap_err();
+    assert!(error.to_string().contains("complex vertex"), "{error}");
+    assert_eq!(mesh, before);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 

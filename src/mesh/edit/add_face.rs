@@ -87,7 +87,10 @@ impl Mesh {
                 continue;
             }
             // The patch of faces between the two sides must move to another gap of the vertex:
-            // find a boundary half-edge coming into it other than `inner_prev`.
+            // find a boundary half-edge coming into it, walking round from `inner_next` away
+            // from the patch. The walk meets the patch only after `inner_prev`; a gap found
+            // there would take the patch into itself, leaving it a fan of its own that the
+            // vertex's one-ring does not reach.
             let mut boundary_prev = inner_next.twin();
             let mut steps = 0usize;
             loop {
@@ -96,17 +99,17 @@ impl Mesh {
                 if steps > self.halfedge_capacity() {
                     return refuse(ADD_FACE, "a corner's one-ring does not close");
                 }
-                if self.is_boundary_halfedge(boundary_prev) && boundary_prev != inner_prev {
+                if boundary_prev == inner_prev {
+                    return refuse(
+                        ADD_FACE,
+                        "a corner's one-ring cannot be relinked around the face (complex vertex)",
+                    );
+                }
+                if self.is_boundary_halfedge(boundary_prev) {
                     break;
                 }
             }
             let boundary_next = self.next(boundary_prev);
-            if boundary_next == inner_next {
-                return refuse(
-                    ADD_FACE,
-                    "a corner's one-ring cannot be relinked around the face (complex vertex)",
-                );
-            }
             let (patch_start, patch_end) = (self.next(inner_prev), self.prev(inner_next));
             relinks.extend([
                 (boundary_prev, patch_start),
