@@ -224,6 +224,27 @@ fn collapsing_beside_a_pinched_vertex_keeps_its_boundary_half_edge() {
     assert!(mesh.is_boundary_halfedge(mesh.vertex_halfedge(VertexId(0))));
 }
 
+#[test]
+fn collapsing_is_refused_when_the_ends_share_a_pinched_neighbour() {
+    // Vertex 0 is the apex of a tetrahedron with its face 0-4-5 open, and the corner of a lone
+    // triangle 0-1-2. Collapsing the hole's edge 4 -> 5 would close the tetrahedron into a pillow
+    // of two triangles (the ends share neighbour 0 besides the opposite corner 3), whichever of
+    // vertex 0's fans its stored half-edge is in.
+    let open_tetrahedron = [0, 3, 4, 0, 5, 3, 3, 5, 4];
+    let lone_triangle = [0, 1, 2];
+    for indices in [
+        [lone_triangle.as_slice(), &open_tetrahedron].concat(),
+        [open_tetrahedron.as_slice(), &lone_triangle].concat(),
+    ] {
+        let mut mesh = pinched_at_vertex_0(6, &indices);
+        let before = mesh.clone();
+        let hole_edge = mesh.find_halfedge(VertexId(4), VertexId(5)).unwrap();
+        let error = mesh.collapse_halfedge(hole_edge).unwrap_err();
+        assert!(error.to_string().contains("link condition"), "{error}");
+        assert_eq!(mesh, before);
+    }
+}
+
 #[derive(Clone, Debug)]
 enum Edit {
     Flip(u32),

@@ -54,9 +54,16 @@ impl Mesh {
         if interior_edge && self.is_boundary_vertex(v0) && self.is_boundary_vertex(v1) {
             return refuse(COLLAPSE, "an interior edge joins two boundary vertices");
         }
+        // `v0`'s fan walk sees all its neighbours (it has one fan, checked above), but `v1` and
+        // its neighbours may have fans the builder kept apart, where a fan walk misses edges.
+        let around_v1: Vec<VertexId> = self
+            .halfedges_leaving_every_fan(v1)
+            .into_iter()
+            .map(|g| self.target(g))
+            .collect();
         let shared = self
             .vertex_vertices(v0)
-            .any(|w| w != v1 && !opposite.contains(&w) && self.find_halfedge(w, v1).is_some());
+            .any(|w| w != v1 && !opposite.contains(&w) && around_v1.contains(&w));
         if shared {
             return refuse(
                 COLLAPSE,
@@ -69,7 +76,10 @@ impl Mesh {
         if let [c, d] = opposite
             && c.is_valid()
             && d.is_valid()
-            && let Some(cd) = self.find_halfedge(c, d)
+            && let Some(cd) = self
+                .halfedges_leaving_every_fan(c)
+                .into_iter()
+                .find(|&g| self.target(g) == d)
         {
             let holds = |g: HalfedgeId, v: VertexId| {
                 !self.is_boundary_halfedge(g) && self.face_vertices(self.face(g)).any(|w| w == v)
@@ -109,11 +119,7 @@ impl Mesh {
     /// `true` when some live half-edge leaves `v` outside the fan of its stored half-edge (a scan
     /// of all half-edges: only needed while the mesh may have pinched vertices).
     pub(super) fn fan_misses_halfedges(&self, v: VertexId) -> bool {
-        let in_fan = self.outgoing_halfedges(v).count();
-        let leaving = (0..self.halfedge_capacity())
-            .filter(|&h| self.origin[h] == v.0 && !self.is_halfedge_deleted(HalfedgeId(h as u32)))
-            .count();
-        leaving != in_fan
+        self.scan_halfedges_leaving(v).count() != self.outgoing_halfedges(v).count()
     }
 
     /// Removes edge `h` (from `gone` to `kept`), moving `gone`'s half-edges to `kept`.

@@ -87,19 +87,17 @@ impl Mesh {
 
     /// A live half-edge leaving `v`, a boundary one if there is one, or `None`. It scans all
     /// half-edges, so it runs only while the mesh may have vertices whose fans the builder kept
-    /// apart (edits never make such vertices); elsewhere a vertex's one fan holds all its edges.
+    /// apart; elsewhere a vertex's one fan holds all its edges.
     fn halfedge_in_another_fan(&self, v: VertexId) -> Option<HalfedgeId> {
         if !self.may_have_pinched_vertices {
             return None;
         }
         let mut found = None;
-        for h in (0..self.halfedge_capacity() as u32).map(HalfedgeId) {
-            if self.origin(h) == v && !self.is_halfedge_deleted(h) {
-                if self.is_boundary_halfedge(h) {
-                    return Some(h);
-                }
-                found.get_or_insert(h);
+        for h in self.scan_halfedges_leaving(v) {
+            if self.is_boundary_halfedge(h) {
+                return Some(h);
             }
+            found.get_or_insert(h);
         }
         found
     }

@@ -51,6 +51,28 @@ impl Mesh {
             .find(|&h| self.target(h) == to)
     }
 
+    /// Every live half-edge leaving `v`, whatever its fan: a scan of all half-edges. The fan walk
+    /// sees one fan only, and a vertex whose fans the builder kept apart has several; operators
+    /// scan only while the mesh may have such vertices.
+    pub(super) fn scan_halfedges_leaving(
+        &self,
+        v: VertexId,
+    ) -> impl Iterator<Item = HalfedgeId> + '_ {
+        (0..self.halfedge_capacity() as u32)
+            .map(HalfedgeId)
+            .filter(move |&h| self.origin(h) == v && !self.is_halfedge_deleted(h))
+    }
+
+    /// The live half-edges leaving `v` in all its fans: its fan walk, or a scan while the mesh
+    /// may have vertices whose fans the builder kept apart.
+    pub(super) fn halfedges_leaving_every_fan(&self, v: VertexId) -> Vec<HalfedgeId> {
+        if self.may_have_pinched_vertices {
+            self.scan_halfedges_leaving(v).collect()
+        } else {
+            self.outgoing_halfedges(v).collect()
+        }
+    }
+
     /// Appends a pair of half-edges (fields to be set by the caller; attributes zero); returns the
     /// even one.
     pub(super) fn push_edge(&mut self, operation: &'static str) -> Result<HalfedgeId, EditError> {
