@@ -52,3 +52,30 @@ fn joined_tetrahedra_and_the_truck_keep_every_face() {
         repaired(name);
     }
 }
+
+#[test]
+fn every_vertex_repair_copies_is_used_by_a_face() {
+    // Five faces of a box, the quad 0-1-5-4 given twice: repair copies vertices in several
+    // steps (fans around the problem edges, then rounds for the faces still refused), and a copy
+    // a later step took its corners off must not stay behind as an isolated vertex.
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 1.0],
+        [0.0, 1.0, 1.0],
+        [1.0, 1.0, 1.0],
+    ];
+    let indices = [
+        0, 2, 3, 1, 0, 1, 5, 4, 4, 5, 7, 6, 0, 1, 5, 4, 0, 4, 6, 2, 2, 6, 7, 3,
+    ];
+    let list = halfwing::soup::FaceList::polygons(&positions, &[4; 6], &indices);
+    let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Repair).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    assert_eq!(mesh.n_faces(), 6);
+    assert!(!diagnostic.vertex_copies.is_empty());
+    assert_eq!(diagnostic.isolated_vertices, Vec::<u32>::new());
+    assert_eq!(mesh.isolated_vertices(), Vec::<u32>::new());
+}

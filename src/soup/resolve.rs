@@ -118,6 +118,7 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                     pairing = pair_edges(&table, copies.n_vertices());
                 }
                 pairing = repair_edges(&mut table, pairing, &mut copies)?;
+                copies.drop_unused(&mut table);
             }
         }
     }
@@ -180,6 +181,36 @@ impl VertexCopies {
         };
         self.copied_from.push(original);
         Ok(id as u32)
+    }
+
+    /// Drops the copies no corner uses any more and renumbers the others, in order: a later
+    /// repair round moves refused corners off the copies an earlier step gave them, and a copy
+    /// left behind would be a vertex repair added to the mesh with nothing on it.
+    fn drop_unused(&mut self, table: &mut FaceTable<'_>) {
+        let copy_index = |v: u32| (v as usize).checked_sub(self.n_input);
+        let mut used = vec![false; self.copied_from.len()];
+        for &v in table.corners() {
+            if let Some(copy) = copy_index(v) {
+                used[copy] = true;
+            }
+        }
+        if used.iter().all(|&u| u) {
+            return;
+        }
+        let mut new_id = vec![u32::MAX; used.len()];
+        let mut kept = Vec::new();
+        for (copy, &original) in self.copied_from.iter().enumerate() {
+            if used[copy] {
+                new_id[copy] = (self.n_input + kept.len()) as u32;
+                kept.push(original);
+            }
+        }
+        for v in table.corners_mut() {
+            if let Some(copy) = copy_index(*v) {
+                *v = new_id[copy];
+            }
+        }
+        self.copied_from = kept;
     }
 }
 
