@@ -219,6 +219,34 @@ static void polygon_lists(void) {
   CHECK(buffers == BUFFERS_SENTINEL);
 }
 
+/* Polygons that cannot be filled and corners that are not points are refused, naming the
+ * polygon and the corner; nothing is handed out. */
+static void polygon_lists_refuse_bad_polygons(void) {
+  static const double planar[] = {0, 0, 1, 0, 1, 1, 0, 1, 1, 0, 2, 0, 1, 1};
+  static const double spatial[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 2, 0, 0, 1, 1, 0};
+  static const uint32_t point_then_rest[] = {1, 6};
+  static const uint32_t segment_then_rest[] = {2, 5};
+  static const uint32_t empty_then_all[] = {0, 7};
+  static const uint32_t square_and_triangle[] = {4, 3};
+  double with_nan[14], with_infinity[21];
+  hw_render_buffers *buffers = BUFFERS_SENTINEL;
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, point_then_rest, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "polygon 0 has 1 corners");
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, segment_then_rest, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "polygon 0 has 2 corners");
+  CHECK_STATUS(hw_render_buffers_from_polygons(planar, 2, 7, empty_then_all, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "polygon 0 has 0 corners");
+  memcpy(with_nan, planar, sizeof with_nan);
+  with_nan[2 * 5 + 1] = NAN; /* corner 1 of the triangle */
+  CHECK_STATUS(hw_render_buffers_from_polygons(with_nan, 2, 7, square_and_triangle, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "polygon 1 corner 1");
+  memcpy(with_infinity, spatial, sizeof with_infinity);
+  with_infinity[3 * 2 + 2] = INFINITY; /* z of corner 2 of the square */
+  CHECK_STATUS(hw_render_buffers_from_polygons(with_infinity, 3, 7, square_and_triangle, 2, &buffers),
+               HW_ERR_INVALID_INPUT, "polygon 0 corner 2");
+  CHECK(buffers == BUFFERS_SENTINEL);
+}
+
 /* Four sites, one per quadrant of [-2, 2]^2, and a duplicate of the first: four square cells
  * whose triangles, vertices and outline segments all name their site; the duplicate draws
  * nothing. */
@@ -442,6 +470,7 @@ int main(void) {
   mesh_corner_attributes_are_honoured();
   boundary_bounds_and_non_manifold_edges();
   polygon_lists();
+  polygon_lists_refuse_bad_polygons();
   bad_render_arguments();
   voronoi_cell_buffers();
   bad_voronoi_cell_arguments();

@@ -1848,7 +1848,9 @@ hw_status hw_render_buffers_build(const hw_mesh *mesh,
  *
  * `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
  * 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
- * up to `n_corners` (`HW_ERR_INVALID_INPUT` otherwise).
+ * up to `n_corners`. A polygon of fewer than 3 corners or a NaN or infinite coordinate is
+ * refused too; each of these gives `HW_ERR_INVALID_INPUT` with a message naming the polygon
+ * (and the corner within it).
  *
  * # Safety
  * `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either

@@ -4,7 +4,8 @@
 use crate::geom::VertexNormalWeighting;
 use crate::render::{
     Bounds, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
-    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer, voronoi_cell_buffer,
+    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer, polygon_buffer_2d,
+    voronoi_cell_buffer,
 };
 
 use super::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
@@ -297,7 +298,9 @@ unsafe fn corner_array<'a, const N: usize>(
 ///
 /// `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
 /// 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
-/// up to `n_corners` (`HW_ERR_INVALID_INPUT` otherwise).
+/// up to `n_corners`. A polygon of fewer than 3 corners or a NaN or infinite coordinate is
+/// refused too; each of these gives `HW_ERR_INVALID_INPUT` with a message naming the polygon
+/// (and the corner within it).
 ///
 /// # Safety
 /// `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either
@@ -320,18 +323,18 @@ pub unsafe extern "C" fn hw_render_buffers_from_polygons(
         }
         // SAFETY: forwarded from the caller; the point arrays have the alignment of `f64`.
         let sizes = unsafe { arg_slice(sizes, n_polygons, "sizes") }?;
-        let points: Vec<[f64; 3]> = if dimension == 2 {
+        let buffer = if dimension == 2 {
             // SAFETY: as above.
             let planar = unsafe { arg_slice(corners.cast::<[f64; 2]>(), n_corners, "corners") }?;
-            planar.iter().map(|&[x, y]| [x, y, 0.0]).collect()
+            polygon_buffer_2d(planar, sizes)?
         } else {
             // SAFETY: as above.
-            unsafe { arg_slice(corners.cast::<[f64; 3]>(), n_corners, "corners") }?.to_vec()
+            let spatial = unsafe { arg_slice(corners.cast::<[f64; 3]>(), n_corners, "corners") }?;
+            polygon_buffer(&PolygonList {
+                corners: spatial,
+                sizes,
+            })?
         };
-        let buffer = polygon_buffer(&PolygonList {
-            corners: &points,
-            sizes,
-        })?;
         // SAFETY: checked non-NULL; writable per the caller.
         unsafe {
             out.write(into_handle(hw_render_buffers {

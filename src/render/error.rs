@@ -31,6 +31,24 @@ pub enum RenderError {
         /// Vertex slots of the mesh.
         vertices: usize,
     },
+    /// A polygon of a polygon list has fewer than 3 corners: it has no area to fill.
+    #[error("polygon {polygon} has {corners} corners; a polygon needs at least 3")]
+    TooFewCorners {
+        /// Index of the polygon in the list.
+        polygon: usize,
+        /// Its corner count.
+        corners: u32,
+    },
+    /// A corner of a polygon list has a NaN or infinite coordinate.
+    #[error("polygon {polygon} corner {corner} has a non-finite coordinate {point:?}")]
+    NonFiniteCorner {
+        /// Index of the polygon in the list.
+        polygon: usize,
+        /// Index of the corner within the polygon.
+        corner: usize,
+        /// The corner's coordinates.
+        point: [f64; 3],
+    },
     /// The polygons could not be triangulated (sizes or indices do not fit).
     #[error(transparent)]
     Polygons(#[from] TriangulateError),

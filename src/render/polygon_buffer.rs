@@ -3,10 +3,11 @@
 //! vertices), so each can get its own colour from [`PolygonBuffer::vertex_polygons`].
 
 use crate::geom::newell_vector;
-use crate::soup::FaceList;
+use crate::soup::{FaceList, FaceSizes};
 
 use super::error::RenderError;
 use super::line_buffer::push_point;
+use super::triangulate::corner_ranges;
 use super::{Bounds, FallbackReason, LineBuffer, triangulate_faces};
 
 /// Polygons given corner after corner: polygon `i` has `sizes[i]` consecutive corners of
@@ -41,13 +42,47 @@ pub struct PolygonBuffer {
     pub bounds: Bounds,
 }
 
-/// Triangulates and outlines every polygon. Polygons of fewer than 3 corners get no fill (a
-/// 2-corner polygon is still outlined as a segment there and back, which is what it is).
+/// Triangulates and outlines every polygon.
 ///
 /// # Errors
 /// [`RenderError::Polygons`] when the sizes do not add up to the number of corners or the
-/// triangles would not fit `u32` indices.
+/// triangles would not fit `u32` indices; [`RenderError::TooFewCorners`] for a polygon of fewer
+/// than 3 corners and [`RenderError::NonFiniteCorner`] for a NaN or infinite corner, both naming
+/// the first such polygon.
 pub fn polygon_buffer(polygons: &PolygonList<'_>) -> Result<PolygonBuffer, RenderError> {
+    check_polygons(polygons)?;
+    build_polygon_buffer(polygons)
+}
+
+/// Refuses what a caller's polygon list must not hold: sizes that do not add up, polygons that
+/// cannot have an area, and corners that are not points.
+fn check_polygons(polygons: &PolygonList<'_>) -> Result<(), RenderError> {
+    let ranges = corner_ranges(FaceSizes::PerFace(polygons.sizes), polygons.corners.len())?;
+    for (polygon, range) in ranges.into_iter().enumerate() {
+        if range.len() < 3 {
+            return Err(RenderError::TooFewCorners {
+                polygon,
+                corners: polygons.sizes[polygon],
+            });
+        }
+        let ring = &polygons.corners[range];
+        if let Some(corner) = ring.iter().position(|p| p.iter().any(|c| !c.is_finite())) {
+            return Err(RenderError::NonFiniteCorner {
+                polygon,
+                corner,
+                point: ring[corner],
+            });
+        }
+    }
+    Ok(())
+}
+
+/// [`polygon_buffer`] without the checks, for lists that may hold empty polygons on purpose (a
+/// Voronoi diagram's cells, one per site). Polygons of fewer than 3 corners get no fill (a
+/// 2-corner polygon is still outlined as a segment there and back, which is what it is).
+pub(super) fn build_polygon_buffer(
+    polygons: &PolygonList<'_>,
+) -> Result<PolygonBuffer, RenderError> {
     let n = polygons.corners.len();
     let identity: Vec<u32> =
         (0..u32::try_from(n).map_err(|_| super::TriangulateError::TooLarge)?).collect();
@@ -96,7 +131,7 @@ fn unit(v: [f64; 3]) -> [f64; 3] {
     }
 }
 
-/// [`polygon_buffer`] for polygons in the plane z = 0, given by x y (a Voronoi diagram's cells).
+/// [`polygon_buffer`] for polygons in the plane z = 0, given by x y.
 ///
 /// # Errors
 /// As [`polygon_buffer`].
@@ -104,11 +139,15 @@ pub fn polygon_buffer_2d(
     corners: &[[f64; 2]],
     sizes: &[u32],
 ) -> Result<PolygonBuffer, RenderError> {
-    let lifted: Vec<[f64; 3]> = corners.iter().map(|&[x, y]| [x, y, 0.0]).collect();
     polygon_buffer(&PolygonList {
-        corners: &lifted,
+        corners: &lift_to_plane(corners),
         sizes,
     })
+}
+
+/// Points of the plane z = 0 from their x y.
+pub(super) fn lift_to_plane(corners: &[[f64; 2]]) -> Vec<[f64; 3]> {
+    corners.iter().map(|&[x, y]| [x, y, 0.0]).collect()
 }
 
 #[cfg(test)]
@@ -156,6 +195,41 @@ mod tests {
             &[1.0, 2.0, 0.0, 1.0, 0.0, 0.0]
         );
         assert_eq!(buffer.bounds.max, [3.0, 2.0, 0.0]);
+    }
+
+    #[test]
+    fn degenerate_polygons_and_non_finite_corners_are_refused() {
+        let corners = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 0.0]];
+        assert_eq!(
+            polygon_buffer_2d(&corners, &[3, 2]),
+            Err(RenderError::TooFewCorners {
+                polygon: 1,
+                corners: 2
+            })
+        );
+        assert_eq!(
+            polygon_buffer_2d(&corners, &[0, 5]),
+            Err(RenderError::TooFewCorners {
+                polygon: 0,
+                corners: 0
+            })
+        );
+        let mut with_nan = corners;
+        with_nan[4][1] = f64::NAN;
+        match polygon_buffer_2d(&with_nan, &[5]) {
+            Err(RenderError::NonFiniteCorner {
+                polygon: 0,
+                corner: 4,
+                ..
+            }) => {}
+            other => panic!("NaN corner accepted: {other:?}"),
+        }
+        let mut with_infinity = corners;
+        with_infinity[0][0] = f64::INFINITY;
+        assert!(matches!(
+            polygon_buffer_2d(&with_infinity, &[5]),
+            Err(RenderError::NonFiniteCorner { corner: 0, .. })
+        ));
     }
 
     #[test]

@@ -378,8 +378,15 @@ pub fn triangulate_faces(faces: &FaceList<'_>) -> Result<TriangleBuffer, Triangu
 
 /// The corner range of every face, checked against the index count.
 fn face_ranges(faces: &FaceList<'_>) -> Result<Vec<std::ops::Range<usize>>, TriangulateError> {
-    let got = faces.indices.len();
-    match faces.sizes {
+    corner_ranges(faces.sizes, faces.indices.len())
+}
+
+/// The corner range of every face of the given sizes, checked against the `got` corners there are.
+pub(super) fn corner_ranges(
+    sizes: FaceSizes<'_>,
+    got: usize,
+) -> Result<Vec<std::ops::Range<usize>>, TriangulateError> {
+    match sizes {
         FaceSizes::Uniform(0) if got == 0 => Ok(Vec::new()),
         FaceSizes::Uniform(size) if size > 0 && got.is_multiple_of(size as usize) => {
             let size = size as usize;

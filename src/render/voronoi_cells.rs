@@ -4,8 +4,9 @@
 
 use crate::voronoi::ClippedCells;
 
+use super::PolygonBuffer;
 use super::error::RenderError;
-use super::{PolygonBuffer, polygon_buffer_2d};
+use super::polygon_buffer::{PolygonList, build_polygon_buffer, lift_to_plane};
 
 /// Fills and outlines of every cell, polygon `i` being the cell of site `i` (empty for duplicate
 /// sites and sites whose cell misses the clip region: no triangle, no outline).
@@ -22,7 +23,11 @@ pub fn voronoi_cell_buffer(cells: &ClippedCells) -> Result<PolygonBuffer, Render
         corners.extend(ring.iter().map(|&p| positions[p as usize]));
         sizes.push(length);
     }
-    polygon_buffer_2d(&corners, &sizes)
+    // Unchecked: an empty cell stays an empty polygon, so polygon `i` is still site `i`.
+    build_polygon_buffer(&PolygonList {
+        corners: &lift_to_plane(&corners),
+        sizes: &sizes,
+    })
 }
 
 #[cfg(test)]
