@@ -362,7 +362,7 @@ static void bad_construction(void) {
 static void lloyd(void) {
   const double rect[] = {0, 0, 4, 0, 4, 4, 0, 4};
   const double not_convex[] = {0, 0, 4, 0, 1, 1, 0, 4};
-  double xy[2 * N_SITES], out[2 * N_SITES], moved = -1;
+  double xy[2 * N_SITES], out[2 * N_SITES], with_nan[2 * N_SITES], moved = -1;
   uint32_t iterations = 0, i;
   memcpy(xy, five_and_a_copy, sizeof xy);
 
@@ -376,8 +376,21 @@ static void lloyd(void) {
   CHECK(hw_voronoi_lloyd(five_and_a_copy, N_SITES, rect, 4, 0, 0, out, &iterations, NULL) == HW_OK);
   CHECK(iterations == 0 && memcmp(out, five_and_a_copy, sizeof out) == 0);
 
-  CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, -1, out, NULL, NULL), HW_ERR_INVALID_INPUT,
-               "non-finite");
+  /* Each bad argument is named for what it is; the outputs stay untouched. */
+  memcpy(out, xy, sizeof out);
+  iterations = 77;
+  CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, -1, out, &iterations, NULL),
+               HW_ERR_INVALID_INPUT, "tolerance -1 is not a finite distance of at least 0");
+  CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, NAN, out, &iterations, NULL),
+               HW_ERR_INVALID_INPUT, "tolerance NaN");
+  CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, INFINITY, out, &iterations, NULL),
+               HW_ERR_INVALID_INPUT, "tolerance inf");
+  memcpy(with_nan, xy, sizeof with_nan);
+  with_nan[2 * 3] = NAN;
+  /* Also with no iteration to run, a NaN site is refused rather than copied out. */
+  CHECK_STATUS(hw_voronoi_lloyd(with_nan, N_SITES, rect, 4, 0, 0, out, &iterations, NULL),
+               HW_ERR_INVALID_INPUT, "site 3 has a non-finite coordinate");
+  CHECK(iterations == 77 && memcmp(out, xy, sizeof out) == 0);
   CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, not_convex, 4, 5, 0, out, NULL, NULL),
                HW_ERR_INVALID_INPUT, "not convex");
   CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, 0, NULL, NULL, NULL),

@@ -36,6 +36,7 @@ impl From<VoronoiError> for FfiError {
             | VoronoiError::TooManySites { .. }
             | VoronoiError::DegenerateClip(_)
             | VoronoiError::NonConvexClip { .. }
+            | VoronoiError::InvalidTolerance(_)
             | VoronoiError::NonFiniteQuery
             | VoronoiError::InvalidRasterSize { .. } => HW_ERR_INVALID_INPUT,
         };

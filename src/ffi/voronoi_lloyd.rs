@@ -19,7 +19,8 @@ use super::voronoi_cells::clip_polygon_arg;
 /// stay where they are; a duplicate stays while its representative moves, so they separate.
 /// `*out_iterations` and `*out_max_displacement` (each may be NULL) receive the iterations run
 /// and the largest move of the last one. Bad sites, a bad clip polygon (see
-/// hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`.
+/// hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`,
+/// naming the site or the tolerance; sites are checked also when `max_iterations` is 0.
 ///
 /// # Safety
 /// `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only

@@ -77,30 +77,33 @@ pub struct Delaunay {
     pub(crate) cell_starts: Vec<u32>,
 }
 
+/// Refuses sites a triangulation cannot take: too many for its 32-bit indices, or a NaN or
+/// infinite coordinate (naming the first such site).
+pub(crate) fn check_sites(sites: &[[f64; 2]]) -> Result<(), VoronoiError> {
+    if sites.len() > MAX_SITES {
+        return Err(VoronoiError::TooManySites {
+            count: sites.len(),
+            max: MAX_SITES,
+        });
+    }
+    match sites
+        .iter()
+        .enumerate()
+        .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
+    {
+        Some((site, &[x, y])) => Err(VoronoiError::NonFiniteSite { site, x, y }),
+        None => Ok(()),
+    }
+}
+
 impl Delaunay {
     /// Triangulates `sites`. NaN or infinite coordinates are refused; duplicates are merged.
     ///
     /// Construction: exact predicates (`robust`), biased randomised insertion order along a
     /// Hilbert curve, walking point location from the previous insertion, Bowyer–Watson cavities.
     pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
+        check_sites(sites)?;
         let n = sites.len();
-        if n > MAX_SITES {
-            return Err(VoronoiError::TooManySites {
-                count: n,
-                max: MAX_SITES,
-            });
-        }
-        if let Some((i, p)) = sites
-            .iter()
-            .enumerate()
-            .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
-        {
-            return Err(VoronoiError::NonFiniteSite {
-                site: i,
-                x: p[0],
-                y: p[1],
-            });
-        }
         // One pass over the sites gives the scale and, scaled (a power of two is monotone, so
         // it maps the box), the scaled sites' box.
         let site_box = bounding_box(sites);

@@ -40,6 +40,9 @@ pub enum VoronoiError {
         /// Number of sites.
         count: usize,
     },
+    /// A Lloyd relaxation tolerance is negative, NaN or infinite.
+    #[error("tolerance {0} is not a finite distance of at least 0")]
+    InvalidTolerance(f64),
     /// A query point or parameter is NaN or infinite.
     #[error("non-finite query argument")]
     NonFiniteQuery,

@@ -1,6 +1,7 @@
 //! Lloyd relaxation with the true centroids of the clipped cells.
 
 use super::clip_region::ClipPolygon;
+use super::delaunay::check_sites;
 use super::diagram::Voronoi;
 use super::error::VoronoiError;
 
@@ -28,14 +29,20 @@ pub struct LloydResult {
 ///
 /// Sites whose cell misses the region stay where they are; a duplicate stays in place while its
 /// representative moves, so the two separate in the next iteration.
+///
+/// # Errors
+/// [`VoronoiError::InvalidTolerance`] for a negative or non-finite tolerance; the errors of
+/// [`Voronoi::new`] for the sites (also when `max_iterations` is 0).
 pub fn lloyd_relaxation(
     sites: &[[f64; 2]],
     clip: &ClipPolygon,
     options: LloydOptions,
 ) -> Result<LloydResult, VoronoiError> {
     if !options.tolerance.is_finite() || options.tolerance < 0.0 {
-        return Err(VoronoiError::NonFiniteQuery);
+        return Err(VoronoiError::InvalidTolerance(options.tolerance));
     }
+    // Checked up front: with no iteration to run, no triangulation would look at them.
+    check_sites(sites)?;
     let mut current = sites.to_vec();
     let mut result = LloydResult {
         sites: Vec::new(),

@@ -395,11 +395,29 @@ fn lloyd_relaxation_converges_towards_centroidal_cells() {
         "worst {worst}, last move {}",
         r.max_displacement
     );
-    let bad = LloydOptions {
-        max_iterations: 1,
-        tolerance: f64::NAN,
+    for tolerance in [f64::NAN, -1.0, f64::INFINITY] {
+        let bad = LloydOptions {
+            max_iterations: 1,
+            tolerance,
+        };
+        let error = lloyd_relaxation(&sites, &clip, bad).unwrap_err();
+        assert!(
+            matches!(error, VoronoiError::InvalidTolerance(_)),
+            "{error:?}"
+        );
+        assert!(error.to_string().starts_with("tolerance"), "{error}");
+    }
+    // Bad sites are refused even when no iteration would triangulate them.
+    let mut with_nan = sites.clone();
+    with_nan[3][1] = f64::NAN;
+    let none = LloydOptions {
+        max_iterations: 0,
+        tolerance: 0.0,
     };
-    assert!(lloyd_relaxation(&sites, &clip, bad).is_err());
+    assert!(matches!(
+        lloyd_relaxation(&with_nan, &clip, none),
+        Err(VoronoiError::NonFiniteSite { site: 3, .. })
+    ));
 }
 
 #[test]
