@@ -153,10 +153,11 @@ static void walks(void) {
   {
     hw_wface missing = {6};
     hw_wvertex nowhere = {HW_INVALID_INDEX};
+    /* Messages name elements as C sees them ("face 6"), not as Rust debug output. */
     CHECK_STATUS(hw_wcirc_around_face(w, missing, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
-                 "does not exist");
+                 "face 6 does not exist");
     CHECK_STATUS(hw_wcirc_around_vertex(w, nowhere, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
-                 "does not exist");
+                 "vertex 4294967295 (the invalid id) does not exist");
   }
   CHECK(hw_wcirc_around_face(w, f3, HW_WCIRC_EDGES, &c) == HW_OK);
   CHECK(!hw_wcirc_next_vertex(&c, &v));
@@ -194,7 +195,8 @@ static void normals(void) {
   CHECK_STATUS(hw_winged_vertex_normal(NULL, v1, n), HW_ERR_NULL_ARGUMENT, "winged");
   {
     hw_wface missing = {40};
-    CHECK_STATUS(hw_winged_face_normal(w, missing, n), HW_ERR_INVALID_HANDLE, "does not exist");
+    CHECK_STATUS(hw_winged_face_normal(w, missing, n), HW_ERR_INVALID_HANDLE,
+                 "face 40 does not exist");
   }
   hw_winged_free(w);
 }
@@ -366,16 +368,17 @@ static void euler_cube(void) {
     CHECK_STATUS(hw_winged_mev(w, f0, far, origin, &e_out, &v_out), HW_ERR_REFUSED,
                  "is not on the loop");
     CHECK_STATUS(hw_winged_mev(w, missing_face, square[0], origin, &e_out, &v_out),
-                 HW_ERR_INVALID_HANDLE, "does not exist");
+                 HW_ERR_INVALID_HANDLE, "face 99 does not exist");
     CHECK_STATUS(hw_winged_mef(w, f0, on_f0[1], on_f0[1], &e_out, &f_out), HW_ERR_REFUSED,
                  "to itself");
     CHECK_STATUS(hw_winged_mef(w, f0, on_f0[0], far, &e_out, &f_out), HW_ERR_REFUSED,
                  "is not on the loop");
     CHECK_STATUS(hw_winged_kev(w, bottom_edge, square[0]), HW_ERR_REFUSED, "has other edges");
     CHECK_STATUS(hw_winged_kev(w, missing_edge, square[0]), HW_ERR_INVALID_HANDLE,
-                 "does not exist");
+                 "edge 500 does not exist");
     CHECK_STATUS(hw_winged_kvfs(w, f0), HW_ERR_REFUSED, "only a point face");
-    CHECK_STATUS(hw_winged_kef(w, missing_edge, f0), HW_ERR_INVALID_HANDLE, "does not exist");
+    CHECK_STATUS(hw_winged_kef(w, missing_edge, f0), HW_ERR_INVALID_HANDLE,
+                 "edge 500 does not exist");
     CHECK(v_out.idx == HW_INVALID_INDEX && f_out.idx == HW_INVALID_INDEX &&
           e_out.idx == HW_INVALID_INDEX);
     after = table(w, HW_WTABLE_ALL, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_CSV);
@@ -462,9 +465,10 @@ static void null_and_freed_handles(void) {
   {
     hw_wedge missing_edge = {12};
     hw_wvertex missing_vertex = {8};
-    CHECK_STATUS(hw_winged_edge(w, missing_edge, &r), HW_ERR_INVALID_HANDLE, "does not exist");
+    CHECK_STATUS(hw_winged_edge(w, missing_edge, &r), HW_ERR_INVALID_HANDLE,
+                 "edge 12 does not exist");
     CHECK_STATUS(hw_winged_position(w, missing_vertex, p), HW_ERR_INVALID_HANDLE,
-                 "does not exist");
+                 "vertex 8 does not exist");
     CHECK(hw_winged_vertex_edge(w, missing_vertex).idx == HW_INVALID_INDEX);
     CHECK(last_error_contains("does not exist"));
   }

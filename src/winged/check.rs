@@ -61,8 +61,8 @@ impl Winged {
         for e in self.edges() {
             let r = self.rec(e);
             let name = |side: Option<Side>| match side {
-                None => format!("edge {}", e.0),
-                Some(s) => format!("edge {} ({s:?} side)", e.0),
+                None => e.to_string(),
+                Some(s) => format!("{e} ({s:?} side)"),
             };
             if !self.is_vertex(r.start) || !self.is_vertex(r.end) {
                 return Err(broken(name(None), "endpoint is not a live vertex"));
@@ -109,19 +109,16 @@ impl Winged {
         for &(f, v) in &self.point_faces {
             if !self.is_face(f) || self.face_edge[f.index()].is_valid() {
                 return Err(broken(
-                    format!("face {}", f.0),
+                    f.to_string(),
                     "point face is not a live edgeless face",
                 ));
             }
             if !self.is_vertex(v) || self.vertex_edge[v.index()].is_valid() {
-                return Err(broken(
-                    format!("vertex {}", v.0),
-                    "point face vertex has edges",
-                ));
+                return Err(broken(v.to_string(), "point face vertex has edges"));
             }
         }
         for f in self.faces() {
-            let name = || format!("face {}", f.0);
+            let name = || f.to_string();
             if !self.face_edge[f.index()].is_valid() {
                 if self.point_face_vertex(f).is_none() || sides_of_face[f.index()] != 0 {
                     return Err(broken(name(), "face without an edge is not a point face"));
@@ -149,7 +146,7 @@ impl Winged {
             degree[r.end.index()] += 1;
         }
         for v in self.vertices() {
-            let name = || format!("vertex {}", v.0);
+            let name = || v.to_string();
             let e: EdgeId = self.vertex_edge[v.index()];
             if !e.is_valid() {
                 if degree[v.index()] != 0 {

@@ -37,16 +37,16 @@ pub enum WingedError {
 
     // --- handles ---
     /// The vertex id is out of range or deleted.
-    #[error("vertex {0:?} does not exist")]
+    #[error("{0} does not exist")]
     InvalidVertex(VertexId),
     /// The edge id is out of range or deleted.
-    #[error("edge {0:?} does not exist")]
+    #[error("{0} does not exist")]
     InvalidEdge(EdgeId),
     /// The face id is out of range, deleted or invalid.
-    #[error("face {0:?} does not exist")]
+    #[error("{0} does not exist")]
     InvalidFace(FaceId),
     /// The edge is not incident to the element it was paired with.
-    #[error("edge {edge:?} is not incident to the given {what}")]
+    #[error("{edge} is not incident to the given {what}")]
     NotIncident {
         /// The edge.
         edge: EdgeId,
@@ -56,7 +56,7 @@ pub enum WingedError {
 
     // --- Euler operator preconditions ---
     /// The vertex does not lie on the face's loop.
-    #[error("vertex {vertex:?} is not on the loop of face {face:?}")]
+    #[error("{vertex} is not on the loop of {face}")]
     VertexNotOnFace {
         /// The vertex.
         vertex: VertexId,
@@ -64,7 +64,7 @@ pub enum WingedError {
         face: FaceId,
     },
     /// The vertex occurs more than once on the face's loop, so the corner is ambiguous.
-    #[error("vertex {vertex:?} occurs more than once on the loop of face {face:?}")]
+    #[error("{vertex} occurs more than once on the loop of {face}")]
     AmbiguousCorner {
         /// The vertex.
         vertex: VertexId,
@@ -72,10 +72,10 @@ pub enum WingedError {
         face: FaceId,
     },
     /// An edge would join a vertex to itself.
-    #[error("an edge cannot join vertex {0:?} to itself")]
+    #[error("an edge cannot join {0} to itself")]
     SelfLoop(VertexId),
     /// KEV needs a vertex whose only edge is the one being killed.
-    #[error("vertex {vertex:?} has other edges than {edge:?}")]
+    #[error("{vertex} has other edges than {edge}")]
     VertexNotDangling {
         /// The vertex.
         vertex: VertexId,
@@ -83,11 +83,11 @@ pub enum WingedError {
         edge: EdgeId,
     },
     /// KEF needs two different real faces on the edge's sides.
-    #[error("edge {0:?} does not separate two different faces")]
+    #[error("{0} does not separate two different faces")]
     EdgeNotBetweenTwoFaces(EdgeId),
 
     /// KVFS needs a face without edges (a solid reduced to one vertex).
-    #[error("face {0:?} has edges; only a point face can be killed with its solid")]
+    #[error("{0} has edges; only a point face can be killed with its solid")]
     NotAPointFace(FaceId),
 
     // --- conversion ---
@@ -104,4 +104,30 @@ pub enum WingedError {
         /// Which invariant.
         reason: &'static str,
     },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_elements_as_c_sees_them() {
+        // Before: "vertex VertexId(1) does not exist".
+        assert_eq!(
+            WingedError::InvalidVertex(VertexId(1)).to_string(),
+            "vertex 1 does not exist"
+        );
+        assert_eq!(
+            WingedError::VertexNotDangling {
+                vertex: VertexId(2),
+                edge: EdgeId(5)
+            }
+            .to_string(),
+            "vertex 2 has other edges than edge 5"
+        );
+        assert_eq!(
+            WingedError::InvalidFace(FaceId::INVALID).to_string(),
+            "face 4294967295 (the invalid id) does not exist"
+        );
+    }
 }

@@ -1,8 +1,9 @@
 //! Typed element ids, edge sides and edge uses.
 
-/// Defines a `u32` id newtype whose invalid value is `u32::MAX`.
+/// Defines a `u32` id newtype whose invalid value is `u32::MAX`. It displays as `kind` and the
+/// number ("vertex 3"): the one way every message names an element, Rust's or C's.
 macro_rules! define_id {
-    ($(#[$doc:meta])* $name:ident) => {
+    ($(#[$doc:meta])* $name:ident, $kind:literal) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
         #[repr(transparent)]
@@ -31,6 +32,16 @@ macro_rules! define_id {
             }
         }
 
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                if self.is_valid() {
+                    write!(f, concat!($kind, " {}"), self.0)
+                } else {
+                    write!(f, concat!($kind, " {} (the invalid id)"), self.0)
+                }
+            }
+        }
+
         impl From<$name> for u32 {
             fn from(id: $name) -> u32 {
                 id.0
@@ -41,16 +52,19 @@ macro_rules! define_id {
 
 define_id!(
     /// A vertex of a [`Winged`](super::Winged) structure.
-    VertexId
+    VertexId,
+    "vertex"
 );
 define_id!(
     /// An edge of a [`Winged`](super::Winged) structure (one record per undirected edge).
-    EdgeId
+    EdgeId,
+    "edge"
 );
 define_id!(
     /// A face of a [`Winged`](super::Winged) structure. `FaceId::INVALID` on an edge side means
     /// "boundary": that side belongs to a hole.
-    FaceId
+    FaceId,
+    "face"
 );
 
 /// One of the two sides of an edge `start → end`.

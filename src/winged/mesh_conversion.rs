@@ -160,8 +160,7 @@ impl Winged {
     pub fn to_mesh(&self) -> Result<Mesh, WingedError> {
         if let Some(&(f, _)) = self.point_faces.first() {
             return Err(WingedError::NotConvertible(format!(
-                "face {} has no edges (a point face)",
-                f.0
+                "{f} has no edges (a point face)"
             )));
         }
         let has_deleted = self.n_live_vertices as usize != self.positions.len()
