@@ -367,8 +367,11 @@ static void bad_render_arguments(void) {
   CHECK(hw_render_buffers_n_vertices(NULL) == 0 && last_error_contains("buffers"));
   CHECK(hw_render_buffers_stride(NULL) == 0 && last_error_contains("buffers"));
   CHECK_STATUS(hw_render_buffers_bounds(NULL, lo, hi), HW_ERR_NULL_ARGUMENT, "buffers");
+  /* Both outputs are required (NULL does not mean "skip"), and a refusal writes neither. */
+  lo[0] = hi[0] = -7.0f;
   CHECK_STATUS(hw_render_buffers_bounds(good, NULL, hi), HW_ERR_NULL_ARGUMENT, "out_min");
   CHECK_STATUS(hw_render_buffers_bounds(good, lo, NULL), HW_ERR_NULL_ARGUMENT, "out_max");
+  CHECK(lo[0] == -7.0f && hi[0] == -7.0f);
 
   hw_render_buffers_free(NULL); /* a no-op */
   hw_render_buffers_free(good);

@@ -192,6 +192,7 @@ static void normals(void) {
   CHECK(needed == 24);
   CHECK_STATUS(hw_winged_normals(w, 2, all, 18, NULL), HW_ERR_INVALID_INPUT, "normals kind 2");
   CHECK_STATUS(hw_winged_face_normal(w, f1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
+  CHECK_STATUS(hw_winged_vertex_normal(w, v1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
   CHECK_STATUS(hw_winged_vertex_normal(NULL, v1, n), HW_ERR_NULL_ARGUMENT, "winged");
   {
     hw_wface missing = {40};

@@ -1930,10 +1930,11 @@ size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
 
 /**
  * The box around the vertices, to frame a camera: `out_min` and `out_max` receive x y z each.
- * With no vertex, min is +infinity and max -infinity.
+ * With no vertex, min is +infinity and max -infinity. Both outputs are required: NULL for
+ * either gives `HW_ERR_NULL_ARGUMENT` and writes neither.
  *
  * # Safety
- * `buffers` must be NULL or live; `out_min` and `out_max` NULL or 3 writable floats each.
+ * `buffers` must be NULL or live; `out_min` and `out_max` must each point to 3 writable floats.
  */
 hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
                                    float *out_min,
@@ -2771,28 +2772,30 @@ hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
 hw_wedge hw_winged_face_edge(const hw_winged *winged, hw_wface f);
 
 /**
- * Writes the position of `v` to `out_xyz[0..3]`.
+ * Writes the position of `v` to `out_xyz[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
  *
  * # Safety
- * `winged` must be NULL or a live structure; `out_xyz` NULL or 3 writable doubles.
+ * `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
  */
 hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
 
 /**
  * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
- * degenerate or point face), written to `out_normal[0..3]`.
+ * degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
+ * `HW_ERR_NULL_ARGUMENT`).
  *
  * # Safety
- * `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+ * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  */
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
 /**
  * Unit normal of vertex `v` as seed 000 computes it: the normalised sum of the unit normals of
- * the faces around it (holes left out; zero if none), written to `out_normal[0..3]`.
+ * the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
+ * NULL gives `HW_ERR_NULL_ARGUMENT`).
  *
  * # Safety
- * `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+ * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  */
 hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
 
@@ -2897,7 +2900,8 @@ bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
- * NULL or 3 readable doubles; `out_vertex` and `out_face` writable.
+ * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
+ * `out_face` writable.
  */
 hw_status hw_winged_mvfs(hw_winged *winged,
                          const double *position,
@@ -2911,7 +2915,8 @@ hw_status hw_winged_mvfs(hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
- * NULL or 3 readable doubles; `out_edge` and `out_vertex` writable.
+ * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
+ * `out_vertex` writable.
  */
 hw_status hw_winged_mev(hw_winged *winged,
                         hw_wface face,

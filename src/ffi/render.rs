@@ -469,10 +469,11 @@ pub unsafe extern "C" fn hw_render_buffers_stride(buffers: *const hw_render_buff
 }
 
 /// The box around the vertices, to frame a camera: `out_min` and `out_max` receive x y z each.
-/// With no vertex, min is +infinity and max -infinity.
+/// With no vertex, min is +infinity and max -infinity. Both outputs are required: NULL for
+/// either gives `HW_ERR_NULL_ARGUMENT` and writes neither.
 ///
 /// # Safety
-/// `buffers` must be NULL or live; `out_min` and `out_max` NULL or 3 writable floats each.
+/// `buffers` must be NULL or live; `out_min` and `out_max` must each point to 3 writable floats.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_bounds(
     buffers: *const hw_render_buffers,

@@ -479,10 +479,10 @@ pub unsafe extern "C" fn hw_winged_face_edge(winged: *const hw_winged, f: hw_wfa
     }
 }
 
-/// Writes the position of `v` to `out_xyz[0..3]`.
+/// Writes the position of `v` to `out_xyz[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `out_xyz` NULL or 3 writable doubles.
+/// `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_position(
     winged: *const hw_winged,
@@ -494,10 +494,11 @@ pub unsafe extern "C" fn hw_winged_position(
 }
 
 /// Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
-/// degenerate or point face), written to `out_normal[0..3]`.
+/// degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
+/// `HW_ERR_NULL_ARGUMENT`).
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+/// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_face_normal(
     winged: *const hw_winged,
@@ -513,10 +514,11 @@ pub unsafe extern "C" fn hw_winged_face_normal(
 }
 
 /// Unit normal of vertex `v` as seed 000 computes it: the normalised sum of the unit normals of
-/// the faces around it (holes left out; zero if none), written to `out_normal[0..3]`.
+/// the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
+/// NULL gives `HW_ERR_NULL_ARGUMENT`).
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `out_normal` NULL or 3 writable doubles.
+/// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_vertex_normal(
     winged: *const hw_winged,
@@ -531,10 +533,11 @@ pub unsafe extern "C" fn hw_winged_vertex_normal(
     }
 }
 
-/// Computes a 3-vector from the structure and writes it to `out[0..3]` on success.
+/// Computes a 3-vector from the structure and writes it to `out[0..3]` on success; a NULL `out`
+/// is refused.
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `out` NULL or 3 writable doubles.
+/// `winged` must be NULL or a live structure; `out` NULL (refused) or 3 writable doubles.
 unsafe fn write_triple(
     winged: *const hw_winged,
     out: *mut f64,

@@ -25,7 +25,8 @@ use super::winged::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_mut};
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
-/// NULL or 3 readable doubles; `out_vertex` and `out_face` writable.
+/// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
+/// `out_face` writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mvfs(
     winged: *mut hw_winged,
@@ -56,7 +57,8 @@ pub unsafe extern "C" fn hw_winged_mvfs(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
-/// NULL or 3 readable doubles; `out_edge` and `out_vertex` writable.
+/// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
+/// `out_vertex` writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mev(
     winged: *mut hw_winged,
