@@ -33,6 +33,16 @@ static void empty_mesh(void) {
   hw_mesh *built = NULL;
   CHECK(mesh != NULL);
   CHECK(hw_mesh_n_vertices(mesh) == 0 && hw_mesh_n_faces(mesh) == 0);
+  {
+    /* Empty views are NULL with length 0, as the header documents. */
+    const double *xyz = (const double *)&mesh;
+    const uint32_t *origins = (const uint32_t *)&mesh;
+    size_t n = 7;
+    CHECK(hw_mesh_view_positions(mesh, &xyz, &n) == HW_OK && xyz == NULL && n == 0);
+    n = 7;
+    CHECK(hw_mesh_view(mesh, HW_ARRAY_HALFEDGE_ORIGIN, &origins, &n) == HW_OK && origins == NULL &&
+          n == 0);
+  }
   hw_mesh_free(mesh);
   /* An empty face list is an empty mesh, not an error; NULL arrays are fine with zero counts. */
   CHECK(hw_mesh_from_indexed(NULL, 0, NULL, 0, NULL, 0, HW_BUILD_STRICT, &built, NULL) == HW_OK);

@@ -1081,7 +1081,7 @@ hw_status hw_mesh_attribute_view(const hw_mesh *mesh,
 
 /**
  * Writable access to attribute `name` of `kind` (layout as hw_mesh_attribute_view()): write
- * through `*out_data` until the next call that modifies the mesh.
+ * through `*out_data` (NULL when empty) until the next call that modifies the mesh.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
@@ -1145,7 +1145,7 @@ hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_
 
 /**
  * A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
- * doubles (u, v per half-edge slot). `HW_ERR_NOT_FOUND` when the mesh has none.
+ * doubles (u, v per half-edge slot; NULL when empty). `HW_ERR_NOT_FOUND` when the mesh has none.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
@@ -1261,8 +1261,8 @@ void hw_diagnostic_free(hw_diagnostic *diagnostic);
 bool hw_diagnostic_is_clean(const hw_diagnostic *diagnostic);
 
 /**
- * A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` may be NULL when
- * the list is empty). The view lives as long as the diagnostic.
+ * A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` is NULL when the
+ * list is empty). The view lives as long as the diagnostic.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
@@ -1284,7 +1284,8 @@ hw_status hw_diagnostic_edge_count(const hw_diagnostic *diagnostic,
 
 /**
  * Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
- * and a zero-copy view of the input faces using it (ascending), valid as long as the diagnostic.
+ * and a zero-copy view of the input faces using it (ascending; NULL when empty), valid as long as
+ * the diagnostic.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
@@ -1420,8 +1421,8 @@ hw_status hw_mesh_triangulate_face(hw_mesh *mesh, hw_face f, size_t *out_n_faces
 hw_status hw_mesh_garbage_collect(hw_mesh *mesh, hw_index_maps **out_maps);
 
 /**
- * A read-only view of the old-to-new map of one element kind (`*out_len` entries, one per old
- * id slot). Lives as long as the maps.
+ * A read-only view of the old-to-new map of one element kind (`*out_map`, NULL when empty, with
+ * `*out_len` entries, one per old id slot). Lives as long as the maps.
  *
  * # Safety
  * `maps` must be NULL or live; `out_map` and `out_len` writable.
@@ -1471,7 +1472,8 @@ hw_status hw_soup_read(const char *path, hw_soup **out_soup);
 /**
  * Zero-copy views of a soup's arrays, in the form hw_mesh_from_indexed() takes: positions
  * (`3 * n_vertices` doubles), face sizes (`n_faces`) and corner indices (`n_indices`). They live
- * as long as the soup. Any output pointer may be NULL when not wanted.
+ * as long as the soup; an empty array's pointer is NULL. Any output pointer may be NULL when not
+ * wanted.
  *
  * # Safety
  * `soup` must be NULL or live; each output NULL or writable.
@@ -2418,8 +2420,8 @@ size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
 
 /**
  * A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
- * first, then Voronoi vertices inside it, then boundary crossings) and their number
- * `*out_n_positions`, valid as long as the cells.
+ * first, then Voronoi vertices inside it, then boundary crossings; NULL when empty) and their
+ * number `*out_n_positions`, valid as long as the cells.
  *
  * # Safety
  * `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.

@@ -14,7 +14,10 @@ use std::ffi::{CStr, c_char, c_void};
 
 use crate::mesh::{AttributeError, ElementKind, Mesh, ScalarType};
 
-use super::boundary::{Out, arg_mut, arg_ref, arg_slice, copy_text, give_pointer, guard};
+use super::boundary::{
+    Out, arg_mut, arg_ref, arg_slice, copy_text, give_pointer, guard, view_start, view_start_mut,
+    write_tuple_view,
+};
 use super::elements::{element_kind, hw_element_kind};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
@@ -82,12 +85,7 @@ fn column_memory(
     expected: ScalarType,
 ) -> Result<(*const c_void, usize), FfiError> {
     fn raw<T>(values: &[T]) -> (*const c_void, usize) {
-        let start = if values.is_empty() {
-            std::ptr::null()
-        } else {
-            values.as_ptr().cast()
-        };
-        (start, values.len())
+        (view_start(values).cast(), values.len())
     }
     Ok(match expected {
         ScalarType::F64 => raw(mesh.attribute::<f64>(kind, name)?),
@@ -106,12 +104,7 @@ fn column_memory_mut(
     expected: ScalarType,
 ) -> Result<(*mut c_void, usize), FfiError> {
     fn raw<T>(values: &mut [T]) -> (*mut c_void, usize) {
-        let start = if values.is_empty() {
-            std::ptr::null_mut()
-        } else {
-            values.as_mut_ptr().cast()
-        };
-        (start, values.len())
+        (view_start_mut(values).cast(), values.len())
     }
     Ok(match expected {
         ScalarType::F64 => raw(mesh.attribute_mut::<f64>(kind, name)?),
@@ -219,7 +212,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_view(
 }
 
 /// Writable access to attribute `name` of `kind` (layout as hw_mesh_attribute_view()): write
-/// through `*out_data` until the next call that modifies the mesh.
+/// through `*out_data` (NULL when empty) until the next call that modifies the mesh.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
@@ -316,15 +309,7 @@ unsafe fn corner_view<const N: usize>(
         let values = values(mesh)
             .ok_or_else(|| FfiError::new(HW_ERR_NOT_FOUND, format!("the mesh has no {name}")))?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe {
-            let flat = values.as_flattened();
-            out_data.write(if flat.is_empty() {
-                std::ptr::null()
-            } else {
-                flat.as_ptr()
-            });
-            out_n.write(values.len());
-        }
+        unsafe { write_tuple_view(out_data, out_n, values) };
         Ok(())
     })
 }
@@ -401,7 +386,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_set(
 }
 
 /// A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
-/// doubles (u, v per half-edge slot). `HW_ERR_NOT_FOUND` when the mesh has none.
+/// doubles (u, v per half-edge slot; NULL when empty). `HW_ERR_NOT_FOUND` when the mesh has none.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.

@@ -256,12 +256,23 @@ pub(crate) unsafe fn give_pointer<P>(
     })
 }
 
-/// The start of a view as handed to C: NULL when it is empty.
-fn view_start<T>(data: &[T]) -> *const T {
+/// The start of a view as handed to C: NULL when it is empty. Every zero-copy view goes through
+/// here, so an empty one is NULL whichever call gives it.
+pub(crate) fn view_start<T>(data: &[T]) -> *const T {
     if data.is_empty() {
         std::ptr::null()
     } else {
         data.as_ptr()
+    }
+}
+
+/// [`view_start`] of memory the caller may write through (a pointer derived from a shared
+/// borrow must not be written through).
+pub(crate) fn view_start_mut<T>(data: &mut [T]) -> *mut T {
+    if data.is_empty() {
+        std::ptr::null_mut()
+    } else {
+        data.as_mut_ptr()
     }
 }
 
@@ -273,6 +284,23 @@ pub(crate) unsafe fn write_view<T>(out_data: Out<*const T>, out_len: Out<usize>,
     // SAFETY: forwarded from the caller.
     unsafe {
         out_data.write(view_start(data));
+        out_len.write(data.len());
+    }
+}
+
+/// Writes a zero-copy view of fixed-size tuples (points, normals) as their scalars: `*out_data`
+/// (NULL when empty) and the number of tuples `*out_len`.
+///
+/// # Safety
+/// As for [`Out::write`].
+pub(crate) unsafe fn write_tuple_view<T, const N: usize>(
+    out_data: Out<*const T>,
+    out_len: Out<usize>,
+    data: &[[T; N]],
+) {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        out_data.write(view_start(data.as_flattened()));
         out_len.write(data.len());
     }
 }

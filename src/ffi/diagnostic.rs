@@ -2,7 +2,9 @@
 
 use crate::soup::{Diagnostic, EdgeReport};
 
-use super::boundary::{Out, arg_ref, copy_text, give_view, guard, guard_value, guard_void};
+use super::boundary::{
+    Out, arg_ref, copy_text, give_view, guard, guard_value, guard_void, view_start,
+};
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
@@ -169,8 +171,8 @@ pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic
     })
 }
 
-/// A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` may be NULL when
-/// the list is empty). The view lives as long as the diagnostic.
+/// A zero-copy view of one id list (`*out_ids`, `*out_len` elements; `*out_ids` is NULL when the
+/// list is empty). The view lives as long as the diagnostic.
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
@@ -213,7 +215,8 @@ pub unsafe extern "C" fn hw_diagnostic_edge_count(
 }
 
 /// Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
-/// and a zero-copy view of the input faces using it (ascending), valid as long as the diagnostic.
+/// and a zero-copy view of the input faces using it (ascending; NULL when empty), valid as long as
+/// the diagnostic.
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
@@ -243,7 +246,7 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
         // written unaligned-safe as `u32` is its own alignment).
         unsafe {
             out_vertices.write(edge.vertices);
-            out_faces.write(edge.faces.as_ptr());
+            out_faces.write(view_start(&edge.faces));
             out_n_faces.write(edge.faces.len());
         }
         Ok(())
@@ -270,4 +273,34 @@ pub unsafe extern "C" fn hw_diagnostic_summary(
         // SAFETY: forwarded from the caller.
         unsafe { copy_text(&diagnostic.diagnostic.summary(), buf, len, needed) }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_edge_without_faces_gives_a_null_view() {
+        // Before: the raw pointer of the empty list (dangling, not NULL) was handed out.
+        let mut diagnostic = Diagnostic::default();
+        diagnostic.non_manifold_edges.push(EdgeReport {
+            vertices: [1, 2],
+            faces: Vec::new(),
+        });
+        let handle = hw_diagnostic::into_handle(diagnostic);
+        let (mut vertices, mut faces, mut n_faces) = ([0u32; 2], std::ptr::dangling(), 99usize);
+        let status = unsafe {
+            hw_diagnostic_edge(
+                handle,
+                HW_DIAG_NON_MANIFOLD_EDGES,
+                0,
+                vertices.as_mut_ptr(),
+                &mut faces,
+                &mut n_faces,
+            )
+        };
+        assert_eq!(status, HW_OK);
+        assert_eq!((vertices, faces, n_faces), ([1, 2], std::ptr::null(), 0));
+        unsafe { hw_diagnostic_free(handle) };
+    }
 }

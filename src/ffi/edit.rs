@@ -263,8 +263,8 @@ pub unsafe extern "C" fn hw_mesh_garbage_collect(
     }
 }
 
-/// A read-only view of the old-to-new map of one element kind (`*out_len` entries, one per old
-/// id slot). Lives as long as the maps.
+/// A read-only view of the old-to-new map of one element kind (`*out_map`, NULL when empty, with
+/// `*out_len` entries, one per old id slot). Lives as long as the maps.
 ///
 /// # Safety
 /// `maps` must be NULL or live; `out_map` and `out_len` writable.

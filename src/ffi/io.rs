@@ -8,7 +8,7 @@ use crate::io::{IoError, read_path, write_path};
 use crate::mesh::Mesh;
 use crate::soup::PolygonSoup;
 
-use super::boundary::{Out, arg_ref, guard, guard_void, write_view};
+use super::boundary::{Out, arg_ref, guard, guard_void, view_start, write_view};
 use super::diagnostic::{give_built, hw_diagnostic};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -77,7 +77,8 @@ pub unsafe extern "C" fn hw_soup_read(
 
 /// Zero-copy views of a soup's arrays, in the form hw_mesh_from_indexed() takes: positions
 /// (`3 * n_vertices` doubles), face sizes (`n_faces`) and corner indices (`n_indices`). They live
-/// as long as the soup. Any output pointer may be NULL when not wanted.
+/// as long as the soup; an empty array's pointer is NULL. Any output pointer may be NULL when not
+/// wanted.
 ///
 /// # Safety
 /// `soup` must be NULL or live; each output NULL or writable.
@@ -97,12 +98,7 @@ pub unsafe extern "C" fn hw_soup_view(
         // SAFETY: each output is NULL (skipped) or writable per the caller.
         unsafe {
             if let Some(out) = Out::optional(out_positions) {
-                let xyz = soup.positions.as_flattened();
-                out.write(if xyz.is_empty() {
-                    std::ptr::null()
-                } else {
-                    xyz.as_ptr()
-                });
+                out.write(view_start(soup.positions.as_flattened()));
             }
             if let Some(out) = Out::optional(out_n_vertices) {
                 out.write(soup.positions.len());

@@ -11,7 +11,7 @@
 
 use crate::mesh::Mesh;
 
-use super::boundary::{Out, give_view, guard};
+use super::boundary::{Out, give_view, guard, write_tuple_view};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
 use super::status::hw_status;
@@ -84,15 +84,7 @@ pub unsafe extern "C" fn hw_mesh_view_positions(
         // SAFETY: forwarded from the caller.
         let positions = unsafe { mesh_ref(mesh) }?.positions();
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe {
-            let xyz = positions.as_flattened();
-            out_xyz.write(if xyz.is_empty() {
-                std::ptr::null()
-            } else {
-                xyz.as_ptr()
-            });
-            out_n.write(positions.len());
-        }
+        unsafe { write_tuple_view(out_xyz, out_n, positions) };
         Ok(())
     })
 }

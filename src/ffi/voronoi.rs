@@ -9,6 +9,7 @@ use crate::voronoi::{Dimension, EdgeGeometry, INVALID, Voronoi, VoronoiError};
 
 use super::boundary::{
     Out, arg_ref, arg_slice, copy_items, give_view, guard, guard_value, guard_void,
+    write_tuple_view,
 };
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
@@ -289,22 +290,6 @@ pub unsafe extern "C" fn hw_voronoi_view(
     }
 }
 
-/// Writes a view of points as `2 * len` doubles.
-///
-/// # Safety
-/// As for [`write_view`].
-unsafe fn write_points(out_xy: Out<*const f64>, out_len: Out<usize>, points: &[[f64; 2]]) {
-    // SAFETY: `[f64; 2]` is two contiguous doubles; forwarded from the caller.
-    unsafe {
-        out_xy.write(if points.is_empty() {
-            std::ptr::null()
-        } else {
-            points.as_ptr().cast::<f64>()
-        });
-        out_len.write(points.len());
-    }
-}
-
 /// A read-only view of the sites as given: `*out_xy` (x, y per site, NULL when empty) and the
 /// number of sites `*out_n_sites`, valid as long as the diagram.
 ///
@@ -324,7 +309,7 @@ pub unsafe extern "C" fn hw_voronoi_sites(
         // SAFETY: forwarded from the caller.
         let sites = unsafe { voronoi_ref(voronoi) }?.delaunay().sites();
         // SAFETY: both checked non-NULL, writable per the caller.
-        unsafe { write_points(out_xy, out_len, sites) };
+        unsafe { write_tuple_view(out_xy, out_len, sites) };
         Ok(())
     })
 }
@@ -348,7 +333,7 @@ pub unsafe extern "C" fn hw_voronoi_vertices(
         // SAFETY: forwarded from the caller.
         let vertices = unsafe { voronoi_ref(voronoi) }?.vertices();
         // SAFETY: both checked non-NULL, writable per the caller.
-        unsafe { write_points(out_xy, out_len, vertices) };
+        unsafe { write_tuple_view(out_xy, out_len, vertices) };
         Ok(())
     })
 }

@@ -5,7 +5,9 @@ use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
 use crate::voronoi::{ClipPolygon, ClippedCells, polygon_area_centroid};
 
-use super::boundary::{Out, arg_ref, copy_items, give_view, guard, guard_value, guard_void};
+use super::boundary::{
+    Out, arg_ref, copy_items, give_view, guard, guard_value, guard_void, write_tuple_view,
+};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::hw_mesh;
@@ -136,8 +138,8 @@ pub unsafe extern "C" fn hw_voronoi_cells_count(cells: *const hw_voronoi_cells) 
 }
 
 /// A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
-/// first, then Voronoi vertices inside it, then boundary crossings) and their number
-/// `*out_n_positions`, valid as long as the cells.
+/// first, then Voronoi vertices inside it, then boundary crossings; NULL when empty) and their
+/// number `*out_n_positions`, valid as long as the cells.
 ///
 /// # Safety
 /// `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.
@@ -154,15 +156,8 @@ pub unsafe extern "C" fn hw_voronoi_cells_positions(
         );
         // SAFETY: forwarded from the caller.
         let positions = unsafe { cells_ref(cells) }?.positions();
-        // SAFETY: both checked non-NULL, writable per the caller; `[f64; 2]` is two doubles.
-        unsafe {
-            out_xy.write(if positions.is_empty() {
-                std::ptr::null()
-            } else {
-                positions.as_ptr().cast::<f64>()
-            });
-            out_len.write(positions.len());
-        }
+        // SAFETY: both checked non-NULL, writable per the caller.
+        unsafe { write_tuple_view(out_xy, out_len, positions) };
         Ok(())
     })
 }
