@@ -305,7 +305,8 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
       repeats,
       [&] {
         hw::check(hw_mesh_normals(mesh.get(), HW_WEIGHT_UNIFORM, face_normals.data(),
-                                  mesh.n_faces(), vertex_normals.data(), mesh.n_vertices()));
+                                  mesh.n_faces(), nullptr, vertex_normals.data(),
+                                  mesh.n_vertices(), nullptr));
       },
       [&] { om.update_normals(); });
   double worst_normal_gap = 0;

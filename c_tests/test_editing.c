@@ -44,7 +44,7 @@ static void normals(void) {
       CHECK(fabs(vertices[3 * v + 2] - (p[2] - 0.5) * 2 * c) < 1e-12);
     }
   }
-  CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, vertices, 8) == HW_OK);
+  CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, NULL, vertices, 8, NULL) == HW_OK);
   /* Crease angle 0: every corner takes its face's normal (flat shading). */
   CHECK(hw_mesh_corner_normals(mesh, 0.0, corners, 24, &needed) == HW_OK && needed == 24);
   for (h = 0; h < 24; ++h) {
@@ -72,8 +72,28 @@ static void normals(void) {
                "weighting 9");
   CHECK_STATUS(hw_mesh_vertex_normals(NULL, HW_WEIGHT_UNIFORM, vertices, 8, NULL),
                HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, vertices, 7),
-               HW_ERR_BUFFER_TOO_SMALL, "8 are needed");
+  {
+    /* Too small: both needed sizes come back, whichever array is short, and neither array is
+     * written. */
+    size_t face_needed = 0, vertex_needed = 0;
+    memset(faces, 0, sizeof faces);
+    memset(vertices, 0, sizeof vertices);
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, &face_needed, vertices, 7,
+                                 &vertex_needed),
+                 HW_ERR_BUFFER_TOO_SMALL, "8 are needed");
+    CHECK(face_needed == 6 && vertex_needed == 8);
+    face_needed = vertex_needed = 0;
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 5, &face_needed, vertices, 8,
+                                 &vertex_needed),
+                 HW_ERR_BUFFER_TOO_SMALL, "6 are needed");
+    CHECK(face_needed == 6 && vertex_needed == 8);
+    face_needed = vertex_needed = 0;
+    CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, NULL, 0, &face_needed, NULL, 0,
+                          &vertex_needed) == HW_ERR_BUFFER_TOO_SMALL);
+    CHECK(face_needed == 6 && vertex_needed == 8);
+    for (f = 0; f < 18; ++f) CHECK(faces[f] == 0);
+    for (v = 0; v < 24; ++v) CHECK(vertices[v] == 0);
+  }
   CHECK_STATUS(hw_mesh_corner_normals(mesh, -1.0, corners, 24, NULL), HW_ERR_INVALID_INPUT,
                "crease");
   CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE) == 24);

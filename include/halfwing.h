@@ -1764,18 +1764,23 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
 /**
  * Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
  * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
- * (see hw_mesh_slot_count()).
+ * (see hw_mesh_slot_count()). `*face_needed` and `*vertex_needed` (each when not NULL) always
+ * receive those counts, both of them also when either array is too small (then
+ * `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
  *
  * # Safety
  * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
- * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+ * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
+ * `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
  */
 hw_status hw_mesh_normals(const hw_mesh *mesh,
                           hw_normal_weighting weighting_kind,
                           double *out_face_normals,
                           size_t face_capacity,
+                          size_t *face_needed,
                           double *out_vertex_normals,
-                          size_t vertex_capacity);
+                          size_t vertex_capacity,
+                          size_t *vertex_needed);
 
 /**
  * Per-corner normals, one per half-edge slot (the corner at the half-edge's origin inside its

@@ -69,7 +69,7 @@ static void print_valences(const hw_mesh *mesh) {
 static int print_normals(const hw_mesh *mesh) {
     size_t n_faces = hw_mesh_slot_count(mesh, HW_ELEMENT_FACE), n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_VERTEX);
     double *faces = malloc(3 * n_faces * sizeof *faces), *vertices = malloc(3 * n_vertices * sizeof *vertices);
-    hw_status status = faces && vertices ? hw_mesh_normals(mesh, HW_WEIGHT_ANGLE, faces, n_faces, vertices, n_vertices)
+    hw_status status = faces && vertices ? hw_mesh_normals(mesh, HW_WEIGHT_ANGLE, faces, n_faces, NULL, vertices, n_vertices, NULL)
                                          : HW_ERR_INVALID_INPUT;
     if (status == HW_OK) {
         for (size_t f = 0; f < 3 && f < n_faces; ++f)

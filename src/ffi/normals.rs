@@ -113,41 +113,50 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
 
 /// Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
 /// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
-/// (see hw_mesh_slot_count()).
+/// (see hw_mesh_slot_count()). `*face_needed` and `*vertex_needed` (each when not NULL) always
+/// receive those counts, both of them also when either array is too small (then
+/// `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
 ///
 /// # Safety
 /// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
-/// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles.
+/// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
+/// `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
 #[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hw_mesh_normals(
     mesh: *const hw_mesh,
     weighting_kind: hw_normal_weighting,
     out_face_normals: *mut f64,
     face_capacity: usize,
+    face_needed: *mut usize,
     out_vertex_normals: *mut f64,
     vertex_capacity: usize,
+    vertex_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
         let weighting = weighting(weighting_kind)?;
+        // Both arrays are checked (and both sizes reported) before either result is looked at.
         // SAFETY: forwarded from the caller.
-        let (faces, vertices) = unsafe {
-            (
-                normal_buffer(
-                    out_face_normals,
-                    face_capacity,
-                    mesh.face_capacity(),
-                    std::ptr::null_mut(),
-                )?,
-                normal_buffer(
-                    out_vertex_normals,
-                    vertex_capacity,
-                    mesh.vertex_capacity(),
-                    std::ptr::null_mut(),
-                )?,
+        let faces = unsafe {
+            normal_buffer(
+                out_face_normals,
+                face_capacity,
+                mesh.face_capacity(),
+                face_needed,
             )
         };
+        // SAFETY: forwarded from the caller.
+        let vertices = unsafe {
+            normal_buffer(
+                out_vertex_normals,
+                vertex_capacity,
+                mesh.vertex_capacity(),
+                vertex_needed,
+            )
+        };
+        let (faces, vertices) = (faces?, vertices?);
         with_threads(|| normals_into(mesh, weighting, Some(faces), vertices));
         Ok(())
     })
