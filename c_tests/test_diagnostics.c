@@ -126,6 +126,16 @@ static void remaining_calls(void) {
   CHECK(components[0] == 0 && components[1] == 0);
   CHECK_STATUS(hw_mesh_face_components(mesh, components, 1, &n), HW_ERR_BUFFER_TOO_SMALL,
                "2 are needed");
+  {
+    /* A misaligned output array is refused like a misaligned input one; the needed size still
+     * comes back and the memory is untouched. */
+    uint64_t storage[2] = {0, 0};
+    uint32_t *misaligned = (uint32_t *)(void *)((unsigned char *)storage + 1);
+    n = 0;
+    CHECK_STATUS(hw_mesh_face_components(mesh, misaligned, 2, &n), HW_ERR_INVALID_INPUT,
+                 "argument `out_components` is misaligned");
+    CHECK(n == 2 && storage[0] == 0 && storage[1] == 0);
+  }
 
   /* Write, read back, same counts. */
   snprintf(path, sizeof path, "%s/halfwing_test_diagnostics.off", TEST_TMP_DIR);

@@ -68,6 +68,22 @@ static void normals(void) {
                "6 are needed");
   CHECK(needed == 6);
   CHECK_STATUS(hw_mesh_face_normals(mesh, NULL, 0, &needed), HW_ERR_BUFFER_TOO_SMALL, "needed");
+  {
+    /* Misaligned output arrays are refused, naming the argument; nothing is written. */
+    double storage[3 * 24 + 1];
+    double *misaligned = (double *)(void *)((unsigned char *)storage + 1);
+    size_t face_needed = 0, vertex_needed = 0;
+    memset(storage, 0, sizeof storage);
+    CHECK_STATUS(hw_mesh_face_normals(mesh, misaligned, 6, &needed), HW_ERR_INVALID_INPUT,
+                 "argument `out_normals` is misaligned");
+    CHECK_STATUS(hw_mesh_corner_normals(mesh, 0.0, misaligned, 24, &needed),
+                 HW_ERR_INVALID_INPUT, "argument `out_normals` is misaligned");
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, &face_needed, misaligned, 8,
+                                 &vertex_needed),
+                 HW_ERR_INVALID_INPUT, "argument `out_vertex_normals` is misaligned");
+    CHECK(face_needed == 6 && vertex_needed == 8);
+    for (h = 0; h < 3 * 24 + 1; ++h) CHECK(storage[h] == 0);
+  }
   CHECK_STATUS(hw_mesh_vertex_normals(mesh, 9u, vertices, 8, NULL), HW_ERR_INVALID_INPUT,
                "weighting 9");
   CHECK_STATUS(hw_mesh_vertex_normals(NULL, HW_WEIGHT_UNIFORM, vertices, 8, NULL),

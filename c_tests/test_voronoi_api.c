@@ -391,6 +391,16 @@ static void lloyd(void) {
   CHECK_STATUS(hw_voronoi_lloyd(with_nan, N_SITES, rect, 4, 0, 0, out, &iterations, NULL),
                HW_ERR_INVALID_INPUT, "site 3 has a non-finite coordinate");
   CHECK(iterations == 77 && memcmp(out, xy, sizeof out) == 0);
+  {
+    /* A misaligned output array is refused like a misaligned input one. */
+    double storage[2 * N_SITES + 1];
+    double *misaligned = (double *)(void *)((unsigned char *)storage + 1);
+    memset(storage, 0, sizeof storage);
+    CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, 0, misaligned, &iterations, NULL),
+                 HW_ERR_INVALID_INPUT, "argument `out_xy` is misaligned");
+    CHECK(iterations == 77);
+    for (i = 0; i < 2 * N_SITES + 1; ++i) CHECK(storage[i] == 0);
+  }
   CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, not_convex, 4, 5, 0, out, NULL, NULL),
                HW_ERR_INVALID_INPUT, "not convex");
   CHECK_STATUS(hw_voronoi_lloyd(xy, N_SITES, rect, 4, 5, 0, NULL, NULL, NULL),
@@ -421,6 +431,16 @@ static void label_images(void) {
                HW_ERR_INVALID_INPUT, "raster size");
   CHECK_STATUS(hw_voronoi_label_image(v, HW_METRIC_EUCLIDEAN, NAN, 0, 4, 4, 2, 2, small, 4, NULL),
                HW_ERR_INVALID_INPUT, "non-finite");
+  {
+    /* A misaligned output array is refused before any work; the needed size still comes back. */
+    uint64_t storage[3] = {0, 0, 0};
+    uint32_t *misaligned = (uint32_t *)(void *)((unsigned char *)storage + 1);
+    needed = 0;
+    CHECK_STATUS(hw_voronoi_label_image(v, HW_METRIC_EUCLIDEAN, 0, 0, 4, 4, 2, 2, misaligned, 4,
+                                        &needed),
+                 HW_ERR_INVALID_INPUT, "argument `out_labels` is misaligned");
+    CHECK(needed == 4 && storage[0] == 0 && storage[1] == 0 && storage[2] == 0);
+  }
   hw_voronoi_free(v);
 }
 

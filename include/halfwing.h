@@ -2492,8 +2492,8 @@ hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
  *
  * `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
  * count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
- * without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric or a
- * non-finite bound give `HW_ERR_INVALID_INPUT`.
+ * without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric, a
+ * non-finite bound or a misaligned `out_labels` give `HW_ERR_INVALID_INPUT`.
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
@@ -2558,7 +2558,8 @@ hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
  * `*out_iterations` and `*out_max_displacement` (each may be NULL) receive the iterations run
  * and the largest move of the last one. Bad sites, a bad clip polygon (see
  * hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`,
- * naming the site or the tolerance; sites are checked also when `max_iterations` is 0.
+ * naming the site or the tolerance (sites are checked also when `max_iterations` is 0); so does
+ * a misaligned `out_xy`.
  *
  * # Safety
  * `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only

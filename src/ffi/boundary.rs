@@ -83,6 +83,18 @@ pub(crate) unsafe fn arg_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T
     unsafe { ptr.as_mut() }.ok_or_else(|| FfiError::null_argument(name))
 }
 
+/// Refuses a misaligned pointer argument, input or output, naming it: Rust may not read or
+/// write through one, and C code only makes one by mistake (a cast of a byte buffer).
+pub(crate) fn check_aligned<T>(ptr: *const T, name: &str) -> Result<(), FfiError> {
+    if ptr.is_aligned() {
+        Ok(())
+    } else {
+        Err(FfiError::invalid_input(format!(
+            "argument `{name}` is misaligned"
+        )))
+    }
+}
+
 /// Borrows `len` elements starting at `ptr`. NULL is accepted only when `len` is 0.
 ///
 /// # Safety
@@ -99,11 +111,7 @@ pub(crate) unsafe fn arg_slice<'a, T>(
     if ptr.is_null() {
         return Err(FfiError::null_argument(name));
     }
-    if !ptr.is_aligned() {
-        return Err(FfiError::invalid_input(format!(
-            "argument `{name}` is misaligned"
-        )));
-    }
+    check_aligned(ptr, name)?;
     if len
         .checked_mul(size_of::<T>())
         .is_none_or(|bytes| bytes > isize::MAX as usize)
@@ -120,13 +128,13 @@ pub(crate) unsafe fn arg_slice<'a, T>(
 pub(crate) struct Out<T>(*mut T);
 
 impl<T> Out<T> {
-    /// Checks an output pointer.
+    /// Checks an output pointer: not NULL, aligned.
     pub(crate) fn new(ptr: *mut T, name: &str) -> Result<Self, FfiError> {
         if ptr.is_null() {
-            Err(FfiError::null_argument(name))
-        } else {
-            Ok(Out(ptr))
+            return Err(FfiError::null_argument(name));
         }
+        check_aligned(ptr, name)?;
+        Ok(Out(ptr))
     }
 
     /// An optional output: NULL means the caller does not want it.
@@ -176,36 +184,55 @@ pub(crate) unsafe fn copy_text(
     Ok(())
 }
 
-/// Copies `items` into a caller's array of `capacity` elements: the array form of
-/// [`copy_text`]. `*needed` (when not NULL) always receives `items.len()`; when `out` is NULL or
-/// too small, nothing is written to it and the error is `HW_ERR_BUFFER_TOO_SMALL`.
+/// Checks a caller's output array of `capacity` elements that must take `count` of them: the
+/// array form of the [`copy_text`] protocol. `*needed` (when not NULL) always receives `count`;
+/// when `out` is NULL or too small the error is `HW_ERR_BUFFER_TOO_SMALL`, when it is misaligned
+/// `HW_ERR_INVALID_INPUT` naming it (`name`). Returns the `count` elements to fill, which the
+/// caller does only once the call can no longer fail.
 ///
 /// # Safety
-/// `out` must be NULL or point to `capacity` writable elements; `needed` NULL or writable.
+/// `out` must be NULL or point to `capacity` writable elements that nothing else references
+/// for the returned lifetime; `needed` NULL or writable.
+pub(crate) unsafe fn out_array<'a, T>(
+    out: *mut T,
+    capacity: usize,
+    count: usize,
+    needed: *mut usize,
+    name: &str,
+) -> Result<&'a mut [T], FfiError> {
+    if !needed.is_null() {
+        // SAFETY: writable per the caller.
+        unsafe { needed.write(count) };
+    }
+    if count == 0 {
+        return Ok(&mut []);
+    }
+    if out.is_null() || capacity < count {
+        return Err(FfiError::new(
+            HW_ERR_BUFFER_TOO_SMALL,
+            format!("argument `{name}` holds {capacity} elements, {count} are needed"),
+        ));
+    }
+    check_aligned(out, name)?;
+    // SAFETY: non-NULL, aligned, at least `count` writable elements per the caller (so the size
+    // fits in memory).
+    Ok(unsafe { std::slice::from_raw_parts_mut(out, count) })
+}
+
+/// Copies `items` into a caller's array of `capacity` elements (`name` in the C signature), with
+/// the protocol of [`out_array`]: nothing is written to it on an error.
+///
+/// # Safety
+/// As for [`out_array`].
 pub(crate) unsafe fn copy_items<T: Copy>(
     items: &[T],
     out: *mut T,
     capacity: usize,
     needed: *mut usize,
+    name: &str,
 ) -> Result<(), FfiError> {
-    if !needed.is_null() {
-        // SAFETY: writable per the caller.
-        unsafe { needed.write(items.len()) };
-    }
-    if items.is_empty() {
-        return Ok(());
-    }
-    if out.is_null() || capacity < items.len() {
-        return Err(FfiError::new(
-            HW_ERR_BUFFER_TOO_SMALL,
-            format!(
-                "the array holds {capacity} elements, {} are needed",
-                items.len()
-            ),
-        ));
-    }
-    // SAFETY: `out` holds at least `items.len()` writable elements; `items` is Rust-owned.
-    unsafe { std::ptr::copy_nonoverlapping(items.as_ptr(), out, items.len()) };
+    // SAFETY: forwarded from the caller.
+    unsafe { out_array(out, capacity, items.len(), needed, name) }?.copy_from_slice(items);
     Ok(())
 }
 

@@ -7,7 +7,7 @@
 
 use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, normals_into};
 
-use super::boundary::{copy_items, guard};
+use super::boundary::{copy_items, guard, out_array};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, mesh_ref};
 use super::status::*;
@@ -33,7 +33,8 @@ pub(crate) fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeightin
     }
 }
 
-/// Borrows `capacity` normals of a caller buffer when it can hold `slots` of them.
+/// Borrows the `slots` normals of a caller's buffer of `capacity` normals (`name` in the C
+/// signature), with the protocol of [`out_array`].
 ///
 /// # Safety
 /// `out` must be NULL or point to `3 * capacity` writable doubles.
@@ -42,26 +43,10 @@ unsafe fn normal_buffer<'a>(
     capacity: usize,
     slots: usize,
     needed: *mut usize,
+    name: &str,
 ) -> Result<&'a mut [[f64; 3]], FfiError> {
-    if !needed.is_null() {
-        // SAFETY: writable per the caller.
-        unsafe { needed.write(slots) };
-    }
-    if slots == 0 {
-        return Ok(&mut []);
-    }
-    if out.is_null() || capacity < slots {
-        return Err(FfiError::new(
-            HW_ERR_BUFFER_TOO_SMALL,
-            format!("the buffer holds {capacity} normals, {slots} are needed"),
-        ));
-    }
-    if !out.is_aligned() {
-        return Err(FfiError::invalid_input("normal buffer is misaligned"));
-    }
-    // SAFETY: at least `slots` triples of writable doubles per the caller; `[f64; 3]` has the
-    // alignment of `f64`.
-    Ok(unsafe { std::slice::from_raw_parts_mut(out.cast::<[f64; 3]>(), slots) })
+    // SAFETY: forwarded from the caller; `[f64; 3]` has the alignment of `f64`.
+    unsafe { out_array(out.cast::<[f64; 3]>(), capacity, slots, needed, name) }
 }
 
 /// Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
@@ -80,7 +65,15 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
         // SAFETY: forwarded from the caller.
-        let out = unsafe { normal_buffer(out_normals, capacity, mesh.face_capacity(), needed) }?;
+        let out = unsafe {
+            normal_buffer(
+                out_normals,
+                capacity,
+                mesh.face_capacity(),
+                needed,
+                "out_normals",
+            )
+        }?;
         with_threads(|| face_normals_into(mesh, out));
         Ok(())
     })
@@ -105,7 +98,15 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
         let mesh = unsafe { mesh_ref(mesh) }?;
         let weighting = weighting(weighting_kind)?;
         // SAFETY: forwarded from the caller.
-        let out = unsafe { normal_buffer(out_normals, capacity, mesh.vertex_capacity(), needed) }?;
+        let out = unsafe {
+            normal_buffer(
+                out_normals,
+                capacity,
+                mesh.vertex_capacity(),
+                needed,
+                "out_normals",
+            )
+        }?;
         with_threads(|| normals_into(mesh, weighting, None, out));
         Ok(())
     })
@@ -145,6 +146,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
                 face_capacity,
                 mesh.face_capacity(),
                 face_needed,
+                "out_face_normals",
             )
         };
         // SAFETY: forwarded from the caller.
@@ -154,6 +156,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
                 vertex_capacity,
                 mesh.vertex_capacity(),
                 vertex_needed,
+                "out_vertex_normals",
             )
         };
         let (faces, vertices) = (faces?, vertices?);
@@ -188,6 +191,14 @@ pub unsafe extern "C" fn hw_mesh_corner_normals(
         }
         let normals = with_threads(|| corner_normals(mesh, crease_angle));
         // SAFETY: forwarded from the caller (capacity in normals).
-        unsafe { copy_items(&normals, out_normals.cast::<[f64; 3]>(), capacity, needed) }
+        unsafe {
+            copy_items(
+                &normals,
+                out_normals.cast::<[f64; 3]>(),
+                capacity,
+                needed,
+                "out_normals",
+            )
+        }
     })
 }

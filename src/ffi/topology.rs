@@ -64,7 +64,7 @@ pub unsafe extern "C" fn hw_mesh_boundary_loops(
             .map(Into::into)
             .collect();
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&loops, out_halfedges, capacity, needed) }
+        unsafe { copy_items(&loops, out_halfedges, capacity, needed, "out_halfedges") }
     })
 }
 
@@ -106,6 +106,14 @@ pub unsafe extern "C" fn hw_mesh_face_components(
         // SAFETY: forwarded from the caller.
         let components = unsafe { mesh_ref(mesh) }?.connected_components();
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&components.face_component, out_components, capacity, needed) }
+        unsafe {
+            copy_items(
+                &components.face_component,
+                out_components,
+                capacity,
+                needed,
+                "out_components",
+            )
+        }
     })
 }

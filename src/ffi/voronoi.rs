@@ -497,7 +497,7 @@ pub unsafe extern "C" fn hw_voronoi_neighbours(
         let v = unsafe { voronoi_ref(voronoi) }?;
         let neighbours = v.neighbours(checked_site(v, site)?);
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&neighbours, out_sites, capacity, needed) }
+        unsafe { copy_items(&neighbours, out_sites, capacity, needed, "out_sites") }
     })
 }
 

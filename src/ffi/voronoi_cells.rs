@@ -263,6 +263,6 @@ pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
         // The soup decides which cells become faces; asking it keeps the two in agreement.
         let (_, face_sites) = unsafe { cells_ref(cells) }?.to_polygon_soup();
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&face_sites, out_sites, capacity, needed) }
+        unsafe { copy_items(&face_sites, out_sites, capacity, needed, "out_sites") }
     })
 }

@@ -5,7 +5,7 @@ use std::ffi::c_char;
 
 use crate::voronoi::{Metric, SvgOptions, to_svg};
 
-use super::boundary::{copy_text, guard};
+use super::boundary::{copy_text, guard, out_array};
 use super::error::FfiError;
 use super::io::path_arg;
 use super::status::*;
@@ -37,8 +37,8 @@ fn metric(raw: hw_metric) -> Result<Metric, FfiError> {
 ///
 /// `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
 /// count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
-/// without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric or a
-/// non-finite bound give `HW_ERR_INVALID_INPUT`.
+/// without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric, a
+/// non-finite bound or a misaligned `out_labels` give `HW_ERR_INVALID_INPUT`.
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
@@ -67,25 +67,14 @@ pub unsafe extern "C" fn hw_voronoi_label_image(
             .ok_or_else(|| {
                 FfiError::invalid_input(format!("{width}x{height} pixels overflow size_t"))
             })?;
-        if !needed.is_null() {
-            // SAFETY: writable per the caller.
-            unsafe { needed.write(pixels) };
-        }
-        if pixels > 0 && (out_labels.is_null() || capacity < pixels) {
-            return Err(FfiError::new(
-                HW_ERR_BUFFER_TOO_SMALL,
-                format!("the array holds {capacity} labels, {pixels} are needed"),
-            ));
-        }
+        // Checked before the work, which can be long.
+        // SAFETY: forwarded from the caller.
+        let labels = unsafe { out_array(out_labels, capacity, pixels, needed, "out_labels") }?;
         let image = with_threads(|| {
             v.delaunay()
                 .label_image(metric, [xmin, ymin], [xmax, ymax], width, height)
         })?;
-        // SAFETY: `out_labels` holds at least `pixels` writable elements (checked above); the
-        // image is a Rust allocation of exactly that many.
-        unsafe {
-            std::ptr::copy_nonoverlapping(image.labels.as_ptr(), out_labels, image.labels.len())
-        };
+        labels.copy_from_slice(&image.labels);
         Ok(())
     })
 }

@@ -2,7 +2,7 @@
 
 use crate::voronoi::{LloydOptions, lloyd_relaxation};
 
-use super::boundary::{Out, guard};
+use super::boundary::{Out, check_aligned, guard};
 use super::error::FfiError;
 use super::status::hw_status;
 use super::threads::with_threads;
@@ -20,7 +20,8 @@ use super::voronoi_cells::clip_polygon_arg;
 /// `*out_iterations` and `*out_max_displacement` (each may be NULL) receive the iterations run
 /// and the largest move of the last one. Bad sites, a bad clip polygon (see
 /// hw_voronoi_clip_convex()) or a negative or non-finite tolerance give `HW_ERR_INVALID_INPUT`,
-/// naming the site or the tolerance; sites are checked also when `max_iterations` is 0.
+/// naming the site or the tolerance (sites are checked also when `max_iterations` is 0); so does
+/// a misaligned `out_xy`.
 ///
 /// # Safety
 /// `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only
@@ -40,8 +41,11 @@ pub unsafe extern "C" fn hw_voronoi_lloyd(
     out_max_displacement: *mut f64,
 ) -> hw_status {
     guard(|| {
-        if n_sites > 0 && out_xy.is_null() {
-            return Err(FfiError::null_argument("out_xy"));
+        if n_sites > 0 {
+            if out_xy.is_null() {
+                return Err(FfiError::null_argument("out_xy"));
+            }
+            check_aligned(out_xy, "out_xy")?;
         }
         let out_iterations = Out::optional(out_iterations);
         let out_max_displacement = Out::optional(out_max_displacement);

@@ -592,7 +592,7 @@ pub unsafe extern "C" fn hw_winged_normals(
             }
         };
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(normals.as_flattened(), out_xyz, len, needed) }
+        unsafe { copy_items(normals.as_flattened(), out_xyz, len, needed, "out_xyz") }
     })
 }
 
