@@ -324,6 +324,16 @@ static void thread_count(void) {
   mesh = cube();
   hw_mesh_free(mesh);
   CHECK(hw_set_thread_count(0) == HW_OK);
+  /* Above the documented maximum: refused, naming the count and the maximum; the library goes
+   * on working with the setting it had. */
+  CHECK(HW_MAX_THREAD_COUNT >= 64);
+  CHECK_STATUS(hw_set_thread_count(HW_MAX_THREAD_COUNT + 1), HW_ERR_INVALID_INPUT,
+               "is above the maximum");
+  CHECK_STATUS(hw_set_thread_count(SIZE_MAX), HW_ERR_INVALID_INPUT, "thread count");
+  CHECK(last_error_contains("18446744073709551615") || last_error_contains("4294967295"));
+  mesh = cube();
+  CHECK(hw_mesh_n_faces(mesh) == 6);
+  hw_mesh_free(mesh);
 }
 
 int main(void) {

@@ -47,6 +47,14 @@
 #define HW_INVALID_INDEX UINT32_MAX
 
 /**
+ * The largest count hw_set_thread_count() accepts. Above the core count of any machine halfwing
+ * targets, so it limits no real use; it stops a mistaken value (`(size_t)-1`, a byte count)
+ * from trying to start that many threads, each with its own stack, and rayon from silently
+ * capping it.
+ */
+#define HW_MAX_THREAD_COUNT 1024
+
+/**
  * Major version: incompatible API changes.
  */
 #define HW_VERSION_MAJOR 0
@@ -2063,7 +2071,9 @@ hw_status hw_surface_ruled(const double *first,
 /**
  * Sets how many threads bulk construction and normal computation use from now on, for every
  * thread of the process: 1 runs them single-threaded, 0 restores the default (one per core).
- * In a build without the `parallel` feature everything is single-threaded and this is a no-op.
+ * A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
+ * setting. In a build without the `parallel` feature everything is single-threaded and a valid
+ * count changes nothing.
  */
 hw_status hw_set_thread_count(size_t count);
 

@@ -1,6 +1,7 @@
 //! How many threads the heavy calls (bulk construction, normals) may use.
 
 use super::boundary::guard;
+use super::error::FfiError;
 use super::status::hw_status;
 
 #[cfg(feature = "parallel")]
@@ -58,10 +59,25 @@ mod pool {
 
 pub(crate) use pool::with_threads;
 
+/// The largest count hw_set_thread_count() accepts. Above the core count of any machine halfwing
+/// targets, so it limits no real use; it stops a mistaken value (`(size_t)-1`, a byte count)
+/// from trying to start that many threads, each with its own stack, and rayon from silently
+/// capping it.
+pub const HW_MAX_THREAD_COUNT: usize = 1024;
+
 /// Sets how many threads bulk construction and normal computation use from now on, for every
 /// thread of the process: 1 runs them single-threaded, 0 restores the default (one per core).
-/// In a build without the `parallel` feature everything is single-threaded and this is a no-op.
+/// A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
+/// setting. In a build without the `parallel` feature everything is single-threaded and a valid
+/// count changes nothing.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_set_thread_count(count: usize) -> hw_status {
-    guard(|| pool::set(count))
+    guard(|| {
+        if count > HW_MAX_THREAD_COUNT {
+            return Err(FfiError::invalid_input(format!(
+                "thread count {count} is above the maximum of {HW_MAX_THREAD_COUNT}"
+            )));
+        }
+        pool::set(count)
+    })
 }
