@@ -204,6 +204,49 @@ static void named_attributes(void) {
                "out_count");
   CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_FACE, "colour"), HW_ERR_NOT_FOUND,
                "colour");
+  {
+    /* NULL mesh or name, unknown kinds, an index past the last and NULL outputs: refused, the
+     * outputs untouched, the attribute still there. */
+    hw_scalar_type unset_type = 99;
+    size_t unset_components = 4242, unset_len = 4242, unset_needed = 4242;
+    void *unset_data = NULL;
+    char unset_name[4] = "abc";
+    CHECK_STATUS(hw_mesh_attribute_info(NULL, HW_ELEMENT_VERTEX, "colour", &unset_type,
+                                        &unset_components),
+                 HW_ERR_NULL_ARGUMENT, "mesh");
+    CHECK_STATUS(hw_mesh_attribute_info(mesh, HW_ELEMENT_VERTEX, NULL, &unset_type,
+                                        &unset_components),
+                 HW_ERR_NULL_ARGUMENT, "name");
+    CHECK_STATUS(hw_mesh_attribute_info(mesh, 7u, "colour", &unset_type, &unset_components),
+                 HW_ERR_INVALID_INPUT, "element kind 7");
+    CHECK(unset_type == 99 && unset_components == 4242);
+    CHECK_STATUS(hw_mesh_attribute_remove(NULL, HW_ELEMENT_VERTEX, "colour"),
+                 HW_ERR_NULL_ARGUMENT, "mesh");
+    CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
+                 "name");
+    CHECK_STATUS(hw_mesh_attribute_remove(mesh, 7u, "colour"), HW_ERR_INVALID_INPUT,
+                 "element kind 7");
+    CHECK_STATUS(hw_mesh_attribute_name(NULL, HW_ELEMENT_VERTEX, 0, unset_name,
+                                        sizeof unset_name, &unset_needed),
+                 HW_ERR_NULL_ARGUMENT, "mesh");
+    CHECK_STATUS(hw_mesh_attribute_name(mesh, 7u, 0, unset_name, sizeof unset_name,
+                                        &unset_needed),
+                 HW_ERR_INVALID_INPUT, "element kind 7");
+    CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_VERTEX, 1, unset_name,
+                                        sizeof unset_name, &unset_needed),
+                 HW_ERR_NOT_FOUND, "does not exist");
+    CHECK(strcmp(unset_name, "abc") == 0 && unset_needed == 4242);
+    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, NULL,
+                                        &unset_len),
+                 HW_ERR_NULL_ARGUMENT, "out_data");
+    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32,
+                                        &unset_data, NULL),
+                 HW_ERR_NULL_ARGUMENT, "out_len");
+    CHECK(unset_data == NULL && unset_len == 4242);
+    CHECK(hw_mesh_attribute_info(mesh, HW_ELEMENT_VERTEX, "colour", &unset_type,
+                                 &unset_components) == HW_OK);
+    CHECK(unset_type == HW_SCALAR_F32 && unset_components == 3);
+  }
 
   /* Compaction keeps the values with their elements. */
   CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_FACE, "label", HW_SCALAR_I32, &data, &len) ==

@@ -54,6 +54,25 @@ static void diagnose_without_building(void) {
                HW_ERR_INVALID_INPUT, "edge 5");
   CHECK_STATUS(hw_diagnostic_edge(d, 7u, 0, ends, &faces, &n_faces), HW_ERR_INVALID_INPUT,
                "edge list 7");
+  {
+    /* NULL for the diagnostic or any output, or an index just past the list: refused, and no
+     * output is written. */
+    static const uint32_t sentinel_faces[1] = {0};
+    ends[0] = ends[1] = 77;
+    faces = sentinel_faces;
+    n_faces = 77;
+    CHECK_STATUS(hw_diagnostic_edge(NULL, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, &n_faces),
+                 HW_ERR_NULL_ARGUMENT, "diagnostic");
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, NULL, &faces, &n_faces),
+                 HW_ERR_NULL_ARGUMENT, "out_vertices");
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, NULL, &n_faces),
+                 HW_ERR_NULL_ARGUMENT, "out_faces");
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, NULL),
+                 HW_ERR_NULL_ARGUMENT, "out_n_faces");
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 1, ends, &faces, &n_faces),
+                 HW_ERR_INVALID_INPUT, "edge 1 of a list of 1");
+    CHECK(ends[0] == 77 && ends[1] == 77 && faces == sentinel_faces && n_faces == 77);
+  }
   CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, NULL),
                HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK_STATUS(hw_diagnostic_summary(NULL, NULL, 0, NULL), HW_ERR_NULL_ARGUMENT, "diagnostic");

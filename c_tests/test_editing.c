@@ -167,6 +167,18 @@ static void editing(void) {
   CHECK(len >= 1 && map[0] == HW_INVALID_INDEX);
   CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_FACE) == hw_mesh_n_faces(mesh));
   CHECK_STATUS(hw_index_maps_view(maps, 8u, &map, &len), HW_ERR_INVALID_INPUT, "kind 8");
+  {
+    /* NULL maps or outputs: refused, nothing written. */
+    const uint32_t *unset = NULL;
+    size_t unset_len = 4242;
+    CHECK_STATUS(hw_index_maps_view(NULL, HW_ELEMENT_FACE, &unset, &unset_len),
+                 HW_ERR_NULL_ARGUMENT, "maps");
+    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_FACE, NULL, &unset_len),
+                 HW_ERR_NULL_ARGUMENT, "out_map");
+    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_FACE, &unset, NULL), HW_ERR_NULL_ARGUMENT,
+                 "out_len");
+    CHECK(unset == NULL && unset_len == 4242);
+  }
   CHECK(hw_mesh_check(mesh) == HW_OK);
   hw_index_maps_free(maps);
   hw_index_maps_free(maps);

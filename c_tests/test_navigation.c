@@ -291,6 +291,98 @@ static void bad_arguments(void) {
   hw_mesh_free(mesh);
 }
 
+/* NULL meshes, circulators and outputs of the circulator calls: refused, nothing written, the
+ * circulator not advanced. */
+static void circulator_bad_arguments(void) {
+  hw_mesh *mesh = NULL;
+  hw_face face0 = {0};
+  hw_halfedge h0 = {0}, out_h = {4242};
+  hw_edge out_e = {4242};
+  hw_face out_f = {4242};
+  hw_circulator c, before, by_edge, by_face, by_halfedge;
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  memset(&c, 0xab, sizeof c);
+  before = c;
+  CHECK_STATUS(hw_circ_along_loop(NULL, h0, &c), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_circ_along_loop(mesh, h0, NULL), HW_ERR_NULL_ARGUMENT, "out");
+  CHECK_STATUS(hw_circ_around_face(NULL, face0, HW_CIRC_VERTICES, &c), HW_ERR_NULL_ARGUMENT,
+               "mesh");
+  CHECK_STATUS(hw_circ_around_face(mesh, face0, HW_CIRC_VERTICES, NULL), HW_ERR_NULL_ARGUMENT,
+               "out");
+  CHECK(memcmp(&c, &before, sizeof c) == 0);
+
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_EDGES, &by_edge) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_FACES, &by_face) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_HALFEDGES, &by_halfedge) == HW_OK);
+  CHECK(!hw_circ_next_edge(NULL, &out_e) && last_error_contains("circulator"));
+  CHECK(!hw_circ_next_face(NULL, &out_f) && last_error_contains("circulator"));
+  CHECK(!hw_circ_next_halfedge(NULL, &out_h) && last_error_contains("circulator"));
+  CHECK(out_e.idx == 4242 && out_f.idx == 4242 && out_h.idx == 4242);
+  before = by_edge;
+  CHECK(!hw_circ_next_edge(&by_edge, NULL) && last_error_contains("`out`"));
+  CHECK(memcmp(&by_edge, &before, sizeof by_edge) == 0);
+  before = by_face;
+  CHECK(!hw_circ_next_face(&by_face, NULL) && last_error_contains("`out`"));
+  CHECK(memcmp(&by_face, &before, sizeof by_face) == 0);
+  before = by_halfedge;
+  CHECK(!hw_circ_next_halfedge(&by_halfedge, NULL) && last_error_contains("`out`"));
+  CHECK(memcmp(&by_halfedge, &before, sizeof by_halfedge) == 0);
+  /* Still usable from the start: the refusals did not advance them. */
+  CHECK(hw_circ_next_edge(&by_edge, &out_e) && out_e.idx != 4242);
+  CHECK(hw_circ_next_halfedge(&by_halfedge, &out_h) && out_h.idx != 4242);
+  hw_mesh_free(mesh);
+}
+
+/* NULL meshes, unknown kinds and short or NULL outputs of the whole-mesh queries. */
+static void whole_mesh_query_bad_arguments(void) {
+  hw_mesh *mesh = NULL;
+  uint32_t components[8] = {77, 77, 77, 77, 77, 77, 77, 77};
+  hw_halfedge loops[2] = {{4242}, {4242}};
+  double normals[3 * 24];
+  const double *xyz = NULL;
+  size_t needed = 4242, count = 4242, face_needed = 4242, vertex_needed = 4242, corner_slots, i;
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
+                             &mesh, NULL) == HW_OK);
+  memset(normals, 0, sizeof normals);
+  CHECK_STATUS(hw_mesh_boundary_loops(NULL, loops, 2, &needed), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK(loops[0].idx == 4242 && needed == 4242);
+  CHECK_STATUS(hw_mesh_n_components(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_n_components(mesh, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
+  CHECK(count == 4242);
+  CHECK_STATUS(hw_mesh_face_components(NULL, components, 8, &needed), HW_ERR_NULL_ARGUMENT,
+               "mesh");
+  CHECK(components[0] == 77 && needed == 4242);
+  CHECK(hw_mesh_slot_count(NULL, HW_ELEMENT_VERTEX) == 0 && last_error_contains("mesh"));
+  CHECK(hw_mesh_slot_count(mesh, 9u) == 0 && last_error_contains("kind 9"));
+  CHECK_STATUS(hw_mesh_view_positions(NULL, &xyz, &count), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_view_positions(mesh, NULL, &count), HW_ERR_NULL_ARGUMENT, "out_xyz");
+  CHECK_STATUS(hw_mesh_view_positions(mesh, &xyz, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_n_vertices");
+  CHECK(xyz == NULL && count == 4242);
+
+  CHECK_STATUS(hw_mesh_face_normals(NULL, normals, 6, &needed), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_normals(NULL, HW_WEIGHT_UNIFORM, normals, 6, &face_needed, normals + 18,
+                               7, &vertex_needed),
+               HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_normals(mesh, 5u, normals, 6, &face_needed, normals + 18, 7,
+                               &vertex_needed),
+               HW_ERR_INVALID_INPUT, "unknown normal weighting 5");
+  CHECK(needed == 4242 && face_needed == 4242 && vertex_needed == 4242);
+  /* Too small: the needed sizes come back, the arrays stay untouched. */
+  CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, normals, 6, &face_needed, normals + 18,
+                               6, &vertex_needed),
+               HW_ERR_BUFFER_TOO_SMALL, "7 are needed");
+  CHECK(face_needed == 6 && vertex_needed == 7);
+  corner_slots = hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE);
+  CHECK(corner_slots == 24);
+  CHECK_STATUS(hw_mesh_corner_normals(mesh, 0.5, normals, corner_slots - 1, &needed),
+               HW_ERR_BUFFER_TOO_SMALL, "24 are needed");
+  CHECK(needed == corner_slots);
+  for (i = 0; i < 3 * 24; ++i) CHECK(normals[i] == 0);
+  hw_mesh_free(mesh);
+}
+
 static void bad_files(void) {
   hw_soup *soup = NULL;
   hw_mesh *mesh = NULL;
@@ -338,6 +430,8 @@ int main(void) {
   seed_loops_on("meshes/polygonal/cgal_double-torus-example.off");
   views_walk_like_circulators();
   bad_arguments();
+  circulator_bad_arguments();
+  whole_mesh_query_bad_arguments();
   bad_files();
   return check_summary("test_navigation");
 }

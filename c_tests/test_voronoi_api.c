@@ -180,6 +180,11 @@ static void meshes(void) {
   for (i = 0; i < 5; ++i) CHECK(face_sites[i] == i);
   CHECK_STATUS(hw_voronoi_cells_face_sites(cells, face_sites, 4, &needed), HW_ERR_BUFFER_TOO_SMALL,
                "5 are needed");
+  needed = 4242;
+  face_sites[0] = 77;
+  CHECK_STATUS(hw_voronoi_cells_face_sites(NULL, face_sites, 8, &needed), HW_ERR_NULL_ARGUMENT,
+               "cells");
+  CHECK(needed == 4242 && face_sites[0] == 77);
   hw_mesh_free(mesh);
 
   CHECK_STATUS(hw_voronoi_delaunay_mesh(v, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
@@ -425,8 +430,14 @@ static void label_images(void) {
   CHECK_STATUS(hw_voronoi_label_image(v, HW_METRIC_MANHATTAN, 0, 0, 4, 4, 16, 16, small, 4, &needed),
                HW_ERR_BUFFER_TOO_SMALL, "256 are needed");
   CHECK(needed == 256);
-  CHECK_STATUS(hw_voronoi_label_image(v, 7, 0, 0, 4, 4, 2, 2, small, 4, NULL), HW_ERR_INVALID_INPUT,
-               "unknown metric");
+  small[0] = small[3] = 77;
+  needed = 4242;
+  CHECK_STATUS(hw_voronoi_label_image(v, 7, 0, 0, 4, 4, 2, 2, small, 4, &needed),
+               HW_ERR_INVALID_INPUT, "unknown metric 7");
+  CHECK_STATUS(hw_voronoi_label_image(NULL, HW_METRIC_EUCLIDEAN, 0, 0, 4, 4, 2, 2, small, 4,
+                                      &needed),
+               HW_ERR_NULL_ARGUMENT, "voronoi");
+  CHECK(small[0] == 77 && small[3] == 77 && needed == 4242);
   CHECK_STATUS(hw_voronoi_label_image(v, HW_METRIC_EUCLIDEAN, 0, 0, 4, 4, 0, 2, small, 4, NULL),
                HW_ERR_INVALID_INPUT, "raster size");
   CHECK_STATUS(hw_voronoi_label_image(v, HW_METRIC_EUCLIDEAN, NAN, 0, 4, 4, 2, 2, small, 4, NULL),
