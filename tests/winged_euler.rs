@@ -326,3 +326,66 @@ fn garbage_collect_compacts_after_kills() {
     );
     assert_eq!(w.to_soup(), before);
 }
+
+/// A pillow (two triangles on the same three vertices) and a triangle touching it at vertex 0,
+/// built under Skip: vertex 0 is pinched, its two fans kept apart (two rings). Then KEF merges
+/// the pillow's faces, leaving a loop 0 → 1 → 2 → 1 → 0 in which vertex 0 dangles from edge 0
+/// (its pillow fan holds that one edge) while its other fan holds edges 3 and 5.
+fn pillow_pinched_to_a_triangle() -> Winged {
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, -1.0, 0.0],
+    ];
+    let idx = [0, 1, 2, 0, 2, 1, 0, 3, 4];
+    let fl = halfwing::soup::FaceList::triangles(&p, &idx);
+    let (mut w, d) = Winged::from_face_list(&fl, BuildPolicy::Skip).unwrap();
+    assert_eq!(d.non_manifold_vertices, [0]);
+    assert_eq!(w.edge(EdgeId(2)).unwrap().start, VertexId(2));
+    assert_eq!(w.edge(EdgeId(2)).unwrap().end, VertexId(0));
+    w.kef(EdgeId(2), FaceId(0)).unwrap();
+    w.check().unwrap();
+    w
+}
+
+/// Found by a randomized stress harness (seed 5602): KEV's "the vertex has no other edge" test
+/// looked only at the ring through the killed edge, so at a pinched vertex it deleted the vertex
+/// while the other fan's edges still ended there.
+#[test]
+fn kev_refuses_a_pinched_vertex_that_has_edges_in_another_fan() {
+    let mut w = pillow_pinched_to_a_triangle();
+    let snapshot = w.clone();
+    assert!(matches!(
+        w.kev(EdgeId(0), VertexId(0)),
+        Err(WingedError::VertexNotDangling { .. })
+    ));
+    assert_eq!(w, snapshot);
+    // Whichever edge the vertex stores, the answer is the same.
+    w.set_vertex_edge(VertexId(0), EdgeId(0)).unwrap();
+    let snapshot = w.clone();
+    assert!(matches!(
+        w.kev(EdgeId(0), VertexId(0)),
+        Err(WingedError::VertexNotDangling { .. })
+    ));
+    assert_eq!(w, snapshot);
+    // Its truly dangling neighbour goes.
+    w.kev(EdgeId(1), VertexId(2)).unwrap();
+    w.check().unwrap();
+}
+
+/// KEV of a solid's last edge leaves a point face on the other vertex; when that vertex is
+/// pinched (it has edges in another fan) a point face cannot hold it, so KEV is refused.
+#[test]
+fn kev_of_a_last_edge_at_a_pinched_vertex_is_refused() {
+    let mut w = pillow_pinched_to_a_triangle();
+    w.kev(EdgeId(1), VertexId(2)).unwrap();
+    w.check().unwrap();
+    let snapshot = w.clone();
+    assert!(matches!(
+        w.kev(EdgeId(0), VertexId(1)),
+        Err(WingedError::PointFaceAtSharedVertex { .. })
+    ));
+    assert_eq!(w, snapshot);
+}

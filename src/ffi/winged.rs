@@ -116,6 +116,7 @@ impl From<WingedError> for FfiError {
             | WingedError::AmbiguousCorner { .. }
             | WingedError::SelfLoop(_)
             | WingedError::VertexNotDangling { .. }
+            | WingedError::PointFaceAtSharedVertex { .. }
             | WingedError::EdgeNotBetweenTwoFaces(_)
             | WingedError::NotAPointFace(_)
             | WingedError::NotConvertible(_) => HW_ERR_REFUSED,

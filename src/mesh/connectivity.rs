@@ -58,6 +58,12 @@ impl Mesh {
         Mesh::default()
     }
 
+    /// Whether some vertex may have a fan its circulator misses (see the field's docs);
+    /// `false` is a guarantee.
+    pub(crate) fn may_have_pinched_vertices(&self) -> bool {
+        self.may_have_pinched_vertices
+    }
+
     /// Number of live (not deleted) vertices, isolated ones included.
     pub fn n_vertices(&self) -> usize {
         self.vertex_halfedge.len() - self.deleted.n_vertices

@@ -55,6 +55,7 @@ impl Winged {
             w.link_boundary_loops();
         }
         diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
+        w.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
         Ok((w, diagnostic))
     }
 
@@ -342,6 +343,8 @@ impl WingedFaces {
             n_live_faces: n_faces as u32,
             edges,
             point_faces: Vec::new(),
+            // Decided by the caller once the rings are complete.
+            may_have_pinched_vertices: true,
         }
     }
 }

@@ -85,6 +85,10 @@ impl Winged {
             *face = f(*face);
             *vertex = v(*vertex);
         }
+        if self.may_have_pinched_vertices {
+            // Kills may have left every vertex with one ring: look again (one linear pass).
+            self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
+        }
         Compaction {
             vertices,
             edges,

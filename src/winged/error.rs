@@ -82,6 +82,15 @@ pub enum WingedError {
         /// The edge.
         edge: EdgeId,
     },
+    /// KEV of a solid's last edge would leave a point face on a vertex that has edges in
+    /// another fan (a pinched vertex); a point face's vertex has no edges.
+    #[error("killing {edge} would leave a point face on {vertex}, which has edges in another fan")]
+    PointFaceAtSharedVertex {
+        /// The edge.
+        edge: EdgeId,
+        /// The vertex at the edge's other end.
+        vertex: VertexId,
+    },
     /// KEF needs two different real faces on the edge's sides.
     #[error("{0} does not separate two different faces")]
     EdgeNotBetweenTwoFaces(EdgeId),

@@ -116,6 +116,11 @@ impl Winged {
 
     /// **Kill edge, vertex**: removes `vertex` and its only edge `edge` (the inverse of MEV).
     /// When `edge` was the solid's last edge, its face becomes a point face on the other vertex.
+    ///
+    /// Refused with [`WingedError::VertexNotDangling`] when `vertex` has another edge, in its
+    /// ring or in another fan of a pinched vertex; and with
+    /// [`WingedError::PointFaceAtSharedVertex`] when `edge` is its solid's last edge but the
+    /// other vertex has edges in another fan (a point face's vertex has no edges).
     pub fn kev(&mut self, edge: EdgeId, vertex: VertexId) -> Result<(), WingedError> {
         self.require_vertex(vertex)?;
         let r = *self.edge(edge)?;
@@ -123,14 +128,23 @@ impl Winged {
             edge,
             what: "vertex",
         })?;
-        // `vertex` dangles when its loop comes in along `edge` and turns straight back.
-        if r.prev(side) != edge {
+        // `vertex` dangles when its loop comes in along `edge` and turns straight back (its ring
+        // is `edge` alone) and it has no edge outside that ring.
+        if r.prev(side) != edge || self.has_edge_outside_ring(vertex, edge) {
             return Err(WingedError::VertexNotDangling { vertex, edge });
         }
         let leaving = EdgeUse::new(edge, side);
         let other = r.head(side);
         let face = r.face(side);
-        if r.next(side) == edge {
+        let last_edge = r.next(side) == edge;
+        // The last edge's other end is in the same position: its ring is `edge` alone.
+        if last_edge && self.has_edge_outside_ring(other, edge) {
+            return Err(WingedError::PointFaceAtSharedVertex {
+                edge,
+                vertex: other,
+            });
+        }
+        if last_edge {
             // The edge is its solid's only edge: leave a point face behind.
             self.vertex_edge[other.index()] = EdgeId::INVALID;
             if face.is_valid() {
@@ -211,6 +225,20 @@ impl Winged {
         self.n_live_faces -= 1;
         self.delete_vertex(vertex);
         Ok(())
+    }
+
+    /// Whether `vertex`, whose ring is `edge` alone, has other edges (in other fans: only a
+    /// pinched vertex can). Its stored edge is one of them unless it is `edge`; otherwise the
+    /// edges are scanned, and only while the structure may have pinched vertices.
+    fn has_edge_outside_ring(&self, vertex: VertexId, edge: EdgeId) -> bool {
+        if self.vertex_edge[vertex.index()] != edge {
+            return true;
+        }
+        self.may_have_pinched_vertices
+            && self.edges().any(|e| {
+                let r = self.rec(e);
+                e != edge && (r.start == vertex || r.end == vertex)
+            })
     }
 
     /// The one use of `face`'s loop that arrives at `vertex`.

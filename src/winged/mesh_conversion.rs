@@ -145,6 +145,7 @@ impl Winged {
             face_edge,
             edges,
             point_faces: Vec::new(),
+            may_have_pinched_vertices: mesh.may_have_pinched_vertices(),
         }
     }
 

@@ -21,6 +21,14 @@ pub struct Winged {
     /// Faces without edges (made by MVFS, or left by KEV of a solid's last edge) and the one
     /// vertex each of them holds. Such "point solids" are rare, so a short list suffices.
     pub(crate) point_faces: Vec<(FaceId, VertexId)>,
+    /// `false` only when no vertex can have edges outside its ring (a pinched vertex: fans of
+    /// faces touching at it, which the builders keep as separate rings). Set by the builders and
+    /// [`Winged::from_mesh`] when the input has such a vertex, recomputed by
+    /// [`Winged::garbage_collect`]. The Euler operators never make one (they insert an edge into
+    /// a ring or remove one from it, never split a ring), so a structure built by them alone
+    /// keeps it `false`. Operators that must see every edge of a vertex scan the edges while it
+    /// is set.
+    pub(crate) may_have_pinched_vertices: bool,
     pub(crate) n_live_vertices: u32,
     pub(crate) n_live_edges: u32,
     pub(crate) n_live_faces: u32,
