@@ -174,6 +174,57 @@ fn extreme_magnitudes_keep_the_topology() {
     }
 }
 
+/// Found by the randomized stress harness (voronoi target, e.g. seed 800: two sites near
+/// 1e+130): the shoelace sums of degree three overflowed, so cell centroids (and with them
+/// Lloyd relaxation) came out infinite or NaN; at 1e-200 the cross products underflowed, so a
+/// cell had zero area and its first corner as centroid.
+#[test]
+fn cell_area_and_centroid_at_extreme_magnitudes() {
+    use halfwing::voronoi::{LloydOptions, lloyd_relaxation, polygon_area_centroid};
+    for exponent in [-500, -400, 440, 500] {
+        let f = 2f64.powi(exponent);
+        let sites = [[0.0, 0.0], [f, 0.0]];
+        let clip = ClipPolygon::rectangle([-f, -f], [2.0 * f, f]).unwrap();
+        let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+        // Cell 0 is [-1, 0.5] x [-1, 1], cell 1 is [0.5, 2] x [-1, 1] (in units of f).
+        assert_eq!(
+            cells.cell_centroid(0).unwrap(),
+            Some([-0.25 * f, 0.0]),
+            "2^{exponent}"
+        );
+        assert_eq!(
+            cells.cell_centroid(1).unwrap(),
+            Some([1.25 * f, 0.0]),
+            "2^{exponent}"
+        );
+        let area = 3.0 * (f * f);
+        assert_eq!(cells.cell_area(0).unwrap(), area, "2^{exponent}");
+        assert_eq!(clip.centroid(), [0.5 * f, 0.0], "2^{exponent}");
+        let relaxed = lloyd_relaxation(
+            &sites,
+            &clip,
+            LloydOptions {
+                max_iterations: 1,
+                tolerance: 0.0,
+            },
+        )
+        .unwrap();
+        assert_eq!(
+            relaxed.sites,
+            [[-0.25 * f, 0.0], [1.25 * f, 0.0]],
+            "2^{exponent}"
+        );
+    }
+    let square = [
+        [1e300, 1e300],
+        [-1e300, 1e300],
+        [-1e300, -1e300],
+        [1e300, -1e300],
+    ];
+    let (area, centroid) = polygon_area_centroid(&square);
+    assert_eq!((area, centroid), (f64::INFINITY, [0.0, 0.0]));
+}
+
 #[test]
 fn sites_outside_the_clip_region() {
     let mut pts = uniform(500, 9);

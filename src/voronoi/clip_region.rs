@@ -1,7 +1,7 @@
 //! Convex clip regions for Voronoi cells.
 
 use super::error::VoronoiError;
-use super::predicates::orient2d;
+use super::predicates::{normalising_scale_of_box, orient2d};
 
 /// A convex polygon, stored counter-clockwise, that Voronoi cells are clipped to.
 #[derive(Clone, Debug, PartialEq)]
@@ -168,16 +168,32 @@ fn shoelace(v: &[[f64; 2]]) -> f64 {
 
 /// Signed area and centroid of a simple polygon (shoelace, relative to the first vertex for
 /// precision). The centroid of a zero-area polygon is its first vertex.
+///
+/// The offsets from the first vertex are halved (so they cannot overflow) and scaled by a power
+/// of two (exact) so that the largest lies in `[1, 2)`: the products of degree three below then
+/// neither overflow nor underflow, and the centroid is finite for every finite polygon (cells of
+/// sites near `1e+150` used to get an infinite or NaN centroid, tiny ones a zero area and the
+/// first vertex as centroid). Only an area beyond the `f64` range is infinite (or zero).
 pub fn polygon_area_centroid(v: &[[f64; 2]]) -> (f64, [f64; 2]) {
     let Some(&o) = v.first() else {
         return (0.0, [f64::NAN; 2]);
     };
+    let half_offset = |p: [f64; 2]| [0.5 * p[0] - 0.5 * o[0], 0.5 * p[1] - 0.5 * o[1]];
+    let largest = v
+        .iter()
+        .map(|&p| {
+            let d = half_offset(p);
+            d[0].abs().max(d[1].abs())
+        })
+        .fold(0.0_f64, f64::max);
+    let scale = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+    let offset = |p: [f64; 2]| {
+        let d = half_offset(p);
+        [d[0] * scale, d[1] * scale]
+    };
     let (mut a2, mut cx, mut cy) = (0.0, 0.0, 0.0);
     for w in v.windows(2).skip(1) {
-        let (p, q) = (
-            [w[0][0] - o[0], w[0][1] - o[1]],
-            [w[1][0] - o[0], w[1][1] - o[1]],
-        );
+        let (p, q) = (offset(w[0]), offset(w[1]));
         let cross = p[0] * q[1] - q[0] * p[1];
         a2 += cross;
         cx += (p[0] + q[0]) * cross;
@@ -186,7 +202,11 @@ pub fn polygon_area_centroid(v: &[[f64; 2]]) -> (f64, [f64; 2]) {
     if a2 == 0.0 {
         return (0.0, o);
     }
-    (0.5 * a2, [o[0] + cx / (3.0 * a2), o[1] + cy / (3.0 * a2)])
+    // Back to the input's units: offsets were multiplied by `scale / 2`.
+    let unit = 1.0 / scale;
+    let area = (2.0 * a2) * unit * unit;
+    let centre = |c: f64| (c / (3.0 * a2)) * 2.0 * unit;
+    (area, [o[0] + centre(cx), o[1] + centre(cy)])
 }
 
 #[cfg(test)]
