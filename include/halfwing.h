@@ -2963,6 +2963,9 @@ hw_status hw_winged_mef(hw_winged *winged,
 /**
  * **Kill edge, vertex** (inverse of MEV): removes `vertex` and `edge`, which must be its only
  * edge. When `edge` was its solid's last edge, the face becomes a point face on the other vertex.
+ * Refused (`HW_ERR_REFUSED`, nothing changed) when `vertex` has other edges, also in another fan
+ * of a pinched vertex, and when the last edge's other vertex has edges in another fan (a point
+ * face's vertex has none).
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
