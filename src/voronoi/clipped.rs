@@ -35,9 +35,40 @@ struct Perimeter {
 /// Positions under construction: `[corners][Voronoi vertices inside][boundary crossings]`.
 struct Builder<'a> {
     clip: &'a ClipPolygon,
+    reach: Reach,
     positions: Vec<[f64; 2]>,
     first_crossing: usize,
     crossings: Vec<Perimeter>,
+}
+
+/// The clip region's centroid and the distance from it to the farthest corner: a disc that holds
+/// the region, for telling the Voronoi vertices that are far from it.
+#[derive(Clone, Copy, Debug)]
+struct Reach {
+    centre: [f64; 2],
+    radius: f64,
+}
+
+impl Reach {
+    /// Ends farther than this many radii from the centre are moved (see
+    /// [`Voronoi::near_geometry`]); ends nearer are exact enough where they are.
+    const FAR: f64 = 4.0;
+    /// How many radii beyond the centre's projection a moved end lands: outside the region.
+    const MOVED: f64 = 2.0;
+
+    fn of(clip: &ClipPolygon) -> Reach {
+        let centre = clip.centroid();
+        let radius = clip
+            .vertices()
+            .iter()
+            .map(|p| (p[0] - centre[0]).hypot(p[1] - centre[1]))
+            .fold(0.0, f64::max);
+        Reach { centre, radius }
+    }
+
+    fn is_far(&self, p: [f64; 2]) -> bool {
+        (p[0] - self.centre[0]).hypot(p[1] - self.centre[1]) > Self::FAR * self.radius
+    }
 }
 
 impl Builder<'_> {
@@ -109,6 +140,7 @@ impl Voronoi {
         positions.extend_from_slice(clip.vertices());
         let mut b = Builder {
             clip,
+            reach: Reach::of(clip),
             positions,
             first_crossing: 0,
             crossings: Vec::new(),
@@ -278,7 +310,7 @@ impl Voronoi {
         let (o, t) = (ends.from, ends.to);
         // Parametrise as base + s·dir with s in [lo, hi]; the finite end (if any) is at s = 0.
         // An in-ray (from infinity) is clipped as the ray from its finite end, then reversed.
-        let (base, dir, far, mut lo, mut hi, reversed) = match self.geometry_of(ends) {
+        let (base, dir, far, mut lo, mut hi, reversed) = match self.near_geometry(ends, b.reach) {
             EdgeGeometry::Segment { from, to } => {
                 if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
                 {
@@ -351,6 +383,51 @@ impl Voronoi {
             return NONE;
         }
         if reversed { [end, start] } else { [start, end] }
+    }
+}
+
+impl Voronoi {
+    /// The geometry of the edge with ends `ends`, its ends far from the region (see [`Reach`])
+    /// moved along the bisector of its two sites to just beyond the region.
+    ///
+    /// A far Voronoi vertex is the circumcentre of a flat triangle (nearly collinear sites), up
+    /// to 1e16 away and rounded there to a few units, so the line through it can pass the region
+    /// by as much as the region is wide: cells of sites inside came out empty and their
+    /// neighbours overlapped. The bisector computed from the sites carries only their own
+    /// rounding. A moved end stays outside the region, which is all the clipping reads of an end
+    /// that is not placed, so the edge keeps the same part of the region, now in the right place.
+    fn near_geometry(&self, ends: EdgeEnds, reach: Reach) -> EdgeGeometry {
+        let geometry = self.geometry_of(ends);
+        let sites = self.delaunay.sites();
+        let (a, b) = (sites[ends.left as usize], sites[ends.right as usize]);
+        let mid = [0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]];
+        let along = [a[1] - b[1], b[0] - a[0]];
+        let length = along[0].hypot(along[1]);
+        if !(length.is_finite() && length > 0.0 && reach.radius.is_finite()) {
+            return geometry;
+        }
+        let unit = [along[0] / length, along[1] / length];
+        let param = |p: [f64; 2]| (p[0] - mid[0]) * unit[0] + (p[1] - mid[1]) * unit[1];
+        let centre = param(reach.centre);
+        let band = Reach::MOVED * reach.radius;
+        let moved = |p: [f64; 2]| {
+            if !reach.is_far(p) {
+                return p;
+            }
+            let s = centre + (param(p) - centre).clamp(-band, band);
+            [mid[0] + s * unit[0], mid[1] + s * unit[1]]
+        };
+        match geometry {
+            EdgeGeometry::Segment { from, to } => EdgeGeometry::Segment {
+                from: moved(from),
+                to: moved(to),
+            },
+            EdgeGeometry::Ray { origin, direction } => EdgeGeometry::Ray {
+                origin: moved(origin),
+                direction,
+            },
+            line @ EdgeGeometry::Line { .. } => line,
+        }
     }
 }
 

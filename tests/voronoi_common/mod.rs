@@ -167,6 +167,7 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
             }
         }
     }
+    check_cells_hold_their_nearest_points(v, &cells, clip);
     if d.n_unique_sites() > 0 {
         let error = (total - clip.area()).abs();
         assert!(
@@ -178,6 +179,49 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
         assert_eq!(total, 0.0, "no sites, no cells");
     }
     total
+}
+
+/// Points of an 8×8 grid across the region's bounding box (those inside it) lie in the cell of
+/// their nearest site, with the tolerance of the site test above (a point on a cell's side may
+/// go to either neighbour).
+pub fn check_cells_hold_their_nearest_points(
+    v: &Voronoi,
+    cells: &halfwing::voronoi::ClippedCells,
+    clip: &ClipPolygon,
+) {
+    let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in clip.vertices() {
+        for k in 0..2 {
+            min[k] = min[k].min(p[k]);
+            max[k] = max[k].max(p[k]);
+        }
+    }
+    let size = clip.area().sqrt();
+    for i in 0..8 {
+        for j in 0..8 {
+            let at = |k: usize, step: usize| min[k] + (max[k] - min[k]) * (step as f64 + 0.5) / 8.0;
+            let q = [at(0, i), at(1, j)];
+            if !clip.contains(q) {
+                continue;
+            }
+            let Some(owner) = v.nearest_site(q, None).unwrap() else {
+                continue;
+            };
+            let poly = cells.cell_polygon(owner).unwrap();
+            let n = poly.len();
+            assert!(
+                n >= 3,
+                "point {q:?} is nearest to site {owner}, whose cell is empty"
+            );
+            for k in 0..n {
+                let o = orient2d(poly[k], poly[(k + 1) % n], q);
+                assert!(
+                    o >= -1e-9 * size * size,
+                    "point {q:?} is nearest to site {owner} but outside its cell {poly:?}"
+                );
+            }
+        }
+    }
 }
 
 /// Bounding box of the points, widened by `margin` of its size.
