@@ -398,10 +398,7 @@ impl Voronoi {
     /// that is not placed, so the edge keeps the same part of the region, now in the right place.
     fn near_geometry(&self, ends: EdgeEnds, reach: Reach) -> EdgeGeometry {
         let geometry = self.geometry_of(ends);
-        let sites = self.delaunay.sites();
-        let (a, b) = (sites[ends.left as usize], sites[ends.right as usize]);
-        let mid = [0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]];
-        let along = [a[1] - b[1], b[0] - a[0]];
+        let (mid, along) = self.bisector(ends);
         let length = along[0].hypot(along[1]);
         if !(length.is_finite() && length > 0.0 && reach.radius.is_finite()) {
             return geometry;

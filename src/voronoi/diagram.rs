@@ -389,10 +389,7 @@ impl Voronoi {
                 to: self.vertices[t as usize],
             };
         }
-        let sites = self.delaunay.sites();
-        let (a, b) = (sites[ends.left as usize], sites[ends.right as usize]);
-        // Left site a: moving along the bisector with a on the left is direction rot90(b - a).
-        let along = [a[1] - b[1], b[0] - a[0]];
+        let (midpoint, along) = self.bisector(ends);
         match (o == INVALID, t == INVALID) {
             (true, false) => EdgeGeometry::Ray {
                 origin: self.vertices[t as usize],
@@ -403,10 +400,21 @@ impl Voronoi {
                 direction: along,
             },
             _ => EdgeGeometry::Line {
-                point: [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+                point: midpoint,
                 direction: along,
             },
         }
+    }
+
+    /// The bisector of the edge's two sites, computed from the sites alone: their midpoint, and
+    /// the direction along it with the left site on the left, `rot90(right − left)`.
+    pub(crate) fn bisector(&self, ends: EdgeEnds) -> ([f64; 2], [f64; 2]) {
+        let sites = self.delaunay.sites();
+        let (a, b) = (sites[ends.left as usize], sites[ends.right as usize]);
+        (
+            [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+            [a[1] - b[1], b[0] - a[0]],
+        )
     }
 }
 
