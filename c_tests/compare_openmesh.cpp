@@ -171,9 +171,9 @@ void compare_clean(const std::filesystem::path& path) {
               components, uniform_error, angle_error);
 }
 
-/// Every face OpenMesh refuses must be named by halfwing's diagnostic: as a face it would skip,
-/// a face on a non-manifold or inconsistently oriented edge, a malformed face, or a face at a
-/// non-manifold vertex.
+/// Every face OpenMesh refuses must be named by halfwing's diagnostic of the input: as a face on
+/// a non-manifold or inconsistently oriented edge, a malformed face, or a face at a non-manifold
+/// vertex or at an end of a non-manifold or inconsistently oriented edge.
 void compare_broken(const std::filesystem::path& path) {
   const models::Indexed m = models::read(path);
   PolyMesh om;
@@ -202,6 +202,9 @@ void compare_broken(const std::filesystem::path& path) {
       std::size_t n_faces = 0;
       hw::check(hw_diagnostic_edge(raw, which, i, ends, &faces, &n_faces));
       named.insert(faces, faces + n_faces);
+      // OpenMesh's add_face also refuses faces around the ends of such an edge (a complex
+      // vertex), which are one fan through the edge.
+      vertices.insert(ends, ends + 2);
     }
   }
   std::vector<std::size_t> offsets;

@@ -21,12 +21,12 @@ static void diagnose_without_building(void) {
   CHECK(!hw_diagnostic_is_clean(d));
   CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 3);
-  /* Vertex findings are those of the faces a Skip build keeps: vertex 4 is only in the third face
-   * on the edge, vertex 5 only in the malformed face, vertex 6 in none. */
+  /* The findings describe the input, not a build: only vertex 6 is in no face (vertex 5 is in
+   * the malformed face), and nothing was left out. */
   CHECK(hw_diagnostic_ids(d, HW_DIAG_ISOLATED_VERTICES, &ids, &n) == HW_OK);
-  CHECK(n == 3 && ids[0] == 4 && ids[1] == 5 && ids[2] == 6);
+  CHECK(n == 1 && ids[0] == 6);
   CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
-  CHECK(n == 2 && ids[0] == 2 && ids[1] == 3);
+  CHECK(n == 0);
   CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 1);
   CHECK(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, &n_faces) == HW_OK);
   CHECK(ends[0] == 0 && ends[1] == 1 && n_faces == 3);
@@ -101,13 +101,61 @@ static void policies_report_what_they_did(void) {
   CHECK(hw_mesh_check(mesh) == HW_OK);
   hw_diagnostic_free(d);
   hw_mesh_free(mesh);
-  /* Repair keeps every face it can: it cannot keep a face whose corners collapse below three. */
+  /* Repair keeps every face it can: the face whose corners collapse below three is left out
+   * and listed, the three faces on the edge are kept by copying the edge's vertices. */
   mesh = NULL;
   d = NULL;
-  CHECK_STATUS(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_REPAIR, &mesh,
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_REPAIR, &mesh, &d) ==
+        HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 3 && hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(n == 1 && ids[0] == 3);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_REORIENTED_FACES, &ids, &n) == HW_OK);
+  hw_diagnostic_free(d);
+  hw_mesh_free(mesh);
+  /* Strict refuses, and still hands out the refusal's diagnostic. */
+  mesh = NULL;
+  d = NULL;
+  CHECK_STATUS(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_STRICT, &mesh,
                                     &d),
-               HW_ERR_INVALID_INPUT, "fewer than 3");
-  CHECK(mesh == NULL && d == NULL);
+               HW_ERR_INVALID_INPUT, "repeated vertex");
+  CHECK(mesh == NULL && d != NULL);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
+  CHECK(n == 1 && ids[0] == 3);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 1);
+  hw_diagnostic_free(d);
+  /* A cube with five of six faces flipped comes back whole and facing outward. */
+  {
+    static const double cube[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    static const uint32_t quads[] = {4, 4, 4, 4, 4, 4};
+    /* Outward: bottom 0 3 2 1, top 4 5 6 7, front 0 1 5 4, right 1 2 6 5, back 2 3 7 6,
+     * left 3 0 4 7; all but the bottom given reversed. */
+    static const uint32_t corners[] = {0, 3, 2, 1, 7, 6, 5, 4, 4, 5, 1, 0,
+                                       5, 6, 2, 1, 6, 7, 3, 2, 7, 4, 0, 3};
+    double normals[18], volume = 0;
+    CHECK(hw_mesh_from_indexed(cube, 8, quads, 6, corners, 24, HW_BUILD_REPAIR, &mesh, &d) ==
+          HW_OK);
+    CHECK(hw_diagnostic_ids(d, HW_DIAG_REORIENTED_FACES, &ids, &n) == HW_OK);
+    CHECK(n == 5 && ids[0] == 1 && ids[4] == 5);
+    CHECK(hw_diagnostic_ids(d, HW_DIAG_VERTEX_COPIES, &ids, &n) == HW_OK && n == 0);
+    CHECK(hw_mesh_face_normals(mesh, normals, 6, NULL) == HW_OK);
+    for (uint32_t f = 0; f < 6; ++f) {
+      hw_face face = {f};
+      hw_vertex corner = hw_mesh_he_origin(mesh, hw_mesh_face_halfedge(mesh, face));
+      double p[3];
+      const double *normal = normals + 3 * f;
+      double outward;
+      CHECK(hw_mesh_vertex_position(mesh, corner, p) == HW_OK);
+      /* Outward normals point away from the cube's centre (0.5, 0.5, 0.5). */
+      outward = normal[0] * (p[0] - 0.5) + normal[1] * (p[1] - 0.5) + normal[2] * (p[2] - 0.5);
+      CHECK(outward > 0);
+      volume += outward;
+    }
+    CHECK(volume > 0);
+    hw_diagnostic_free(d);
+    hw_mesh_free(mesh);
+  }
   /* Without the malformed face, Repair keeps all three faces by copying the edge's vertices. */
   CHECK(hw_mesh_from_indexed(positions, 7, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh, &d) ==
         HW_OK);

@@ -256,12 +256,22 @@ static void bad_face_lists(void) {
   const uint32_t *ids = NULL;
   size_t n = 0;
 
+  /* A refusal hands out its diagnostic (and no structure). */
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, out_of_range, 12,
                                       HW_BUILD_STRICT, &w, &d),
                HW_ERR_INVALID_INPUT, "out-of-range vertex indices: f1");
+  CHECK(w == SENTINEL && d != NULL);
+  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_OUT_OF_RANGE, &ids, &n) == HW_OK);
+  CHECK(n == 1 && ids[0] == 1);
+  hw_diagnostic_free(d);
+  d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12,
                                       HW_BUILD_STRICT, &w, &d),
                HW_ERR_NON_MANIFOLD, "not an oriented manifold");
+  CHECK(w == SENTINEL && d != NULL);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 2);
+  hw_diagnostic_free(d);
+  d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 9, &w, &d),
                HW_ERR_INVALID_INPUT, "unknown build policy 9");
   CHECK_STATUS(hw_winged_from_indexed(NULL, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_STRICT,

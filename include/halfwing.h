@@ -78,9 +78,12 @@
  * The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
  * hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
  *
- * Face indices refer to the input face list, vertex indices to the input positions, except
- * ::HW_DIAG_NON_MANIFOLD_VERTICES (vertices of the built mesh: equal to the input indices unless
- * repair copied vertices, see ::HW_DIAG_VERTEX_COPIES). Every list is sorted ascending.
+ * Two kinds of lists: the findings describe the input as it is, whatever the policy (they are
+ * the same for a build and for hw_diagnose_indexed()); ::HW_DIAG_SKIPPED_FACES,
+ * ::HW_DIAG_REORIENTED_FACES and ::HW_DIAG_VERTEX_COPIES list what the policy changed. Face
+ * indices refer to the input face list, vertex indices to the input positions. Faces with fewer
+ * than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
+ * the edge, fan and area findings. Every list is sorted ascending.
  */
 typedef struct hw_diagnostic hw_diagnostic;
 
@@ -559,12 +562,15 @@ typedef struct {
 #define HW_DIAG_NON_FINITE_VERTICES 3
 
 /**
- * Vertices whose faces form more than one fan (kept in the mesh, reported).
+ * Vertices whose faces form more than one fan, faces being in one fan when they share an edge
+ * at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
+ * ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
  */
 #define HW_DIAG_NON_MANIFOLD_VERTICES 4
 
 /**
- * Vertices no face uses.
+ * Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
+ * face, but not listed here).
  */
 #define HW_DIAG_ISOLATED_VERTICES 5
 
@@ -574,15 +580,22 @@ typedef struct {
 #define HW_DIAG_DEGENERATE_FACES 6
 
 /**
- * Faces left out of the mesh (::HW_BUILD_SKIP).
+ * Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
+ * `i`-th input face not listed here.
  */
 #define HW_DIAG_SKIPPED_FACES 7
 
 /**
- * Vertices added by ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i` copies input vertex
- * `ids[i]`.
+ * Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
+ * copies input vertex `ids[i]` (same position).
  */
 #define HW_DIAG_VERTEX_COPIES 8
+
+/**
+ * Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
+ * neighbours, or to turn a closed component outward).
+ */
+#define HW_DIAG_REORIENTED_FACES 9
 
 /**
  * Edges used by three or more faces.
@@ -615,18 +628,27 @@ typedef struct {
 #define HW_ELEMENT_FACE 3
 
 /**
- * Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
- * cannot be placed; the message names the offending faces, edges and vertices.
+ * Build the input exactly as it is, or refuse it whole: `HW_ERR_INVALID_INPUT` for a malformed
+ * face or a NaN/infinite coordinate, `HW_ERR_NON_MANIFOLD` for a non-manifold or inconsistently
+ * oriented edge or a non-manifold vertex. The message names the offending faces, edges and
+ * vertices.
  */
 #define HW_BUILD_STRICT 0
 
 /**
- * Leave out the faces that cannot be placed (and report them); build the rest.
+ * Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
+ * faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
+ * direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
  */
 #define HW_BUILD_SKIP 1
 
 /**
- * Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
+ * Keep every face that can be kept, and make it fit: collapse repeated corners, reverse faces so
+ * neighbours agree (::HW_DIAG_REORIENTED_FACES), cut the surface along edges still non-manifold
+ * or inconsistent and give each fan its own vertex, split non-manifold vertices, and turn every
+ * closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
+ * an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
+ * (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
  */
 #define HW_BUILD_REPAIR 2
 
@@ -1504,7 +1526,7 @@ void hw_soup_free(hw_soup *soup);
 
 /**
  * Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
- * would (same policies, same diagnostic; `out_diagnostic` may be NULL), keeping the file's
+ * would (same policies, same diagnostic, also on a refusal; `out_diagnostic` may be NULL), keeping the file's
  * normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
  * hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
  *
@@ -1543,10 +1565,15 @@ hw_mesh *hw_mesh_new(void);
  * summing to `n_indices`, indices out of range, NaN or infinite coordinates — give
  * `HW_ERR_INVALID_INPUT` under ::HW_BUILD_STRICT; the message names the faces and vertices.
  *
+ * Whatever the policy, the mesh holds no NaN or infinite coordinate (such a vertex is there as a
+ * deleted vertex, its id kept) and no non-manifold vertex: every vertex query (valence,
+ * circulators, normals) sees every face at its vertex.
+ *
  * On success `*out_mesh` receives a new mesh to release with hw_mesh_free(), and, when
- * `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic of everything found (also what a
- * policy skipped or repaired) to release with hw_diagnostic_free(). On failure neither is
- * written; hw_diagnose_indexed() gives the full diagnostic of refused input.
+ * `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic of the input and of what the
+ * policy changed, to release with hw_diagnostic_free(). When the policy refuses the input,
+ * `*out_mesh` is not written but `*out_diagnostic` (when asked for) receives the refusal's
+ * diagnostic, to release the same way; on any other failure neither is written.
  *
  * # Safety
  * Array arguments must point to at least as many elements as their counts say (they may be NULL
@@ -2604,7 +2631,7 @@ hw_winged *hw_winged_new(void);
  *
  * On success `*out_winged` receives a new structure to release with hw_winged_free(), and, when
  * `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic to release with
- * hw_diagnostic_free(). On failure neither is written.
+ * hw_diagnostic_free(). A refused input writes its diagnostic as hw_mesh_from_indexed() does.
  *
  * # Safety
  * Array arguments must point to at least as many elements as their counts say (they may be NULL

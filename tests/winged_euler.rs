@@ -328,10 +328,10 @@ fn garbage_collect_compacts_after_kills() {
 }
 
 /// A pillow (two triangles on the same three vertices) and a triangle touching it at vertex 0,
-/// built under Skip: vertex 0 is pinched, its two fans kept apart (two rings). Then KEF merges
-/// the pillow's faces, leaving a loop 0 → 1 → 2 → 1 → 0 in which vertex 0 dangles from edge 0
-/// (its pillow fan holds that one edge) while its other fan holds edges 3 and 5.
-fn pillow_pinched_to_a_triangle() -> Winged {
+/// built under Skip: the builder splits vertex 0, the triangle's corner becoming vertex 5, so no
+/// vertex has edges outside its ring. Then KEF merges the pillow's faces, leaving a loop
+/// 0 → 1 → 2 → 1 → 0 in which vertex 0 dangles from edge 0.
+fn pillow_beside_a_triangle() -> Winged {
     let p = [
         [0.0, 0.0, 0.0],
         [1.0, 0.0, 0.0],
@@ -343,6 +343,8 @@ fn pillow_pinched_to_a_triangle() -> Winged {
     let fl = halfwing::soup::FaceList::triangles(&p, &idx);
     let (mut w, d) = Winged::from_face_list(&fl, BuildPolicy::Skip).unwrap();
     assert_eq!(d.non_manifold_vertices, [0]);
+    assert_eq!(d.vertex_copies, [0]);
+    assert!(w.non_manifold_vertices().is_empty());
     assert_eq!(w.edge(EdgeId(2)).unwrap().start, VertexId(2));
     assert_eq!(w.edge(EdgeId(2)).unwrap().end, VertexId(0));
     w.kef(EdgeId(2), FaceId(0)).unwrap();
@@ -350,42 +352,20 @@ fn pillow_pinched_to_a_triangle() -> Winged {
     w
 }
 
-/// Found by a randomized stress harness (seed 5602): KEV's "the vertex has no other edge" test
-/// looked only at the ring through the killed edge, so at a pinched vertex it deleted the vertex
-/// while the other fan's edges still ended there.
+/// Found by a randomized stress harness (seed 5602) when the builder kept a pinched vertex's
+/// fans apart: KEV deleted the vertex while the other fan's edges still ended there. The
+/// builder now splits such a vertex, so the vertex that dangles in the pillow has no other edge
+/// and goes, while the triangle keeps its copy.
 #[test]
-fn kev_refuses_a_pinched_vertex_that_has_edges_in_another_fan() {
-    let mut w = pillow_pinched_to_a_triangle();
-    let snapshot = w.clone();
-    assert!(matches!(
-        w.kev(EdgeId(0), VertexId(0)),
-        Err(WingedError::VertexNotDangling { .. })
-    ));
-    assert_eq!(w, snapshot);
-    // Whichever edge the vertex stores, the answer is the same.
-    w.set_vertex_edge(VertexId(0), EdgeId(0)).unwrap();
-    let snapshot = w.clone();
-    assert!(matches!(
-        w.kev(EdgeId(0), VertexId(0)),
-        Err(WingedError::VertexNotDangling { .. })
-    ));
-    assert_eq!(w, snapshot);
-    // Its truly dangling neighbour goes.
+fn kev_of_a_split_vertex_leaves_its_copy_in_the_other_fan() {
+    let mut w = pillow_beside_a_triangle();
+    let copy = VertexId(5);
+    let triangle_edges = w.valence(copy).unwrap();
+    w.kev(EdgeId(0), VertexId(0)).unwrap();
+    w.check().unwrap();
+    assert!(!w.is_vertex(VertexId(0)));
+    assert_eq!(w.valence(copy).unwrap(), triangle_edges);
+    // Its dangling neighbour in the pillow goes too, down to a point face.
     w.kev(EdgeId(1), VertexId(2)).unwrap();
     w.check().unwrap();
-}
-
-/// KEV of a solid's last edge leaves a point face on the other vertex; when that vertex is
-/// pinched (it has edges in another fan) a point face cannot hold it, so KEV is refused.
-#[test]
-fn kev_of_a_last_edge_at_a_pinched_vertex_is_refused() {
-    let mut w = pillow_pinched_to_a_triangle();
-    w.kev(EdgeId(1), VertexId(2)).unwrap();
-    w.check().unwrap();
-    let snapshot = w.clone();
-    assert!(matches!(
-        w.kev(EdgeId(0), VertexId(1)),
-        Err(WingedError::PointFaceAtSharedVertex { .. })
-    ));
-    assert_eq!(w, snapshot);
 }

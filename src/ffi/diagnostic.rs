@@ -1,6 +1,6 @@
 //! `hw_diagnostic`: what a build (or a bare analysis) found wrong with an indexed face list.
 
-use crate::soup::{Diagnostic, EdgeReport};
+use crate::soup::{BuildError, Diagnostic, EdgeReport};
 
 use super::boundary::{
     Out, arg_ref, copy_text, give_view, guard, guard_value, guard_void, view_start,
@@ -13,9 +13,12 @@ use super::status::*;
 /// The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
 /// hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
 ///
-/// Face indices refer to the input face list, vertex indices to the input positions, except
-/// ::HW_DIAG_NON_MANIFOLD_VERTICES (vertices of the built mesh: equal to the input indices unless
-/// repair copied vertices, see ::HW_DIAG_VERTEX_COPIES). Every list is sorted ascending.
+/// Two kinds of lists: the findings describe the input as it is, whatever the policy (they are
+/// the same for a build and for hw_diagnose_indexed()); ::HW_DIAG_SKIPPED_FACES,
+/// ::HW_DIAG_REORIENTED_FACES and ::HW_DIAG_VERTEX_COPIES list what the policy changed. Face
+/// indices refer to the input face list, vertex indices to the input positions. Faces with fewer
+/// than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
+/// the edge, fan and area findings. Every list is sorted ascending.
 pub struct hw_diagnostic {
     pub(crate) diagnostic: Diagnostic,
 }
@@ -28,7 +31,9 @@ impl hw_diagnostic {
 
 /// The whole body of a build call: checks `out` (`out_name` is its name in the C signature, for
 /// the message), runs `build`, then hands the object to C through `out` and, when the caller asked
-/// for it, the build's diagnostic through `out_diagnostic`. On failure neither is written.
+/// for it, the build's diagnostic through `out_diagnostic`. An argument error writes neither; a
+/// build the policy refuses writes the refusal's diagnostic through `out_diagnostic` (the one
+/// output written on failure: the moment the caller needs it) and not `out`.
 ///
 /// # Safety
 /// `out` must be NULL or writable; `out_diagnostic` NULL or writable.
@@ -36,12 +41,22 @@ pub(crate) unsafe fn give_built<T: 'static>(
     out: *mut *mut T,
     out_name: &str,
     out_diagnostic: *mut *mut hw_diagnostic,
-    build: impl FnOnce() -> Result<(T, Diagnostic), FfiError>,
+    build: impl FnOnce() -> Result<Result<(T, Diagnostic), BuildError>, FfiError>,
 ) -> hw_status {
     guard(|| {
         let out = Out::new(out, out_name)?;
         let out_diagnostic = Out::optional(out_diagnostic);
-        let (object, diagnostic) = build()?;
+        let (object, diagnostic) = match build()? {
+            Ok(built) => built,
+            Err(refused) => {
+                if let Some(out_diagnostic) = out_diagnostic {
+                    let diagnostic = hw_diagnostic::into_handle(refused.diagnostic().clone());
+                    // SAFETY: present, writable per the caller.
+                    unsafe { out_diagnostic.write(diagnostic) };
+                }
+                return Err(refused.into());
+            }
+        };
         // SAFETY: checked non-NULL (`out`) or present (`out_diagnostic`); writable per the
         // caller.
         unsafe {
@@ -64,17 +79,24 @@ pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 1;
 pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 2;
 /// Vertices with a NaN or infinite coordinate.
 pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 3;
-/// Vertices whose faces form more than one fan (kept in the mesh, reported).
+/// Vertices whose faces form more than one fan, faces being in one fan when they share an edge
+/// at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
+/// ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
 pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 4;
-/// Vertices no face uses.
+/// Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
+/// face, but not listed here).
 pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 5;
 /// Faces with zero area.
 pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 6;
-/// Faces left out of the mesh (::HW_BUILD_SKIP).
+/// Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
+/// `i`-th input face not listed here.
 pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 7;
-/// Vertices added by ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i` copies input vertex
-/// `ids[i]`.
+/// Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
+/// copies input vertex `ids[i]` (same position).
 pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 8;
+/// Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
+/// neighbours, or to turn a closed component outward).
+pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 9;
 
 /// One list of edges in a diagnostic (see hw_diagnostic_edge()).
 pub type hw_diagnostic_edges = u32;
@@ -94,6 +116,7 @@ fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], 
         HW_DIAG_DEGENERATE_FACES => &diagnostic.degenerate_faces,
         HW_DIAG_SKIPPED_FACES => &diagnostic.skipped_faces,
         HW_DIAG_VERTEX_COPIES => &diagnostic.vertex_copies,
+        HW_DIAG_REORIENTED_FACES => &diagnostic.reoriented_faces,
         other => {
             return Err(FfiError::invalid_input(format!(
                 "unknown diagnostic list {other}"

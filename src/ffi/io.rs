@@ -133,7 +133,7 @@ pub unsafe extern "C" fn hw_soup_free(soup: *mut hw_soup) {
 }
 
 /// Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
-/// would (same policies, same diagnostic; `out_diagnostic` may be NULL), keeping the file's
+/// would (same policies, same diagnostic, also on a refusal; `out_diagnostic` may be NULL), keeping the file's
 /// normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
 /// hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
 ///
@@ -151,8 +151,8 @@ pub unsafe extern "C" fn hw_mesh_read(
         give_built(out_mesh, "out_mesh", out_diagnostic, || {
             let policy = build_policy(policy)?;
             let soup = read_path(path_arg(path)?)?;
-            let (mesh, diagnostic) = with_threads(|| Mesh::from_soup(&soup, policy))?;
-            Ok((hw_mesh { mesh }, diagnostic))
+            let built = with_threads(|| Mesh::from_soup(&soup, policy));
+            Ok(built.map(|(mesh, diagnostic)| (hw_mesh { mesh }, diagnostic)))
         })
     }
 }

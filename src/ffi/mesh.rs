@@ -21,12 +21,21 @@ pub struct hw_mesh {
 /// What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
 #[allow(non_camel_case_types)]
 pub type hw_build_policy = u32;
-/// Refuse the whole input (`HW_ERR_NON_MANIFOLD` or `HW_ERR_INVALID_INPUT`) on any face that
-/// cannot be placed; the message names the offending faces, edges and vertices.
+/// Build the input exactly as it is, or refuse it whole: `HW_ERR_INVALID_INPUT` for a malformed
+/// face or a NaN/infinite coordinate, `HW_ERR_NON_MANIFOLD` for a non-manifold or inconsistently
+/// oriented edge or a non-manifold vertex. The message names the offending faces, edges and
+/// vertices.
 pub const HW_BUILD_STRICT: hw_build_policy = 0;
-/// Leave out the faces that cannot be placed (and report them); build the rest.
+/// Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
+/// faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
+/// direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
 pub const HW_BUILD_SKIP: hw_build_policy = 1;
-/// Keep every face: duplicate vertices at non-manifold edges and vertices so that all fit.
+/// Keep every face that can be kept, and make it fit: collapse repeated corners, reverse faces so
+/// neighbours agree (::HW_DIAG_REORIENTED_FACES), cut the surface along edges still non-manifold
+/// or inconsistent and give each fan its own vertex, split non-manifold vertices, and turn every
+/// closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
+/// an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
+/// (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
 pub const HW_BUILD_REPAIR: hw_build_policy = 2;
 
 pub(crate) fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
@@ -81,10 +90,15 @@ pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
 /// summing to `n_indices`, indices out of range, NaN or infinite coordinates — give
 /// `HW_ERR_INVALID_INPUT` under ::HW_BUILD_STRICT; the message names the faces and vertices.
 ///
+/// Whatever the policy, the mesh holds no NaN or infinite coordinate (such a vertex is there as a
+/// deleted vertex, its id kept) and no non-manifold vertex: every vertex query (valence,
+/// circulators, normals) sees every face at its vertex.
+///
 /// On success `*out_mesh` receives a new mesh to release with hw_mesh_free(), and, when
-/// `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic of everything found (also what a
-/// policy skipped or repaired) to release with hw_diagnostic_free(). On failure neither is
-/// written; hw_diagnose_indexed() gives the full diagnostic of refused input.
+/// `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic of the input and of what the
+/// policy changed, to release with hw_diagnostic_free(). When the policy refuses the input,
+/// `*out_mesh` is not written but `*out_diagnostic` (when asked for) receives the refusal's
+/// diagnostic, to release the same way; on any other failure neither is written.
 ///
 /// # Safety
 /// Array arguments must point to at least as many elements as their counts say (they may be NULL
@@ -108,8 +122,8 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )?;
             let policy = build_policy(policy)?;
-            let (mesh, diagnostic) = with_threads(|| Mesh::from_face_list(&list, policy))?;
-            Ok((hw_mesh { mesh }, diagnostic))
+            let built = with_threads(|| Mesh::from_face_list(&list, policy));
+            Ok(built.map(|(mesh, diagnostic)| (hw_mesh { mesh }, diagnostic)))
         })
     }
 }

@@ -184,7 +184,7 @@ pub extern "C" fn hw_winged_new() -> *mut hw_winged {
 ///
 /// On success `*out_winged` receives a new structure to release with hw_winged_free(), and, when
 /// `out_diagnostic` is not NULL, `*out_diagnostic` a diagnostic to release with
-/// hw_diagnostic_free(). On failure neither is written.
+/// hw_diagnostic_free(). A refused input writes its diagnostic as hw_mesh_from_indexed() does.
 ///
 /// # Safety
 /// Array arguments must point to at least as many elements as their counts say (they may be NULL
@@ -208,8 +208,8 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )?;
             let policy = build_policy(policy)?;
-            let (winged, diagnostic) = with_threads(|| Winged::from_face_list(&list, policy))?;
-            Ok((hw_winged { winged }, diagnostic))
+            let built = with_threads(|| Winged::from_face_list(&list, policy));
+            Ok(built.map(|(winged, diagnostic)| (hw_winged { winged }, diagnostic)))
         })
     }
 }

@@ -20,12 +20,13 @@ use crate::large_arrays::{filled, fit, with_capacity_written};
 use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
-    FaceList, FaceTable, Unreached, Walked, face_edges, walk_faces,
+    FaceList, FaceTable, Pinched, Unreached, Walked, build_splitting_pinched, face_edges,
+    walk_faces,
 };
 
 use super::Mesh;
 use super::connectivity::Deletions;
-use super::ids::INVALID_INDEX;
+use super::ids::{INVALID_INDEX, VertexId};
 use super::vertex_fans::vertices_without_halfedge;
 
 impl Mesh {
@@ -40,13 +41,20 @@ impl Mesh {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Mesh, Diagnostic), BuildError> {
-        let Walked {
-            walked,
-            table,
-            positions,
-            diagnostic,
-        } = walk_faces(list, policy, FaceLoops::walk)?;
-        Ok(walked.into_mesh(&table, positions, diagnostic))
+        build_splitting_pinched(|route| {
+            let Walked {
+                walked,
+                table,
+                positions,
+                deleted_vertices,
+                diagnostic,
+            } = walk_faces(list, policy, route, FaceLoops::walk)?;
+            let mut mesh = walked.into_mesh(&table, positions);
+            for &v in &deleted_vertices {
+                mesh.mark_vertex_deleted(VertexId(v));
+            }
+            Ok((mesh, diagnostic))
+        })
     }
 
     /// Makes each boundary vertex's half-edge a boundary one and links the boundary half-edges
@@ -228,14 +236,8 @@ impl FaceLoops {
         );
     }
 
-    /// The mesh of the walked faces of `table`, with boundary loops, and `diagnostic` completed
-    /// with what the mesh shows: non-manifold vertices.
-    fn into_mesh(
-        self,
-        table: &FaceTable<'_>,
-        positions: Vec<[f64; 3]>,
-        mut diagnostic: Diagnostic,
-    ) -> (Mesh, Diagnostic) {
+    /// The mesh of the walked faces of `table`, with boundary loops.
+    fn into_mesh(self, table: &FaceTable<'_>, positions: Vec<[f64; 3]>) -> Mesh {
         let n_halfedges = 2 * self.n_edges as usize;
         let (n_vertices, n_faces) = (positions.len(), self.face_halfedge.len());
         // The arrays were allocated with room to spare (see `large_arrays`); the mesh keeps
@@ -257,10 +259,14 @@ impl FaceLoops {
             let boundary = boundary_twins(&mesh.face);
             mesh.link_boundary(&boundary);
         }
-        diagnostic.non_manifold_vertices =
-            mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
-        mesh.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
-        (mesh, diagnostic)
+        mesh.may_have_pinched_vertices = !mesh.non_manifold_vertices().is_empty();
+        mesh
+    }
+}
+
+impl Pinched for Mesh {
+    fn has_pinched_vertices(&self) -> bool {
+        self.may_have_pinched_vertices
     }
 }
 

@@ -70,11 +70,13 @@ mod tests {
         ];
         let sizes = [3, 3];
         let indices = [0, 1, 2, 0, 3, 4];
-        let (mesh, _) = Mesh::from_face_list(
+        // Strict refuses the shared vertex; Skip gives the second triangle a copy of it.
+        let (mesh, diagnostic) = Mesh::from_face_list(
             &FaceList::polygons(&positions, &sizes, &indices),
-            BuildPolicy::Strict,
+            BuildPolicy::Skip,
         )
         .unwrap();
+        assert_eq!(diagnostic.vertex_copies, [0]);
         let components = mesh.connected_components();
         assert_eq!(components.count, 2);
         assert_eq!(components.face_component, vec![0, 1]);

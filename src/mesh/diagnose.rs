@@ -2,21 +2,15 @@
 //! a policy.
 
 use super::Mesh;
-use crate::soup::{BuildPolicy, Diagnostic, FaceList};
+use crate::soup::{Diagnostic, FaceList};
 
 impl Mesh {
-    /// Everything wrong with `list`, by index, whatever it is: malformed faces, non-finite
+    /// Everything wrong with `list` as it is, by index: malformed faces, non-finite
     /// coordinates, non-manifold and inconsistently oriented edges, non-manifold and isolated
-    /// vertices, degenerate faces.
-    ///
-    /// It is the diagnostic of a [`BuildPolicy::Skip`] build, so
-    /// [`Diagnostic::skipped_faces`] lists the faces such a build leaves out (malformed ones, then
-    /// those that cannot be placed in input order); vertex-level findings are those of the faces
-    /// kept. When the list as a whole is malformed, only [`Diagnostic::list_problem`] is set.
+    /// vertices, degenerate faces (see [`Diagnostic`] for each definition). The lists of what a
+    /// policy changes are empty: this describes the input, not a build. When the list as a whole
+    /// is malformed, only [`Diagnostic::list_problem`] is set.
     pub fn diagnose(list: &FaceList<'_>) -> Diagnostic {
-        match Mesh::from_face_list(list, BuildPolicy::Skip) {
-            Ok((_, diagnostic)) => diagnostic,
-            Err(error) => error.diagnostic().clone(),
-        }
+        crate::soup::diagnose(list)
     }
 }

@@ -125,8 +125,10 @@ mod tests {
     use crate::soup::{BuildPolicy, FaceList};
 
     /// Two triangulated grids touching at one corner vertex, and a third whose middle vertex is
-    /// shared with a fourth: the pinched vertices are found whether the vertices' half-edges follow
-    /// their order (fans walked one by one) or are scattered (side by side).
+    /// shared with a fourth: the direct build finds the pinched vertices whether the vertices'
+    /// half-edges follow their order (fans walked one by one) or are scattered (side by side),
+    /// and builds again splitting them (Skip) or refuses (Strict). Either way the diagnostic
+    /// lists them, and no vertex of the mesh has a half-edge its circulation misses.
     #[test]
     fn pinched_vertices_are_found_with_fans_walked_one_by_one_or_side_by_side() {
         let n = 30u32;
@@ -165,13 +167,29 @@ mod tests {
                 renumbered[renumber(v as u32) as usize] = p;
             }
             let list = FaceList::triangles(&renumbered, &indices);
-            let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap();
-            assert_eq!(mesh.fans_follow_vertices(), !scattered);
             let mut expected = pinched.map(renumber).to_vec();
             expected.sort_unstable();
-            let found: Vec<u32> = mesh.non_manifold_vertices().iter().map(|v| v.0).collect();
-            assert_eq!(found, expected);
+            let refusal = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap_err();
+            assert_eq!(refusal.diagnostic().non_manifold_vertices, expected);
+
+            let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Skip).unwrap();
+            assert_eq!(mesh.fans_follow_vertices(), !scattered);
+            assert!(mesh.non_manifold_vertices().is_empty());
+            assert!(!mesh.may_have_pinched_vertices());
             assert_eq!(diagnostic.non_manifold_vertices, expected);
+            assert_eq!(diagnostic.vertex_copies, expected);
+            assert!(diagnostic.skipped_faces.is_empty());
+            let mut out_degree = vec![0; mesh.vertex_capacity()];
+            for &v in mesh.halfedge_origins() {
+                out_degree[v as usize] += 1;
+            }
+            for v in 0..mesh.vertex_capacity() as u32 {
+                assert_eq!(
+                    mesh.valence(VertexId(v)),
+                    out_degree[v as usize],
+                    "vertex {v}"
+                );
+            }
             // The vertices left without faces by the sharing are isolated.
             let mut isolated = [per_grid, 3 * per_grid + middle].map(renumber).to_vec();
             isolated.sort_unstable();

@@ -77,10 +77,15 @@ impl fmt::Display for ListProblem {
     }
 }
 
-/// Everything a build found wrong with its input, by index. All face indices refer to the
-/// input face list; vertex indices refer to the input positions, except
-/// [`Diagnostic::non_manifold_vertices`], which are vertex ids of the built structure (equal to the
-/// input indices unless repair copied vertices, see [`Diagnostic::vertex_copies`]).
+/// Everything wrong with an input face list, by index, and what a build's policy changed.
+///
+/// The findings (every list but the last three) describe the input as it is, the same for a
+/// build under any policy and for [`Mesh::diagnose`](crate::mesh::Mesh::diagnose). Faces with
+/// fewer than 3 corners, an out-of-range index or a repeated vertex are listed as such and left
+/// out of the edge, fan and area findings. The last three lists say what the policy changed:
+/// [`Diagnostic::skipped_faces`], [`Diagnostic::reoriented_faces`],
+/// [`Diagnostic::vertex_copies`]. All face indices refer to the input face list, vertex indices
+/// to the input positions.
 ///
 /// Lists are sorted ascending. An empty diagnostic ([`Diagnostic::is_clean`]) means a clean,
 /// closed-or-bordered, consistently oriented 2-manifold.
@@ -100,22 +105,24 @@ pub struct Diagnostic {
     pub non_manifold_edges: Vec<EdgeReport>,
     /// Edges used by exactly two faces that traverse it in the same direction.
     pub inconsistent_edges: Vec<EdgeReport>,
-    /// Vertices whose faces form more than one fan (e.g. two cones touching at a tip). The
-    /// half-edge structure holds them; the vertex's circulators see only the fan of its
-    /// outgoing half-edge.
+    /// Vertices whose faces form more than one fan, faces being in one fan when they share an
+    /// edge at the vertex (e.g. two cones touching at a tip). `Strict` refuses them; `Skip` and
+    /// `Repair` give every fan but the first a copy of the vertex.
     pub non_manifold_vertices: Vec<u32>,
-    /// Vertices no face uses (kept, with no half-edge).
+    /// Vertices no face names (kept, with no half-edge). A vertex whose every face the policy
+    /// left out is in the structure without a face too, but not listed here.
     pub isolated_vertices: Vec<u32>,
     /// Faces with zero area (Newell vector negligible against their edge lengths).
     pub degenerate_faces: Vec<u32>,
-    /// Faces left out of the built structure ([`BuildPolicy::Skip`](super::BuildPolicy::Skip)).
-    /// Kept faces keep their relative order: built face `i` is the `i`-th input face not listed
-    /// here.
+    /// Faces left out of the built structure (by `Skip`, or the faces `Repair` cannot keep; see
+    /// [`BuildPolicy`](super::BuildPolicy)). Kept faces keep their relative order: built face `i`
+    /// is the `i`-th input face not listed here.
     pub skipped_faces: Vec<u32>,
-    /// Faces whose corner order repair reversed so that they agree with their neighbours
-    /// (the built face runs the other way round from the input).
+    /// Faces `Repair` built the other way round from the input, so that they agree with their
+    /// neighbours or so that their closed component faces outward.
     pub reoriented_faces: Vec<u32>,
-    /// Vertices added by repair: built vertex `n_input_vertices + i` copies input vertex
+    /// Vertices added by `Skip` or `Repair` (splitting non-manifold vertices, cutting along
+    /// problem edges): built vertex `n_input_vertices + i` copies input vertex
     /// `vertex_copies[i]` (same position).
     pub vertex_copies: Vec<u32>,
 }
@@ -223,9 +230,10 @@ impl fmt::Display for Diagnostic {
             &self.degenerate_faces,
         )?;
         write_ids(f, "faces skipped", "f", &self.skipped_faces)?;
+        write_ids(f, "faces reversed by repair", "f", &self.reoriented_faces)?;
         write_ids(
             f,
-            "vertices duplicated by repair, copies of",
+            "vertices duplicated, copies of",
             "v",
             &self.vertex_copies,
         )

@@ -16,7 +16,40 @@ pub(crate) struct Walked<'a, T> {
     pub(crate) walked: T,
     pub(crate) table: FaceTable<'a>,
     pub(crate) positions: Vec<[f64; 3]>,
+    /// Vertices the structure must hold as deleted (see [`super::Resolved::deleted_vertices`]).
+    pub(crate) deleted_vertices: Vec<u32>,
     pub(crate) diagnostic: Diagnostic,
+}
+
+/// How [`walk_faces`] gets to the faces it walks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// Straight from the list when it is well formed, through [`resolve`] otherwise.
+    Direct,
+    /// Through [`resolve`] whatever the list (for a list whose direct build showed a vertex
+    /// with several fans, which only resolve splits or refuses).
+    Resolve,
+}
+
+/// A structure a builder made: does a vertex have a fan its circulation misses?
+pub(crate) trait Pinched {
+    /// Whether some vertex's faces form several fans that the structure keeps apart.
+    fn has_pinched_vertices(&self) -> bool;
+}
+
+/// Builds with `build(route)`: directly first, and again through [`resolve`] when the direct
+/// build has a vertex with several fans (the usual input has none, and the direct build finds
+/// that out in one pass over its half-edges).
+pub(crate) fn build_splitting_pinched<S: Pinched>(
+    build: impl Fn(Route) -> Result<(S, Diagnostic), BuildError>,
+) -> Result<(S, Diagnostic), BuildError> {
+    let direct = build(Route::Direct)?;
+    if !direct.0.has_pinched_vertices() {
+        return Ok(direct);
+    }
+    let resolved = build(Route::Resolve)?;
+    debug_assert!(!resolved.0.has_pinched_vertices());
+    Ok(resolved)
 }
 
 /// What a builder's walk made, which knows the vertices no face reached.
@@ -45,11 +78,13 @@ impl<T, W> Walk<T> for W where
 {
 }
 
-/// Runs `walk` (see [`Walk`]) directly on well-formed input, else on the table [`resolve`] makes
-/// under `policy` (where it cannot meet a defect). The diagnostic has the isolated vertices.
+/// Runs `walk` (see [`Walk`]) directly on well-formed input with finite coordinates (when
+/// `route` allows), else on the table [`resolve`] makes under `policy` (where it cannot meet a
+/// defect). The diagnostic has the isolated vertices.
 pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     list: &FaceList<'a>,
     policy: BuildPolicy,
+    route: Route,
     walk: impl Walk<T>,
 ) -> Result<Walked<'a, T>, BuildError> {
     // The structure's copy of the positions needs nothing from the faces: with two threads it
@@ -62,7 +97,7 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     let mut input_copy = None;
     // Lists with more vertices than ids are left to resolve to refuse, before anything the size
     // of the input is allocated.
-    if list.positions.len() as u64 <= MAX_VERTICES {
+    if route == Route::Direct && list.positions.len() as u64 <= MAX_VERTICES {
         let (edges, early_copy) = join(
             || well_formed_edges(list, later_positions),
             || copy_early.then(|| large_arrays::copied(list.positions)),
@@ -79,10 +114,10 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
                 } else {
                     non_finite_vertices(list.positions)
                 };
-                // Strict refuses non-finite coordinates: resolve says so, with the diagnostic.
-                if non_finite_vertices.is_empty() || policy != BuildPolicy::Strict {
+                // Non-finite coordinates never enter a structure: resolve refuses them or
+                // leaves their faces out.
+                if non_finite_vertices.is_empty() {
                     let diagnostic = Diagnostic {
-                        non_finite_vertices,
                         degenerate_faces: areas.into_faces(),
                         isolated_vertices,
                         ..Diagnostic::default()
@@ -93,6 +128,7 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
                         walked,
                         table,
                         positions,
+                        deleted_vertices: Vec::new(),
                         diagnostic,
                     });
                 }
@@ -105,9 +141,9 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     let (walked, areas) =
         walk_checking_areas(&resolved.table, &mut buckets, &resolved.positions, &walk);
     let walked = walked.expect("a resolved face table has no edge defects");
-    let mut diagnostic = resolved.diagnostic;
-    diagnostic.degenerate_faces = areas.into_faces();
-    diagnostic.isolated_vertices = walked.unreached_vertices();
+    // The findings are the input's (resolve's): the walk's areas are those of the faces built.
+    drop(areas);
+    let diagnostic = resolved.diagnostic;
     let positions = match resolved.positions {
         Cow::Borrowed(input) => input_copy.unwrap_or_else(|| buckets.into_positions(input)),
         Cow::Owned(repaired) => repaired,
@@ -116,6 +152,7 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
         walked,
         table: resolved.table,
         positions,
+        deleted_vertices: resolved.deleted_vertices,
         diagnostic,
     })
 }
@@ -193,7 +230,7 @@ fn join<A: Send, B: Send>(a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mesh::Mesh;
+    use crate::mesh::{Mesh, VertexId};
     use crate::winged::Winged;
 
     /// The diagnostic's non-finite and isolated vertices under `policy` (of the refusal, if it is
@@ -288,17 +325,35 @@ mod tests {
                         FaceList::polygons(&positions, &mixed_sizes, &mixed),
                     ];
                     for list in &lists {
-                        for policy in [BuildPolicy::Strict, BuildPolicy::Skip] {
+                        let policies =
+                            [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair];
+                        for policy in policies {
                             for (non_finite, isolated_found) in vertex_findings(list, policy) {
                                 assert_eq!(non_finite, [bad], "{value} at {bad}, {policy:?}");
-                                // A refusal stops before the vertices are looked at.
-                                let built = policy == BuildPolicy::Skip;
-                                assert_eq!(isolated_found, [isolated][..usize::from(built)]);
+                                // Refused or built, the findings are the input's.
+                                assert_eq!(isolated_found, [isolated]);
                             }
                         }
                         assert!(Mesh::from_face_list(list, BuildPolicy::Strict).is_err());
-                        let (mesh, _) = Mesh::from_face_list(list, BuildPolicy::Skip).unwrap();
-                        assert_eq!(mesh.positions()[bad as usize][1].to_bits(), value.to_bits());
+                        // The vertex never enters the mesh: its faces are left out, and it is
+                        // there as a deleted vertex (its position zeroed), keeping the ids.
+                        for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+                            let (mesh, diagnostic) = Mesh::from_face_list(list, policy).unwrap();
+                            assert!(mesh.is_vertex_deleted(VertexId(bad)));
+                            assert_eq!(mesh.positions()[bad as usize], [0.0; 3]);
+                            assert!(mesh.positions().iter().flatten().all(|x| x.is_finite()));
+                            let table = FaceTable::new(list).unwrap();
+                            let faces_at_bad: Vec<u32> = (0..table.n_faces() as u32)
+                                .filter(|&f| table.face(f as usize).contains(&bad))
+                                .collect();
+                            assert_eq!(diagnostic.skipped_faces, faces_at_bad);
+                            assert_eq!(mesh.n_faces(), table.n_faces() - faces_at_bad.len());
+                            assert_eq!(mesh.n_vertices(), positions.len() - 1);
+                            mesh.check().unwrap();
+                            let (winged, _) = Winged::from_face_list(list, policy).unwrap();
+                            assert!(!winged.is_vertex(crate::winged::VertexId(bad)));
+                            winged.check().unwrap();
+                        }
                     }
                 }
             }

@@ -1,8 +1,10 @@
-//! Repair's first step on orientation conflicts: flip whole faces so that neighbours agree, as
-//! CGAL's `orient_polygon_soup` does, before any vertex is duplicated.
+//! Repair's orientation steps: flip whole faces so that neighbours agree, as
+//! CGAL's `orient_polygon_soup` does, before any vertex is duplicated; and, once the faces pair,
+//! flip closed components that face inward.
 
 use super::FaceTable;
 use super::pairing::{BOUNDARY, EdgeDefect, EdgePairing, UNPAIRED};
+use crate::disjoint_sets;
 
 /// Chooses faces to reverse so that as many edges as possible become consistently oriented.
 ///
@@ -71,4 +73,85 @@ pub(crate) fn flip_faces(table: &mut FaceTable<'_>, faces: &[usize]) {
         let range = table.face_range(f);
         table.corners_mut()[range].reverse();
     }
+}
+
+/// The faces of the closed components of `table` that enclose a negative volume, ascending:
+/// flipped, every closed component faces outward. `pairing` is `table`'s, with no problem edge;
+/// components are joined through paired edges, and a component is closed when none of its
+/// corners is on the boundary. Vertex `v` is at `position(v)`. The volume is the signed sum of the
+/// tetrahedra from a corner of the component to each triangle of its faces' fans, taken
+/// relative to that corner and scaled by the component's extent, so that neither cancellation
+/// far from the origin nor overflow at huge coordinates decides the sign; a component enclosing
+/// no volume (flat) is left as it is.
+pub(crate) fn faces_facing_inward(
+    table: &FaceTable<'_>,
+    pairing: &EdgePairing,
+    position: impl Fn(u32) -> [f64; 3],
+) -> Vec<usize> {
+    let n_faces = table.n_faces();
+    let mut parent: Vec<u32> = (0..n_faces as u32).collect();
+    let mut open = vec![false; n_faces];
+    for (f, open) in open.iter_mut().enumerate() {
+        for c in table.face_range(f) {
+            match pairing.partner[c] {
+                BOUNDARY | UNPAIRED => *open = true,
+                p => disjoint_sets::join(
+                    &mut parent,
+                    0,
+                    f as u32,
+                    table.face_of_corner(p as usize) as u32,
+                ),
+            }
+        }
+    }
+    let component: Vec<usize> = (0..n_faces as u32)
+        .map(|f| disjoint_sets::root(&mut parent, 0, f) as usize)
+        .collect();
+    let mut closed = vec![true; n_faces];
+    for f in 0..n_faces {
+        if open[f] {
+            closed[component[f]] = false;
+        }
+    }
+    // Per component root: the reference corner, then the extent, then the volume.
+    let mut origin = vec![[f64::NAN; 3]; n_faces];
+    let mut extent = vec![0.0f64; n_faces];
+    for f in (0..n_faces).filter(|&f| closed[component[f]]) {
+        let root = component[f];
+        if origin[root][0].is_nan() {
+            origin[root] = position(table.face(f)[0]);
+        }
+        for &v in table.face(f) {
+            let p = position(v);
+            for k in 0..3 {
+                extent[root] = extent[root].max((p[k] - origin[root][k]).abs());
+            }
+        }
+    }
+    let mut volume = vec![0.0f64; n_faces];
+    for f in (0..n_faces).filter(|&f| closed[component[f]]) {
+        let root = component[f];
+        if extent[root] == 0.0 || !extent[root].is_finite() {
+            continue;
+        }
+        let scaled = |v: u32| {
+            let p = position(v);
+            std::array::from_fn::<f64, 3, _>(|k| (p[k] - origin[root][k]) / extent[root])
+        };
+        let face = table.face(f);
+        let first = scaled(face[0]);
+        for pair in face[1..].windows(2) {
+            volume[root] += determinant(first, scaled(pair[0]), scaled(pair[1]));
+        }
+    }
+    (0..n_faces)
+        .filter(|&f| closed[component[f]] && volume[component[f]] < 0.0)
+        .collect()
+}
+
+/// The determinant of the rows `a`, `b`, `c`: six times the signed volume of the tetrahedron
+/// they span with the origin.
+fn determinant(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
 }

@@ -4,31 +4,39 @@ use super::Diagnostic;
 
 /// How a builder treats faces that cannot be placed in a manifold structure.
 ///
-/// Whatever the policy, every defect is listed in the returned [`Diagnostic`]; isolated vertices,
-/// degenerate faces and non-manifold vertices the structure can hold (several fans touching at a
-/// vertex) are kept and reported, never refused. Non-finite coordinates are refused by `Strict`
-/// and kept (reported) by `Skip` and `Repair`, which only act on connectivity. An empty face list
-/// is valid: it builds a structure with no faces (its vertices, if any, isolated).
+/// Whatever the policy, the returned [`Diagnostic`] lists every defect of the input as it is, and
+/// apart from them what the policy changed. Isolated vertices and degenerate faces are kept and
+/// reported, never refused. Whatever the policy, a built structure holds no non-finite
+/// coordinate (such a vertex is there as a deleted vertex, keeping the ids of the others) and no
+/// non-manifold vertex (several fans of faces touching at a vertex, which a vertex's circulation
+/// could not see whole): `Strict` refuses them, `Skip` and `Repair` leave out the faces on
+/// non-finite vertices and give every fan of a non-manifold vertex but the first a copy of the
+/// vertex ([`Diagnostic::vertex_copies`]). An empty face list is valid: it builds a structure
+/// with no faces (its vertices, if any, isolated).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum BuildPolicy {
     /// Refuse any malformed face, non-finite coordinate, non-manifold or inconsistently oriented
-    /// edge: the build fails with the diagnostic.
+    /// edge, or non-manifold vertex: the build gives the input exactly as it is, or fails with
+    /// the diagnostic.
     #[default]
     Strict,
-    /// Leave out malformed faces, then the faces that cannot be placed: faces are taken in input
-    /// order and a face is left out when one of its edges is already used in its direction
-    /// (as OpenMesh's `add_face` loop does). Left-out faces are listed in
-    /// [`Diagnostic::skipped_faces`].
+    /// Leave out malformed faces and faces on a non-finite vertex, then the faces that cannot be
+    /// placed: faces are taken in input order and a face is left out when one of its edges is
+    /// already used in its direction (as OpenMesh's `add_face` loop does). Left-out faces are
+    /// listed in [`Diagnostic::skipped_faces`]; then non-manifold vertices are split.
     Skip,
-    /// Keep every face: a vertex named twice in one face loses its consecutive repeats and gets a
-    /// copy for a non-consecutive one; faces are reversed where that makes their neighbours agree
-    /// (listed in [`Diagnostic::reoriented_faces`]); then the surface is cut along the edges that
-    /// are still non-manifold or inconsistently oriented, and every fan of faces around their
-    /// endpoints gets a vertex of its own (as CGAL's polygon-soup orientation does: two cubes
-    /// sharing an edge become two closed cubes); faces that still cannot share an edge get copies
-    /// of its endpoints. Copies are recorded in [`Diagnostic::vertex_copies`]. Faces with an out-of-range
-    /// index or fewer than 3 distinct corners cannot be kept, so the build fails instead of
-    /// dropping them.
+    /// Keep every face that can be kept: a vertex named twice in one face loses its consecutive
+    /// repeats and gets a copy for a non-consecutive one; faces are reversed where that makes
+    /// their neighbours agree; then the surface is cut along the edges that are still
+    /// non-manifold or inconsistently oriented, and every fan of faces around their endpoints
+    /// gets a vertex of its own (as CGAL's polygon-soup orientation does: two cubes sharing an
+    /// edge become two closed cubes); faces that still cannot share an edge get copies of its
+    /// endpoints; non-manifold vertices are split; last, every closed component that encloses a
+    /// negative volume is reversed, so closed components face outward. Copies are recorded in
+    /// [`Diagnostic::vertex_copies`], reversed faces in [`Diagnostic::reoriented_faces`]. Faces
+    /// that cannot be kept — fewer than 3 distinct corners, an out-of-range index, a corner on a
+    /// non-finite vertex — are left out and listed in [`Diagnostic::skipped_faces`]: Repair
+    /// accepts every input `Skip` accepts.
     Repair,
 }
 

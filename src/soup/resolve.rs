@@ -1,133 +1,142 @@
 //! Applying a [`BuildPolicy`] to a face list: find every defect, then refuse, leave out or repair
-//! until the faces pair into an oriented 2-manifold (up to non-manifold vertices, which the
-//! structures can hold). Both kernels build from the result.
+//! until the faces pair into an oriented 2-manifold whose every vertex has one fan. Both kernels
+//! build from the result.
 
 use std::borrow::Cow;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
-use super::orient::{faces_to_flip, flip_faces};
-use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
-use super::table::{MAX_VERTICES, non_finite_vertices};
-use super::umbrellas::split_umbrellas;
-use super::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, FaceTable, ListProblem};
+use super::inspect::{Inspection, inspect};
+use super::orient::{faces_facing_inward, faces_to_flip, flip_faces};
+use super::pairing::{EdgePairing, ProblemEdge, pair_edges};
+use super::table::{MAX_VERTICES, has_repeated_vertex};
+use super::umbrellas::{split_non_manifold_vertices, split_umbrellas};
+use super::{BuildError, BuildPolicy, Diagnostic, FaceList, FaceTable, ListProblem};
 
 /// Rounds of "copy the endpoints of the refused faces' edges" before repair gives each still
 /// refused face vertices of its own (which always succeeds).
 const REPAIR_ROUNDS: usize = 8;
 
 /// A face list made buildable: every corner's edge pairs with at most one other corner, walking
-/// it the other way.
+/// it the other way, and the faces around every vertex form one fan.
 #[derive(Debug)]
 pub struct Resolved<'a> {
     /// The faces to build, with their input face indices.
     pub table: FaceTable<'a>,
-    /// Positions of the built vertices: the input's, then those of repair's copies.
+    /// Positions of the built vertices: the input's, then those of the copies (see
+    /// [`Diagnostic::vertex_copies`]); the slots of [`Resolved::deleted_vertices`] hold zeros.
     pub positions: Cow<'a, [[f64; 3]]>,
-    /// Every defect found so far (builders add vertex-level and geometric findings).
+    /// Input vertices the structure must hold as deleted: those with a non-finite coordinate,
+    /// which never enter a structure (their faces are left out).
+    pub deleted_vertices: Vec<u32>,
+    /// The input's findings and what the policy changed (builders add nothing but the areas).
     pub diagnostic: Diagnostic,
 }
 
 /// Checks `list` and applies `policy` (see [`BuildPolicy`] for what each one does).
 pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<'a>, BuildError> {
-    let mut diagnostic = Diagnostic::default();
-    let invalid = |diagnostic: Diagnostic| BuildError::InvalidInput(Box::new(diagnostic));
-    let n_input_vertices = list.positions.len();
-    if n_input_vertices as u64 > MAX_VERTICES {
-        diagnostic.list_problem = Some(ListProblem::TooManyElements {
-            what: "vertices",
-            count: n_input_vertices as u64,
+    let Inspection {
+        mut table,
+        defects,
+        mut diagnostic,
+    } = inspect(list).map_err(BuildError::InvalidInput)?;
+    if policy == BuildPolicy::Strict {
+        if diagnostic.has_invalid_input() {
+            return Err(BuildError::InvalidInput(Box::new(diagnostic)));
+        }
+        if diagnostic.has_edge_defects() || !diagnostic.non_manifold_vertices.is_empty() {
+            return Err(BuildError::NonManifold(Box::new(diagnostic)));
+        }
+        return Ok(Resolved {
+            table,
+            positions: Cow::Borrowed(list.positions),
+            deleted_vertices: Vec::new(),
+            diagnostic,
         });
-        return Err(invalid(diagnostic));
     }
-    let mut table = match FaceTable::new(list) {
-        Ok(table) => table,
-        Err(problem) => {
-            diagnostic.list_problem = Some(problem);
-            return Err(invalid(diagnostic));
-        }
-    };
 
-    let defects = table.face_defects(n_input_vertices);
-    diagnostic.non_finite_vertices = non_finite_vertices(list.positions);
-    diagnostic.faces_too_small = defects.too_small.clone();
-    diagnostic.faces_out_of_range = defects.out_of_range.clone();
-    diagnostic.faces_repeated_vertex = defects.repeated_vertex.clone();
-    let mut copies = VertexCopies::new(n_input_vertices);
+    // Faces no policy can keep: too small, out of range, on a non-finite vertex, and under Skip
+    // those that repeat a vertex.
+    let mut unkept: Vec<u32> = defects
+        .too_small
+        .iter()
+        .chain(&defects.out_of_range)
+        .copied()
+        .collect();
+    if policy == BuildPolicy::Skip {
+        unkept.extend(&defects.repeated_vertex);
+    }
+    let non_finite = &diagnostic.non_finite_vertices;
+    if !non_finite.is_empty() {
+        let is_non_finite = |v: &u32| non_finite.binary_search(v).is_ok();
+        unkept.extend(
+            (0..table.n_faces() as u32)
+                .filter(|&f| table.face(f as usize).iter().any(is_non_finite)),
+        );
+    }
+    unkept.sort_unstable();
+    unkept.dedup();
+    let mut left_out = unkept.clone();
+    table = without_faces(table, &unkept);
+
+    let mut copies = VertexCopies::new(list.positions.len());
+    let mut flipped = Vec::new();
     match policy {
-        BuildPolicy::Strict if diagnostic.has_invalid_input() => return Err(invalid(diagnostic)),
-        BuildPolicy::Strict => {}
-        BuildPolicy::Skip if !defects.is_empty() => {
-            let mut keep = vec![true; table.n_faces()];
-            for &f in defects
-                .too_small
-                .iter()
-                .chain(&defects.out_of_range)
-                .chain(&defects.repeated_vertex)
-            {
-                keep[f as usize] = false;
+        BuildPolicy::Strict => unreachable!("handled above"),
+        BuildPolicy::Skip => {
+            let pairing = pair_edges(&table, copies.n_vertices());
+            if !pairing.problems.is_empty() {
+                let mut refused: Vec<u32> = first_come_refusals(&table, &pairing.problems)
+                    .into_iter()
+                    .map(|(f, _)| f as u32)
+                    .collect();
+                left_out.extend(refused.iter().map(|&f| table.input_face(f as usize)));
+                refused.sort_unstable();
+                table = without_faces(table, &refused);
             }
-            diagnostic.skipped_faces = (0..table.n_faces() as u32)
-                .filter(|&f| !keep[f as usize])
-                .collect();
-            table = table.retain(&keep);
         }
-        BuildPolicy::Skip => {}
         BuildPolicy::Repair => {
-            if !defects.too_small.is_empty() || !defects.out_of_range.is_empty() {
-                return Err(invalid(diagnostic));
-            }
-            if !defects.repeated_vertex.is_empty() {
-                let (repaired, collapsed) =
-                    repair_repeated_vertices(&table, &defects.repeated_vertex, &mut copies)?;
-                if !collapsed.is_empty() {
-                    diagnostic.faces_too_small = collapsed;
-                    return Err(invalid(diagnostic));
-                }
-                table = repaired;
-            }
-        }
-    }
-
-    let mut pairing = pair_edges(&table, copies.n_vertices());
-    if !pairing.problems.is_empty() {
-        report_problems(&table, &pairing.problems, &mut diagnostic);
-        match policy {
-            BuildPolicy::Strict => return Err(BuildError::NonManifold(Box::new(diagnostic))),
-            BuildPolicy::Skip => {
-                let refused = first_come_refusals(&table, &pairing.problems);
-                let mut keep = vec![true; table.n_faces()];
-                for &(f, _) in &refused {
-                    keep[f] = false;
-                }
-                diagnostic
-                    .skipped_faces
-                    .extend(refused.iter().map(|&(f, _)| table.input_face(f)));
-                diagnostic.skipped_faces.sort_unstable();
-                table = table.retain(&keep);
-                pairing = pair_edges(&table, copies.n_vertices());
-            }
-            BuildPolicy::Repair => {
-                let flips = faces_to_flip(&table, &pairing);
-                if !flips.is_empty() {
-                    diagnostic.reoriented_faces =
-                        flips.iter().map(|&f| table.input_face(f)).collect();
-                    flip_faces(&mut table, &flips);
+            let collapsed;
+            (table, collapsed) = repair_repeated_vertices(table, &mut copies)?;
+            left_out.extend(collapsed);
+            let mut pairing = pair_edges(&table, copies.n_vertices());
+            if !pairing.problems.is_empty() {
+                flipped = faces_to_flip(&table, &pairing);
+                if !flipped.is_empty() {
+                    flip_faces(&mut table, &flipped);
                     pairing = pair_edges(&table, copies.n_vertices());
                 }
                 if split_umbrellas(&mut table, &pairing, &mut copies)? {
                     pairing = pair_edges(&table, copies.n_vertices());
                 }
-                pairing = repair_edges(&mut table, pairing, &mut copies)?;
-                copies.drop_unused(&mut table);
+                repair_edges(&mut table, pairing, &mut copies)?;
             }
         }
     }
-    debug_assert!(pairing.problems.is_empty());
+    left_out.sort_unstable();
+    diagnostic.skipped_faces = left_out;
 
-    let positions = if copies.copied_from.is_empty() {
+    let pairing = pair_edges(&table, copies.n_vertices());
+    debug_assert!(pairing.problems.is_empty());
+    split_non_manifold_vertices(&mut table, &pairing, &mut copies)?;
+    if policy == BuildPolicy::Repair {
+        copies.drop_unused(&mut table);
+        // Splitting a vertex keeps every paired corner paired: the pairing still holds.
+        let position = |v: u32| list.positions[copies.original(v) as usize];
+        let inward = faces_facing_inward(&table, &pairing, position);
+        flip_faces(&mut table, &inward);
+        diagnostic.reoriented_faces = symmetric_difference(&flipped, &inward)
+            .map(|f| table.input_face(f))
+            .collect();
+    }
+
+    let deleted_vertices = diagnostic.non_finite_vertices.clone();
+    let positions = if copies.copied_from.is_empty() && deleted_vertices.is_empty() {
         Cow::Borrowed(list.positions)
     } else {
         let mut positions = list.positions.to_vec();
+        for &v in &deleted_vertices {
+            positions[v as usize] = [0.0; 3];
+        }
         positions.extend(
             copies
                 .copied_from
@@ -140,7 +149,45 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
     Ok(Resolved {
         table,
         positions,
+        deleted_vertices,
         diagnostic,
+    })
+}
+
+/// `table` without its faces `faces` (table indices, ascending).
+fn without_faces<'a>(table: FaceTable<'a>, faces: &[u32]) -> FaceTable<'a> {
+    if faces.is_empty() {
+        return table;
+    }
+    let mut keep = vec![true; table.n_faces()];
+    for &f in faces {
+        keep[f as usize] = false;
+    }
+    table.retain(&keep)
+}
+
+/// The elements of exactly one of two ascending lists, ascending.
+fn symmetric_difference<'l>(a: &'l [usize], b: &'l [usize]) -> impl Iterator<Item = usize> + 'l {
+    let (mut i, mut j) = (0, 0);
+    std::iter::from_fn(move || {
+        loop {
+            match (a.get(i), b.get(j)) {
+                (Some(&x), Some(&y)) if x == y => (i, j) = (i + 1, j + 1),
+                (Some(&x), Some(&y)) if x < y => {
+                    i += 1;
+                    return Some(x);
+                }
+                (_, Some(&y)) => {
+                    j += 1;
+                    return Some(y);
+                }
+                (Some(&x), None) => {
+                    i += 1;
+                    return Some(x);
+                }
+                (None, None) => return None,
+            }
+        }
     })
 }
 
@@ -162,6 +209,14 @@ impl VertexCopies {
         self.n_input + self.copied_from.len()
     }
 
+    /// The input vertex `vertex` is (or copies).
+    fn original(&self, vertex: u32) -> u32 {
+        match (vertex as usize).checked_sub(self.n_input) {
+            Some(copy) => self.copied_from[copy],
+            None => vertex,
+        }
+    }
+
     /// A new vertex at the position of `vertex` (an input vertex or an earlier copy).
     pub(super) fn copy(&mut self, vertex: u32) -> Result<u32, BuildError> {
         let id = self.n_vertices() as u64;
@@ -175,10 +230,7 @@ impl VertexCopies {
             };
             return Err(BuildError::InvalidInput(Box::new(diagnostic)));
         }
-        let original = match (vertex as usize).checked_sub(self.n_input) {
-            Some(copy) => self.copied_from[copy],
-            None => vertex,
-        };
+        let original = self.original(vertex);
         self.copied_from.push(original);
         Ok(id as u32)
     }
@@ -215,68 +267,52 @@ impl VertexCopies {
 }
 
 /// Collapses consecutive repeats (cyclically) and gives later non-consecutive repeats a copy of
-/// the vertex. Returns the repaired table and the faces left with fewer than 3 corners.
-fn repair_repeated_vertices(
-    table: &FaceTable<'_>,
-    faces: &[u32],
+/// the vertex, in every face of `table` that names a vertex twice. Returns the repaired table
+/// without the faces left with fewer than 3 corners, and those faces' input indices.
+fn repair_repeated_vertices<'a>(
+    table: FaceTable<'a>,
     copies: &mut VertexCopies,
-) -> Result<(FaceTable<'static>, Vec<u32>), BuildError> {
+) -> Result<(FaceTable<'a>, Vec<u32>), BuildError> {
+    let mut scratch = Vec::new();
+    let mut repeats = |f: usize| has_repeated_vertex(table.face(f), &mut scratch);
+    let repaired: Vec<bool> = (0..table.n_faces()).map(&mut repeats).collect();
+    if !repaired.contains(&true) {
+        return Ok((table, Vec::new()));
+    }
     let mut offsets = Vec::with_capacity(table.n_faces() + 1);
     let mut corners = Vec::with_capacity(table.n_corners());
+    let mut input_faces = Vec::with_capacity(table.n_faces());
     let mut collapsed = Vec::new();
-    let mut next_repair = faces.iter().peekable();
+    let mut seen = HashSet::new();
     offsets.push(0);
-    for f in 0..table.n_faces() {
+    for (f, &repair) in repaired.iter().enumerate() {
         let face = table.face(f);
-        if next_repair
-            .next_if(|&&repair| repair as usize == f)
-            .is_none()
-        {
+        let start = corners.len();
+        if !repair {
             corners.extend_from_slice(face);
         } else {
-            let start = corners.len();
+            seen.clear();
             for (i, &v) in face.iter().enumerate() {
                 let previous = face[(i + face.len() - 1) % face.len()];
                 if v == previous {
                     continue;
                 }
-                let v = if corners[start..].contains(&v) {
-                    copies.copy(v)?
-                } else {
-                    v
-                };
+                let v = if seen.insert(v) { v } else { copies.copy(v)? };
                 corners.push(v);
             }
             if corners.len() - start < 3 {
+                corners.truncate(start);
                 collapsed.push(table.input_face(f));
+                continue;
             }
         }
         offsets.push(corners.len() as u32);
+        input_faces.push(table.input_face(f));
     }
     Ok((
-        FaceTable::from_parts(offsets, corners, Some(table.input_faces())),
+        FaceTable::from_parts(offsets, corners, Some(input_faces)),
         collapsed,
     ))
-}
-
-/// Lists the problem edges in the diagnostic, with input vertex and face indices.
-fn report_problems(table: &FaceTable<'_>, problems: &[ProblemEdge], diagnostic: &mut Diagnostic) {
-    for problem in problems {
-        let mut faces: Vec<u32> = problem
-            .corners
-            .iter()
-            .map(|&c| table.input_face(table.face_of_corner(c as usize)))
-            .collect();
-        faces.sort_unstable();
-        let report = EdgeReport {
-            vertices: problem.vertices,
-            faces,
-        };
-        match problem.defect {
-            EdgeDefect::NonManifold => diagnostic.non_manifold_edges.push(report),
-            EdgeDefect::Inconsistent => diagnostic.inconsistent_edges.push(report),
-        }
-    }
 }
 
 /// Takes faces in table order and refuses a face when one of its problem edges is already used in

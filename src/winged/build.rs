@@ -19,7 +19,7 @@ use crate::large_arrays;
 use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, FaceList,
-    FaceTable, Unreached, Walked, face_edges, walk_faces,
+    FaceTable, Pinched, Unreached, Walked, build_splitting_pinched, face_edges, walk_faces,
 };
 
 impl Winged {
@@ -41,22 +41,28 @@ impl Winged {
         list: &FaceList<'_>,
         policy: BuildPolicy,
     ) -> Result<(Self, Diagnostic), BuildError> {
-        let Walked {
-            walked,
-            table,
-            positions,
-            mut diagnostic,
-        } = walk_faces(list, policy, WingedFaces::walk)?;
-        // Every corner walks one side of an edge; when they cover both sides of every edge
-        // there is no hole, and the passes over all edges for holes are skipped.
-        let has_holes = 2 * walked.edges.len() > table.n_corners();
-        let mut w = walked.into_winged(positions, has_holes);
-        if has_holes {
-            w.link_boundary_loops();
-        }
-        diagnostic.non_manifold_vertices = w.non_manifold_vertices().iter().map(|v| v.0).collect();
-        w.may_have_pinched_vertices = !diagnostic.non_manifold_vertices.is_empty();
-        Ok((w, diagnostic))
+        build_splitting_pinched(|route| {
+            let Walked {
+                walked,
+                table,
+                positions,
+                deleted_vertices,
+                diagnostic,
+            } = walk_faces(list, policy, route, WingedFaces::walk)?;
+            // Every corner walks one side of an edge; when they cover both sides of every edge
+            // there is no hole, and the passes over all edges for holes are skipped.
+            let has_holes = 2 * walked.edges.len() > table.n_corners();
+            let mut w = walked.into_winged(positions, has_holes);
+            if has_holes {
+                w.link_boundary_loops();
+            }
+            w.may_have_pinched_vertices = !w.non_manifold_vertices().is_empty();
+            for &v in &deleted_vertices {
+                w.vertex_alive[v as usize] = false;
+                w.n_live_vertices -= 1;
+            }
+            Ok((w, diagnostic))
+        })
     }
 
     /// Builds the structure from an indexed face list, numbering and directing the edges as
@@ -225,6 +231,12 @@ impl VertexEdgeChoice {
                 self.offer(r.tail(side), e, Self::BORDERS_HOLE);
             }
         }
+    }
+}
+
+impl Pinched for Winged {
+    fn has_pinched_vertices(&self) -> bool {
+        self.may_have_pinched_vertices
     }
 }
 
