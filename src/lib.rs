@@ -5,6 +5,7 @@
 //! buffers that real mesh work needs. The Rust API is first-class; [`ffi`] is a thin C ABI over it
 //! (see `include/halfwing.h`).
 
+pub mod doctor;
 pub mod geom;
 pub mod io;
 pub mod mesh;

@@ -27,13 +27,34 @@ pub fn newell_vector(points: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
 /// than a few rounding errors of the sum of squared edge lengths (so collinear corners, repeated
 /// positions and needles thinner than ~1e-15 of their length count as degenerate). One pass;
 /// non-finite coordinates give `false` (they are reported as such, not as degenerate).
-pub fn is_degenerate_polygon(points: impl IntoIterator<Item = [f64; 3]>) -> bool {
+pub fn is_degenerate_polygon<P>(points: P) -> bool
+where
+    P: IntoIterator<Item = [f64; 3]>,
+    P::IntoIter: Clone,
+{
     polygon_area_test(points).0
 }
 
 /// [`is_degenerate_polygon`], with the polygon's squared perimeter, the size it judged the area
 /// against (finite as [`triangle_squared_size`] is; zero for no points).
-pub(crate) fn polygon_area_test(points: impl IntoIterator<Item = [f64; 3]>) -> (bool, f64) {
+pub(crate) fn polygon_area_test<P>(points: P) -> (bool, f64)
+where
+    P: IntoIterator<Item = [f64; 3]>,
+    P::IntoIter: Clone,
+{
+    let points = points.into_iter();
+    let (degenerate, squared_perimeter) = unscaled_polygon_area_test(points.clone());
+    if degenerate && squares_may_be_off(squared_perimeter) {
+        let points: Vec<[f64; 3]> = points.collect();
+        if let Some(scaled) = scaled_to_unit_size(&points) {
+            return (unscaled_polygon_area_test(scaled).0, squared_perimeter);
+        }
+    }
+    (degenerate, squared_perimeter)
+}
+
+/// [`polygon_area_test`] on the coordinates as they are.
+fn unscaled_polygon_area_test(points: impl IntoIterator<Item = [f64; 3]>) -> (bool, f64) {
     let mut points = points.into_iter();
     let Some(first) = points.next() else {
         return (true, 0.0);
@@ -81,10 +102,12 @@ pub fn is_degenerate_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
         return false;
     }
     let (ab, ac) = (difference(b, a), difference(c, a));
-    is_negligible_area(
-        cross(ab, ac),
-        triangle_squared_size(a, b, c) + squared_distance(b, c),
-    )
+    let squared_perimeter = triangle_squared_size(a, b, c) + squared_distance(b, c);
+    let degenerate = is_negligible_area(cross(ab, ac), squared_perimeter);
+    if degenerate && squares_may_be_off(squared_perimeter) {
+        return polygon_area_test([a, b, c]).0;
+    }
+    degenerate
 }
 
 /// The first test of [`is_degenerate_triangle`], which decides almost every face: `true` when
@@ -109,10 +132,39 @@ pub(crate) fn triangle_squared_size(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f6
 /// [`quad_area_vector`]) against the sum of its squared sides.
 #[inline]
 pub fn is_degenerate_quad(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> bool {
-    is_negligible_area(
-        quad_area_vector(a, b, c, d),
-        quad_squared_perimeter(a, b, c, d),
-    )
+    let squared_perimeter = quad_squared_perimeter(a, b, c, d);
+    let degenerate = is_negligible_area(quad_area_vector(a, b, c, d), squared_perimeter);
+    if degenerate && squares_may_be_off(squared_perimeter) {
+        return polygon_area_test([a, b, c, d]).0;
+    }
+    degenerate
+}
+
+/// Whether squares of coordinate differences summing to `squared_size` may have underflowed or
+/// overflowed (sizes below about 1e-125 or above 1e150), so that an area test on them can call a
+/// real face degenerate: such faces are judged again at unit size.
+fn squares_may_be_off(squared_size: f64) -> bool {
+    const SMALLEST_SAFE: f64 = 1e-250;
+    const LARGEST_SAFE: f64 = 1e300;
+    !(SMALLEST_SAFE..=LARGEST_SAFE).contains(&squared_size)
+}
+
+/// `points` moved so the first is at the origin and scaled so the largest coordinate difference
+/// is about 1 (halved first, so no difference of finite coordinates overflows); `None` when a
+/// coordinate is not finite or all points coincide.
+fn scaled_to_unit_size(points: &[[f64; 3]]) -> Option<impl Iterator<Item = [f64; 3]> + '_> {
+    let origin = *points.first()?;
+    let half_difference =
+        move |p: &[f64; 3]| -> [f64; 3] { std::array::from_fn(|k| 0.5 * p[k] - 0.5 * origin[k]) };
+    let scale = points
+        .iter()
+        .flat_map(half_difference)
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    (scale > 0.0 && scale.is_finite()).then(move || {
+        points
+            .iter()
+            .map(move |p| half_difference(p).map(|x| x / scale))
+    })
 }
 
 /// The sum of quad `abcd`'s squared sides, the size [`is_degenerate_quad`] judges its area
@@ -245,5 +297,27 @@ mod tests {
             far(0.25),
             [1e6, 1e6 + 1.0, 1e6]
         ));
+    }
+
+    /// Faces at 1e-300 and 1e300 are judged as at unit size: their squares under- or overflow,
+    /// which alone would call every one of them degenerate.
+    #[test]
+    fn extreme_magnitudes_are_judged_at_unit_size() {
+        for scale in [1e-300, 1e-160, 1e160, 1e300] {
+            let s = |p: [f64; 3]| p.map(|x| x * scale);
+            let (a, b, c, d) = (
+                s([0.0, 0.0, 0.0]),
+                s([1.0, 0.0, 0.0]),
+                s([1.0, 1.0, 0.0]),
+                s([0.0, 1.0, 0.0]),
+            );
+            assert!(!is_degenerate_triangle(a, b, c), "{scale}");
+            assert!(!is_degenerate_quad(a, b, c, d), "{scale}");
+            assert!(!is_degenerate_polygon([a, b, c, d, s([-0.5, 0.5, 0.0])]), "{scale}");
+            let on_line = s([2.0, 0.0, 0.0]);
+            assert!(is_degenerate_triangle(a, b, on_line), "{scale}");
+            assert!(is_degenerate_quad(a, b, on_line, b), "{scale}");
+            assert!(is_degenerate_polygon([a, b, on_line, s([3.0, 0.0, 0.0]), b]), "{scale}");
+        }
     }
 }

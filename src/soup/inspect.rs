@@ -2,7 +2,7 @@
 //! every [`Diagnostic`].
 
 use super::degenerate::DegenerateFaces;
-use super::pairing::{EdgeDefect, ProblemEdge, pair_edges};
+use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
 use super::table::{MAX_VERTICES, non_finite_vertices};
 use super::umbrellas::Fans;
 use super::{Diagnostic, EdgeReport, FaceDefects, FaceList, FaceTable, ListProblem};
@@ -13,6 +13,10 @@ pub(crate) struct Inspection<'a> {
     pub(crate) table: FaceTable<'a>,
     /// The malformed faces.
     pub(crate) defects: FaceDefects,
+    /// The faces that are not malformed, which the edge, fan and area findings are about.
+    pub(crate) well_formed: FaceTable<'a>,
+    /// The pairing of `well_formed`'s edges.
+    pub(crate) pairing: EdgePairing,
     /// The findings (the policy lists are empty).
     pub(crate) diagnostic: Diagnostic,
 }
@@ -67,6 +71,8 @@ pub(crate) fn inspect<'a>(list: &FaceList<'a>) -> Result<Inspection<'a>, Box<Dia
     Ok(Inspection {
         table,
         defects,
+        well_formed,
+        pairing,
         diagnostic,
     })
 }

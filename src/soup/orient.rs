@@ -78,11 +78,8 @@ pub(crate) fn flip_faces(table: &mut FaceTable<'_>, faces: &[usize]) {
 /// The faces of the closed components of `table` that enclose a negative volume, ascending:
 /// flipped, every closed component faces outward. `pairing` is `table`'s, with no problem edge;
 /// components are joined through paired edges, and a component is closed when none of its
-/// corners is on the boundary. Vertex `v` is at `position(v)`. The volume is the signed sum of the
-/// tetrahedra from a corner of the component to each triangle of its faces' fans, taken
-/// relative to that corner and scaled by the component's extent, so that neither cancellation
-/// far from the origin nor overflow at huge coordinates decides the sign; a component enclosing
-/// no volume (flat) is left as it is.
+/// corners is on the boundary. Vertex `v` is at `position(v)`. A component enclosing no volume
+/// (flat) is left as it is.
 pub(crate) fn faces_facing_inward(
     table: &FaceTable<'_>,
     pairing: &EdgePairing,
@@ -108,44 +105,81 @@ pub(crate) fn faces_facing_inward(
         .map(|f| disjoint_sets::root(&mut parent, 0, f) as usize)
         .collect();
     let mut closed = vec![true; n_faces];
-    for f in 0..n_faces {
-        if open[f] {
+    for (f, &open) in open.iter().enumerate() {
+        if open {
             closed[component[f]] = false;
         }
     }
-    // Per component root: the reference corner, then the extent, then the volume.
-    let mut origin = vec![[f64::NAN; 3]; n_faces];
-    let mut extent = vec![0.0f64; n_faces];
-    for f in (0..n_faces).filter(|&f| closed[component[f]]) {
-        let root = component[f];
-        if origin[root][0].is_nan() {
-            origin[root] = position(table.face(f)[0]);
+    let volume = component_volumes(table, &component, n_faces, |c| closed[c], position);
+    (0..n_faces)
+        .filter(|&f| closed[component[f]] && volume[component[f]].sign < 0.0)
+        .collect()
+}
+
+/// The volume a component's faces enclose, positive when they run counter-clockwise seen from
+/// outside.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct EnclosedVolume {
+    /// The volume, which may overflow to infinity or underflow to zero at extreme coordinates.
+    pub(crate) volume: f64,
+    /// Its sign, -1, 0 or 1, right whatever the coordinates' magnitude.
+    pub(crate) sign: f64,
+}
+
+/// The volume enclosed by the faces of each component `c < n_components` for which `wanted(c)`
+/// holds (zero for the others), `component[f]` being face `f`'s: the sum of the tetrahedra from
+/// a corner of the component to each triangle of its faces' fans. The sum is taken relative to
+/// that corner and scaled by the component's extent, so that neither cancellation far from the
+/// origin nor under- or overflow at extreme coordinates decides its sign.
+pub(crate) fn component_volumes(
+    table: &FaceTable<'_>,
+    component: &[usize],
+    n_components: usize,
+    wanted: impl Fn(usize) -> bool,
+    position: impl Fn(u32) -> [f64; 3],
+) -> Vec<EnclosedVolume> {
+    let n_faces = table.n_faces();
+    let mut origin = vec![[f64::NAN; 3]; n_components];
+    let mut extent = vec![0.0f64; n_components];
+    for f in (0..n_faces).filter(|&f| wanted(component[f])) {
+        let c = component[f];
+        if origin[c][0].is_nan() {
+            origin[c] = position(table.face(f)[0]);
         }
         for &v in table.face(f) {
             let p = position(v);
             for k in 0..3 {
-                extent[root] = extent[root].max((p[k] - origin[root][k]).abs());
+                extent[c] = extent[c].max((p[k] - origin[c][k]).abs());
             }
         }
     }
-    let mut volume = vec![0.0f64; n_faces];
-    for f in (0..n_faces).filter(|&f| closed[component[f]]) {
-        let root = component[f];
-        if extent[root] == 0.0 || !extent[root].is_finite() {
+    let mut volume = vec![0.0f64; n_components];
+    for f in (0..n_faces).filter(|&f| wanted(component[f])) {
+        let c = component[f];
+        if extent[c] == 0.0 || !extent[c].is_finite() {
             continue;
         }
         let scaled = |v: u32| {
             let p = position(v);
-            std::array::from_fn::<f64, 3, _>(|k| (p[k] - origin[root][k]) / extent[root])
+            std::array::from_fn::<f64, 3, _>(|k| (p[k] - origin[c][k]) / extent[c])
         };
         let face = table.face(f);
         let first = scaled(face[0]);
         for pair in face[1..].windows(2) {
-            volume[root] += determinant(first, scaled(pair[0]), scaled(pair[1]));
+            volume[c] += determinant(first, scaled(pair[0]), scaled(pair[1]));
         }
     }
-    (0..n_faces)
-        .filter(|&f| closed[component[f]] && volume[component[f]] < 0.0)
+    volume
+        .iter()
+        .enumerate()
+        .map(|(c, &scaled)| EnclosedVolume {
+            volume: if scaled == 0.0 {
+                0.0
+            } else {
+                scaled * extent[c] * extent[c] * extent[c] / 6.0
+            },
+            sign: if scaled == 0.0 { 0.0 } else { scaled.signum() },
+        })
         .collect()
 }
 

@@ -38,6 +38,7 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
         mut table,
         defects,
         mut diagnostic,
+        ..
     } = inspect(list).map_err(BuildError::InvalidInput)?;
     if policy == BuildPolicy::Strict {
         if diagnostic.has_invalid_input() {

@@ -18,7 +18,7 @@ use crate::disjoint_sets;
 
 /// Disjoint sets of corners (see [`disjoint_sets`]): each set is the fan of faces around the
 /// corners' vertex.
-pub(super) struct Fans {
+pub(crate) struct Fans {
     parent: Vec<u32>,
 }
 
@@ -32,7 +32,7 @@ impl Fans {
 
     /// The fans of the input's definition: corners joined through every edge their faces
     /// share, paired or not (three faces on one edge are one fan at each of its ends).
-    pub(super) fn through_shared_edges(table: &FaceTable<'_>, pairing: &EdgePairing) -> Self {
+    pub(crate) fn through_shared_edges(table: &FaceTable<'_>, pairing: &EdgePairing) -> Self {
         let mut fans = Fans::through_paired_edges(table, pairing);
         for problem in &pairing.problems {
             // A corner on the edge sits at one end; the corner after it, at the other.
@@ -70,7 +70,8 @@ impl Fans {
         fans
     }
 
-    fn root(&mut self, c: u32) -> u32 {
+    /// The fan of corner `c`, named by one of its corners.
+    pub(crate) fn root(&mut self, c: u32) -> u32 {
         disjoint_sets::root(&mut self.parent, 0, c)
     }
 
