@@ -288,6 +288,41 @@ static void voronoi_classes() {
   CHECK(thrown);
 }
 
+static void doctor() {
+  // A refused build still hands its diagnostic to the caller, then throws.
+  hw::diagnostic refused;
+  bool thrown = false;
+  try {
+    hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3, 3}, {0, 1, 2, 0, 1, 2},
+                           HW_BUILD_STRICT, &refused);
+  } catch (const hw::error& e) {
+    thrown = e.status() == HW_ERR_NON_MANIFOLD;
+  }
+  CHECK(thrown && refused && !refused.is_clean());
+  CHECK(refused.summary().find("inconsistently oriented") != std::string::npos);
+
+  // The teapot's pinched vertices, with their fans; the icosahedron is a closed polyhedron.
+  const std::string data = std::string(HALFWING_DATA_DIR) + "/meshes/";
+  const hw::mesh icosahedron = hw::mesh::read(data + "closed/lapy_icosahedron.off");
+  const hw::doctor_report report = icosahedron.examine();
+  const hw_doctor_verdict verdict = report.verdict();
+  CHECK(verdict.closed_polyhedron && verdict.reason == nullptr);
+  const std::vector<hw_doctor_component> components = report.components();
+  CHECK(components.size() == 1 && components[0].genus == 0 && components[0].outward == 1);
+  CHECK(report.boundary_loops().empty());
+  CHECK(report.text().find("a closed polyhedron") != std::string::npos);
+  CHECK(report.json().find("\"closed_polyhedron\":true") != std::string::npos);
+  CHECK(hw_diagnostic_is_clean(report.input_diagnostic()));
+
+  const hw::doctor_report broken =
+      hw::doctor_report::of({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 1, 0}, {3, 3, 3},
+                            {0, 1, 2, 0, 2, 3, 1, 4, 2});
+  const hw::doctor_report::finding_view duplicates = broken.finding(HW_DOCTOR_DUPLICATE_POSITIONS);
+  CHECK(duplicates.n_items == 1 && duplicates.ids_per_item == 2);
+  CHECK(duplicates.ids[0] == 4 && duplicates.ids[1] == 2);
+  CHECK(broken.boundary_loops().size() == 1 && !broken.verdict().closed);
+}
+
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
 
 int main() {
@@ -299,6 +334,7 @@ int main() {
   faces_and_attributes();
   winged_kernel();
   voronoi_classes();
+  doctor();
   version_string();
   return check_summary("test_hpp");
 }

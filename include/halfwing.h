@@ -88,6 +88,17 @@
 typedef struct hw_diagnostic hw_diagnostic;
 
 /**
+ * Everything the doctor found. Opaque; from hw_doctor_examine_indexed() or
+ * hw_doctor_examine_mesh(); release with hw_doctor_report_free().
+ *
+ * Indices are input indices: faces of the face list, vertices of its positions (for a mesh,
+ * those of the face list hw_mesh_write() would write: the mesh's own ids when nothing is
+ * deleted). Malformed faces are listed in the report's diagnostic and left out of every other
+ * finding. The report's size follows the findings, not the mesh.
+ */
+typedef struct hw_doctor_report hw_doctor_report;
+
+/**
  * The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
  * hw_index_maps_view(), release with hw_index_maps_free().
  */
@@ -218,6 +229,111 @@ typedef uint32_t hw_diagnostic_list;
  * One list of edges in a diagnostic (see hw_diagnostic_edge()).
  */
 typedef uint32_t hw_diagnostic_edges;
+
+/**
+ * The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
+ */
+typedef struct {
+  /**
+   * Distance under which two vertices are near duplicates and a vertex lies on an edge,
+   * relative to the diagonal of the bounding box of the vertices faces name. 0 to 1; default
+   * 1e-9.
+   */
+  double relative_tolerance;
+  /**
+   * A triangle with an angle below this (degrees) is a needle. Default 5.
+   */
+  double needle_angle_degrees;
+  /**
+   * A triangle with an angle above this (degrees) is a cap. Default 175.
+   */
+  double cap_angle_degrees;
+  /**
+   * Two faces sharing an edge whose normals are more than this (degrees) apart are folded.
+   * Default 175.
+   */
+  double fold_angle_degrees;
+  /**
+   * An edge longer than this many times the median edge is long. At least 1; default 10.
+   */
+  double long_edge_ratio;
+  /**
+   * A component is small when its face count or diameter is at most this fraction of the
+   * largest's. 0 to 1; default 0.01.
+   */
+  double small_component_ratio;
+} hw_doctor_options;
+
+/**
+ * One kind of finding that is a list of elements (see hw_doctor_report_finding()).
+ */
+typedef uint32_t hw_doctor_finding;
+
+/**
+ * The surface's verdicts. `manifold`: no non-manifold edge or vertex and no malformed face;
+ * `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
+ * `closed_polyhedron`: all three, finite coordinates, and every component enclosing a
+ * positive volume (self-intersections are not examined yet).
+ */
+typedef struct {
+  bool manifold;
+  bool closed;
+  bool oriented;
+  bool closed_polyhedron;
+  /**
+   * Why it is not a closed polyhedron (the first reason, static text), NULL when it is one.
+   */
+  const char *reason;
+} hw_doctor_verdict;
+
+/**
+ * One connected component (faces joined through shared edges).
+ */
+typedef struct {
+  /**
+   * Its lowest face.
+   */
+  uint32_t first_face;
+  size_t n_faces;
+  size_t n_edges;
+  /**
+   * Distinct vertices (one shared with another component through a non-manifold vertex
+   * counts in both).
+   */
+  size_t n_vertices;
+  size_t n_boundary_loops;
+  /**
+   * V − E + F.
+   */
+  int64_t euler_characteristic;
+  /**
+   * The genus of an orientable 2-manifold component; -1 for any other.
+   */
+  int64_t genus;
+  bool closed;
+  bool manifold;
+  bool orientable;
+  bool consistently_oriented;
+  /**
+   * 1 when a closed, manifold, consistently oriented component faces outward (encloses a
+   * positive volume), -1 inward, 0 otherwise or when it encloses no volume.
+   */
+  int32_t outward;
+  /**
+   * The signed volume it encloses (when `outward` is not 0 or the volume is 0; NaN for a
+   * component that is not closed, manifold and consistently oriented). May overflow to
+   * infinity or underflow to 0 at extreme coordinates: `outward` keeps the sign.
+   */
+  double volume;
+  /**
+   * The sum of its faces' areas.
+   */
+  double area;
+  /**
+   * Its bounding box: lowest x, y, z, then highest x, y, z.
+   */
+  double bounding_box[6];
+} hw_doctor_component;
 
 /**
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
@@ -606,6 +722,72 @@ typedef struct {
  * Edges whose two faces traverse them in the same direction.
  */
 #define HW_DIAG_INCONSISTENT_EDGES 1
+
+/**
+ * Indices of small components (into hw_doctor_report_component()); one id per item.
+ */
+#define HW_DOCTOR_SMALL_COMPONENTS 0
+
+/**
+ * Faces of a closed path along which the orientation flips (the surface is not orientable),
+ * each sharing an edge with the next and the last with the first; one id per item.
+ */
+#define HW_DOCTOR_NON_ORIENTABLE_WITNESS 1
+
+/**
+ * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
+ */
+#define HW_DOCTOR_ZERO_LENGTH_EDGES 2
+
+/**
+ * Triangles with an angle below the needle threshold; one id per item.
+ */
+#define HW_DOCTOR_NEEDLES 3
+
+/**
+ * Triangles with an angle above the cap threshold; one id per item.
+ */
+#define HW_DOCTOR_CAPS 4
+
+/**
+ * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
+ * first, then the two faces, ascending).
+ */
+#define HW_DOCTOR_FOLDED_EDGES 5
+
+/**
+ * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
+ */
+#define HW_DOCTOR_LONG_EDGES 6
+
+/**
+ * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
+ * lowest vertex at that position).
+ */
+#define HW_DOCTOR_DUPLICATE_POSITIONS 7
+
+/**
+ * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
+ * vertex, then the first vertex of its group).
+ */
+#define HW_DOCTOR_NEAR_DUPLICATE_VERTICES 8
+
+/**
+ * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
+ * then the lowest such face).
+ */
+#define HW_DOCTOR_DUPLICATE_FACES 9
+
+/**
+ * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
+ * the edge's two ends, smaller first, and the edge's face).
+ */
+#define HW_DOCTOR_T_VERTICES 10
+
+/**
+ * The number of finding kinds (one past the last).
+ */
+#define HW_DOCTOR_FINDING_COUNT 11
 
 /**
  * Vertices.
@@ -1338,6 +1520,179 @@ hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
  * writable.
  */
 hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
+                                char *buf,
+                                size_t len,
+                                size_t *needed);
+
+/**
+ * The doctor's default thresholds.
+ */
+hw_doctor_options hw_doctor_options_default(void);
+
+/**
+ * Examines an indexed face list (same arrays as hw_mesh_from_indexed()) with `options` (NULL
+ * for the defaults). Malformed faces and non-finite coordinates are findings, not errors;
+ * `HW_ERR_INVALID_INPUT` means an option is out of range or the list as a whole is malformed
+ * (sizes not adding up to `n_indices`). On success `*out_report` receives a report to release
+ * with hw_doctor_report_free(). The input is never changed.
+ *
+ * # Safety
+ * As for hw_mesh_from_indexed(); `options` NULL or readable; `out_report` writable.
+ */
+hw_status hw_doctor_examine_indexed(const double *positions,
+                                    size_t n_vertices,
+                                    const uint32_t *face_sizes,
+                                    size_t n_faces,
+                                    const uint32_t *indices,
+                                    size_t n_indices,
+                                    const hw_doctor_options *options,
+                                    hw_doctor_report **out_report);
+
+/**
+ * Examines a mesh's live faces (see hw_doctor_examine_indexed()).
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `options` NULL or readable; `out_report` writable.
+ */
+hw_status hw_doctor_examine_mesh(const hw_mesh *mesh,
+                                 const hw_doctor_options *options,
+                                 hw_doctor_report **out_report);
+
+/**
+ * Releases a report. NULL is a no-op; freeing twice is detected and refused.
+ *
+ * # Safety
+ * `report` must be NULL or a report from this library, not in use by another thread.
+ */
+void hw_doctor_report_free(hw_doctor_report *report);
+
+/**
+ * The report's diagnostic of the input (malformed faces, non-finite coordinates, non-manifold
+ * and inconsistently oriented edges, non-manifold and unreferenced vertices, zero-area faces),
+ * read with the hw_diagnostic_* calls; owned by the report (do not free it), valid as long as
+ * the report. NULL for a NULL report.
+ *
+ * # Safety
+ * `report` must be NULL or live.
+ */
+const hw_diagnostic *hw_doctor_report_diagnostic(const hw_doctor_report *report);
+
+/**
+ * The name of a finding kind ("needles", "T-vertices", …) as static text; NULL for an unknown
+ * kind.
+ */
+const char *hw_doctor_finding_name(hw_doctor_finding kind);
+
+/**
+ * A zero-copy view of one finding: `*out_ids` holds `*out_n_items` items of
+ * `*out_ids_per_item` ids each (see each ::hw_doctor_finding), NULL when there are none;
+ * valid as long as the report.
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_ids`, `out_n_items` and `out_ids_per_item` writable.
+ */
+hw_status hw_doctor_report_finding(const hw_doctor_report *report,
+                                   hw_doctor_finding kind,
+                                   const uint32_t **out_ids,
+                                   size_t *out_n_items,
+                                   size_t *out_ids_per_item);
+
+/**
+ * The report's verdicts.
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_verdict` writable.
+ */
+hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_verdict *out_verdict);
+
+/**
+ * The number of components (`*out_count`).
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_count` writable.
+ */
+hw_status hw_doctor_report_component_count(const hw_doctor_report *report, size_t *out_count);
+
+/**
+ * Component `index` (components in order of their lowest face).
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_component` writable.
+ */
+hw_status hw_doctor_report_component(const hw_doctor_report *report,
+                                     size_t index,
+                                     hw_doctor_component *out_component);
+
+/**
+ * The number of boundary loops (`*out_count`).
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_count` writable.
+ */
+hw_status hw_doctor_report_boundary_loop_count(const hw_doctor_report *report, size_t *out_count);
+
+/**
+ * Boundary loop `index`: a zero-copy view of its vertices in order (each joined by a boundary
+ * edge to the next, the last to the first), valid as long as the report; its perimeter; and a
+ * face along it.
+ *
+ * # Safety
+ * `report` must be NULL or live; every output writable.
+ */
+hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
+                                         size_t index,
+                                         const uint32_t **out_vertices,
+                                         size_t *out_n_vertices,
+                                         double *out_perimeter,
+                                         uint32_t *out_face);
+
+/**
+ * The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
+ * ::HW_DIAG_NON_MANIFOLD_VERTICES, in the same order.
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_count` writable.
+ */
+hw_status hw_doctor_report_vertex_fans_count(const hw_doctor_report *report, size_t *out_count);
+
+/**
+ * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex, its
+ * number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
+ * lowest face), valid as long as the report.
+ *
+ * # Safety
+ * `report` must be NULL or live; every output writable.
+ */
+hw_status hw_doctor_report_vertex_fan(const hw_doctor_report *report,
+                                      size_t index,
+                                      size_t fan,
+                                      uint32_t *out_vertex,
+                                      size_t *out_n_fans,
+                                      const uint32_t **out_faces,
+                                      size_t *out_n_faces);
+
+/**
+ * The report as text (a summary line, the diagnostic, a line per component and per non-empty
+ * finding naming its first few elements), copied NUL-terminated into `buf`; `*needed` receives
+ * the size needed even when `buf` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is
+ * written to `buf`).
+ *
+ * # Safety
+ * `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+ */
+hw_status hw_doctor_report_text(const hw_doctor_report *report,
+                                char *buf,
+                                size_t len,
+                                size_t *needed);
+
+/**
+ * The whole report as one JSON object (every element of every finding), copied as
+ * hw_doctor_report_text() copies its text.
+ *
+ * # Safety
+ * As for hw_doctor_report_text().
+ */
+hw_status hw_doctor_report_json(const hw_doctor_report *report,
                                 char *buf,
                                 size_t len,
                                 size_t *needed);

@@ -86,6 +86,18 @@ class owned {
   T* raw_ = nullptr;
 };
 
+/// The text of a copy-into-buffer call: `copy(buf, len, &needed)` is asked for the size, then
+/// for the text.
+template <class Copy>
+std::string copied_text(Copy copy) {
+  std::size_t needed = 0;
+  copy(nullptr, 0, &needed);
+  std::string text(needed, '\0');
+  check(copy(&text[0], text.size(), &needed));
+  text.resize(needed - 1);
+  return text;
+}
+
 /// The hw_scalar_type of each C++ type an attribute column can hold.
 template <class T>
 struct scalar_type;
@@ -196,18 +208,100 @@ class diagnostic {
   }
   /// The human-readable account.
   std::string summary() const {
-    std::size_t needed = 0;
-    hw_diagnostic_summary(raw_.get(), nullptr, 0, &needed);
-    std::string text(needed, '\0');
-    check(hw_diagnostic_summary(raw_.get(), &text[0], text.size(), &needed));
-    text.resize(needed - 1);
-    return text;
+    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
+      return hw_diagnostic_summary(raw_.get(), buf, len, needed);
+    });
   }
   hw_diagnostic* get() const noexcept { return raw_.get(); }
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
 
  private:
   detail::owned<hw_diagnostic, hw_diagnostic_free> raw_;
+};
+
+/// The mesh doctor's findings on a face list or a mesh (see hw_doctor_examine_indexed()).
+class doctor_report {
+ public:
+  /// One finding's elements: `n_items` items of `ids_per_item` ids each (see
+  /// ::hw_doctor_finding), valid as long as the report.
+  struct finding_view {
+    const uint32_t* ids = nullptr;
+    std::size_t n_items = 0;
+    std::size_t ids_per_item = 1;
+  };
+  /// A boundary loop: its vertices in order, its perimeter, a face along it.
+  struct boundary_loop {
+    std::vector<uint32_t> vertices;
+    double perimeter = 0;
+    uint32_t face = 0;
+  };
+
+  doctor_report() = default;
+  explicit doctor_report(hw_doctor_report* raw) : raw_(raw) {}
+
+  /// Examines an indexed face list (see hw_doctor_examine_indexed()).
+  static doctor_report of(const std::vector<double>& positions,
+                          const std::vector<uint32_t>& face_sizes,
+                          const std::vector<uint32_t>& indices,
+                          const hw_doctor_options& options = hw_doctor_options_default()) {
+    if (positions.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    hw_doctor_report* raw = nullptr;
+    check(hw_doctor_examine_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
+                                    face_sizes.size(), indices.data(), indices.size(), &options,
+                                    &raw));
+    return doctor_report(raw);
+  }
+
+  hw_doctor_verdict verdict() const {
+    hw_doctor_verdict verdict{};
+    check(hw_doctor_report_verdict(raw_.get(), &verdict));
+    return verdict;
+  }
+  finding_view finding(hw_doctor_finding kind) const {
+    finding_view view;
+    check(hw_doctor_report_finding(raw_.get(), kind, &view.ids, &view.n_items,
+                                   &view.ids_per_item));
+    return view;
+  }
+  std::vector<hw_doctor_component> components() const {
+    std::size_t n = 0;
+    check(hw_doctor_report_component_count(raw_.get(), &n));
+    std::vector<hw_doctor_component> components(n);
+    for (std::size_t i = 0; i < n; ++i)
+      check(hw_doctor_report_component(raw_.get(), i, &components[i]));
+    return components;
+  }
+  std::vector<boundary_loop> boundary_loops() const {
+    std::size_t n = 0;
+    check(hw_doctor_report_boundary_loop_count(raw_.get(), &n));
+    std::vector<boundary_loop> loops(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const uint32_t* vertices = nullptr;
+      std::size_t n_vertices = 0;
+      check(hw_doctor_report_boundary_loop(raw_.get(), i, &vertices, &n_vertices,
+                                           &loops[i].perimeter, &loops[i].face));
+      loops[i].vertices.assign(vertices, vertices + n_vertices);
+    }
+    return loops;
+  }
+  /// The input's diagnostic, owned by the report.
+  const hw_diagnostic* input_diagnostic() const { return hw_doctor_report_diagnostic(raw_.get()); }
+  std::string text() const {
+    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
+      return hw_doctor_report_text(raw_.get(), buf, len, needed);
+    });
+  }
+  std::string json() const {
+    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
+      return hw_doctor_report_json(raw_.get(), buf, len, needed);
+    });
+  }
+  hw_doctor_report* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  detail::owned<hw_doctor_report, hw_doctor_report_free> raw_;
 };
 
 class winged;
@@ -226,9 +320,12 @@ T* build_indexed(Builder build, const std::vector<double>& positions,
     throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
   T* raw = nullptr;
   hw_diagnostic* found = nullptr;
-  check(build(positions.data(), positions.size() / 3, face_sizes.data(), face_sizes.size(),
-              indices.data(), indices.size(), policy, &raw, report ? &found : nullptr));
+  const hw_status status =
+      build(positions.data(), positions.size() / 3, face_sizes.data(), face_sizes.size(),
+            indices.data(), indices.size(), policy, &raw, report ? &found : nullptr);
+  // A refused build gives its diagnostic too: take it before throwing.
   if (report) *report = diagnostic(found);
+  check(status);
   return raw;
 }
 
@@ -277,14 +374,23 @@ class mesh {
                                                indices, policy, report));
   }
 
-  /// Reads an OBJ, OFF or PLY file; see hw_mesh_read().
+  /// Reads an OBJ, OFF or PLY file; see hw_mesh_read(). `report`, when given, receives the
+  /// diagnostic, also of a refused file.
   static mesh read(const std::string& path, hw_build_policy policy = HW_BUILD_STRICT,
                    diagnostic* report = nullptr) {
     hw_mesh* raw = nullptr;
     hw_diagnostic* found = nullptr;
-    check(hw_mesh_read(path.c_str(), policy, &raw, report ? &found : nullptr));
+    const hw_status status = hw_mesh_read(path.c_str(), policy, &raw, report ? &found : nullptr);
     if (report) *report = diagnostic(found);
+    check(status);
     return mesh(raw);
+  }
+
+  /// The doctor's report on this mesh; see hw_doctor_examine_mesh().
+  doctor_report examine(const hw_doctor_options& options = hw_doctor_options_default()) const {
+    hw_doctor_report* raw = nullptr;
+    check(hw_doctor_examine_mesh(get(), &options, &raw));
+    return doctor_report(raw);
   }
 
   /// Writes the mesh (format by extension); see hw_mesh_write().
@@ -452,12 +558,9 @@ class mesh {
     check(hw_mesh_attribute_count(get(), kind, &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
-      std::size_t needed = 0;
-      hw_mesh_attribute_name(get(), kind, i, nullptr, 0, &needed);
-      std::string name(needed, '\0');
-      check(hw_mesh_attribute_name(get(), kind, i, name.data(), name.size(), &needed));
-      name.resize(needed - 1);
-      names.push_back(std::move(name));
+      names.push_back(detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
+        return hw_mesh_attribute_name(get(), kind, i, buf, len, needed);
+      }));
     }
     return names;
   }
@@ -643,12 +746,9 @@ class winged {
   /// A table in the course notes' layout; see hw_winged_table().
   std::string table(hw_wtable which, hw_wnaming naming = HW_WNAMING_CW_CCW,
                     hw_table_format format = HW_TABLE_TEXT) const {
-    std::size_t needed = 0;
-    hw_winged_table(get(), which, naming, format, nullptr, 0, &needed);
-    std::string text(needed, '\0');
-    check(hw_winged_table(get(), which, naming, format, &text[0], text.size(), &needed));
-    text.resize(needed - 1);
-    return text;
+    return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
+      return hw_winged_table(get(), which, naming, format, buf, len, needed);
+    });
   }
 
   /// The C object, for calls the wrapper does not cover. Still owned by this structure.

@@ -8,7 +8,9 @@ use super::measure::{bounding_box, distance};
 use super::point_tree::PointTree;
 use crate::soup::{BOUNDARY, EdgePairing, FaceTable};
 
-/// A vertex lying inside a boundary edge it is not an end of, within the tolerance.
+/// A vertex lying inside a boundary edge it is not an end of, within the tolerance. Laid out as
+/// four `u32` (C reads a list of them as one array).
+#[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TVertex {
     /// The vertex.

@@ -24,9 +24,12 @@ mod text;
 pub use boundary::{BoundaryLoop, VertexFans};
 pub use components::Component;
 pub use duplicates::TVertex;
+pub use shape::FoldedEdge;
+
+use std::ffi::CStr;
 
 use crate::mesh::Mesh;
-use crate::soup::{Diagnostic, EdgeReport, FaceList, Inspection, inspect};
+use crate::soup::{Diagnostic, FaceList, Inspection, inspect};
 
 /// Thresholds of the findings that need one. [`DoctorOptions::default`] gives the documented
 /// defaults.
@@ -106,7 +109,7 @@ pub struct DoctorReport {
     pub caps: Vec<u32>,
     /// Edges whose two faces fold onto each other (their normals more than
     /// [`DoctorOptions::fold_angle_degrees`] apart).
-    pub folded_edges: Vec<EdgeReport>,
+    pub folded_edges: Vec<FoldedEdge>,
     /// Edges longer than [`DoctorOptions::long_edge_ratio`] times the median edge length.
     pub long_edges: Vec<[u32; 2]>,
     /// Pairs `[v, first]`: vertex `v` is at exactly the position of the lower vertex `first`.
@@ -147,24 +150,30 @@ impl DoctorReport {
     /// every component enclosing a positive volume, with finite coordinates; else the first
     /// reason it is not, in that order. (Self-intersections are not examined yet.)
     pub fn not_a_closed_polyhedron(&self) -> Option<&'static str> {
+        self.closed_polyhedron_fault()
+            .map(|reason| reason.to_str().unwrap_or("not a closed polyhedron"))
+    }
+
+    /// [`DoctorReport::not_a_closed_polyhedron`] as static C text.
+    pub(crate) fn closed_polyhedron_fault(&self) -> Option<&'static CStr> {
         let d = &self.diagnostic;
         if d.has_invalid_input() {
-            return Some("malformed faces or non-finite coordinates");
+            return Some(c"malformed faces or non-finite coordinates");
         }
         if self.components.is_empty() {
-            return Some("no faces");
+            return Some(c"no faces");
         }
         if !self.is_manifold() {
-            return Some("not a manifold");
+            return Some(c"not a manifold");
         }
         if !self.is_closed() {
-            return Some("not closed: it has boundary loops");
+            return Some(c"not closed: it has boundary loops");
         }
         if !self.is_oriented() {
-            return Some("not consistently oriented");
+            return Some(c"not consistently oriented");
         }
         if self.components.iter().any(|c| c.outward != Some(true)) {
-            return Some("a component faces inward or encloses no volume");
+            return Some(c"a component faces inward or encloses no volume");
         }
         None
     }

@@ -4,14 +4,25 @@
 use super::DoctorOptions;
 use super::measure::distance;
 use crate::geom::newell_vector;
-use crate::soup::{BOUNDARY, EdgePairing, EdgeReport, FaceTable, UNPAIRED};
+use crate::soup::{BOUNDARY, EdgePairing, FaceTable, UNPAIRED};
+
+/// An edge whose two faces fold onto each other. Laid out as four `u32` (C reads a list of them
+/// as one array).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FoldedEdge {
+    /// The edge's ends, smaller first.
+    pub vertices: [u32; 2],
+    /// Its two faces, ascending.
+    pub faces: [u32; 2],
+}
 
 /// The shape findings, as [`super::DoctorReport`] holds them.
 pub(super) struct Shapes {
     pub(super) zero_length_edges: Vec<[u32; 2]>,
     pub(super) needles: Vec<u32>,
     pub(super) caps: Vec<u32>,
-    pub(super) folded_edges: Vec<EdgeReport>,
+    pub(super) folded_edges: Vec<FoldedEdge>,
     pub(super) long_edges: Vec<[u32; 2]>,
 }
 
@@ -94,11 +105,10 @@ pub(super) fn shapes(
         );
         if angle_between(normal(f), normal(g)).is_some_and(|angle| angle > fold) {
             let (a, b) = (corners[c], corners[surface.next_corner(c)]);
-            let mut faces = vec![surface.input_face(f), surface.input_face(g)];
-            faces.sort_unstable();
-            folded_edges.push(EdgeReport {
+            let (f, g) = (surface.input_face(f), surface.input_face(g));
+            folded_edges.push(FoldedEdge {
                 vertices: [a.min(b), a.max(b)],
-                faces,
+                faces: [f.min(g), f.max(g)],
             });
         }
     }

@@ -166,19 +166,21 @@ impl DoctorReport {
         let edge_reports = [
             ("non_manifold_edges", &d.non_manifold_edges),
             ("inconsistent_edges", &d.inconsistent_edges),
-            ("folded_edges", &self.folded_edges),
         ];
+        let edge = |vertices: [u32; 2], faces: &[u32]| {
+            format!(
+                "{{\"vertices\":[{},{}],\"faces\":{}}}",
+                vertices[0],
+                vertices[1],
+                json_list(faces.iter().map(u32::to_string))
+            )
+        };
         for (key, list) in edge_reports {
-            let edges = list.iter().map(|e| {
-                format!(
-                    "{{\"vertices\":[{},{}],\"faces\":{}}}",
-                    e.vertices[0],
-                    e.vertices[1],
-                    json_list(e.faces.iter().map(u32::to_string))
-                )
-            });
+            let edges = list.iter().map(|e| edge(e.vertices, &e.faces));
             let _ = write!(out, ",\"{key}\":{}", json_list(edges));
         }
+        let folded = self.folded_edges.iter().map(|e| edge(e.vertices, &e.faces));
+        let _ = write!(out, ",\"folded_edges\":{}", json_list(folded));
         let fans = self.non_manifold_vertex_fans.iter().map(|v| {
             let fans = v
                 .fans

@@ -313,11 +313,17 @@ mod tests {
             );
             assert!(!is_degenerate_triangle(a, b, c), "{scale}");
             assert!(!is_degenerate_quad(a, b, c, d), "{scale}");
-            assert!(!is_degenerate_polygon([a, b, c, d, s([-0.5, 0.5, 0.0])]), "{scale}");
+            assert!(
+                !is_degenerate_polygon([a, b, c, d, s([-0.5, 0.5, 0.0])]),
+                "{scale}"
+            );
             let on_line = s([2.0, 0.0, 0.0]);
             assert!(is_degenerate_triangle(a, b, on_line), "{scale}");
             assert!(is_degenerate_quad(a, b, on_line, b), "{scale}");
-            assert!(is_degenerate_polygon([a, b, on_line, s([3.0, 0.0, 0.0]), b]), "{scale}");
+            assert!(
+                is_degenerate_polygon([a, b, on_line, s([3.0, 0.0, 0.0]), b]),
+                "{scale}"
+            );
         }
     }
 }
