@@ -44,11 +44,14 @@ pub(super) fn loops_and_fans(
     non_manifold: &[u32],
 ) -> (Vec<(BoundaryLoop, usize)>, Vec<VertexFans>) {
     let corners = surface.corners();
-    let mut fans = Fans::through_shared_edges(surface, pairing);
     // Boundary edge c: the face edge of corner c, with no face across.
     let boundary: Vec<u32> = (0..corners.len() as u32)
         .filter(|&c| pairing.partner[c as usize] == BOUNDARY)
         .collect();
+    if boundary.is_empty() && non_manifold.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
+    let mut fans = Fans::through_shared_edges(surface, pairing);
     let ends = |c: u32| {
         let next = surface.next_corner(c as usize) as u32;
         [(corners[c as usize], c), (corners[next as usize], next)]

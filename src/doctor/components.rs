@@ -99,8 +99,11 @@ pub(super) fn components(
         })
         .collect();
 
-    let corners = surface.corners();
-    let mut vertices: Vec<(u32, u32)> = Vec::with_capacity(corners.len());
+    // A vertex counts once per component: its first component is remembered, and only a
+    // vertex met again from another one (a non-manifold vertex) goes into the sorted list.
+    const NONE: u32 = u32::MAX;
+    let mut first_component = vec![NONE; positions.len()];
+    let mut shared_vertices: Vec<(u32, u32)> = Vec::new();
     for f in 0..n_faces {
         let component = &mut components[component_of[f] as usize];
         component.first_face = component.first_face.min(surface.input_face(f));
@@ -109,7 +112,12 @@ pub(super) fn components(
         let area = newell_vector(face.iter().map(|&v| positions[v as usize]));
         component.area += 0.5 * distance(area, [0.0; 3]);
         for &v in face {
-            vertices.push((component_of[f], v));
+            let first = &mut first_component[v as usize];
+            if *first == NONE {
+                *first = component_of[f];
+            } else if *first != component_of[f] {
+                shared_vertices.push((component_of[f], v));
+            }
             grow(&mut component.bounding_box, positions[v as usize]);
         }
         for c in surface.face_range(f) {
@@ -133,9 +141,12 @@ pub(super) fn components(
             EdgeDefect::Inconsistent => component.consistently_oriented = false,
         }
     }
-    vertices.sort_unstable();
-    vertices.dedup();
-    for &(component, v) in &vertices {
+    shared_vertices.sort_unstable();
+    shared_vertices.dedup();
+    let firsts = (0..positions.len() as u32)
+        .filter(|&v| first_component[v as usize] != NONE)
+        .map(|v| (first_component[v as usize], v));
+    for (component, v) in firsts.chain(shared_vertices) {
         components[component as usize].n_vertices += 1;
         if non_manifold_vertices.binary_search(&v).is_ok() {
             components[component as usize].manifold = false;

@@ -2,8 +2,6 @@
 //! T-vertices (a vertex lying inside a boundary edge: the two sides of a crack that do not
 //! share their vertices).
 
-use std::collections::HashMap;
-
 use super::measure::{bounding_box, distance};
 use super::point_tree::PointTree;
 use crate::soup::{BOUNDARY, EdgePairing, FaceTable};
@@ -40,6 +38,10 @@ pub(super) fn absolute_tolerance(
         0.0
     }
 }
+
+/// The width of the near-duplicate grid's cells, in tolerances: wider cells mean fewer
+/// neighbouring cells to look into, each holding a few more group leaders.
+const CELLS_PER_TOLERANCE: f64 = 4.0;
 
 /// Vertices that coincide with a lower one.
 pub(super) struct Coincident {
@@ -82,24 +84,57 @@ pub(super) fn coincident_vertices(
             .iter()
             .filter_map(|&v| positions.get(v as usize));
         let [low, _] = bounding_box(named.copied().chain(positions.iter().copied()));
-        // Cells numbered from the box's corner, so the numbers stay below 1 / tolerance.
-        let cell = |p: [f64; 3]| -> [i64; 3] {
-            std::array::from_fn(|k| ((p[k] - low[k]) / tolerance).floor().clamp(-1e15, 1e15) as i64)
-        };
-        let mut leaders: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+        // Cells CELLS_PER_TOLERANCE tolerances wide, numbered from the box's corner (so the
+        // numbers stay below a few times 1 / tolerance); a vertex looks into a neighbouring cell
+        // only along the axes where it lies within the tolerance of its cell's side.
+        let size = CELLS_PER_TOLERANCE * tolerance;
+        let scaled =
+            |v: usize| -> [f64; 3] { std::array::from_fn(|k| (positions[v][k] - low[k]) / size) };
+        let cell_of = |v: usize| scaled(v).map(|x| x.floor().clamp(-1e15, 1e15) as i64);
+        // The occupied cells, sorted, and each cell's group leaders as a list threaded through
+        // `next_leader` (no map keyed by input-chosen values, no allocation per cell).
+        let mut cells: Vec<[i64; 3]> = (0..positions.len())
+            .filter(|&v| finite(v))
+            .map(cell_of)
+            .collect();
+        cells.sort_unstable();
+        cells.dedup();
+        const NONE: u32 = u32::MAX;
+        let mut first_leader = vec![NONE; cells.len()];
+        let mut next_leader = vec![NONE; positions.len()];
         for v in (0..positions.len()).filter(|&v| finite(v)) {
             let p = positions[v];
-            let home = cell(p);
+            let inside = scaled(v);
+            let home = cell_of(v);
+            let reach = |k: usize| {
+                let inside = inside[k] - inside[k].floor();
+                let low = if inside * CELLS_PER_TOLERANCE <= 1.0 {
+                    -1
+                } else {
+                    0
+                };
+                let high = if (1.0 - inside) * CELLS_PER_TOLERANCE <= 1.0 {
+                    1
+                } else {
+                    0
+                };
+                low..=high
+            };
             let mut joined = None;
-            'search: for dx in -1..=1 {
-                for dy in -1..=1 {
-                    for dz in -1..=1 {
+            'search: for dx in reach(0) {
+                for dy in reach(1) {
+                    for dz in reach(2) {
                         let near = [home[0] + dx, home[1] + dy, home[2] + dz];
-                        for &leader in leaders.get(&near).into_iter().flatten() {
+                        let Ok(cell) = cells.binary_search(&near) else {
+                            continue;
+                        };
+                        let mut leader = first_leader[cell];
+                        while leader != NONE {
                             if distance(p, positions[leader as usize]) <= tolerance {
                                 joined = Some(leader);
                                 break 'search;
                             }
+                            leader = next_leader[leader as usize];
                         }
                     }
                 }
@@ -109,7 +144,11 @@ pub(super) fn coincident_vertices(
                     within_tolerance.push([v as u32, leader]);
                 }
                 Some(_) => {}
-                None => leaders.entry(home).or_default().push(v as u32),
+                None => {
+                    let cell = cells.binary_search(&home).unwrap_or_default();
+                    next_leader[v] = first_leader[cell];
+                    first_leader[cell] = v as u32;
+                }
             }
         }
     }
@@ -120,20 +159,40 @@ pub(super) fn coincident_vertices(
 }
 
 /// Pairs `[f, first]` of faces of `surface` on the same vertex set as a lower face (input
-/// indices, ascending).
+/// indices, ascending). Faces are sorted by their sorted vertex sets: triangles and quads by a
+/// fixed-size key, larger polygons by their whole sets (no hashing of input-chosen keys, no
+/// allocation per face of the usual meshes).
 pub(super) fn duplicate_faces(surface: &FaceTable<'_>) -> Vec<[u32; 2]> {
-    let mut first_with: HashMap<Vec<u32>, u32> = HashMap::new();
-    let mut duplicates = Vec::new();
+    let mut small: Vec<([u32; 4], u32)> = Vec::with_capacity(surface.n_faces());
+    let mut large: Vec<(Vec<u32>, u32)> = Vec::new();
     for f in 0..surface.n_faces() {
-        let mut set = surface.face(f).to_vec();
-        set.sort_unstable();
-        let face = surface.input_face(f);
-        let first = *first_with.entry(set).or_insert(face);
-        if first != face {
-            duplicates.push([face, first]);
+        let face = surface.face(f);
+        let input = surface.input_face(f);
+        if face.len() <= 4 {
+            let mut key = [u32::MAX; 4];
+            key[..face.len()].copy_from_slice(face);
+            key.sort_unstable();
+            small.push((key, input));
+        } else {
+            let mut key = face.to_vec();
+            key.sort_unstable();
+            large.push((key, input));
         }
     }
+    small.sort_unstable();
+    large.sort_unstable();
+    let mut duplicates: Vec<[u32; 2]> = runs_of_equal_keys(&small)
+        .chain(runs_of_equal_keys(&large))
+        .collect();
+    duplicates.sort_unstable();
     duplicates
+}
+
+/// `[face, first]` for every face of a run of equal keys but the run's first (lowest) face.
+fn runs_of_equal_keys<K: PartialEq>(sorted: &[(K, u32)]) -> impl Iterator<Item = [u32; 2]> + '_ {
+    sorted
+        .chunk_by(|a, b| a.0 == b.0)
+        .flat_map(|run| run[1..].iter().map(move |&(_, face)| [face, run[0].1]))
 }
 
 /// The vertices of boundary edges of `surface` lying within `tolerance` of the inside of

@@ -4,6 +4,12 @@
 /// the coordinates are huge or tiny.
 pub(super) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    // Squares of ordinary sizes are exact enough as they are; only those that under- or
+    // overflow need the scaled sum.
+    if (1e-280..1e280).contains(&squared) {
+        return squared.sqrt();
+    }
     let scale = d.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     if scale == 0.0 || !scale.is_finite() {
         return scale;

@@ -39,7 +39,8 @@ pub struct DoctorOptions {
     /// (a T-vertex), relative to the diagonal of the bounding box of the named vertices.
     /// Default 1e-9; 0 finds exact coincidences only.
     pub relative_tolerance: f64,
-    /// A triangle whose smallest angle is below this (degrees) is a needle. Default 5.
+    /// A triangle whose smallest angle is below this (degrees) is a needle. Default 5. (The
+    /// angle thresholds are compared through cosines: to about 1e-6 degrees near 0 and 180.)
     pub needle_angle_degrees: f64,
     /// A triangle whose largest angle is above this (degrees) is a cap. Default 175.
     pub cap_angle_degrees: f64,

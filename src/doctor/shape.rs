@@ -54,15 +54,14 @@ pub(super) fn shapes(
         let [a, b] = problem.vertices;
         edges.push(([a, b], distance(at(a), at(b))));
     }
-    edges.sort_unstable_by_key(|&(ends, _)| ends);
-
-    let zero_length_edges = edges
+    let mut zero_length_edges: Vec<[u32; 2]> = edges
         .iter()
         .filter(|(ends, _)| at(ends[0]) == at(ends[1]))
         .map(|&(ends, _)| ends)
         .collect();
+    zero_length_edges.sort_unstable();
     let mut lengths: Vec<f64> = edges.iter().map(|&(_, length)| length).collect();
-    let long_edges = if lengths.is_empty() {
+    let mut long_edges: Vec<[u32; 2]> = if lengths.is_empty() {
         Vec::new()
     } else {
         let middle = lengths.len() / 2;
@@ -73,27 +72,33 @@ pub(super) fn shapes(
             .map(|&(ends, _)| ends)
             .collect()
     };
+    long_edges.sort_unstable();
 
     let (mut needles, mut caps) = (Vec::new(), Vec::new());
-    let needle = options.needle_angle_degrees.to_radians();
-    let cap = options.cap_angle_degrees.to_radians();
+    let needle = Angle::degrees(options.needle_angle_degrees);
+    let cap = Angle::degrees(options.cap_angle_degrees);
     for f in 0..surface.n_faces() {
         if let &[a, b, c] = surface.face(f) {
-            let angles = triangle_angles(at(a), at(b), at(c));
-            let (smallest, largest) = angles
+            let [a, b, c] = [a, b, c].map(at);
+            let corners = [(a, b, c), (b, c, a), (c, a, b)];
+            let sides = corners.map(|(p, q, r)| (difference(q, p), difference(r, p)));
+            // A corner with a zero-length side has angle 0: a collapsed triangle is a needle.
+            if sides
                 .iter()
-                .fold((f64::INFINITY, 0.0f64), |(s, l), &x| (s.min(x), l.max(x)));
-            if smallest < needle {
+                .any(|&(u, v)| needle.exceeds(u, v).is_none_or(|wider| !wider))
+            {
                 needles.push(surface.input_face(f));
             }
-            if largest > cap {
+            if sides.iter().any(|&(u, v)| cap.exceeds(u, v) == Some(true)) {
                 caps.push(surface.input_face(f));
             }
         }
     }
 
-    let fold = options.fold_angle_degrees.to_radians();
-    let normal = |f: usize| newell_vector(surface.face(f).iter().map(|&v| at(v)));
+    let fold = Angle::degrees(options.fold_angle_degrees);
+    let normals: Vec<[f64; 3]> = (0..surface.n_faces())
+        .map(|f| newell_vector(surface.face(f).iter().map(|&v| at(v))))
+        .collect();
     let mut folded_edges = Vec::new();
     for (c, &p) in pairing.partner.iter().enumerate() {
         if p == BOUNDARY || p == UNPAIRED || (p as usize) < c {
@@ -103,7 +108,7 @@ pub(super) fn shapes(
             surface.face_of_corner(c),
             surface.face_of_corner(p as usize),
         );
-        if angle_between(normal(f), normal(g)).is_some_and(|angle| angle > fold) {
+        if fold.exceeds(normals[f], normals[g]) == Some(true) {
             let (a, b) = (corners[c], corners[surface.next_corner(c)]);
             let (f, g) = (surface.input_face(f), surface.input_face(g));
             folded_edges.push(FoldedEdge {
@@ -125,31 +130,34 @@ pub(super) fn shapes(
     }
 }
 
-/// The angles (radians) of triangle `a b c` at its three corners; a corner with a zero-length
-/// side has angle 0 (a collapsed triangle is a needle).
-fn triangle_angles(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
-    let corner = |p: [f64; 3], q: [f64; 3], r: [f64; 3]| {
-        let u = [q[0] - p[0], q[1] - p[1], q[2] - p[2]];
-        let v = [r[0] - p[0], r[1] - p[1], r[2] - p[2]];
-        angle_between(u, v).unwrap_or(0.0)
-    };
-    [corner(a, b, c), corner(b, c, a), corner(c, a, b)]
+fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
-/// The angle between `u` and `v` (radians, by `atan2` of the cross and dot products of the
-/// vectors scaled to unit size, accurate near 0 and π), or `None` when one is zero or not
-/// finite.
-fn angle_between(u: [f64; 3], v: [f64; 3]) -> Option<f64> {
-    let unit = |w: [f64; 3]| {
-        let length = distance(w, [0.0; 3]);
-        (length > 0.0 && length.is_finite()).then(|| w.map(|x| x / length))
-    };
-    let (u, v) = (unit(u)?, unit(v)?);
-    let cross = [
-        u[1] * v[2] - u[2] * v[1],
-        u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0],
-    ];
-    let dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    Some(distance(cross, [0.0; 3]).atan2(dot))
+/// A threshold angle, compared with the angle between two vectors through cosines: no inverse
+/// trigonometry per corner.
+#[derive(Clone, Copy)]
+struct Angle {
+    cosine: f64,
+}
+
+impl Angle {
+    fn degrees(degrees: f64) -> Self {
+        Angle {
+            cosine: degrees.to_radians().cos(),
+        }
+    }
+
+    /// Whether the angle between `u` and `v` is larger than this one; `None` when one of them
+    /// is zero or not finite. The vectors are scaled to unit size first, so that neither tiny
+    /// nor huge coordinates under- or overflow.
+    fn exceeds(self, u: [f64; 3], v: [f64; 3]) -> Option<bool> {
+        let unit = |w: [f64; 3]| {
+            let length = distance(w, [0.0; 3]);
+            (length > 0.0 && length.is_finite()).then(|| w.map(|x| x / length))
+        };
+        let (u, v) = (unit(u)?, unit(v)?);
+        let cosine = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+        Some(cosine < self.cosine)
+    }
 }

@@ -1,0 +1,118 @@
+// Side-by-side benchmark of the mesh doctor against the CGAL Polygon Mesh Processing calls that
+// compute the same findings, in one run, on the same indexed face lists:
+// is_polygon_soup_a_polygon_mesh, polygon_soup_to_polygon_mesh, connected_components,
+// extract_boundary_cycles, degenerate_faces, and for closed meshes is_outward_oriented and volume.
+// The doctor computes more (near duplicates, T-vertices, needles and caps, folds, long edges,
+// genus, witnesses): CGAL's sum is a lower bound of what the same report would cost with it.
+// halfwing runs with 1 thread and with 2.
+//
+//   bench/run-doctor-compare.sh [--quick] [--repeats N] [model files...]
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "halfwing.hpp"
+#include "models.hpp"
+#include "timing.hpp"
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+struct Soup {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+Soup cgal_soup(const bench::IndexedMesh& m) {
+  Soup soup;
+  for (std::size_t v = 0; v < m.n_vertices(); ++v)
+    soup.points.emplace_back(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
+  std::size_t corner = 0;
+  for (uint32_t size : m.face_sizes) {
+    soup.polygons.emplace_back(m.indices.begin() + corner, m.indices.begin() + corner + size);
+    corner += size;
+  }
+  return soup;
+}
+
+/// CGAL's calls for the doctor's findings that it has, on the soup as given. Returns a checksum
+/// so that nothing is optimised away.
+std::size_t cgal_findings(const Soup& soup) {
+  std::size_t sum = PMP::is_polygon_soup_a_polygon_mesh(soup.polygons) ? 1 : 0;
+  SurfaceMesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  auto component = mesh.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:cc").first;
+  sum += PMP::connected_components(mesh, component);
+  std::vector<SurfaceMesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  sum += cycles.size();
+  std::vector<SurfaceMesh::Face_index> degenerate;
+  PMP::degenerate_faces(mesh, std::back_inserter(degenerate));
+  sum += degenerate.size();
+  if (CGAL::is_closed(mesh) && CGAL::is_triangle_mesh(mesh)) {
+    sum += PMP::is_outward_oriented(mesh) ? 1 : 0;
+    sum += PMP::volume(mesh) > 0 ? 1 : 0;
+  }
+  return sum;
+}
+
+std::size_t halfwing_findings(const bench::IndexedMesh& m) {
+  const hw::doctor_report report = hw::doctor_report::of(m.positions, m.face_sizes, m.indices);
+  return report.components().size() + report.boundary_loops().size();
+}
+
+void compare(const bench::IndexedMesh& m, int repeats) {
+  const Soup soup = cgal_soup(m);
+  hw::check(hw_set_thread_count(1));
+  const auto [one_thread, cgal] = bench::best_ms(
+      repeats, [&] { return halfwing_findings(m); }, [&] { return cgal_findings(soup); });
+  hw::check(hw_set_thread_count(2));
+  const double two_threads = bench::best_ms(repeats, [&] { return halfwing_findings(m); })[0];
+  std::printf("%-26s %9zu %12.2f %12.2f %12.2f %8.2fx %8.2fx\n", m.name.c_str(), m.n_faces(),
+              one_thread, two_threads, cgal, one_thread / cgal, two_threads / cgal);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int repeats = 5;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) {
+      quick = true;
+    } else if (std::strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
+      repeats = std::max(1, std::atoi(argv[++i]));
+    } else if (argv[i][0] == '-') {
+      std::fprintf(stderr, "usage: %s [--quick] [--repeats N] [model files...]\n", argv[0]);
+      return 2;
+    } else {
+      files.push_back(argv[i]);
+    }
+  }
+  if (quick) repeats = 1;
+  std::printf("halfwing %s doctor vs CGAL %s PMP; memory: %s\n", hw::version().c_str(),
+              CGAL_VERSION_STR, bench::set_memory_policy(false));
+  std::printf("times: best of %d runs, in ms; ratio = halfwing / CGAL (lower is better)\n",
+              repeats);
+  std::printf("%-26s %9s %12s %12s %12s %9s %9s\n", "model", "faces", "doctor 1T", "doctor 2T",
+              "CGAL 1T", "1T ratio", "2T ratio");
+  const uint32_t n = quick ? 100 : 708;
+  compare(bench::torus(n, n, true), repeats);
+  for (const std::string& file : files) compare(bench::read_file(file), repeats);
+  return 0;
+}

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the doctor benchmark (halfwing's doctor vs the CGAL PMP calls for the same findings) in
+# Release and runs it on a generated ~1M-triangle torus and the largest real models.
+#
+#   bench/run-doctor-compare.sh [--quick] [--repeats N] [model files...]
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${HALFWING_BENCH_BUILD_DIR:-$root/build-bench}"
+data="$root/../shared/data/meshes"
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_BUILD_BENCHMARKS=ON \
+  -DHALFWING_BUILD_TESTS=OFF -DHALFWING_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$build" --target doctor_compare -j 2 >/dev/null
+
+options=()
+models=()
+while (($#)); do
+  case "$1" in
+    --repeats) options+=("$1" "$2"); shift 2 ;;
+    -*) options+=("$1"); shift ;;
+    *) models+=("$1"); shift ;;
+  esac
+done
+if ((${#models[@]} == 0)); then
+  for model in closed/igl_armadillo.obj closed/luke_dragon.obj open/c3d_stanford-bunny.obj \
+    broken/igl_truck.obj broken/c3d_teapot.obj; do
+    [[ -f "$data/$model" ]] && models+=("$data/$model")
+  done
+fi
+echo "machine: $(nproc) cores; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+"$build/bench/doctor_compare" "${options[@]}" "${models[@]}"
