@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "../c_tests/cgal_soup.hpp"
 #include "halfwing.hpp"
 #include "models.hpp"
 #include "timing.hpp"
@@ -32,22 +33,7 @@ using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-struct Soup {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-};
-
-Soup cgal_soup(const bench::IndexedMesh& m) {
-  Soup soup;
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    soup.points.emplace_back(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-  std::size_t corner = 0;
-  for (uint32_t size : m.face_sizes) {
-    soup.polygons.emplace_back(m.indices.begin() + corner, m.indices.begin() + corner + size);
-    corner += size;
-  }
-  return soup;
-}
+using cgal_soup::Soup;
 
 /// CGAL's calls for the doctor's findings that it has, on the soup as given. Returns a checksum
 /// so that nothing is optimised away.
@@ -76,7 +62,7 @@ std::size_t halfwing_findings(const bench::IndexedMesh& m) {
 }
 
 void compare(const bench::IndexedMesh& m, int repeats) {
-  const Soup soup = cgal_soup(m);
+  const Soup soup = cgal_soup::of(m);
   hw::check(hw_set_thread_count(1));
   const auto [one_thread, cgal] = bench::best_ms(
       repeats, [&] { return halfwing_findings(m); }, [&] { return cgal_findings(soup); });

@@ -33,6 +33,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "../c_tests/cgal_soup.hpp"
 #include "halfwing.hpp"
 #include "models.hpp"
 #include "timing.hpp"
@@ -88,25 +89,8 @@ OM openmesh_build(const bench::IndexedMesh& m) {
   return mesh;
 }
 
-/// CGAL's soup input (points and one vector per polygon), prepared outside the timed region.
-struct Soup {
-  std::vector<Kernel::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-};
-
-Soup cgal_soup(const bench::IndexedMesh& m) {
-  Soup soup;
-  soup.points.reserve(m.n_vertices());
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    soup.points.emplace_back(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-  soup.polygons.reserve(m.n_faces());
-  std::size_t corner = 0;
-  for (uint32_t size : m.face_sizes) {
-    soup.polygons.emplace_back(m.indices.begin() + corner, m.indices.begin() + corner + size);
-    corner += size;
-  }
-  return soup;
-}
+/// CGAL's soup input, prepared outside the timed region.
+using cgal_soup::Soup;
 
 SurfaceMesh cgal_build_soup(const Soup& soup) {
   SurfaceMesh mesh;
@@ -231,7 +215,7 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   // Bulk build: every library builds a fresh structure from the same indexed list.
   // The single-threaded builds take turns; the 2-thread build (a thread count is a pool to start,
   // not part of a build) comes after them.
-  const Soup soup = cgal_soup(m);
+  const Soup soup = cgal_soup::of(m);
   hw::check(hw_set_thread_count(1));
   const auto [hw_build_1, om_add, cgal_soup_ms, cgal_add] = best_ms(
       repeats, [&] { return halfwing_build(m); }, [&] { return openmesh_build<OM>(m); },

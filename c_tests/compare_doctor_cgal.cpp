@@ -20,6 +20,7 @@
 
 #include "check.h"
 #include "halfwing.hpp"
+#include "cgal_soup.hpp"
 #include "models.hpp"
 
 namespace {
@@ -29,22 +30,7 @@ using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-struct Soup {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-};
-
-Soup soup_of(const models::Indexed& m) {
-  Soup soup;
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    soup.points.emplace_back(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-  std::vector<std::size_t> offsets;
-  for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    const std::vector<uint32_t> face = m.face(f, offsets);
-    soup.polygons.emplace_back(face.begin(), face.end());
-  }
-  return soup;
-}
+using cgal_soup::Soup;
 
 std::vector<std::size_t> cgal_boundary_cycle_lengths(const SurfaceMesh& mesh) {
   std::vector<SurfaceMesh::Halfedge_index> cycles;
@@ -79,7 +65,7 @@ void compare(const std::filesystem::path& path) {
   }
   const hw::doctor_report report = hw::doctor_report::of(m.positions, m.face_sizes, m.indices);
   const hw_doctor_verdict verdict = report.verdict();
-  Soup soup = soup_of(m);
+  Soup soup = cgal_soup::of(m);
   const bool malformed = count_of(report, HW_DIAG_FACES_TOO_SMALL) +
                              count_of(report, HW_DIAG_FACES_REPEATED_VERTEX) >
                          0;

@@ -6,7 +6,9 @@ use super::boundary::BoundaryLoop;
 use super::measure::{EMPTY_BOX, distance, grow};
 use crate::disjoint_sets;
 use crate::geom::newell_vector;
-use crate::soup::{BOUNDARY, EdgeDefect, EdgePairing, FaceTable, UNPAIRED, component_volumes};
+use crate::soup::{
+    BOUNDARY, EdgeDefect, EdgePairing, FaceTable, UNPAIRED, component_volumes, search_orientations,
+};
 
 /// One connected component: faces joined through shared edges (any number of faces on an edge).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -192,72 +194,27 @@ pub(super) fn components(
     }
 }
 
-/// Which components are orientable, and a witness for the first that is not: faces are given
-/// orientations breadth-first through their two-face edges (the same across an edge walked both
-/// ways, opposite across an edge walked one way twice); a face reached with the wrong one closes
-/// a path along which the orientation flips. The witness is that path: from the conflict's two
-/// faces back through the search tree to their common ancestor, then across the conflict edge.
+/// Which components are orientable, and a witness for the first that is not: the first
+/// conflict of the [`search_orientations`] closes a path along which the orientation flips,
+/// from the conflict's two faces back through the search tree to their common ancestor, then
+/// across the conflict edge.
 fn orientability(
     surface: &FaceTable<'_>,
     pairing: &EdgePairing,
     component_of: &[u32],
     n_components: usize,
 ) -> (Vec<bool>, Vec<u32>) {
-    let n_faces = surface.n_faces();
-    let face_of = |c: usize| surface.face_of_corner(c);
-    // Across each corner's edge: (neighbour face, must differ).
-    let mut across: Vec<(u32, bool)> = vec![(u32::MAX, false); surface.n_corners()];
-    for (c, &p) in pairing.partner.iter().enumerate() {
-        if p != BOUNDARY && p != UNPAIRED {
-            across[c] = (face_of(p as usize) as u32, false);
-        }
-    }
-    for problem in &pairing.problems {
-        if problem.defect == EdgeDefect::Inconsistent {
-            let (a, b) = (problem.corners[0] as usize, problem.corners[1] as usize);
-            across[a] = (face_of(b) as u32, true);
-            across[b] = (face_of(a) as u32, true);
-        }
-    }
-    const UNSEEN: u32 = u32::MAX;
-    let mut flipped = vec![false; n_faces];
-    let mut reached_from = vec![UNSEEN; n_faces];
+    let search = search_orientations(surface, pairing);
     let mut orientable = vec![true; n_components];
-    let mut witness = Vec::new();
-    let mut queue = Vec::new();
-    for seed in 0..n_faces {
-        if reached_from[seed] != UNSEEN {
-            continue;
-        }
-        reached_from[seed] = seed as u32;
-        queue.clear();
-        queue.push(seed);
-        let mut head = 0;
-        while head < queue.len() {
-            let f = queue[head];
-            head += 1;
-            for &(neighbour, differ) in &across[surface.face_range(f)] {
-                if neighbour == u32::MAX {
-                    continue;
-                }
-                let n = neighbour as usize;
-                let wanted = flipped[f] ^ differ;
-                if reached_from[n] == UNSEEN {
-                    reached_from[n] = f as u32;
-                    flipped[n] = wanted;
-                    queue.push(n);
-                } else if flipped[n] != wanted && orientable[component_of[f] as usize] {
-                    orientable[component_of[f] as usize] = false;
-                    if witness.is_empty() {
-                        witness = closing_path(&reached_from, f, n)
-                            .into_iter()
-                            .map(|f| surface.input_face(f))
-                            .collect();
-                    }
-                }
-            }
-        }
+    for &(f, _) in &search.conflicts {
+        orientable[component_of[f] as usize] = false;
     }
+    let witness = search.conflicts.first().map_or_else(Vec::new, |&(f, g)| {
+        closing_path(&search.reached_from, f, g)
+            .into_iter()
+            .map(|f| surface.input_face(f))
+            .collect()
+    });
     (orientable, witness)
 }
 

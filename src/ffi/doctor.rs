@@ -555,12 +555,8 @@ pub unsafe extern "C" fn hw_doctor_report_text(
     len: usize,
     needed: *mut usize,
 ) -> hw_status {
-    guard(|| {
-        // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
-        // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&report.to_string(), buf, len, needed) }
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe { give_text(report, buf, len, needed, DoctorReport::to_string) }
 }
 
 /// The whole report as one JSON object (every element of every finding), copied as
@@ -575,11 +571,26 @@ pub unsafe extern "C" fn hw_doctor_report_json(
     len: usize,
     needed: *mut usize,
 ) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe { give_text(report, buf, len, needed, DoctorReport::to_json) }
+}
+
+/// Copies `render(report)` into the caller's buffer: the body of the text calls.
+///
+/// # Safety
+/// As for hw_doctor_report_text().
+unsafe fn give_text(
+    report: *const hw_doctor_report,
+    buf: *mut std::ffi::c_char,
+    len: usize,
+    needed: *mut usize,
+    render: impl FnOnce(&DoctorReport) -> String,
+) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let report = &unsafe { arg_ref(report, "report") }?.report;
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&report.to_json(), buf, len, needed) }
+        unsafe { copy_text(&render(report), buf, len, needed) }
     })
 }
 

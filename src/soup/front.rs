@@ -138,11 +138,9 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     let resolved = resolve(list, policy)?;
     let mut buckets = EdgeBuckets::new(&resolved.table, resolved.positions.len(), later_positions)
         .expect("a resolved face table is well formed");
-    let (walked, areas) =
-        walk_checking_areas(&resolved.table, &mut buckets, &resolved.positions, &walk);
-    let walked = walked.expect("a resolved face table has no edge defects");
-    // The findings are the input's (resolve's): the walk's areas are those of the faces built.
-    drop(areas);
+    // The areas are findings, and resolve has them from the input: the walk checks none.
+    let walked = walk(&resolved.table, &mut buckets, &resolved.positions, None)
+        .expect("a resolved face table has no edge defects");
     let diagnostic = resolved.diagnostic;
     let positions = match resolved.positions {
         Cow::Borrowed(input) => input_copy.unwrap_or_else(|| buckets.into_positions(input)),

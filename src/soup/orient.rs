@@ -6,15 +6,27 @@ use super::FaceTable;
 use super::pairing::{BOUNDARY, EdgeDefect, EdgePairing, UNPAIRED};
 use crate::disjoint_sets;
 
-/// Chooses faces to reverse so that as many edges as possible become consistently oriented.
-///
-/// Faces are linked through their two-face edges: across a consistent edge two faces must keep
-/// the same orientation, across an inconsistent one they must differ. Each connected component is
-/// walked breadth-first from its first face; a face reached by contradictory constraints (a
-/// Möbius band) keeps its first assignment, and the conflicting edge is left for the vertex
-/// duplication that follows. In each component the smaller side is flipped (ties keep the
-/// component's first face as given). Returns the table faces to reverse, ascending.
-pub(crate) fn faces_to_flip(table: &FaceTable<'_>, pairing: &EdgePairing) -> Vec<usize> {
+/// Orientations given to the faces of a table breadth-first through their two-face edges: the
+/// same across an edge walked both ways, opposite across an edge walked one way twice. Each
+/// connected component is walked from its first face; a face reached again with the other
+/// orientation (a Möbius band) keeps its first one, and the pair is a conflict.
+pub(crate) struct OrientationSearch {
+    /// Whether each face must be reversed to agree with its component's first face.
+    pub(crate) flipped: Vec<bool>,
+    /// The face each face was reached from (a component's first face: itself).
+    pub(crate) reached_from: Vec<u32>,
+    /// The first face of each face's component.
+    pub(crate) root: Vec<u32>,
+    /// `(f, g)`: face `g`, reached before, disagrees with the orientation `f` asks of it; in
+    /// search order.
+    pub(crate) conflicts: Vec<(usize, usize)>,
+}
+
+/// The [`OrientationSearch`] of `table`, whose edges `pairing` pairs.
+pub(crate) fn search_orientations(
+    table: &FaceTable<'_>,
+    pairing: &EdgePairing,
+) -> OrientationSearch {
     let n_faces = table.n_faces();
     let mut corner_face = vec![0u32; table.n_corners()];
     for f in 0..n_faces {
@@ -37,15 +49,20 @@ pub(crate) fn faces_to_flip(table: &FaceTable<'_>, pairing: &EdgePairing) -> Vec
         across[b] = (corner_face[a], true);
     }
 
-    const UNSEEN: u8 = 2;
-    let mut flip = vec![UNSEEN; n_faces];
-    let mut to_flip = Vec::new();
+    const UNSEEN: u32 = u32::MAX;
+    let mut search = OrientationSearch {
+        flipped: vec![false; n_faces],
+        reached_from: vec![UNSEEN; n_faces],
+        root: vec![UNSEEN; n_faces],
+        conflicts: Vec::new(),
+    };
     let mut queue = Vec::new();
     for seed in 0..n_faces {
-        if flip[seed] != UNSEEN {
+        if search.reached_from[seed] != UNSEEN {
             continue;
         }
-        flip[seed] = 0;
+        search.reached_from[seed] = seed as u32;
+        search.root[seed] = seed as u32;
         queue.clear();
         queue.push(seed);
         let mut head = 0;
@@ -53,18 +70,45 @@ pub(crate) fn faces_to_flip(table: &FaceTable<'_>, pairing: &EdgePairing) -> Vec
             let f = queue[head];
             head += 1;
             for &(neighbour, differ) in &across[table.face_range(f)] {
-                if neighbour != u32::MAX && flip[neighbour as usize] == UNSEEN {
-                    flip[neighbour as usize] = flip[f] ^ u8::from(differ);
-                    queue.push(neighbour as usize);
+                if neighbour == u32::MAX {
+                    continue;
+                }
+                let g = neighbour as usize;
+                let wanted = search.flipped[f] ^ differ;
+                if search.reached_from[g] == UNSEEN {
+                    search.reached_from[g] = f as u32;
+                    search.root[g] = seed as u32;
+                    search.flipped[g] = wanted;
+                    queue.push(g);
+                } else if search.flipped[g] != wanted {
+                    search.conflicts.push((f, g));
                 }
             }
         }
-        let flipped = queue.iter().filter(|&&f| flip[f] == 1).count();
-        let keep = if 2 * flipped > queue.len() { 1 } else { 0 };
-        to_flip.extend(queue.iter().copied().filter(|&f| flip[f] != keep));
     }
-    to_flip.sort_unstable();
-    to_flip
+    search
+}
+
+/// Chooses faces to reverse so that as many edges as possible become consistently oriented: in
+/// each component of the [`OrientationSearch`] the smaller side is flipped (ties keep the
+/// component's first face as given); a conflicting edge is left for the vertex duplication that
+/// follows. Returns the table faces to reverse, ascending.
+pub(crate) fn faces_to_flip(table: &FaceTable<'_>, pairing: &EdgePairing) -> Vec<usize> {
+    let search = search_orientations(table, pairing);
+    let n_faces = table.n_faces();
+    let (mut size, mut flipped) = (vec![0usize; n_faces], vec![0usize; n_faces]);
+    for f in 0..n_faces {
+        let root = search.root[f] as usize;
+        size[root] += 1;
+        flipped[root] += usize::from(search.flipped[f]);
+    }
+    (0..n_faces)
+        .filter(|&f| {
+            let root = search.root[f] as usize;
+            let keep_flipped = 2 * flipped[root] > size[root];
+            search.flipped[f] != keep_flipped
+        })
+        .collect()
 }
 
 /// Reverses the corner order of `faces` in place.
