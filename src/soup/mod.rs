@@ -12,6 +12,7 @@ mod diagnostic;
 mod edge_buckets;
 mod face_list;
 mod front;
+mod large_buckets;
 mod orient;
 mod pairing;
 mod policy;
