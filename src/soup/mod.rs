@@ -13,6 +13,7 @@ mod edge_buckets;
 mod face_list;
 mod front;
 mod inspect;
+mod large_buckets;
 mod orient;
 mod pairing;
 mod policy;
