@@ -20,9 +20,16 @@
 //! line of the offending token.
 //!
 //! Corner attributes: if any corner has a normal (texture coordinate), `corner_normals`
-//! (`corner_uvs`) is present, and corners without one get NaN components so they can be told
-//! apart. Indices may refer to vertices defined further down the file (some exporters do that);
-//! an index that is still out of range at the end is an error at the line of its face.
+//! (`corner_uvs`) is present, and every corner has a defined value. A corner without a normal
+//! gets the zero vector, which is no direction (a `vn 0 0 0` reads the same) and which the render
+//! buffers replace by the normal they compute; Blender's custom normals use the same convention.
+//! A corner without a texture coordinate gets `(0, 0)`, as Blender's and three.js's OBJ loaders
+//! give it: the faces of an OBJ that lack `vt` are typically those whose material has no
+//! texture, so their uvs are never looked up, while dropping every uv would untexture the faces
+//! that have them, and a NaN would poison any arithmetic on the uvs.
+//!
+//! Indices may refer to vertices defined further down the file (some exporters do that); an index
+//! that is still out of range at the end is an error at the line of its face.
 
 use std::io::Read;
 
@@ -307,13 +314,13 @@ impl ObjReader {
     }
 }
 
-/// Per-corner values from per-corner references, NaN where a corner has none; `None` when no
-/// corner has one.
+/// Per-corner values from per-corner references, zero where a corner has none (see the module
+/// docs); `None` when no corner has one.
 fn gather<const N: usize>(references: &[u32], values: &[[f64; N]]) -> Option<Vec<[f64; N]>> {
     references.iter().any(|&r| r != ABSENT).then(|| {
         references
             .iter()
-            .map(|&r| values.get(r as usize).copied().unwrap_or([f64::NAN; N]))
+            .map(|&r| values.get(r as usize).copied().unwrap_or([0.0; N]))
             .collect()
     })
 }
@@ -348,9 +355,32 @@ mod tests {
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 0.25 0.75\nvn 0 0 1\nf 1/1/1 2/2/1 3//1\n";
         let soup = read(text).unwrap();
         assert_eq!(soup.corner_normals, Some(vec![[0.0, 0.0, 1.0]; 3]));
-        let uvs = soup.corner_uvs.unwrap();
-        assert_eq!(&uvs[..2], &[[0.5, 0.0], [0.25, 0.75]]);
-        assert!(uvs[2][0].is_nan() && uvs[2][1].is_nan());
+        assert_eq!(
+            soup.corner_uvs,
+            Some(vec![[0.5, 0.0], [0.25, 0.75], [0.0, 0.0]])
+        );
+    }
+
+    #[test]
+    fn corners_without_attributes_get_zero() {
+        // Normals on one face only, and mixed corner forms within a face.
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\n\
+                    f 1//1 2//1 3//1\nf 1 2 3\nf 1/1 2 3/1/1\n";
+        let soup = read(text).unwrap();
+        let z = [0.0, 0.0, 1.0];
+        assert_eq!(
+            soup.corner_normals,
+            Some(vec![
+                z, z, z, [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], z
+            ])
+        );
+        let h = [0.5, 0.5];
+        assert_eq!(
+            soup.corner_uvs,
+            Some(vec![
+                [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], h, [0.0; 2], h
+            ])
+        );
     }
 
     #[test]
