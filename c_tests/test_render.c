@@ -40,8 +40,8 @@ static void shading_modes_split_vertices(void) {
   hw_render_options options = hw_render_options_default();
   hw_render_buffers *buffers;
 
-  CHECK(options.shading == HW_SHADING_SMOOTH && options.corner_normals == NULL);
-  buffers = build(mesh, NULL); /* NULL options: the defaults */
+  CHECK(options.shading == HW_SHADING_CORNER_NORMALS && options.corner_normals == NULL);
+  buffers = build(mesh, NULL); /* NULL options: the defaults (no corner normals: smooth) */
   CHECK(hw_render_buffers_n_vertices(buffers) == 8);
   CHECK(float_count(buffers, HW_RENDER_POSITIONS) == 24);
   CHECK(float_count(buffers, HW_RENDER_NORMALS) == 24);
@@ -111,7 +111,8 @@ static void interleaved_layout_with_corner_attributes(void) {
   hw_mesh_free(mesh);
 }
 
-/* The mesh's own corner normals and uvs (a file's vn/vt) are honoured unless the options say not. */
+/* The mesh's own corner normals and uvs (a file's vn/vt) are honoured by default; an explicit
+ * flat, smooth or crease shading computes its normals instead. */
 static void mesh_corner_attributes_are_honoured(void) {
   hw_mesh *mesh = unit_cube();
   hw_render_options options = hw_render_options_default();
@@ -134,6 +135,15 @@ static void mesh_corner_attributes_are_honoured(void) {
   CHECK(data != NULL && data[0] == 1.0f && data[1] == 0.0f && data[23] == 0.0f);
   CHECK(hw_render_buffers_floats(buffers, HW_RENDER_UVS, &data, &n) == HW_OK && n == 16);
   CHECK(data != NULL && data[0] == 0.5f && data[15] == 0.75f);
+  hw_render_buffers_free(buffers);
+
+  /* An explicit shading wins over the mesh's normals: flat gives 24 vertices along the axes. */
+  options.shading = HW_SHADING_FLAT;
+  buffers = build(mesh, &options);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 24);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, &n) == HW_OK && n == 72);
+  for (h = 0; data != NULL && h < 24; ++h)
+    CHECK(fabsf(data[3 * h]) + fabsf(data[3 * h + 1]) + fabsf(data[3 * h + 2]) == 1.0f);
   hw_render_buffers_free(buffers);
 
   /* Declined: the shading's normals (flat: 24 vertices) and no uvs. */

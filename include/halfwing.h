@@ -355,12 +355,13 @@ typedef uint32_t hw_shading;
  */
 typedef struct {
   /**
-   * ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or ::HW_SHADING_CREASE.
+   * ::HW_SHADING_CORNER_NORMALS (the default), ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or
+   * ::HW_SHADING_CREASE.
    */
   hw_shading shading;
   /**
-   * Weighting of smooth shading and of the vertex-normal glyphs (::HW_WEIGHT_UNIFORM,
-   * ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+   * Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
+   * the vertex-normal glyphs (::HW_WEIGHT_UNIFORM, ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
    */
   hw_normal_weighting weighting;
   /**
@@ -377,23 +378,26 @@ typedef struct {
    */
   double normal_length;
   /**
-   * Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
-   * of the shading's, when it has them and `corner_normals` is NULL.
+   * With ::HW_SHADING_CORNER_NORMALS: use the mesh's own corner normals (a file's `vn`,
+   * hw_mesh_corner_normals_set()) when it has them and `corner_normals` is NULL. The other
+   * shadings ignore them.
    */
   bool mesh_corner_normals;
   /**
    * Give the vertices the mesh's own corner texture coordinates, when it has them and
-   * `corner_uvs` is NULL.
+   * `corner_uvs` is NULL (a mesh read from an OBJ has (0, 0) at the corners its file gives
+   * none).
    */
   bool mesh_corner_uvs;
   /**
    * NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
-   * half-edge's origin), used instead of the shading's normals.
+   * half-edge's origin), used by ::HW_SHADING_CORNER_NORMALS instead of the mesh's own; a
+   * zero vector means the corner has none. The other shadings ignore it.
    */
   const double *corner_normals;
   /**
    * NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
-   * then carry uvs.
+   * then carry uvs, as given.
    */
   const double *corner_uvs;
   /**
@@ -866,6 +870,16 @@ typedef struct {
 #define HW_SHADING_CREASE 2
 
 /**
+ * The default: the options' `corner_normals`, else the mesh's own corner normals (a file's `vn`,
+ * hw_mesh_corner_normals_set()) when `mesh_corner_normals` is true, scaled to unit length. A
+ * corner without one — none given, or a zero vector (how a mesh read from an OBJ stores the
+ * corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
+ * options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
+ * those normals and compute every normal from the positions.
+ */
+#define HW_SHADING_CORNER_NORMALS 3
+
+/**
  * x y z per vertex (separate layout; empty when interleaved).
  */
 #define HW_RENDER_POSITIONS 0
@@ -1335,7 +1349,8 @@ hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
  * A read-only view of the corner normals: `*out_xyz` holds `3 * *out_n_halfedges` doubles (x,
  * y, z per half-edge slot, boundary ones included; NULL when empty). `HW_ERR_NOT_FOUND` when
  * the mesh has none (a mesh read from a file with normals, or given them with
- * hw_mesh_corner_normals_set(), has them).
+ * hw_mesh_corner_normals_set(), has them). A zero normal means the corner has none: boundary
+ * half-edges, and the corners an OBJ gives no normal while giving others one.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
@@ -1358,6 +1373,7 @@ hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_
 /**
  * A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
  * doubles (u, v per half-edge slot; NULL when empty). `HW_ERR_NOT_FOUND` when the mesh has none.
+ * Corners an OBJ gives no texture coordinate while giving others one hold (0, 0).
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
@@ -1883,7 +1899,9 @@ void hw_soup_free(hw_soup *soup);
  * Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
  * would (same policies, same diagnostic, also on a refusal; `out_diagnostic` may be NULL), keeping the file's
  * normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
- * hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
+ * hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back. When an OBJ gives them to some
+ * corners only, the others get the zero normal (no direction: render buffers use their computed
+ * normal there) and the texture coordinate (0, 0).
  *
  * # Safety
  * `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
@@ -2205,9 +2223,10 @@ hw_status hw_mesh_vertex_position(const hw_mesh *mesh, hw_vertex v, double *out_
 hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *xyz);
 
 /**
- * The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
- * glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
- * them, no other per-corner attributes.
+ * The default options: ::HW_SHADING_CORNER_NORMALS (the mesh's own corner normals where it has
+ * them, smooth angle-weighted normals elsewhere), a crease angle of 30°, separate arrays,
+ * glyphs as long as the mean edge; the mesh's own corner uvs when it has them, no other
+ * per-corner attributes.
  */
 hw_render_options hw_render_options_default(void);
 

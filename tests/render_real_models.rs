@@ -1,7 +1,8 @@
 //! Render buffers of every mesh of the shared data set (read with halfwing's readers, built with
 //! the repair policy so broken files render too), in every shading mode: what a GPU is given must
 //! be consistent whatever the model — indices in range, one triangle count per polygon, finite
-//! positions equal to the mesh's, unit normals, and line sets matching the topology.
+//! positions equal to the mesh's, unit normals (the file's own ones too), finite uvs, and line
+//! sets matching the topology.
 //!
 //! The data lives beside the repository (`../shared/data`); set `HALFWING_DATA` to point
 //! elsewhere.
@@ -125,6 +126,21 @@ fn every_shared_model_renders_consistently_in_every_shading() {
         assert!(
             counts[0] <= counts[1] && counts[1] <= counts[2],
             "{name}: {counts:?}"
+        );
+        // The file's own normals and uvs, as viewers show a file by default.
+        let options = MeshBufferOptions {
+            surface: SurfaceOptions {
+                corner_normals: mesh.corner_normals(),
+                corner_uvs: mesh.corner_uvs(),
+                ..SurfaceOptions::default()
+            },
+            ..MeshBufferOptions::default()
+        };
+        let buffers = mesh_buffers(&mesh, Some(&diagnostic), &options).unwrap();
+        check_buffers(&name, &mesh, &buffers, diagnostic.non_manifold_edges.len());
+        assert!(
+            buffers.surface.uvs.iter().all(|c| c.is_finite()),
+            "{name}: uvs"
         );
         rendered += 1;
     }

@@ -345,7 +345,8 @@ unsafe fn corner_set<const N: usize>(
 /// A read-only view of the corner normals: `*out_xyz` holds `3 * *out_n_halfedges` doubles (x,
 /// y, z per half-edge slot, boundary ones included; NULL when empty). `HW_ERR_NOT_FOUND` when
 /// the mesh has none (a mesh read from a file with normals, or given them with
-/// hw_mesh_corner_normals_set(), has them).
+/// hw_mesh_corner_normals_set(), has them). A zero normal means the corner has none: boundary
+/// half-edges, and the corners an OBJ gives no normal while giving others one.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
@@ -387,6 +388,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_set(
 
 /// A read-only view of the corner texture coordinates: `*out_uv` holds `2 * *out_n_halfedges`
 /// doubles (u, v per half-edge slot; NULL when empty). `HW_ERR_NOT_FOUND` when the mesh has none.
+/// Corners an OBJ gives no texture coordinate while giving others one hold (0, 0).
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.

@@ -135,7 +135,9 @@ pub unsafe extern "C" fn hw_soup_free(soup: *mut hw_soup) {
 /// Reads a mesh file and builds a mesh from it, as hw_soup_read() then hw_mesh_from_indexed()
 /// would (same policies, same diagnostic, also on a refusal; `out_diagnostic` may be NULL), keeping the file's
 /// normals and texture coordinates per corner (hw_mesh_corner_normals_view(),
-/// hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back.
+/// hw_mesh_corner_uvs_view()); hw_mesh_write() writes them back. When an OBJ gives them to some
+/// corners only, the others get the zero normal (no direction: render buffers use their computed
+/// normal there) and the texture coordinate (0, 0).
 ///
 /// # Safety
 /// `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.

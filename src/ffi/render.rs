@@ -27,15 +27,23 @@ pub const HW_SHADING_SMOOTH: hw_shading = 1;
 /// Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
 /// split along those edges only.
 pub const HW_SHADING_CREASE: hw_shading = 2;
+/// The default: the options' `corner_normals`, else the mesh's own corner normals (a file's `vn`,
+/// hw_mesh_corner_normals_set()) when `mesh_corner_normals` is true, scaled to unit length. A
+/// corner without one — none given, or a zero vector (how a mesh read from an OBJ stores the
+/// corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
+/// options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
+/// those normals and compute every normal from the positions.
+pub const HW_SHADING_CORNER_NORMALS: hw_shading = 3;
 
 /// How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_render_options {
-    /// ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or ::HW_SHADING_CREASE.
+    /// ::HW_SHADING_CORNER_NORMALS (the default), ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or
+    /// ::HW_SHADING_CREASE.
     pub shading: hw_shading,
-    /// Weighting of smooth shading and of the vertex-normal glyphs (::HW_WEIGHT_UNIFORM,
-    /// ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+    /// Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
+    /// the vertex-normal glyphs (::HW_WEIGHT_UNIFORM, ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
     pub weighting: hw_normal_weighting,
     /// For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
     pub crease_angle: f64,
@@ -44,30 +52,34 @@ pub struct hw_render_options {
     pub interleaved: bool,
     /// Length of the normal glyphs; 0 takes the mesh's mean edge length.
     pub normal_length: f64,
-    /// Use the mesh's own corner normals (a file's `vn`, hw_mesh_corner_normals_set()) instead
-    /// of the shading's, when it has them and `corner_normals` is NULL.
+    /// With ::HW_SHADING_CORNER_NORMALS: use the mesh's own corner normals (a file's `vn`,
+    /// hw_mesh_corner_normals_set()) when it has them and `corner_normals` is NULL. The other
+    /// shadings ignore them.
     pub mesh_corner_normals: bool,
     /// Give the vertices the mesh's own corner texture coordinates, when it has them and
-    /// `corner_uvs` is NULL.
+    /// `corner_uvs` is NULL (a mesh read from an OBJ has (0, 0) at the corners its file gives
+    /// none).
     pub mesh_corner_uvs: bool,
     /// NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
-    /// half-edge's origin), used instead of the shading's normals.
+    /// half-edge's origin), used by ::HW_SHADING_CORNER_NORMALS instead of the mesh's own; a
+    /// zero vector means the corner has none. The other shadings ignore it.
     pub corner_normals: *const f64,
     /// NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
-    /// then carry uvs.
+    /// then carry uvs, as given.
     pub corner_uvs: *const f64,
     /// Half-edge slots in `corner_normals` and `corner_uvs`: must be
     /// `hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE)` when either is given.
     pub n_corners: usize,
 }
 
-/// The default options: smooth, angle-weighted shading, a crease angle of 30°, separate arrays,
-/// glyphs as long as the mean edge; the mesh's own corner normals and uvs honoured when it has
-/// them, no other per-corner attributes.
+/// The default options: ::HW_SHADING_CORNER_NORMALS (the mesh's own corner normals where it has
+/// them, smooth angle-weighted normals elsewhere), a crease angle of 30°, separate arrays,
+/// glyphs as long as the mean edge; the mesh's own corner uvs when it has them, no other
+/// per-corner attributes.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_render_options_default() -> hw_render_options {
     hw_render_options {
-        shading: HW_SHADING_SMOOTH,
+        shading: HW_SHADING_CORNER_NORMALS,
         weighting: HW_WEIGHT_ANGLE,
         crease_angle: 30f64.to_radians(),
         interleaved: false,
@@ -190,6 +202,7 @@ fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
         HW_SHADING_FLAT => Ok(Shading::Flat),
         HW_SHADING_SMOOTH => Ok(Shading::Smooth(weighting(options.weighting)?)),
         HW_SHADING_CREASE => Ok(Shading::Crease(options.crease_angle)),
+        HW_SHADING_CORNER_NORMALS => Ok(Shading::CornerNormals(weighting(options.weighting)?)),
         other => Err(FfiError::invalid_input(format!("unknown shading {other}"))),
     }
 }

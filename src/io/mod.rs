@@ -4,6 +4,9 @@
 //! as the file numbers its vertices (nothing is welded, reordered, triangulated or dropped,
 //! unreferenced vertices included), with per-corner normals and texture coordinates when the file
 //! has them (per-vertex attributes of OFF and PLY are copied onto every corner of their vertex).
+//! When an OBJ gives normals or texture coordinates to some corners only, the others get defined
+//! values: the zero vector for a missing normal (no direction: render buffers use their computed
+//! normal there) and `(0, 0)` for a missing texture coordinate.
 //! The soup is not validated beyond what parsing needs: faces with repeated vertices, one or two
 //! corners, or NaN coordinates are passed on for the builder's diagnostic to report.
 //!

@@ -12,12 +12,24 @@
 //! faces with one or two corners are kept for the builder's diagnostic to report. Everything else
 //! (`o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, free-form geometry) is ignored, so a missing
 //! `.mtl` file is harmless. `#` starts a comment anywhere on a line.
-//! Line continuation with a trailing `\` is not supported and fails at that line.
+//!
+//! A line whose last character before any comment and trailing whitespace is `\` continues on
+//! the next line, as if the `\` were a space (any record may be continued, over any number of
+//! lines; a `\` on the last line of the file continues onto nothing). A `\` inside a comment is
+//! part of the comment, so commented-out text never swallows the next record. Errors name the
+//! line of the offending token.
 //!
 //! Corner attributes: if any corner has a normal (texture coordinate), `corner_normals`
-//! (`corner_uvs`) is present, and corners without one get NaN components so they can be told
-//! apart. Indices may refer to vertices defined further down the file (some exporters do that);
-//! an index that is still out of range at the end is an error at the line of its face.
+//! (`corner_uvs`) is present, and every corner has a defined value. A corner without a normal
+//! gets the zero vector, which is no direction (a `vn 0 0 0` reads the same) and which the render
+//! buffers replace by the normal they compute; Blender's custom normals use the same convention.
+//! A corner without a texture coordinate gets `(0, 0)`, as Blender's and three.js's OBJ loaders
+//! give it: the faces of an OBJ that lack `vt` are typically those whose material has no
+//! texture, so their uvs are never looked up, while dropping every uv would untexture the faces
+//! that have them, and a NaN would poison any arithmetic on the uvs.
+//!
+//! Indices may refer to vertices defined further down the file (some exporters do that); an index
+//! that is still out of range at the end is an error at the line of its face.
 
 use std::io::Read;
 
@@ -41,9 +53,36 @@ pub fn read_obj(mut reader: impl Read) -> Result<PolygonSoup, IoError> {
 pub fn read_obj_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
     // OBJ declares no counts; vectors grow as records come (large regrowths are cheap `mremap`s).
     let mut reader = ObjReader::default();
+    // A record continued over several lines is joined here, its lines separated by `\n` so the
+    // tokens still know their line; a record on one line is read in place.
+    let mut joined = Vec::new();
+    let mut joined_from: Option<u64> = None;
     for (line_number, line) in Lines::new(bytes) {
-        reader.line = line_number;
-        reader.record(strip_comment(line))?;
+        let content = strip_comment(line);
+        let (content, continues) = match content.trim_ascii_end().strip_suffix(b"\\") {
+            Some(head) => (head, true),
+            None => (content, false),
+        };
+        match joined_from {
+            None if !continues => reader.record(line_number, content)?,
+            None => {
+                joined.clear();
+                joined.extend_from_slice(content);
+                joined_from = Some(line_number);
+            }
+            Some(first_line) => {
+                joined.push(b'\n');
+                joined.extend_from_slice(content);
+                if !continues {
+                    reader.record(first_line, &joined)?;
+                    joined_from = None;
+                }
+            }
+        }
+    }
+    // A continuation on the last line continues onto nothing: the record ends with the file.
+    if let Some(first_line) = joined_from {
+        reader.record(first_line, &joined)?;
     }
     reader.finish()
 }
@@ -91,12 +130,14 @@ impl ObjReader {
         IoError::at_line(MeshFormat::Obj, self.line, message)
     }
 
-    fn record(&mut self, line: &[u8]) -> Result<(), IoError> {
-        if line.trim_ascii_end().ends_with(b"\\") {
-            return Err(self.error("line continuation with `\\` is not supported"));
-        }
-        let mut tokens = Tokens::new(line, self.line);
-        match tokens.next() {
+    /// Reads one record starting on line `first_line`, its lines joined by `\n` when continued.
+    /// `self.line` follows the tokens, so errors name the line of the offending token.
+    fn record(&mut self, first_line: u64, record: &[u8]) -> Result<(), IoError> {
+        self.line = first_line;
+        let mut tokens = Tokens::new(record, first_line);
+        let keyword = tokens.next();
+        self.line = tokens.line();
+        match keyword {
             Some(b"v") => {
                 let position = self.floats::<3>(&mut tokens, 3, "vertex")?;
                 if self.positions.len() >= u32::MAX as usize {
@@ -121,14 +162,16 @@ impl ObjReader {
     /// Up to `N` numbers after a keyword, at least `required`; missing optional ones are 0 and
     /// extra ones are ignored.
     fn floats<const N: usize>(
-        &self,
+        &mut self,
         tokens: &mut Tokens<'_>,
         required: usize,
         what: &str,
     ) -> Result<[f64; N], IoError> {
         let mut values = [0.0; N];
         for (i, value) in values.iter_mut().enumerate() {
-            match tokens.next() {
+            let token = tokens.next();
+            self.line = tokens.line();
+            match token {
                 Some(token) => {
                     *value = parse_f64(token).ok_or_else(|| {
                         self.error(format!(
@@ -149,9 +192,10 @@ impl ObjReader {
         Ok(values)
     }
 
-    fn face(&mut self, tokens: Tokens<'_>) -> Result<(), IoError> {
+    fn face(&mut self, mut tokens: Tokens<'_>) -> Result<(), IoError> {
         let mut size = 0u32;
-        for corner in tokens {
+        while let Some(corner) = tokens.next() {
+            self.line = tokens.line();
             let mut parts = corner.split(|&b| b == b'/');
             let vertex = parts.next().unwrap_or_default();
             let uv = parts.next().unwrap_or_default();
@@ -270,13 +314,13 @@ impl ObjReader {
     }
 }
 
-/// Per-corner values from per-corner references, NaN where a corner has none; `None` when no
-/// corner has one.
+/// Per-corner values from per-corner references, zero where a corner has none (see the module
+/// docs); `None` when no corner has one.
 fn gather<const N: usize>(references: &[u32], values: &[[f64; N]]) -> Option<Vec<[f64; N]>> {
     references.iter().any(|&r| r != ABSENT).then(|| {
         references
             .iter()
-            .map(|&r| values.get(r as usize).copied().unwrap_or([f64::NAN; N]))
+            .map(|&r| values.get(r as usize).copied().unwrap_or([0.0; N]))
             .collect()
     })
 }
@@ -311,9 +355,83 @@ mod tests {
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 0.25 0.75\nvn 0 0 1\nf 1/1/1 2/2/1 3//1\n";
         let soup = read(text).unwrap();
         assert_eq!(soup.corner_normals, Some(vec![[0.0, 0.0, 1.0]; 3]));
-        let uvs = soup.corner_uvs.unwrap();
-        assert_eq!(&uvs[..2], &[[0.5, 0.0], [0.25, 0.75]]);
-        assert!(uvs[2][0].is_nan() && uvs[2][1].is_nan());
+        assert_eq!(
+            soup.corner_uvs,
+            Some(vec![[0.5, 0.0], [0.25, 0.75], [0.0, 0.0]])
+        );
+    }
+
+    #[test]
+    fn corners_without_attributes_get_zero() {
+        // Normals on one face only, and mixed corner forms within a face.
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\n\
+                    f 1//1 2//1 3//1\nf 1 2 3\nf 1/1 2 3/1/1\n";
+        let soup = read(text).unwrap();
+        let z = [0.0, 0.0, 1.0];
+        assert_eq!(
+            soup.corner_normals,
+            Some(vec![
+                z, z, z, [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3], z
+            ])
+        );
+        let h = [0.5, 0.5];
+        assert_eq!(
+            soup.corner_uvs,
+            Some(vec![
+                [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], [0.0; 2], h, [0.0; 2], h
+            ])
+        );
+    }
+
+    #[test]
+    fn continued_lines_join_into_one_record() {
+        let one_line = read("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n").unwrap();
+        let continued = [
+            // Over three lines, `\` glued to a token or followed by blanks and CRLF.
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 \\\n 2\\  \t\r\n3 4\n",
+            // A comment after the `\`, and one on the continued line.
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 \\ # first two\n3 4 # last two\n",
+            // A keyword alone on its line; a continued vertex record.
+            "v 0 0 0\nv 1 0 0\nv \\\n1 1 0\nv 0 1 0\nf\\\n1 2 3 4\n",
+            // A continuation on the last line, with and without a line end.
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 \\\n",
+            "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 \\",
+            // Old Mac line ends.
+            "v 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 \\\r3 4\r",
+        ];
+        for text in continued {
+            assert_eq!(read(text).unwrap(), one_line, "{text:?}");
+        }
+        // A `\` inside a comment is part of it: the next line is a record of its own.
+        let commented = read("# note \\\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+        assert_eq!(commented.unwrap(), one_line);
+        // A continuation into a blank line ends the record there.
+        let soup = read("v 0 0 0\nf 1 1 \\\n\nf 1 1 1\n").unwrap();
+        assert_eq!(soup.face_sizes, vec![2, 3]);
+    }
+
+    #[test]
+    fn errors_in_continued_records_name_the_line_of_the_offending_token() {
+        let cases: [(&str, u64, &str); 5] = [
+            (
+                "v 0 0 0\nf 1 \\\n1 \\\n x\n",
+                4,
+                "index `x` is not an integer",
+            ),
+            (
+                "v 0 0 0\nf 1 \\\n1 \\\n 9\n",
+                4,
+                "vertex index 9 is out of range",
+            ),
+            ("v 0 \\\n0 \\\n", 2, "2 components"),
+            ("v 0 \\\n0 \\\n\n", 3, "2 components"),
+            ("v 0 \\\n0 y\n", 2, "not a number: `y`"),
+        ];
+        for (text, line, message) in cases {
+            let error = read(text).unwrap_err();
+            assert_eq!(error.line(), Some(line), "{text:?}: {error}");
+            assert!(error.to_string().contains(message), "{text:?}: {error}");
+        }
     }
 
     #[test]
@@ -324,7 +442,7 @@ mod tests {
 
     #[test]
     fn errors_name_their_line() {
-        let cases: [(&str, u64, &str); 10] = [
+        let cases: [(&str, u64, &str); 9] = [
             (
                 "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 7\n",
                 5,
@@ -342,7 +460,6 @@ mod tests {
                 3,
                 "texture coordinate index 2 is out of range",
             ),
-            ("v 0 0 0 \\\n", 1, "line continuation"),
         ];
         for (text, line, message) in cases {
             let error = read(text).unwrap_err();

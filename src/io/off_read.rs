@@ -3,11 +3,14 @@
 //! Layout: a keyword `[ST][C][N]OFF`, the counts `vertices faces [edges]` (on the keyword's line,
 //! even glued to it as in `OFF8 6 12`, or on the next line; the edge count is ignored), one vertex
 //! per line (`x y z`, then `nx ny nz` with `N`, colour components with `C`, and `s t` as the last
-//! two numbers with `ST`), then one face per line (`n i0 … i(n-1)`, 0-based, followed by an
-//! optional colour that is ignored). `#` starts a comment anywhere; blank lines and any leading or
-//! trailing whitespace are skipped. Vertex normals and texture coordinates are spread onto the
-//! corners. `4OFF`, `nOFF` and binary OFF are refused as unsupported. Text after the last face is
-//! ignored.
+//! two numbers with `ST`), then the faces (`n i0 … i(n-1)`, 0-based, followed by an optional
+//! colour that is ignored). A face starts on a new line and its indices may run on over the
+//! following lines; its colour is the rest of the line holding its last index, as in Geomview's
+//! definition of the format (the colour runs to the end of the line) and in the OpenMesh and CGAL
+//! readers.
+//! `#` starts a comment anywhere; blank lines and any leading or trailing whitespace are skipped.
+//! Vertex normals and texture coordinates are spread onto the corners. `4OFF`, `nOFF` and binary
+//! OFF are refused as unsupported. Text after the last face is ignored.
 
 use std::io::Read;
 
@@ -193,21 +196,29 @@ pub fn read_off_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
                 )
             })?;
         for corner in 0..size {
-            let token = tokens.next().ok_or_else(|| {
-                error(
-                    line,
-                    format!("face {face} declares {size} vertices but lists {corner}"),
-                )
-            })?;
+            // Indices run on over as many lines as they need; the colour, if any, is the rest
+            // of the line of the last index (so the next face starts on a line of its own).
+            let token = loop {
+                if let Some(token) = tokens.next() {
+                    break token;
+                }
+                let (next_line, next_record) = records.next().ok_or_else(|| {
+                    error(
+                        line,
+                        format!("face {face} declares {size} vertices but lists {corner}"),
+                    )
+                })?;
+                tokens = Tokens::new(next_record, next_line);
+            };
             let index = parse_i64(token).ok_or_else(|| {
                 error(
-                    line,
+                    tokens.line(),
                     format!("face {face} index {} is not an integer", quote(token)),
                 )
             })?;
             if !(0..vertex_count as i64).contains(&index) {
                 return Err(error(
-                    line,
+                    tokens.line(),
                     format!(
                         "face {face} index {index} is out of range: the file declares {vertex_count} vertices"
                     ),
@@ -300,6 +311,46 @@ mod tests {
             soup.corner_uvs,
             Some(vec![[0.0, 1.0], [1.0, 0.0], [0.5, 0.25]])
         );
+    }
+
+    #[test]
+    fn face_indices_may_run_on_over_several_lines() {
+        let header = "OFF 5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n";
+        let one_line = read(&format!("{header}4 0 1 2 3\n3 1 4 2\n")).unwrap();
+        assert_eq!(one_line.face_sizes, vec![4, 3]);
+        let split = [
+            // Split after the size, between indices, with blank and comment lines between.
+            "4\n0 1\n2 3\n3 1 4 2\n",
+            "4 0 # first\n\n# more\n 1 2 \r\n3\n3\n1\n4\n2\n",
+            // Colours after the last index, on its line; the next face starts on the next line.
+            "4 0 1\n2 3 255 0 0\n3 1 4 2 0.5 0.5 0.5 1\n",
+            "4 0 1 2\n3 0.1 0.2 0.3\n3 1\n4 2\n",
+            // The last face split with no line end after it.
+            "4 0 1 2 3\n3 1\n4\n2",
+        ];
+        for faces in split {
+            let text = format!("{header}{faces}");
+            assert_eq!(read(&text).unwrap(), one_line, "{text:?}");
+        }
+        // An empty face keeps the rest of its line as its colour.
+        let soup = read(&format!("{header}0 1 1 1\n3 0 1 2\n")).unwrap();
+        assert_eq!(soup.face_sizes, vec![0, 3]);
+    }
+
+    #[test]
+    fn errors_in_split_faces_name_the_line_of_the_offending_token() {
+        let header = "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+        let cases: [(&str, u64, &str); 3] = [
+            ("3 0\n1\n\n", 5, "declares 3 vertices but lists 2"),
+            ("3 0\n\n1 x\n", 7, "index `x` is not an integer"),
+            ("3\n0 1\n3\n", 7, "index 3 is out of range"),
+        ];
+        for (faces, line, message) in cases {
+            let text = format!("{header}{faces}");
+            let error = read(&text).unwrap_err();
+            assert_eq!(error.line(), Some(line), "{text:?}: {error}");
+            assert!(error.to_string().contains(message), "{text:?}: {error}");
+        }
     }
 
     #[test]

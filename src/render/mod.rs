@@ -1,7 +1,8 @@
 //! Rendering buffers: what `glBufferData` wants (the seed's VBO/EBO slide).
 //!
 //! - [`surface_buffer`]: a mesh's triangles (`u32` indices, ear clipped) and `f32` vertex
-//!   attributes, flat, smooth or crease shaded, separate or interleaved;
+//!   attributes, flat, smooth or crease shaded or with given corner normals (a file's own),
+//!   separate or interleaved;
 //! - [`wireframe_lines`], [`boundary_lines`], [`non_manifold_lines`], [`vertex_normal_glyphs`],
 //!   [`face_normal_glyphs`]: [`LineBuffer`]s for `GL_LINES`;
 //! - [`mesh_buffers`]: all of the above in one call;

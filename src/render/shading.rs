@@ -2,7 +2,9 @@
 
 use crate::geom::VertexNormalWeighting;
 
-/// Where a triangle corner's normal comes from.
+/// Where a triangle corner's normal comes from. `Flat`, `Smooth` and `Crease` compute every
+/// normal from the positions, whatever normals the mesh or its file has; `CornerNormals` uses
+/// those.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shading {
     /// Every corner takes its face's normal: a faceted look; vertices are split per face.
@@ -14,12 +16,21 @@ pub enum Shading {
     /// crossing an edge sharper than this angle (radians, in `[0, π]`), so vertices are split
     /// along creases only.
     Crease(f64),
+    /// Every corner takes its normal from
+    /// [`SurfaceOptions::corner_normals`](super::SurfaceOptions::corner_normals) (a file's `vn`,
+    /// a mesh's [`corner_normals`](crate::mesh::Mesh::corner_normals)), scaled to unit length. A
+    /// corner without one takes the smooth normal with this weighting: so do all corners when no
+    /// normals are given, and a corner whose given normal is the zero vector (how a mesh read
+    /// from an OBJ stores the corners its file gives no normal) or has a NaN or infinite
+    /// component.
+    CornerNormals(VertexNormalWeighting),
 }
 
 impl Default for Shading {
-    /// Smooth with the angle weighting, the usual choice of viewers.
+    /// The given corner normals with the angle-weighted smooth normal where there are none: a
+    /// file's own normals where it has them, as viewers show a file, and smooth shading otherwise.
     fn default() -> Self {
-        Shading::Smooth(VertexNormalWeighting::Angle)
+        Shading::CornerNormals(VertexNormalWeighting::Angle)
     }
 }
 

@@ -7,7 +7,7 @@
 //! render vertex; where they differ (a flat-shaded edge, a crease, a uv seam) the vertex is split,
 //! since OpenGL has one index per vertex for all attributes.
 
-use crate::geom::{corner_normals, face_normals, vertex_normals};
+use crate::geom::{VertexNormalWeighting, corner_normals, face_normals, vertex_normals};
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
 use super::error::RenderError;
@@ -18,15 +18,18 @@ use super::{Bounds, EarClipper, FallbackReason, PolygonOutcome};
 /// What to build a [`SurfaceBuffer`] with.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct SurfaceOptions<'a> {
-    /// Where normals come from when no per-corner normals are given.
+    /// Where normals come from; the default, [`Shading::CornerNormals`], takes `corner_normals`
+    /// where they are given and smooth normals elsewhere.
     pub shading: Shading,
     /// Separate arrays or one interleaved array.
     pub layout: VertexLayout,
     /// Per-corner normals, one per half-edge slot (indexed by half-edge id, the corner at the
-    /// half-edge's origin): when given they replace the shading's normals (a file's `vn`, or the
-    /// mesh's own per-corner attribute).
+    /// half-edge's origin), such as a file's `vn` or the mesh's
+    /// [`corner_normals`](Mesh::corner_normals). Only [`Shading::CornerNormals`] uses them (a
+    /// zero vector there meaning "none"); the other shadings compute every normal.
     pub corner_normals: Option<&'a [[f64; 3]]>,
-    /// Per-corner texture coordinates, one per half-edge slot: when given, the buffer has uvs.
+    /// Per-corner texture coordinates, one per half-edge slot: when given, the buffer has uvs,
+    /// copied as given (a mesh read from an OBJ has `(0, 0)` at the corners its file gives none).
     pub corner_uvs: Option<&'a [[f64; 2]]>,
 }
 
@@ -76,10 +79,14 @@ impl SurfaceBuffer {
     }
 }
 
-/// The normal of every corner (half-edge slot) under `shading`; zero for boundary half-edges.
-fn shaded_corner_normals(mesh: &Mesh, shading: Shading) -> Result<Vec<[f64; 3]>, RenderError> {
+/// The normal of every corner (half-edge slot) under the options' shading; zero for boundary
+/// half-edges.
+fn shaded_corner_normals(
+    mesh: &Mesh,
+    options: &SurfaceOptions<'_>,
+) -> Result<Vec<[f64; 3]>, RenderError> {
     let halfedges = (0..mesh.halfedge_capacity()).map(|h| HalfedgeId(h as u32));
-    Ok(match shading {
+    Ok(match options.shading {
         Shading::Flat => {
             let faces = face_normals(mesh);
             halfedges
@@ -96,14 +103,7 @@ fn shaded_corner_normals(mesh: &Mesh, shading: Shading) -> Result<Vec<[f64; 3]>,
         Shading::Smooth(weighting) => {
             let vertices = vertex_normals(mesh, weighting);
             halfedges
-                .map(|h| {
-                    let v = mesh.origin(h);
-                    if v.is_valid() {
-                        vertices[v.idx()]
-                    } else {
-                        [0.0; 3]
-                    }
-                })
+                .map(|h| normal_at_origin(mesh, &vertices, h))
                 .collect()
         }
         Shading::Crease(angle) => {
@@ -112,7 +112,57 @@ fn shaded_corner_normals(mesh: &Mesh, shading: Shading) -> Result<Vec<[f64; 3]>,
             }
             corner_normals(mesh, angle)
         }
+        Shading::CornerNormals(weighting) => given_corner_normals(mesh, options, weighting),
     })
+}
+
+/// The vertex normal of `h`'s origin, zero when `h` has none (a deleted half-edge).
+fn normal_at_origin(mesh: &Mesh, vertex_normals: &[[f64; 3]], h: HalfedgeId) -> [f64; 3] {
+    let v = mesh.origin(h);
+    if v.is_valid() {
+        vertex_normals[v.idx()]
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// [`Shading::CornerNormals`]: the given normals at unit length, and the smooth normal with
+/// `weighting` at the face corners without one. The smooth normals are only computed when some
+/// corner needs them.
+fn given_corner_normals(
+    mesh: &Mesh,
+    options: &SurfaceOptions<'_>,
+    weighting: VertexNormalWeighting,
+) -> Vec<[f64; 3]> {
+    let mut normals = match options.corner_normals {
+        Some(given) => given.iter().map(|&n| unit_or_zero(n)).collect(),
+        None => vec![[0.0; 3]; mesh.halfedge_capacity()],
+    };
+    let lacks_normal = |normals: &[[f64; 3]], h: usize| {
+        normals[h] == [0.0; 3] && mesh.face(HalfedgeId(h as u32)).is_valid()
+    };
+    if (0..normals.len()).any(|h| lacks_normal(&normals, h)) {
+        let vertices = vertex_normals(mesh, weighting);
+        for h in 0..normals.len() {
+            if lacks_normal(&normals, h) {
+                normals[h] = normal_at_origin(mesh, &vertices, HalfedgeId(h as u32));
+            }
+        }
+    }
+    normals
+}
+
+/// `n` scaled to unit length, or zero when it has no direction: zero, or a NaN or infinite
+/// component. Scaling by the largest component first keeps tiny and huge vectors from
+/// underflowing or overflowing on the way.
+fn unit_or_zero(n: [f64; 3]) -> [f64; 3] {
+    let largest = n.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if !(largest > 0.0 && largest.is_finite()) || n.iter().any(|c| c.is_nan()) {
+        return [0.0; 3];
+    }
+    let scaled = n.map(|c| c / largest);
+    let length = scaled.iter().map(|c| c * c).sum::<f64>().sqrt();
+    scaled.map(|c| c / length)
 }
 
 /// Checks that a per-corner attribute has one entry per half-edge slot.
@@ -187,14 +237,7 @@ pub fn surface_buffer(
 ) -> Result<SurfaceBuffer, RenderError> {
     check_corner_attribute(mesh, "corner normals", options.corner_normals)?;
     check_corner_attribute(mesh, "corner uvs", options.corner_uvs)?;
-    let shaded;
-    let normals = match options.corner_normals {
-        Some(given) => given,
-        None => {
-            shaded = shaded_corner_normals(mesh, options.shading)?;
-            &shaded
-        }
-    };
+    let normals = shaded_corner_normals(mesh, options)?;
 
     let mut splitter = VertexSplitter::new(mesh.vertex_capacity());
     let mut buffer = SurfaceBuffer {
@@ -379,7 +422,7 @@ mod tests {
     }
 
     #[test]
-    fn corner_attributes_override_shading_and_split_at_seams() {
+    fn given_corner_normals_are_used_and_uvs_split_at_seams() {
         let mesh = unit_cube();
         let slots = mesh.halfedge_capacity();
         // Every corner gets the same normal, and a uv that depends on its face only: the cube is
@@ -392,7 +435,7 @@ mod tests {
             })
             .collect();
         let options = SurfaceOptions {
-            shading: Shading::Flat,
+            shading: Shading::CornerNormals(VertexNormalWeighting::Angle),
             layout: VertexLayout::Interleaved,
             corner_normals: Some(&normals),
             corner_uvs: Some(&uvs),
@@ -405,12 +448,82 @@ mod tests {
             assert_eq!(&row[3..6], &[0.0, 0.0, 1.0]);
             assert_eq!(row[7], 0.5);
         }
-        // One normal for all and no uvs: back to one vertex per mesh vertex.
+        // One normal for all and no uvs (the default shading uses given normals): back to one
+        // vertex per mesh vertex.
         let shared = SurfaceOptions {
             corner_normals: Some(&normals),
             ..SurfaceOptions::default()
         };
         assert_eq!(surface_buffer(&mesh, &shared).unwrap().n_vertices(), 8);
+    }
+
+    #[test]
+    fn explicit_shadings_compute_their_normals_whatever_normals_are_given() {
+        let mesh = unit_cube();
+        let normals = vec![[0.0, 0.0, 1.0]; mesh.halfedge_capacity()];
+        let mut vertex_counts = Vec::new();
+        for shading in [
+            Shading::Flat,
+            Shading::Smooth(VertexNormalWeighting::Angle),
+            Shading::Crease(0.5),
+        ] {
+            let computed = surface_buffer(&mesh, &with(shading)).unwrap();
+            let options = SurfaceOptions {
+                corner_normals: Some(&normals),
+                ..with(shading)
+            };
+            assert_eq!(surface_buffer(&mesh, &options).unwrap(), computed);
+            vertex_counts.push(computed.n_vertices());
+        }
+        assert_eq!(vertex_counts, [24, 8, 24]);
+        // Without normals, the corner-normal shading is the smooth one with its weighting.
+        for weighting in [VertexNormalWeighting::Uniform, VertexNormalWeighting::Area] {
+            assert_eq!(
+                surface_buffer(&mesh, &with(Shading::CornerNormals(weighting))).unwrap(),
+                surface_buffer(&mesh, &with(Shading::Smooth(weighting))).unwrap()
+            );
+        }
+    }
+
+    #[test]
+    fn corners_without_a_usable_normal_take_the_smooth_one() {
+        let mesh = unit_cube();
+        let smooth = vertex_normals(&mesh, VertexNormalWeighting::Angle);
+        let inverse_sqrt_2 = std::f64::consts::FRAC_1_SQRT_2;
+        // Per face: the given normal, and the normal its corners must get (None: the smooth one).
+        let per_face: [([f64; 3], Option<[f64; 3]>); 6] = [
+            ([0.0, 0.0, 2.0], Some([0.0, 0.0, 1.0])),
+            ([0.0; 3], None),
+            ([f64::NAN, 0.0, 1.0], None),
+            ([1e-300, 0.0, 0.0], Some([1.0, 0.0, 0.0])),
+            (
+                [1e300, 1e300, 0.0],
+                Some([inverse_sqrt_2, inverse_sqrt_2, 0.0]),
+            ),
+            ([f64::INFINITY, 0.0, 0.0], None),
+        ];
+        let given: Vec<[f64; 3]> = (0..mesh.halfedge_capacity())
+            .map(|h| per_face[mesh.face(HalfedgeId(h as u32)).idx()].0)
+            .collect();
+        let options = SurfaceOptions {
+            corner_normals: Some(&given),
+            ..with(Shading::CornerNormals(VertexNormalWeighting::Angle))
+        };
+        let buffer = surface_buffer(&mesh, &options).unwrap();
+        assert!(buffer.normals.iter().all(|c| c.is_finite()));
+        for (triangle, &face) in buffer.triangles.chunks_exact(3).zip(&buffer.triangle_faces) {
+            for &r in triangle {
+                let v = buffer.vertex_sources[r as usize] as usize;
+                let expected = per_face[face as usize].1.unwrap_or(smooth[v]);
+                let got = vertex(&buffer.normals, r);
+                for axis in 0..3 {
+                    assert!(
+                        (got[axis] - expected[axis] as f32).abs() <= f32::EPSILON,
+                        "face {face}: {got:?} for {expected:?}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

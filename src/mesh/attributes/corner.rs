@@ -4,18 +4,26 @@
 //! "semiaristas aladas"), so a vertex on a crease or a texture seam holds one normal or texture
 //! coordinate per face around it. Boundary half-edges have slots too; their values mean nothing
 //! and are zero unless written.
+//!
+//! Every value is defined. A zero normal means "no normal": boundary half-edges have it, and so
+//! do the corners of a mesh read from an OBJ that gives normals to some corners only (the render
+//! buffers give such corners their computed normal). Those corners' texture coordinates are
+//! `(0, 0)`.
 
 use super::AttributeError;
 use super::column::ScalarType;
 use crate::mesh::{ElementKind, Mesh};
 
 impl Mesh {
-    /// Name of the corner-normal half-edge attribute (`f64` × 3, unit vectors).
+    /// Name of the corner-normal half-edge attribute (`f64` × 3, unit vectors, or zero for a
+    /// corner without a normal).
     pub const CORNER_NORMALS: &'static str = "hw:corner_normal";
-    /// Name of the texture-coordinate half-edge attribute (`f64` × 2).
+    /// Name of the texture-coordinate half-edge attribute (`f64` × 2; `(0, 0)` for a corner its
+    /// file gives none).
     pub const CORNER_UVS: &'static str = "hw:corner_uv";
 
-    /// The normal of every half-edge slot's corner, if the mesh has corner normals.
+    /// The normal of every half-edge slot's corner, if the mesh has corner normals; zero where a
+    /// corner has none (see the module docs).
     pub fn corner_normals(&self) -> Option<&[[f64; 3]]> {
         self.corner_vectors(Self::CORNER_NORMALS)
     }
