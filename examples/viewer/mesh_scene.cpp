@@ -14,6 +14,7 @@ const char* shading_name(hw_shading shading) {
   switch (shading) {
     case HW_SHADING_FLAT: return "flat";
     case HW_SHADING_SMOOTH: return "smooth";
+    case HW_SHADING_CORNER_NORMALS: return "file normals";
     default: return "crease";
   }
 }
@@ -74,6 +75,7 @@ bool mesh_scene::on_key(int key) {
     case GLFW_KEY_1: options_.shading = HW_SHADING_FLAT; break;
     case GLFW_KEY_2: options_.shading = HW_SHADING_SMOOTH; break;
     case GLFW_KEY_3: options_.shading = HW_SHADING_CREASE; break;
+    case GLFW_KEY_4: options_.shading = HW_SHADING_CORNER_NORMALS; break;
     case GLFW_KEY_G: options_.weighting = (options_.weighting + 1) % 3; break;
     case GLFW_KEY_LEFT_BRACKET:
       options_.crease_angle = std::fmax(options_.crease_angle - 5 * degrees, 0.0);
@@ -93,7 +95,7 @@ bool mesh_scene::on_key(int key) {
 }
 
 std::string mesh_scene::help() const {
-  return "  1 / 2 / 3  shading: flat / smooth / crease angle\n"
+  return "  1 / 2 / 3 / 4  shading: flat / smooth / crease angle / the file's normals\n"
          "  [ / ]      crease angle -5 / +5 degrees\n"
          "  G          vertex-normal weighting: uniform / area / angle\n"
          "  W          wireframe\n"
