@@ -6,10 +6,11 @@
  *
  * Errors. Every fallible function returns an ::hw_status; ::HW_OK (0) is success. On failure
  * hw_last_error_message() gives a thread-local message naming the problem (argument, index,
- * face...), and hw_status_str() a static description of the code. Output arguments (`out_*`) are
- * written only on success. A Rust panic never crosses this boundary: it becomes
- * ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation) return
- * an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
+ * face...; of a long list, the first few and the count of the rest), never longer than
+ * ::HW_MAX_MESSAGE_SIZE bytes, and hw_status_str() a static description of the code. Output
+ * arguments (`out_*`) are written only on success. A Rust panic never crosses this boundary: it
+ * becomes ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation)
+ * return an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
  *
  * Ownership. Objects (`hw_mesh *`, ...) are created by `hw_<type>_new`, `_build` or `_from_*`
  * and released by `hw_<type>_free`; `_free(NULL)` is a no-op and freeing the same object twice is
@@ -45,6 +46,16 @@
  * The raw value of "no element": an id whose `idx` is this is invalid.
  */
 #define HW_INVALID_INDEX UINT32_MAX
+
+/**
+ * The largest message halfwing gives C, in bytes with its terminating NUL: the last-error
+ * message (hw_last_error_message()) and a diagnostic's summary (hw_diagnostic_summary()) never
+ * need more, so a buffer of this size always takes them. Lists of elements in a message name the
+ * first few and count the rest, so a message reaches this size only when it quotes a very long
+ * string of the caller's (an attribute name, a path); it is then cut, and ends with
+ * `… (cut)`.
+ */
+#define HW_MAX_MESSAGE_SIZE 8192
 
 /**
  * The largest count hw_set_thread_count() accepts. Above the core count of any machine halfwing
@@ -1307,9 +1318,12 @@ hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
                              size_t *out_n_faces);
 
 /**
- * A human-readable account (one line per non-empty list, with the first few indices), copied
- * NUL-terminated into `buf`. `*needed` receives the size needed even when `buf` is too small
- * (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`).
+ * A human-readable account, copied NUL-terminated into `buf`: one line per non-empty list, with
+ * its count and its first 8 elements
+ * (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an edge names its first 8
+ * faces the same way. `*needed` receives the size needed even when `buf` is too small (then
+ * `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`); it is never more than
+ * ::HW_MAX_MESSAGE_SIZE, whatever the input.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
@@ -1452,11 +1466,12 @@ void hw_index_maps_free(hw_index_maps *maps);
  * Copies the message of the last failed call on this thread into `buf`, NUL-terminated.
  *
  * `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
- * included — also when the buffer is too small, so a caller can allocate and call again. The
- * message is empty (`needed` = 1) when no call has failed on this thread yet. Successful calls
- * do not clear it, and neither does this function, so it can be read as often as wanted. Calls
- * made from a thread-local destructor after this thread's storage is torn down still return
- * their status, but record no message (it reads empty).
+ * included — also when the buffer is too small, so a caller can allocate and call again; it is
+ * never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices. The message is
+ * empty (`needed` = 1) when no call has failed on this thread yet. Successful calls do not clear
+ * it, and neither does this function, so it can be read as often as wanted. Calls made from a
+ * thread-local destructor after this thread's storage is torn down still return their status,
+ * but record no message (it reads empty).
  *
  * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
  * needed (nothing is written to `buf` then).

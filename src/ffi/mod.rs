@@ -44,7 +44,7 @@ pub use circulator::*;
 pub use diagnostic::*;
 pub use edit::*;
 pub use elements::*;
-pub use error::hw_last_error_message;
+pub use error::{HW_MAX_MESSAGE_SIZE, hw_last_error_message};
 pub use io::*;
 pub use mesh::*;
 pub use navigation::*;
