@@ -13,9 +13,14 @@
  * return an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
  *
  * Ownership. Objects (`hw_mesh *`, ...) are created by `hw_<type>_new`, `_build` or `_from_*`
- * and released by `hw_<type>_free`; `_free(NULL)` is a no-op and freeing the same object twice is
- * detected and refused (the message says so). Pointers passed in are borrowed for the call only;
- * views returned (`const T *`) belong to the object and stay valid until its next mutating call.
+ * and released by `hw_<type>_free`. `_free(NULL)` is a no-op, and `_free` refuses any pointer
+ * that is not a live object of its type (one already freed, one never created) and records why
+ * (hw_last_error_message()). A stale pointer cannot be told from a new object that has the same
+ * address, so halfwing keeps the address of each freed object from reuse for the next
+ * ::HW_FREED_ADDRESSES_KEPT frees: a second `_free` within that many is always refused; a later
+ * one may free whichever object then has that address. Other calls do not check: passing them a
+ * freed object is undefined behaviour. Pointers passed in are borrowed for the call only; views
+ * returned (`const T *`) belong to the object and stay valid until its next mutating call.
  * Strings returned are static unless stated otherwise.
  *
  * Threads. A `const hw_mesh *` (and every other `const` object) may be used from several threads
@@ -56,6 +61,13 @@
  * `… (cut)`.
  */
 #define HW_MAX_MESSAGE_SIZE 8192
+
+/**
+ * How many of the most recently freed objects keep their address out of reuse: a second
+ * `_free` of an object is refused as long as fewer objects than this were freed since its first.
+ * Each keeps a few hundred bytes (its large arrays are released at once): 2 MB at most in all.
+ */
+#define HW_FREED_ADDRESSES_KEPT 4096
 
 /**
  * The largest count hw_set_thread_count() accepts. Above the core count of any machine halfwing
@@ -1264,7 +1276,8 @@ hw_status hw_diagnose_indexed(const double *positions,
                               hw_diagnostic **out_diagnostic);
 
 /**
- * Releases a diagnostic. NULL is a no-op; freeing twice is detected and refused.
+ * Releases a diagnostic. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
  *
  * # Safety
  * `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
@@ -1455,7 +1468,8 @@ hw_status hw_index_maps_view(const hw_index_maps *maps,
                              size_t *out_len);
 
 /**
- * Releases index maps. NULL is a no-op; freeing twice is detected and refused.
+ * Releases index maps. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
  *
  * # Safety
  * `maps` must be NULL or maps from this library, not in use by another thread.
@@ -1510,7 +1524,8 @@ hw_status hw_soup_view(const hw_soup *soup,
                        size_t *out_n_indices);
 
 /**
- * Releases a soup. NULL is a no-op; freeing twice is detected and refused.
+ * Releases a soup. NULL is a no-op; a second free is refused (within the limits the ownership
+ * conventions at the top of the header state).
  *
  * # Safety
  * `soup` must be NULL or a soup from this library, not in use by another thread.
@@ -1578,8 +1593,8 @@ hw_status hw_mesh_from_indexed(const double *positions,
                                hw_diagnostic **out_diagnostic);
 
 /**
- * Releases a mesh. NULL is a no-op; a mesh freed already is detected and refused (the last error
- * says so).
+ * Releases a mesh. NULL is a no-op; a mesh freed already is refused, the last error saying so
+ * (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `mesh` must be NULL or a mesh from this library not in use by another thread.
@@ -1908,8 +1923,8 @@ hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
                                                hw_render_buffers **out_buffers);
 
 /**
- * Releases render buffers (their views die with them). NULL is a no-op; freeing twice is
- * detected and refused.
+ * Releases render buffers (their views die with them). NULL is a no-op; a second free is
+ * refused (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `buffers` must be NULL or from this library, not in use by another thread.
@@ -2238,8 +2253,9 @@ hw_status hw_circ_visit(hw_circulator *circulator,
 hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_voronoi);
 
 /**
- * Releases a diagram. NULL is a no-op; a diagram freed already is detected and refused (the last
- * error says so). Clipped cells made from it (::hw_voronoi_cells) stay valid.
+ * Releases a diagram. NULL is a no-op; a diagram freed already is refused, the last error saying
+ * so (within the limits the ownership conventions at the top of the header state). Clipped
+ * cells made from it (::hw_voronoi_cells) stay valid.
  *
  * # Safety
  * `voronoi` must be NULL or a diagram from this library not in use by another thread.
@@ -2433,7 +2449,8 @@ hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
                                  hw_voronoi_cells **out_cells);
 
 /**
- * Releases clipped cells. NULL is a no-op; cells freed already are detected and refused.
+ * Releases clipped cells. NULL is a no-op; cells freed already are refused (within the limits
+ * the ownership conventions at the top of the header state).
  *
  * # Safety
  * `cells` must be NULL or cells from this library not in use by another thread.
@@ -2683,8 +2700,8 @@ hw_status hw_winged_from_mesh(const hw_mesh *mesh, hw_winged **out_winged);
 hw_status hw_winged_to_mesh(const hw_winged *winged, hw_mesh **out_mesh);
 
 /**
- * Releases a structure. NULL is a no-op; a structure freed already is detected and refused (the
- * last error says so).
+ * Releases a structure. NULL is a no-op; a structure freed already is refused, the last error
+ * saying so (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `winged` must be NULL or a structure from this library not in use by another thread.

@@ -147,7 +147,8 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
     })
 }
 
-/// Releases a diagnostic. NULL is a no-op; freeing twice is detected and refused.
+/// Releases a diagnostic. NULL is a no-op; a second free is refused (within the limits the
+/// ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
