@@ -220,9 +220,52 @@ static void remaining_calls(void) {
   hw_mesh_free(mesh);
 }
 
+/* A million copies of one triangle put a million faces on each of its three edges: the summary
+ * and the build's error message name the first few and count the rest, within
+ * HW_MAX_MESSAGE_SIZE. */
+static void long_lists_are_counted_not_listed(void) {
+  enum { N_FACES = 1000000 };
+  static const double triangle[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  uint32_t *copy_sizes = (uint32_t *)malloc(N_FACES * sizeof(uint32_t));
+  uint32_t *copy_indices = (uint32_t *)malloc(3 * N_FACES * sizeof(uint32_t));
+  static char text[HW_MAX_MESSAGE_SIZE];
+  hw_diagnostic *d = NULL;
+  hw_mesh *mesh = NULL;
+  size_t i, needed = 0;
+  CHECK(copy_sizes != NULL && copy_indices != NULL);
+  if (copy_sizes == NULL || copy_indices == NULL) {
+    free(copy_sizes);
+    free(copy_indices);
+    return;
+  }
+  for (i = 0; i < N_FACES; ++i) {
+    copy_sizes[i] = 3;
+    copy_indices[3 * i] = 0;
+    copy_indices[3 * i + 1] = 1;
+    copy_indices[3 * i + 2] = 2;
+  }
+  CHECK(hw_diagnose_indexed(triangle, 3, copy_sizes, N_FACES, copy_indices, 3 * N_FACES, &d) ==
+        HW_OK);
+  CHECK(hw_diagnostic_summary(d, text, sizeof text, &needed) == HW_OK);
+  CHECK(needed <= HW_MAX_MESSAGE_SIZE);
+  CHECK(strstr(text, "(v0-v1 in faces f0 f1 f2 f3 f4 f5 f6 f7 … and 999992 more)") != NULL);
+  hw_diagnostic_free(d);
+
+  CHECK(hw_mesh_from_indexed(triangle, 3, copy_sizes, N_FACES, copy_indices, 3 * N_FACES,
+                             HW_BUILD_STRICT, &mesh, NULL) == HW_ERR_NON_MANIFOLD);
+  CHECK(mesh == NULL);
+  CHECK(hw_last_error_message(text, sizeof text, &needed) == HW_OK);
+  CHECK(needed <= HW_MAX_MESSAGE_SIZE);
+  CHECK(strstr(text, "not an oriented manifold") != NULL);
+  CHECK(strstr(text, "f7 … and 999992 more)") != NULL);
+  free(copy_sizes);
+  free(copy_indices);
+}
+
 int main(void) {
   diagnose_without_building();
   policies_report_what_they_did();
   remaining_calls();
+  long_lists_are_counted_not_listed();
   return check_summary("test_diagnostics");
 }

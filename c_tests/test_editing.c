@@ -316,6 +316,17 @@ static void deleted_elements_and_null_outputs(void) {
   }
   CHECK_STATUS(hw_mesh_set_vertex_position(mesh, live_v, NULL), HW_ERR_NULL_ARGUMENT, "xyz");
   CHECK_STATUS(hw_mesh_set_vertex_position(NULL, live_v, point), HW_ERR_NULL_ARGUMENT, "mesh");
+  {
+    /* A misaligned point is refused like every other misaligned pointer, naming it. */
+    double storage[4] = {0.5, 0.5, 0.5, 0.5};
+    const double *misaligned = (const double *)(const void *)((const unsigned char *)storage + 1);
+    CHECK_STATUS(hw_mesh_add_vertex(mesh, misaligned, &out_v), HW_ERR_INVALID_INPUT,
+                 "argument `xyz` is misaligned");
+    CHECK_STATUS(hw_mesh_set_vertex_position(mesh, live_v, misaligned), HW_ERR_INVALID_INPUT,
+                 "argument `xyz` is misaligned");
+    CHECK_STATUS(hw_mesh_split_edge(mesh, hw_mesh_he_edge(mesh, h_live), misaligned, &out_v),
+                 HW_ERR_INVALID_INPUT, "argument `xyz` is misaligned");
+  }
   CHECK_STATUS(hw_mesh_vertex_position(mesh, live_v, NULL), HW_ERR_NULL_ARGUMENT, "out_xyz");
   CHECK_STATUS(hw_mesh_triangulate_face(NULL, f0, &n_out), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_garbage_collect(NULL, NULL), HW_ERR_NULL_ARGUMENT, "mesh");

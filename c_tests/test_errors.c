@@ -46,6 +46,34 @@ static void last_error_buffer_protocol(void) {
   }
 }
 
+/* A message quoting a caller's string longer than HW_MAX_MESSAGE_SIZE is cut to fit it. */
+static void long_messages_are_cut(void) {
+  enum { NAME_LENGTH = 100000 };
+  char *name = (char *)malloc(NAME_LENGTH + 1);
+  static char message[HW_MAX_MESSAGE_SIZE];
+  hw_mesh *mesh = hw_mesh_new();
+  size_t needed = 0, length;
+  CHECK(name != NULL && mesh != NULL);
+  if (name == NULL || mesh == NULL) {
+    free(name);
+    hw_mesh_free(mesh);
+    return;
+  }
+  memset(name, 'a', NAME_LENGTH);
+  name[NAME_LENGTH] = '\0';
+  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_VERTEX, name) != HW_OK);
+  CHECK(hw_last_error_message(NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL);
+  CHECK(needed <= HW_MAX_MESSAGE_SIZE);
+  CHECK(hw_last_error_message(message, sizeof message, NULL) == HW_OK);
+  length = strlen(message);
+  CHECK(length + 1 == needed);
+  CHECK(strstr(message, "aaaa") != NULL);
+  CHECK(length > strlen("… (cut)") &&
+        strcmp(message + length - strlen("… (cut)"), "… (cut)") == 0);
+  free(name);
+  hw_mesh_free(mesh);
+}
+
 /* A failing call from a thread-local destructor that runs after halfwing's own thread-local
  * storage is gone (glibc runs pthread key destructors after the C++/Rust `thread_local` ones)
  * still returns its status instead of aborting the process. */
@@ -98,6 +126,7 @@ static void version_matches_cargo_toml(void) {
 int main(void) {
   status_text();
   last_error_buffer_protocol();
+  long_messages_are_cut();
   failures_in_thread_local_destructors();
   version_matches_cargo_toml();
   return check_summary("test_errors");

@@ -131,9 +131,24 @@ static void non_manifold_edge_policies(void) {
 
 static void double_free_is_refused(void) {
   hw_mesh *mesh = build_tetrahedron();
+  hw_mesh *others[8];
+  size_t i;
   hw_mesh_free(mesh);
   hw_mesh_free(mesh); /* detected: not a live mesh any more */
   CHECK(last_error_contains("already freed"));
+  /* New meshes never take the freed one's address, so freeing the stale pointer again is still
+   * refused and leaves them alone (before, the allocator gave the address to the next mesh and
+   * the stale free released that mesh). */
+  for (i = 0; i < 8; ++i) {
+    others[i] = build_tetrahedron();
+    CHECK(others[i] != mesh);
+  }
+  hw_mesh_free(mesh);
+  CHECK(last_error_contains("already freed"));
+  for (i = 0; i < 8; ++i) {
+    CHECK(hw_mesh_n_faces(others[i]) == 4 && hw_mesh_check(others[i]) == HW_OK);
+    hw_mesh_free(others[i]);
+  }
 }
 
 int main(void) {

@@ -6,15 +6,21 @@
  *
  * Errors. Every fallible function returns an ::hw_status; ::HW_OK (0) is success. On failure
  * hw_last_error_message() gives a thread-local message naming the problem (argument, index,
- * face...), and hw_status_str() a static description of the code. Output arguments (`out_*`) are
- * written only on success. A Rust panic never crosses this boundary: it becomes
- * ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation) return
- * an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
+ * face...; of a long list, the first few and the count of the rest), never longer than
+ * ::HW_MAX_MESSAGE_SIZE bytes, and hw_status_str() a static description of the code. Output
+ * arguments (`out_*`) are written only on success. A Rust panic never crosses this boundary: it
+ * becomes ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation)
+ * return an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
  *
  * Ownership. Objects (`hw_mesh *`, ...) are created by `hw_<type>_new`, `_build` or `_from_*`
- * and released by `hw_<type>_free`; `_free(NULL)` is a no-op and freeing the same object twice is
- * detected and refused (the message says so). Pointers passed in are borrowed for the call only;
- * views returned (`const T *`) belong to the object and stay valid until its next mutating call.
+ * and released by `hw_<type>_free`. `_free(NULL)` is a no-op, and `_free` refuses any pointer
+ * that is not a live object of its type (one already freed, one never created) and records why
+ * (hw_last_error_message()). A stale pointer cannot be told from a new object that has the same
+ * address, so halfwing keeps the address of each freed object from reuse for the next
+ * ::HW_FREED_ADDRESSES_KEPT frees: a second `_free` within that many is always refused; a later
+ * one may free whichever object then has that address. Other calls do not check: passing them a
+ * freed object is undefined behaviour. Pointers passed in are borrowed for the call only; views
+ * returned (`const T *`) belong to the object and stay valid until its next mutating call.
  * Strings returned are static unless stated otherwise.
  *
  * Threads. A `const hw_mesh *` (and every other `const` object) may be used from several threads
@@ -45,6 +51,23 @@
  * The raw value of "no element": an id whose `idx` is this is invalid.
  */
 #define HW_INVALID_INDEX UINT32_MAX
+
+/**
+ * The largest message halfwing gives C, in bytes with its terminating NUL: the last-error
+ * message (hw_last_error_message()) and a diagnostic's summary (hw_diagnostic_summary()) never
+ * need more, so a buffer of this size always takes them. Lists of elements in a message name the
+ * first few and count the rest, so a message reaches this size only when it quotes a very long
+ * string of the caller's (an attribute name, a path); it is then cut, and ends with
+ * `… (cut)`.
+ */
+#define HW_MAX_MESSAGE_SIZE 8192
+
+/**
+ * How many of the most recently freed objects keep their address out of reuse: a second
+ * `_free` of an object is refused as long as fewer objects than this were freed since its first.
+ * Each keeps a few hundred bytes (its large arrays are released at once): 2 MB at most in all.
+ */
+#define HW_FREED_ADDRESSES_KEPT 4096
 
 /**
  * The largest count hw_set_thread_count() accepts. Above the core count of any machine halfwing
@@ -1473,7 +1496,8 @@ hw_status hw_diagnose_indexed(const double *positions,
                               hw_diagnostic **out_diagnostic);
 
 /**
- * Releases a diagnostic. NULL is a no-op; freeing twice is detected and refused.
+ * Releases a diagnostic. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
  *
  * # Safety
  * `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
@@ -1527,9 +1551,12 @@ hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
                              size_t *out_n_faces);
 
 /**
- * A human-readable account (one line per non-empty list, with the first few indices), copied
- * NUL-terminated into `buf`. `*needed` receives the size needed even when `buf` is too small
- * (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`).
+ * A human-readable account, copied NUL-terminated into `buf`: one line per non-empty list, with
+ * its count and its first 8 elements
+ * (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an edge names its first 8
+ * faces the same way. `*needed` receives the size needed even when `buf` is too small (then
+ * `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`); it is never more than
+ * ::HW_MAX_MESSAGE_SIZE, whatever the input.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
@@ -1834,7 +1861,8 @@ hw_status hw_index_maps_view(const hw_index_maps *maps,
                              size_t *out_len);
 
 /**
- * Releases index maps. NULL is a no-op; freeing twice is detected and refused.
+ * Releases index maps. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
  *
  * # Safety
  * `maps` must be NULL or maps from this library, not in use by another thread.
@@ -1845,11 +1873,12 @@ void hw_index_maps_free(hw_index_maps *maps);
  * Copies the message of the last failed call on this thread into `buf`, NUL-terminated.
  *
  * `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
- * included — also when the buffer is too small, so a caller can allocate and call again. The
- * message is empty (`needed` = 1) when no call has failed on this thread yet. Successful calls
- * do not clear it, and neither does this function, so it can be read as often as wanted. Calls
- * made from a thread-local destructor after this thread's storage is torn down still return
- * their status, but record no message (it reads empty).
+ * included — also when the buffer is too small, so a caller can allocate and call again; it is
+ * never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices. The message is
+ * empty (`needed` = 1) when no call has failed on this thread yet. Successful calls do not clear
+ * it, and neither does this function, so it can be read as often as wanted. Calls made from a
+ * thread-local destructor after this thread's storage is torn down still return their status,
+ * but record no message (it reads empty).
  *
  * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
  * needed (nothing is written to `buf` then).
@@ -1888,7 +1917,8 @@ hw_status hw_soup_view(const hw_soup *soup,
                        size_t *out_n_indices);
 
 /**
- * Releases a soup. NULL is a no-op; freeing twice is detected and refused.
+ * Releases a soup. NULL is a no-op; a second free is refused (within the limits the ownership
+ * conventions at the top of the header state).
  *
  * # Safety
  * `soup` must be NULL or a soup from this library, not in use by another thread.
@@ -1963,8 +1993,8 @@ hw_status hw_mesh_from_indexed(const double *positions,
                                hw_diagnostic **out_diagnostic);
 
 /**
- * Releases a mesh. NULL is a no-op; a mesh freed already is detected and refused (the last error
- * says so).
+ * Releases a mesh. NULL is a no-op; a mesh freed already is refused, the last error saying so
+ * (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `mesh` must be NULL or a mesh from this library not in use by another thread.
@@ -2294,8 +2324,8 @@ hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
                                                hw_render_buffers **out_buffers);
 
 /**
- * Releases render buffers (their views die with them). NULL is a no-op; freeing twice is
- * detected and refused.
+ * Releases render buffers (their views die with them). NULL is a no-op; a second free is
+ * refused (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `buffers` must be NULL or from this library, not in use by another thread.
@@ -2624,8 +2654,9 @@ hw_status hw_circ_visit(hw_circulator *circulator,
 hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_voronoi);
 
 /**
- * Releases a diagram. NULL is a no-op; a diagram freed already is detected and refused (the last
- * error says so). Clipped cells made from it (::hw_voronoi_cells) stay valid.
+ * Releases a diagram. NULL is a no-op; a diagram freed already is refused, the last error saying
+ * so (within the limits the ownership conventions at the top of the header state). Clipped
+ * cells made from it (::hw_voronoi_cells) stay valid.
  *
  * # Safety
  * `voronoi` must be NULL or a diagram from this library not in use by another thread.
@@ -2819,7 +2850,8 @@ hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
                                  hw_voronoi_cells **out_cells);
 
 /**
- * Releases clipped cells. NULL is a no-op; cells freed already are detected and refused.
+ * Releases clipped cells. NULL is a no-op; cells freed already are refused (within the limits
+ * the ownership conventions at the top of the header state).
  *
  * # Safety
  * `cells` must be NULL or cells from this library not in use by another thread.
@@ -3069,8 +3101,8 @@ hw_status hw_winged_from_mesh(const hw_mesh *mesh, hw_winged **out_winged);
 hw_status hw_winged_to_mesh(const hw_winged *winged, hw_mesh **out_mesh);
 
 /**
- * Releases a structure. NULL is a no-op; a structure freed already is detected and refused (the
- * last error says so).
+ * Releases a structure. NULL is a no-op; a structure freed already is refused, the last error
+ * saying so (within the limits the ownership conventions at the top of the header state).
  *
  * # Safety
  * `winged` must be NULL or a structure from this library not in use by another thread.

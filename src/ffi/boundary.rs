@@ -65,21 +65,24 @@ pub(crate) fn guard_void(body: impl FnOnce() -> Result<(), FfiError>) {
     guard(body);
 }
 
-/// Borrows a read-only argument.
+/// Borrows a read-only argument. NULL and misaligned pointers are refused, naming the argument.
 ///
 /// # Safety
-/// `ptr` must be NULL or valid for reads for the returned lifetime.
+/// `ptr` must be NULL, misaligned, or valid for reads for the returned lifetime.
 pub(crate) unsafe fn arg_ref<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, FfiError> {
-    // SAFETY: the caller promises validity when not NULL.
+    check_aligned(ptr, name)?;
+    // SAFETY: aligned (checked); the caller promises validity when not NULL.
     unsafe { ptr.as_ref() }.ok_or_else(|| FfiError::null_argument(name))
 }
 
-/// Borrows a mutable argument.
+/// Borrows a mutable argument. NULL and misaligned pointers are refused, naming the argument.
 ///
 /// # Safety
-/// `ptr` must be NULL or valid for reads and writes, unaliased, for the returned lifetime.
+/// `ptr` must be NULL, misaligned, or valid for reads and writes, unaliased, for the returned
+/// lifetime.
 pub(crate) unsafe fn arg_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, FfiError> {
-    // SAFETY: the caller promises validity and exclusivity when not NULL.
+    check_aligned(ptr, name)?;
+    // SAFETY: aligned (checked); the caller promises validity and exclusivity when not NULL.
     unsafe { ptr.as_mut() }.ok_or_else(|| FfiError::null_argument(name))
 }
 
@@ -389,5 +392,23 @@ mod tests {
         assert_eq!(status, HW_ERR_PANIC);
         let value = guard_value(7u32, || std::panic::panic_any(PanicsOnDrop));
         assert_eq!(value, 7);
+    }
+
+    #[test]
+    fn misaligned_borrowed_arguments_are_refused() {
+        // Before: `point_arg` (hw_mesh_add_vertex, hw_mesh_set_vertex_position, ...) read
+        // through a misaligned pointer, which Rust may not do.
+        let storage = [0u64; 4];
+        let misaligned = storage.as_ptr().cast::<u8>().wrapping_add(1).cast::<f64>();
+        let error = unsafe { point_arg(misaligned, "xyz") }.unwrap_err();
+        assert_eq!(error.status, HW_ERR_INVALID_INPUT);
+        assert_eq!(error.message, "argument `xyz` is misaligned");
+        let error = unsafe { arg_mut(misaligned.cast_mut(), "xyz") }.unwrap_err();
+        assert_eq!(error.message, "argument `xyz` is misaligned");
+        // NULL stays a NULL argument, and an aligned point is read.
+        let error = unsafe { point_arg(std::ptr::null(), "xyz") }.unwrap_err();
+        assert_eq!(error.status, HW_ERR_NULL_ARGUMENT);
+        let point = [1.0, 2.0, 3.0];
+        assert_eq!(unsafe { point_arg(point.as_ptr(), "xyz") }.unwrap(), point);
     }
 }

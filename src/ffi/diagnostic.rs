@@ -5,7 +5,7 @@ use crate::soup::{BuildError, Diagnostic, EdgeReport};
 use super::boundary::{
     Out, arg_ref, copy_text, give_view, guard, guard_value, guard_void, view_start,
 };
-use super::error::FfiError;
+use super::error::{FfiError, write_c_message};
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::status::*;
@@ -170,7 +170,8 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
     })
 }
 
-/// Releases a diagnostic. NULL is a no-op; freeing twice is detected and refused.
+/// Releases a diagnostic. NULL is a no-op; a second free is refused (within the limits the
+/// ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
@@ -276,9 +277,12 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
     })
 }
 
-/// A human-readable account (one line per non-empty list, with the first few indices), copied
-/// NUL-terminated into `buf`. `*needed` receives the size needed even when `buf` is too small
-/// (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`).
+/// A human-readable account, copied NUL-terminated into `buf`: one line per non-empty list, with
+/// its count and its first 8 elements
+/// (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an edge names its first 8
+/// faces the same way. `*needed` receives the size needed even when `buf` is too small (then
+/// `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`); it is never more than
+/// ::HW_MAX_MESSAGE_SIZE, whatever the input.
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
@@ -293,8 +297,10 @@ pub unsafe extern "C" fn hw_diagnostic_summary(
     guard(|| {
         // SAFETY: forwarded from the caller.
         let diagnostic = unsafe { arg_ref(diagnostic, "diagnostic") }?;
+        let mut text = String::new();
+        write_c_message(&mut text, &diagnostic.diagnostic.summary());
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&diagnostic.diagnostic.summary(), buf, len, needed) }
+        unsafe { copy_text(&text, buf, len, needed) }
     })
 }
 

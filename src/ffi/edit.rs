@@ -292,7 +292,8 @@ pub unsafe extern "C" fn hw_index_maps_view(
     }
 }
 
-/// Releases index maps. NULL is a no-op; freeing twice is detected and refused.
+/// Releases index maps. NULL is a no-op; a second free is refused (within the limits the
+/// ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `maps` must be NULL or maps from this library, not in use by another thread.

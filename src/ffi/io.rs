@@ -122,7 +122,8 @@ pub unsafe extern "C" fn hw_soup_view(
     })
 }
 
-/// Releases a soup. NULL is a no-op; freeing twice is detected and refused.
+/// Releases a soup. NULL is a no-op; a second free is refused (within the limits the ownership
+/// conventions at the top of the header state).
 ///
 /// # Safety
 /// `soup` must be NULL or a soup from this library, not in use by another thread.

@@ -128,8 +128,8 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
     }
 }
 
-/// Releases a mesh. NULL is a no-op; a mesh freed already is detected and refused (the last error
-/// says so).
+/// Releases a mesh. NULL is a no-op; a mesh freed already is refused, the last error saying so
+/// (within the limits the ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `mesh` must be NULL or a mesh from this library not in use by another thread.

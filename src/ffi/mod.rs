@@ -5,7 +5,7 @@
 //!   errors become an [`hw_status`] and a thread-local message;
 //! - outputs (`out_*`) are written only when the call returns `HW_OK`;
 //! - objects are created by `_new`/`_build`/`_from_*` and released by `_free`; `_free(NULL)` is a
-//!   no-op and freeing twice is detected and refused.
+//!   no-op and freeing twice is refused while the freed address is held back (see `handle.rs`).
 
 #![allow(non_camel_case_types)]
 
@@ -46,7 +46,8 @@ pub use diagnostic::*;
 pub use doctor::*;
 pub use edit::*;
 pub use elements::*;
-pub use error::hw_last_error_message;
+pub use error::{HW_MAX_MESSAGE_SIZE, hw_last_error_message};
+pub use handle::HW_FREED_ADDRESSES_KEPT;
 pub use io::*;
 pub use mesh::*;
 pub use navigation::*;

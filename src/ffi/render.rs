@@ -387,8 +387,8 @@ pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
     })
 }
 
-/// Releases render buffers (their views die with them). NULL is a no-op; freeing twice is
-/// detected and refused.
+/// Releases render buffers (their views die with them). NULL is a no-op; a second free is
+/// refused (within the limits the ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `buffers` must be NULL or from this library, not in use by another thread.

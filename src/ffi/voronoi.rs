@@ -114,8 +114,9 @@ pub unsafe extern "C" fn hw_voronoi_build(
     })
 }
 
-/// Releases a diagram. NULL is a no-op; a diagram freed already is detected and refused (the last
-/// error says so). Clipped cells made from it (::hw_voronoi_cells) stay valid.
+/// Releases a diagram. NULL is a no-op; a diagram freed already is refused, the last error saying
+/// so (within the limits the ownership conventions at the top of the header state). Clipped
+/// cells made from it (::hw_voronoi_cells) stay valid.
 ///
 /// # Safety
 /// `voronoi` must be NULL or a diagram from this library not in use by another thread.

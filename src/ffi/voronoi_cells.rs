@@ -117,7 +117,8 @@ pub unsafe extern "C" fn hw_voronoi_clip_convex(
     unsafe { clip_to(voronoi, || clip_polygon_arg(clip_xy, n_vertices), out_cells) }
 }
 
-/// Releases clipped cells. NULL is a no-op; cells freed already are detected and refused.
+/// Releases clipped cells. NULL is a no-op; cells freed already are refused (within the limits
+/// the ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `cells` must be NULL or cells from this library not in use by another thread.

@@ -305,8 +305,8 @@ pub unsafe extern "C" fn hw_winged_to_mesh(
     })
 }
 
-/// Releases a structure. NULL is a no-op; a structure freed already is detected and refused (the
-/// last error says so).
+/// Releases a structure. NULL is a no-op; a structure freed already is refused, the last error
+/// saying so (within the limits the ownership conventions at the top of the header state).
 ///
 /// # Safety
 /// `winged` must be NULL or a structure from this library not in use by another thread.

@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-/// How many indices of each list [`Diagnostic::summary`] prints before eliding the rest.
+/// How many elements of one list [`Diagnostic::summary`] names before it only counts the rest.
 const SUMMARY_SAMPLE: usize = 8;
 
 /// An undirected edge, given by its two input vertex indices (smaller first), and the input
@@ -149,10 +149,30 @@ impl Diagnostic {
     }
 
     /// A human-readable, multi-line account: one line per non-empty list, with its count and
-    /// the first few indices.
+    /// its first 8 elements (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an
+    /// edge names its first 8 faces the same way. Its size does not grow with the input: a few
+    /// kilobytes at most.
     pub fn summary(&self) -> String {
         self.to_string()
     }
+}
+
+/// Writes the first [`SUMMARY_SAMPLE`] of `items`, each after a space, then ` … and N more` when
+/// there are others: every list the summary shows goes through here, so its size stays bounded
+/// whatever the input (a million copies of one face put a million faces on each of its edges).
+fn write_sample<T>(
+    f: &mut fmt::Formatter<'_>,
+    items: &[T],
+    mut write_item: impl FnMut(&mut fmt::Formatter<'_>, &T) -> fmt::Result,
+) -> fmt::Result {
+    for item in items.iter().take(SUMMARY_SAMPLE) {
+        f.write_str(" ")?;
+        write_item(f, item)?;
+    }
+    if items.len() > SUMMARY_SAMPLE {
+        write!(f, " … and {} more", items.len() - SUMMARY_SAMPLE)?;
+    }
+    Ok(())
 }
 
 fn write_ids(f: &mut fmt::Formatter<'_>, label: &str, prefix: &str, ids: &[u32]) -> fmt::Result {
@@ -160,12 +180,7 @@ fn write_ids(f: &mut fmt::Formatter<'_>, label: &str, prefix: &str, ids: &[u32])
         return Ok(());
     }
     write!(f, "{} {label}:", ids.len())?;
-    for id in ids.iter().take(SUMMARY_SAMPLE) {
-        write!(f, " {prefix}{id}")?;
-    }
-    if ids.len() > SUMMARY_SAMPLE {
-        write!(f, " …")?;
-    }
+    write_sample(f, ids, |f, id| write!(f, "{prefix}{id}"))?;
     writeln!(f)
 }
 
@@ -174,16 +189,11 @@ fn write_edges(f: &mut fmt::Formatter<'_>, label: &str, edges: &[EdgeReport]) ->
         return Ok(());
     }
     write!(f, "{} {label}:", edges.len())?;
-    for edge in edges.iter().take(SUMMARY_SAMPLE) {
-        write!(f, " (v{}-v{} in faces", edge.vertices[0], edge.vertices[1])?;
-        for face in &edge.faces {
-            write!(f, " f{face}")?;
-        }
-        write!(f, ")")?;
-    }
-    if edges.len() > SUMMARY_SAMPLE {
-        write!(f, " …")?;
-    }
+    write_sample(f, edges, |f, edge| {
+        write!(f, "(v{}-v{} in faces", edge.vertices[0], edge.vertices[1])?;
+        write_sample(f, &edge.faces, |f, face| write!(f, "f{face}"))?;
+        write!(f, ")")
+    })?;
     writeln!(f)
 }
 
@@ -257,14 +267,50 @@ mod tests {
         };
         let text = diagnostic.summary();
         assert!(
-            text.contains("1 faces with fewer than 3 corners: f3"),
+            text.contains("1 faces with fewer than 3 corners: f3\n"),
             "{text}"
         );
         assert!(text.contains("(v1-v2 in faces f0 f4 f5)"), "{text}");
-        assert!(text.contains("20 isolated vertices: v0 v1"), "{text}");
-        assert!(text.contains('…'), "{text}");
+        assert!(
+            text.contains("20 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 12 more\n"),
+            "{text}"
+        );
         assert!(!diagnostic.is_clean());
         assert!(diagnostic.has_invalid_input());
         assert_eq!(Diagnostic::default().summary(), "no defects found\n");
+    }
+
+    #[test]
+    fn summary_names_reversed_faces() {
+        // Before: a diagnostic whose only finding was reversed faces summarised as "".
+        let diagnostic = Diagnostic {
+            reoriented_faces: vec![1, 4],
+            ..Diagnostic::default()
+        };
+        assert_eq!(diagnostic.summary(), "2 faces reversed by repair: f1 f4\n");
+    }
+
+    #[test]
+    fn faces_on_an_edge_are_counted_beyond_the_first_few() {
+        // A million copies of one triangle: each of its three edges is used by every copy.
+        // Before: the summary listed every face of every edge, 23.7 MB.
+        let faces: Vec<u32> = (0..1_000_000).collect();
+        let edges = [[0, 1], [1, 2], [0, 2]].map(|vertices| EdgeReport {
+            vertices,
+            faces: faces.clone(),
+        });
+        let diagnostic = Diagnostic {
+            non_manifold_edges: edges.to_vec(),
+            ..Diagnostic::default()
+        };
+        let text = diagnostic.summary();
+        assert!(text.len() < 1024, "{} bytes", text.len());
+        assert!(
+            text.starts_with(
+                "3 non-manifold edges (3+ faces): \
+                 (v0-v1 in faces f0 f1 f2 f3 f4 f5 f6 f7 … and 999992 more) (v1-v2 in faces"
+            ),
+            "{text}"
+        );
     }
 }
