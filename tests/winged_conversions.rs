@@ -1,22 +1,32 @@
-//! Conversions between the winged-edge and half-edge kernels on every manifold model of the
-//! shared data set: indexed → winged → half-edge → indexed reproduces the faces exactly, and
+//! Conversions between the winged-edge and half-edge kernels on the shared data set: both
+//! builders give the same structure (every array, every record) on every model that builds,
+//! under every policy; indexed → winged → half-edge → indexed reproduces the faces exactly; and
 //! half-edge → winged → half-edge reproduces the mesh array for array.
 
-use std::path::{Path, PathBuf};
+use std::fmt::Debug;
+use std::path::PathBuf;
 
 use halfwing::mesh::{self, Mesh};
 use halfwing::soup::{BuildPolicy, PolygonSoup};
 use halfwing::winged::{EdgeId, FaceId, VertexId, Winged, WingedError};
 
-/// The manifold models (built strictly, no non-manifold vertex) of closed/, open/ and
-/// polygonal/, positions and faces only.
-fn manifold_models() -> Vec<(PathBuf, PolygonSoup)> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/meshes");
+mod shared_data;
+
+/// The meshes of the shared data set under `dirs` that read, positions and faces only, in file
+/// name order. Fails when the data set is missing (see `shared_data`).
+fn models_in(dirs: &[&str]) -> Vec<(PathBuf, PolygonSoup)> {
+    let root = shared_data::root().join("meshes");
+    assert!(
+        root.is_dir(),
+        "test data not found at {} (set HALFWING_DATA)",
+        root.display()
+    );
     let mut models = Vec::new();
-    for dir in ["closed", "open", "polygonal"] {
+    for dir in dirs {
         let mut files: Vec<PathBuf> = std::fs::read_dir(root.join(dir))
-            .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
-            .unwrap_or_default();
+            .unwrap_or_else(|e| panic!("{}: {e}", root.join(dir).display()))
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .collect();
         files.sort();
         for path in files {
             let Ok(soup) = halfwing::io::read_path(&path) else {
@@ -27,17 +37,134 @@ fn manifold_models() -> Vec<(PathBuf, PolygonSoup)> {
                 corner_uvs: None,
                 ..soup
             };
-            let manifold = Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Strict)
-                .is_ok_and(|(_, d)| d.non_manifold_vertices.is_empty());
-            if manifold {
-                models.push((path, soup));
+            models.push((path, soup));
+        }
+    }
+    models
+}
+
+/// Every mesh of the shared data set that reads, broken ones included.
+fn every_model() -> Vec<(PathBuf, PolygonSoup)> {
+    models_in(&["closed", "open", "polygonal", "broken"])
+}
+
+/// The manifold models (built strictly, no non-manifold vertex) of closed/, open/ and
+/// polygonal/, positions and faces only.
+fn manifold_models() -> Vec<(PathBuf, PolygonSoup)> {
+    let models: Vec<_> = models_in(&["closed", "open", "polygonal"])
+        .into_iter()
+        .filter(|(_, soup)| {
+            Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Strict)
+                .is_ok_and(|(_, d)| d.non_manifold_vertices.is_empty())
+        })
+        .collect();
+    assert!(models.len() >= 30, "only {} manifold models", models.len());
+    models
+}
+
+const POLICIES: [BuildPolicy; 3] = [BuildPolicy::Strict, BuildPolicy::Skip, BuildPolicy::Repair];
+
+/// Panics naming the first index where two arrays of one structure differ.
+fn assert_same_array<T: PartialEq + Debug>(name: &str, found: &[T], expected: &[T], what: &str) {
+    if let Some(i) = (0..found.len().min(expected.len())).find(|&i| found[i] != expected[i]) {
+        panic!(
+            "{what}: {name}[{i}] is {:?}, expected {:?}",
+            found[i], expected[i]
+        );
+    }
+    assert_eq!(found.len(), expected.len(), "{what}: length of {name}");
+}
+
+/// Panics unless the two meshes are equal, naming the first differing array entry when they
+/// differ in one: the half-edge arrays, the stored half-edges, the positions, the corner
+/// attributes, then everything else (deletions, named attributes, flags).
+fn assert_same_mesh(found: &Mesh, expected: &Mesh, what: &str) {
+    let halfedge_arrays = [
+        ("origin", Mesh::halfedge_origins as fn(&Mesh) -> &[u32]),
+        ("next", Mesh::halfedge_nexts),
+        ("prev", Mesh::halfedge_prevs),
+        ("face", Mesh::halfedge_faces),
+        ("vertex_halfedge", Mesh::vertex_halfedges),
+        ("face_halfedge", Mesh::face_halfedges),
+    ];
+    for (name, array) in halfedge_arrays {
+        assert_same_array(name, array(found), array(expected), what);
+    }
+    assert_same_array("positions", found.positions(), expected.positions(), what);
+    assert_eq!(
+        found.corner_normals(),
+        expected.corner_normals(),
+        "{what}: corner normals"
+    );
+    assert_eq!(
+        found.corner_uvs(),
+        expected.corner_uvs(),
+        "{what}: corner uvs"
+    );
+    assert!(found == expected, "{what}: the meshes differ");
+}
+
+/// Panics unless the two structures are equal, naming the first differing record when they
+/// differ in one: edge records, stored vertex and face edges, positions, then everything else
+/// (live flags and counts, point faces).
+fn assert_same_winged(found: &Winged, expected: &Winged, what: &str) {
+    assert_same_array(
+        "edge records",
+        found.edge_records(),
+        expected.edge_records(),
+        what,
+    );
+    assert_same_array(
+        "vertex edges",
+        found.vertex_edges_stored(),
+        expected.vertex_edges_stored(),
+        what,
+    );
+    assert_same_array(
+        "face edges",
+        found.face_edges_stored(),
+        expected.face_edges_stored(),
+        what,
+    );
+    assert_same_array("positions", found.positions(), expected.positions(), what);
+    assert!(found == expected, "{what}: the structures differ");
+}
+
+/// Whatever mesh the builders make of a model (refused, skipped, repaired, non-manifold
+/// vertices kept or split), they make the same one: the winged build converted to a mesh is
+/// the half-edge build, every array of it, and the half-edge build converted to a winged
+/// structure is the winged build, every record of it; both refuse the same input with the same
+/// diagnostic.
+#[test]
+fn both_builders_give_the_same_structure_on_every_model() {
+    let mut compared = 0;
+    for (path, soup) in every_model() {
+        let list = soup.as_face_list();
+        for policy in POLICIES {
+            let what = format!("{} {policy:?}", path.display());
+            match (
+                Mesh::from_face_list(&list, policy),
+                Winged::from_face_list(&list, policy),
+            ) {
+                (Ok((mesh, mesh_diagnostic)), Ok((winged, winged_diagnostic))) => {
+                    assert_eq!(mesh_diagnostic, winged_diagnostic, "{what}");
+                    let converted = winged.to_mesh().unwrap_or_else(|e| panic!("{what}: {e}"));
+                    assert_same_mesh(&converted, &mesh, &what);
+                    assert_same_winged(&Winged::from_mesh(&mesh), &winged, &what);
+                    compared += 1;
+                }
+                (Err(mesh_error), Err(winged_error)) => {
+                    assert_eq!(mesh_error, winged_error, "{what}")
+                }
+                (mesh, winged) => panic!(
+                    "{what}: the half-edge build {}, the winged build {}",
+                    if mesh.is_ok() { "succeeds" } else { "fails" },
+                    if winged.is_ok() { "succeeds" } else { "fails" },
+                ),
             }
         }
     }
-    if root.exists() {
-        assert!(models.len() >= 30, "only {} manifold models", models.len());
-    }
-    models
+    assert!(compared >= 150, "only {compared} builds compared");
 }
 
 #[test]
@@ -123,15 +250,7 @@ fn point_faces_do_not_convert_and_deleted_elements_are_compacted() {
 /// edges, several boundary gaps at one vertex): the conversions stay exact there too.
 #[test]
 fn repaired_broken_models_convert_both_ways() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/meshes/broken");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(root)
-        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
-        .unwrap_or_default();
-    files.sort();
-    for path in files {
-        let Ok(soup) = halfwing::io::read_path(&path) else {
-            continue;
-        };
+    for (path, soup) in models_in(&["broken"]) {
         for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
             let Ok((mesh, _)) = Mesh::from_face_list(&soup.as_face_list(), policy) else {
                 continue;
@@ -192,6 +311,7 @@ mod random {
             let mesh = w.to_mesh().unwrap();
             let (built, _) = Mesh::from_face_list(&soup.as_face_list(), BuildPolicy::Skip).unwrap();
             prop_assert_eq!(mesh.to_soup(), built.to_soup());
+            prop_assert_eq!(&mesh, &built);
             let back = Winged::from_mesh(&mesh);
             prop_assert!(back.check().is_ok());
             prop_assert_eq!(back, w);

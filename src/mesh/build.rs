@@ -485,7 +485,9 @@ impl LoopWriter<'_, '_> {
 
     /// The corner of face `f` running `a → b` opened edge `e`: writes and gives its first
     /// half-edge (its twin stays a boundary half-edge until a second corner pairs with it),
-    /// which becomes `a`'s half-edge. Only opening corners set a vertex's half-edge, and that
+    /// which becomes `a`'s half-edge unless `a` has one already: a vertex keeps its first
+    /// corner's (the rule [`Winged::from_face_list`](crate::winged::Winged::from_face_list)
+    /// documents for both kernels). Only opening corners set a vertex's half-edge, and that
     /// is enough: the first face walked around a vertex opens the edge leaving it, whose other
     /// face comes later (setting it at every corner, the 1M-triangle torus built in 30.1-31.2
     /// against 29.3-30.3 ms, the 1M-quad torus in 42.3-47.8 against 41.5-43.6: cold, one
@@ -510,7 +512,10 @@ impl LoopWriter<'_, '_> {
                 .write(INVALID_INDEX);
         }
         // SAFETY: `a` is a vertex.
-        unsafe { *self.vertex_halfedge.get_unchecked_mut(a as usize) = h };
+        unsafe {
+            let first = self.vertex_halfedge.get_unchecked_mut(a as usize);
+            *first = (*first).min(h);
+        }
         h
     }
 

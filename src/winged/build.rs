@@ -33,10 +33,17 @@ impl Winged {
     /// corners first); an edge points the way its first face walks it, so that face is its left
     /// face (seed 003's `Cd`) and the second face its right face (`Ci`). A face stores the edge
     /// leaving its first corner, so its loop starts where the input's face started. A vertex
-    /// stores, by preference: an edge whose side leaving it is a hole (boundary vertices), else
-    /// the lowest-numbered edge starting at it, else the lowest-numbered edge ending at it.
+    /// stores, by preference: the lowest-numbered edge whose side leaving it is a hole (boundary
+    /// vertices, so that the ring starts at the gap), else the lowest-numbered edge starting at
+    /// it (the edge of its first corner in face order), else the lowest-numbered edge ending at
+    /// it (only after [`Winged::from_face_list_with_edge_order`] reverses edges).
     /// Unreferenced vertices are kept, without edges, and reported as isolated; vertices where
     /// several fans of faces touch are kept and reported as non-manifold.
+    ///
+    /// These rules are both kernels': [`Mesh::from_face_list`](crate::mesh::Mesh::from_face_list)
+    /// numbers edges, starts faces and chooses vertex half-edges the same way, so
+    /// [`Winged::to_mesh`] of this structure is the mesh it builds from the same list, array for
+    /// array, and [`Winged::from_mesh`] of that mesh is this structure, record for record.
     pub fn from_face_list(
         list: &FaceList<'_>,
         policy: BuildPolicy,

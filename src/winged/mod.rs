@@ -58,8 +58,9 @@
 //!
 //! [`Winged::from_mesh`] and [`Winged::to_mesh`] convert record for record, without a face
 //! list: edge `e` is mesh edge `e`, its left use half-edge `2e`, its right use half-edge
-//! `2e + 1`. Both builders number edges the same way, so building either kernel from a face
-//! list and converting gives the other kernel's own build.
+//! `2e + 1`. Both builders number edges and choose the stored edges of faces and vertices the
+//! same way (see [`Winged::from_face_list`]), so building either kernel from a face list and
+//! converting gives the other kernel's own build, every array of it.
 //!
 //! # Memory
 //!
