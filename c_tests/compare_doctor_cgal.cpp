@@ -3,6 +3,9 @@
 // - is_polygon_soup_a_polygon_mesh against the doctor's manifold and oriented verdicts;
 // - where CGAL can build the surface: connected_components, extract_boundary_cycles (count and
 //   lengths), and on closed triangle meshes is_outward_oriented and volume;
+// - on every triangle mesh CGAL can build, self_intersections (exact predicates): the very same
+//   face pairs from hw::self_intersections, and from the doctor, where CGAL's (f, f) for a
+//   degenerate face is among the zero-area faces;
 // - orient_polygon_soup's duplicated points against the doctor's non-manifold vertex fans, on the
 //   models whose only defect is non-manifold vertices.
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -11,9 +14,13 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -31,6 +38,47 @@ using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 using cgal_soup::Soup;
+using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
+using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
+using FacePair = std::array<uint32_t, 2>;
+
+// CGAL's self-intersecting face pairs of a triangle soup that is a polygon mesh, sorted, smaller
+// face first, without its (f, f) pairs; `degenerate` receives those pairs' faces.
+std::vector<FacePair> cgal_self_intersections(const Soup& soup, std::vector<uint32_t>& degenerate) {
+  std::vector<Exact::Point_3> points;
+  points.reserve(soup.points.size());
+  for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
+  ExactMesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  std::vector<std::pair<ExactMesh::Face_index, ExactMesh::Face_index>> found;
+  PMP::self_intersections(mesh, std::back_inserter(found));
+  std::vector<FacePair> pairs;
+  for (const auto& [f, g] : found) {
+    const auto a = static_cast<uint32_t>(f.idx()), b = static_cast<uint32_t>(g.idx());
+    if (a == b)
+      degenerate.push_back(a);
+    else
+      pairs.push_back({std::min(a, b), std::max(a, b)});
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::sort(degenerate.begin(), degenerate.end());
+  return pairs;
+}
+
+std::vector<FacePair> doctor_self_intersections(const hw::doctor_report& report) {
+  const auto found = report.finding(HW_DOCTOR_SELF_INTERSECTIONS);
+  std::vector<FacePair> pairs(found.n_items);
+  for (std::size_t i = 0; i < found.n_items; ++i)
+    pairs[i] = {found.ids[2 * i], found.ids[2 * i + 1]};
+  return pairs;
+}
+
+std::vector<uint32_t> ids_of(const hw::doctor_report& report, hw_diagnostic_list list) {
+  const uint32_t* ids = nullptr;
+  std::size_t n = 0;
+  hw::check(hw_diagnostic_ids(report.input_diagnostic(), list, &ids, &n));
+  return std::vector<uint32_t>(ids, ids + n);
+}
 
 std::vector<std::size_t> cgal_boundary_cycle_lengths(const SurfaceMesh& mesh) {
   std::vector<SurfaceMesh::Halfedge_index> cycles;
@@ -42,10 +90,7 @@ std::vector<std::size_t> cgal_boundary_cycle_lengths(const SurfaceMesh& mesh) {
 }
 
 std::size_t count_of(const hw::doctor_report& report, hw_diagnostic_list list) {
-  const uint32_t* ids = nullptr;
-  std::size_t n = 0;
-  hw::check(hw_diagnostic_ids(report.input_diagnostic(), list, &ids, &n));
-  return n;
+  return ids_of(report, list).size();
 }
 
 std::size_t edge_count_of(const hw::doctor_report& report, hw_diagnostic_edges list) {
@@ -54,7 +99,8 @@ std::size_t edge_count_of(const hw::doctor_report& report, hw_diagnostic_edges l
   return n;
 }
 
-std::size_t compared_builds = 0, compared_orientations = 0, compared_splits = 0;
+std::size_t compared_builds = 0, compared_orientations = 0, compared_splits = 0,
+            compared_intersections = 0, intersecting_models = 0;
 
 void compare(const std::filesystem::path& path) {
   models::Indexed m;
@@ -94,6 +140,27 @@ void compare(const std::filesystem::path& path) {
       CHECK(std::fabs(components[0].volume - volume) <= 1e-9 * std::fabs(volume));
       ++compared_orientations;
     }
+    if (triangles) {
+      std::vector<uint32_t> degenerate;
+      const std::vector<FacePair> cgal = cgal_self_intersections(soup, degenerate);
+      const std::vector<FacePair> ours = doctor_self_intersections(report);
+      CHECK(ours == cgal);
+      if (ours != cgal)
+        std::fprintf(stderr, "  %s: %zu intersecting pairs, CGAL %zu\n", m.name.c_str(),
+                     ours.size(), cgal.size());
+      // CGAL's degenerate faces are exactly collinear corners; the zero-area faces of the
+      // diagnostic include those.
+      const std::vector<uint32_t> zero_area = ids_of(report, HW_DIAG_DEGENERATE_FACES);
+      CHECK(std::includes(zero_area.begin(), zero_area.end(), degenerate.begin(),
+                          degenerate.end()));
+      // On their own, with the degenerate faces' (f, f) pairs as CGAL gives them.
+      std::vector<FacePair> with_degenerate = cgal;
+      for (uint32_t f : degenerate) with_degenerate.push_back({f, f});
+      std::sort(with_degenerate.begin(), with_degenerate.end());
+      CHECK(hw::self_intersections(m.positions, m.face_sizes, m.indices) == with_degenerate);
+      ++compared_intersections;
+      intersecting_models += !cgal.empty();
+    }
   }
 
   // Where the only edge defects are none, orient_polygon_soup duplicates one point per extra fan
@@ -128,8 +195,12 @@ int main() {
   for (const char* folder :
        {"meshes/closed", "meshes/open", "meshes/polygonal", "meshes/broken"})
     for (const auto& path : models::files(folder)) compare(path);
-  std::printf("compared: %zu builds, %zu orientations and volumes, %zu vertex splits\n",
-              compared_builds, compared_orientations, compared_splits);
+  std::printf(
+      "compared: %zu builds, %zu orientations and volumes, %zu vertex splits, %zu "
+      "self-intersection searches (%zu models intersect)\n",
+      compared_builds, compared_orientations, compared_splits, compared_intersections,
+      intersecting_models);
   CHECK(compared_builds > 40 && compared_orientations > 10 && compared_splits >= 2);
+  CHECK(compared_intersections > 30 && intersecting_models >= 2);
   return check_summary("compare_doctor_cgal");
 }

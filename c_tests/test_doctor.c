@@ -1,5 +1,6 @@
-/* The mesh doctor through the C API: a cube is a closed polyhedron; a bow tie, a duplicate face,
- * a copied vertex and a T-junction are each named with their elements; every call's bad
+/* The mesh doctor through the C API: a cube is a closed polyhedron; a bow tie, a duplicate face
+ * (which also overlaps its original), a copied vertex and a T-junction are each named with their
+ * elements; every call's bad
  * arguments are refused without writing outputs. */
 #include <math.h>
 #include <stdlib.h>
@@ -78,6 +79,15 @@ static void defects_are_named(void) {
   CHECK(n == 1 && per_item == 2 && ids[0] == 10 && ids[1] == 3);
   CHECK(hw_doctor_report_finding(report, HW_DOCTOR_DUPLICATE_FACES, &ids, &n, &per_item) == HW_OK);
   CHECK(n == 1 && ids[0] == 5 && ids[1] == 4);
+  /* A face on the same three vertices as another overlaps it entirely; the right square's
+   * three triangles touch the left square at the T-vertex 6, which is not a vertex of it. */
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_SELF_INTERSECTIONS, &ids, &n, &per_item) ==
+        HW_OK);
+  CHECK(n == 4 && per_item == 2);
+  CHECK(ids[0] == 0 && ids[1] == 1 && ids[2] == 0 && ids[3] == 2 && ids[4] == 0 && ids[5] == 3);
+  CHECK(ids[6] == 4 && ids[7] == 5);
+  CHECK(strcmp(hw_doctor_finding_name(HW_DOCTOR_SELF_INTERSECTIONS), "intersecting face pairs") ==
+        0);
   CHECK(hw_doctor_report_finding(report, HW_DOCTOR_NEEDLES, &ids, &n, &per_item) == HW_OK);
   CHECK(n == 0 && ids == NULL && per_item == 1);
   for (hw_doctor_finding kind = 0; kind < HW_DOCTOR_FINDING_COUNT; ++kind) {
@@ -175,8 +185,45 @@ static void bad_arguments_are_refused(void) {
   hw_doctor_report_free(NULL);
 }
 
+/* Self-intersections on their own: the broken faces above, then a degenerate triangle, which is
+ * reported as (f, f); a NaN corner and a bad index are refused with the face named. */
+static void self_intersections_alone(void) {
+  hw_face_pairs *pairs = NULL;
+  const uint32_t *ids = NULL;
+  size_t n = 0;
+  static const double flat[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0};
+  static const uint32_t flat_sizes[] = {3, 3};
+  static const uint32_t flat_indices[] = {0, 1, 2, 0, 1, 3};
+  double with_nan[12];
+  uint32_t out_of_range[6];
+  CHECK(hw_self_intersections_indexed(broken_positions, 11, broken_sizes, 6, broken_indices, 19,
+                                      &pairs) == HW_OK);
+  CHECK(hw_face_pairs_view(pairs, &ids, &n) == HW_OK && n == 4);
+  CHECK(ids[0] == 0 && ids[1] == 1 && ids[6] == 4 && ids[7] == 5);
+  hw_face_pairs_free(pairs);
+  CHECK(hw_self_intersections_indexed(flat, 4, flat_sizes, 2, flat_indices, 6, &pairs) == HW_OK);
+  CHECK(hw_face_pairs_view(pairs, &ids, &n) == HW_OK && n == 1 && ids[0] == 0 && ids[1] == 0);
+  hw_face_pairs_free(pairs);
+
+  memcpy(with_nan, flat, sizeof flat);
+  with_nan[10] = NAN;
+  pairs = NULL;
+  CHECK_STATUS(hw_self_intersections_indexed(with_nan, 4, flat_sizes, 2, flat_indices, 6, &pairs),
+               HW_ERR_INVALID_INPUT, "face 1");
+  CHECK(pairs == NULL);
+  memcpy(out_of_range, flat_indices, sizeof flat_indices);
+  out_of_range[5] = 9;
+  CHECK_STATUS(hw_self_intersections_indexed(flat, 4, flat_sizes, 2, out_of_range, 6, &pairs),
+               HW_ERR_INVALID_INPUT, "vertex 9");
+  CHECK_STATUS(hw_self_intersections_indexed(flat, 4, flat_sizes, 2, flat_indices, 6, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_pairs");
+  CHECK_STATUS(hw_face_pairs_view(NULL, &ids, &n), HW_ERR_NULL_ARGUMENT, "pairs");
+  hw_face_pairs_free(NULL);
+}
+
 int main(void) {
   a_cube_is_a_closed_polyhedron();
+  self_intersections_alone();
   defects_are_named();
   bad_arguments_are_refused();
   return check_summary("test_doctor");

@@ -122,6 +122,12 @@ typedef struct hw_diagnostic hw_diagnostic;
 typedef struct hw_doctor_report hw_doctor_report;
 
 /**
+ * Pairs of faces. Opaque; from hw_self_intersections_indexed(); read with hw_face_pairs_view();
+ * release with hw_face_pairs_free().
+ */
+typedef struct hw_face_pairs hw_face_pairs;
+
+/**
  * The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
  * hw_index_maps_view(), release with hw_index_maps_free().
  */
@@ -295,8 +301,8 @@ typedef uint32_t hw_doctor_finding;
 /**
  * The surface's verdicts. `manifold`: no non-manifold edge or vertex and no malformed face;
  * `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
- * `closed_polyhedron`: all three, finite coordinates, and every component enclosing a
- * positive volume (self-intersections are not examined yet).
+ * `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
+ * volume, no self-intersection and no zero-area face.
  */
 typedef struct {
   bool manifold;
@@ -639,6 +645,8 @@ typedef struct {
   hw_wcirculator_kind kind;
 } hw_wcirculator;
 
+
+
 /**
  * `double`.
  */
@@ -812,9 +820,16 @@ typedef struct {
 #define HW_DOCTOR_T_VERTICES 10
 
 /**
+ * Pairs of faces that intersect other than along the vertices and edges they share, decided
+ * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
+ * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+ */
+#define HW_DOCTOR_SELF_INTERSECTIONS 11
+
+/**
  * The number of finding kinds (one past the last).
  */
-#define HW_DOCTOR_FINDING_COUNT 11
+#define HW_DOCTOR_FINDING_COUNT 12
 
 /**
  * Vertices.
@@ -1576,7 +1591,8 @@ hw_doctor_options hw_doctor_options_default(void);
  * Examines an indexed face list (same arrays as hw_mesh_from_indexed()) with `options` (NULL
  * for the defaults). Malformed faces and non-finite coordinates are findings, not errors;
  * `HW_ERR_INVALID_INPUT` means an option is out of range or the list as a whole is malformed
- * (sizes not adding up to `n_indices`). On success `*out_report` receives a report to release
+ * (sizes not adding up to `n_indices`), or its triangulation is too large for 32-bit indices.
+ * On success `*out_report` receives a report to release
  * with hw_doctor_report_free(). The input is never changed.
  *
  * # Safety
@@ -1739,6 +1755,53 @@ hw_status hw_doctor_report_json(const hw_doctor_report *report,
                                 char *buf,
                                 size_t len,
                                 size_t *needed);
+
+/**
+ * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that
+ * intersect other than along the vertices and edges they share (by vertex index), with the
+ * semantics of CGAL's `Polygon_mesh_processing::self_intersections`: faces sharing no vertex
+ * that touch anywhere, faces sharing one vertex that meet elsewhere, faces sharing an edge that
+ * overlap beyond it (coplanar, third corners on the same side). A face whose triangle has
+ * exactly collinear corners is degenerate: it is reported once as the pair (f, f) and not
+ * tested against the others. Polygons are tested as the triangles hw_render_buffers_build()
+ * gives them; the triangles of one face are not tested against each other.
+ *
+ * Every decision is exact, at any magnitude of finite coordinates. O(n log n + k) for n
+ * triangles and k pairs of overlapping bounding boxes; on hw_set_thread_count() threads. On
+ * success `*out_pairs` receives the pairs, sorted, smaller face first; release them with
+ * hw_face_pairs_free(). `HW_ERR_INVALID_INPUT`: the sizes do not add up to `n_indices`, an
+ * index is out of range, or a corner of a face has a NaN or infinite coordinate (the
+ * message names the face and the vertex).
+ *
+ * # Safety
+ * As for hw_mesh_from_indexed(); `out_pairs` writable.
+ */
+hw_status hw_self_intersections_indexed(const double *positions,
+                                        size_t n_vertices,
+                                        const uint32_t *face_sizes,
+                                        size_t n_faces,
+                                        const uint32_t *indices,
+                                        size_t n_indices,
+                                        hw_face_pairs **out_pairs);
+
+/**
+ * A zero-copy view of the pairs: `*out_ids` holds `2 * *out_n_pairs` face ids (NULL when there
+ * are none), valid as long as `pairs`.
+ *
+ * # Safety
+ * `pairs` must be NULL or live; `out_ids` and `out_n_pairs` writable.
+ */
+hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
+                             const uint32_t **out_ids,
+                             size_t *out_n_pairs);
+
+/**
+ * Releases face pairs. NULL is a no-op; freeing twice is detected and refused.
+ *
+ * # Safety
+ * `pairs` must be NULL or from this library, not in use by another thread.
+ */
+void hw_face_pairs_free(hw_face_pairs *pairs);
 
 /**
  * Adds an isolated vertex at `xyz[0..3]` (finite) and gives its id in `*out_vertex`.

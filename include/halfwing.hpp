@@ -304,6 +304,26 @@ class doctor_report {
   detail::owned<hw_doctor_report, hw_doctor_report_free> raw_;
 };
 
+/// The pairs of faces of an indexed face list that intersect other than along the vertices and
+/// edges they share, sorted, smaller face first; (f, f) for a degenerate face f (see
+/// hw_self_intersections_indexed()).
+inline std::vector<std::array<uint32_t, 2>> self_intersections(
+    const std::vector<double>& positions, const std::vector<uint32_t>& face_sizes,
+    const std::vector<uint32_t>& indices) {
+  if (positions.size() % 3 != 0)
+    throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+  hw_face_pairs* raw = nullptr;
+  check(hw_self_intersections_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
+                                      face_sizes.size(), indices.data(), indices.size(), &raw));
+  const detail::owned<hw_face_pairs, hw_face_pairs_free> pairs(raw);
+  const uint32_t* ids = nullptr;
+  std::size_t n = 0;
+  check(hw_face_pairs_view(pairs.get(), &ids, &n));
+  std::vector<std::array<uint32_t, 2>> found(n);
+  for (std::size_t i = 0; i < n; ++i) found[i] = {ids[2 * i], ids[2 * i + 1]};
+  return found;
+}
+
 class winged;
 class voronoi;
 class voronoi_cells;

@@ -58,6 +58,7 @@ fn counts(r: &DoctorReport) -> Vec<usize> {
         r.near_duplicate_vertices.len(),
         r.duplicate_faces.len(),
         r.t_vertices.len(),
+        r.self_intersections.len(),
     ]
 }
 
@@ -336,6 +337,91 @@ fn findings_do_not_depend_on_numbering_and_a_clean_report_builds_strictly() {
     }
 }
 
+/// Two cubes, the second shifted by `offset` and scaled by `scale` about its centre.
+fn two_cubes(offset: [f64; 3], scale: f64) -> (Vec<[f64; 3]>, Vec<u32>, Vec<u32>) {
+    let (mut positions, mut sizes, mut indices) = cube();
+    let n = positions.len() as u32;
+    let shifted: Vec<[f64; 3]> = positions
+        .iter()
+        .map(|p| [0, 1, 2].map(|k| p[k] * scale + offset[k]))
+        .collect();
+    positions.extend(shifted);
+    let second: Vec<u32> = indices.iter().map(|&v| v + n).collect();
+    indices.extend(second);
+    sizes.extend(vec![4; 6]);
+    (positions, sizes, indices)
+}
+
+#[test]
+fn overlapping_closed_surfaces_intersect_and_are_no_closed_polyhedron() {
+    // Apart: no intersection, a closed polyhedron of two components.
+    let (positions, sizes, indices) = two_cubes([5.0, 0.0, 0.0], 1.0);
+    let r = report(&positions, &sizes, &indices);
+    assert!(r.self_intersections.is_empty(), "{r}");
+    assert_eq!(r.not_a_closed_polyhedron(), None, "{r}");
+
+    // The second cube, [0, 2] x [-0.7, 1.3] x [-0.8, 1.2], crosses the first's faces z = 1 (1),
+    // y = 1 (3) and x = 1 (5); each of them meets the second's faces on the two planes x = 0
+    // (10), y = -0.7 (8), z = -0.8 (6) that cross it inside both squares.
+    let (positions, sizes, indices) = two_cubes([1.0, 0.3, 0.2], 1.0);
+    let r = report(&positions, &sizes, &indices);
+    assert_eq!(
+        r.self_intersections,
+        vec![[1, 8], [1, 10], [3, 6], [3, 10], [5, 6], [5, 8]],
+        "{r}"
+    );
+    assert_eq!(r.not_a_closed_polyhedron(), Some("faces intersect each other"));
+    assert!(r.to_string().contains("intersecting face pairs: f"), "{r}");
+    assert!(r.to_json().contains("\"self_intersections\":[["), "{}", r.to_json());
+
+    // One cube inside the other: nothing crosses, although the union is no solid.
+    let (positions, sizes, indices) = two_cubes([0.0; 3], 0.5);
+    assert!(report(&positions, &sizes, &indices).self_intersections.is_empty());
+
+    // Faces sharing an edge meet only there; folded onto each other they overlap.
+    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.5, -0.5, 0.0]];
+    assert!(triangles(&positions, &[0, 1, 2, 1, 0, 3]).self_intersections.is_empty());
+    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.2, 0.2, 0.0]];
+    assert_eq!(
+        triangles(&positions, &[0, 1, 2, 1, 0, 3]).self_intersections,
+        vec![[0, 1]]
+    );
+}
+
+#[test]
+fn self_intersections_are_exact_at_extreme_magnitudes() {
+    // A triangle pierced by another at 1e-300 and at 1e+300 scale, and a near miss 1 ulp away.
+    for scale in [1e-300, 1.0, 1e300] {
+        let positions: Vec<[f64; 3]> = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.25, 0.25, -1.0],
+            [0.25, 0.25, 1.0],
+            [0.3, 0.5, 1.0],
+        ]
+        .iter()
+        .map(|p| p.map(|x| x * scale))
+        .collect();
+        let r = triangles(&positions, &[0, 1, 2, 3, 4, 5]);
+        assert_eq!(r.self_intersections, vec![[0, 1]], "scale {scale}");
+        // Lift the second triangle just above the plane: it touches nothing.
+        let lifted: Vec<[f64; 3]> = positions
+            .iter()
+            .enumerate()
+            .map(|(v, p)| {
+                if v >= 3 {
+                    [p[0], p[1], f64::from_bits(1) + if v == 3 { 0.0 } else { p[2] }]
+                } else {
+                    *p
+                }
+            })
+            .collect();
+        let r = triangles(&lifted, &[0, 1, 2, 3, 4, 5]);
+        assert!(r.self_intersections.is_empty(), "scale {scale}: {r}");
+    }
+}
+
 /// On every shared model: the duplicate positions the data manifest measured; and on those
 /// without non-manifold vertices (where components joined through edges and through vertices
 /// are the same) its boundary edges, components and Euler characteristic.
@@ -390,6 +476,9 @@ fn real_models_match_the_manifest() {
                     .iter()
                     .all(|c| c.volume.is_some_and(|v| v != 0.0))
             );
+        }
+        if relative.contains("intersect") {
+            assert!(!r.self_intersections.is_empty(), "{path}");
         }
         checked += 1;
     }

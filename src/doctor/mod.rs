@@ -16,6 +16,8 @@
 mod boundary;
 mod components;
 mod duplicates;
+mod finding;
+mod intersections;
 mod measure;
 mod point_tree;
 mod shape;
@@ -24,10 +26,12 @@ mod text;
 pub use boundary::{BoundaryLoop, VertexFans};
 pub use components::Component;
 pub use duplicates::TVertex;
+pub use finding::{Finding, Highlight};
 pub use shape::FoldedEdge;
 
 use std::ffi::CStr;
 
+use crate::geom::SelfIntersectionError;
 use crate::mesh::Mesh;
 use crate::soup::{Diagnostic, FaceList, Inspection, inspect};
 
@@ -83,6 +87,10 @@ pub enum DoctorError {
     /// The face list as a whole is malformed: nothing else can be examined.
     #[error("malformed face list:\n{0}")]
     MalformedList(Box<Diagnostic>),
+    /// The faces cannot be searched for self-intersections (their triangulation is too large
+    /// for 32-bit indices).
+    #[error("self-intersections: {0}")]
+    SelfIntersections(#[from] SelfIntersectionError),
 }
 
 /// Everything the doctor found (see the [module docs](self)).
@@ -123,6 +131,12 @@ pub struct DoctorReport {
     pub duplicate_faces: Vec<[u32; 2]>,
     /// Vertices lying inside a boundary edge they are not an end of.
     pub t_vertices: Vec<TVertex>,
+    /// Pairs `[f, g]`, `f < g`, sorted, of faces that intersect other than along the vertices
+    /// and edges they share, decided exactly (see [`crate::geom::face_self_intersections`] for
+    /// the rules: polygons are tested as their triangles, touching counts). Triangles whose
+    /// corners are exactly collinear (their faces are among the diagnostic's zero-area faces)
+    /// and faces on non-finite vertices are not tested.
+    pub self_intersections: Vec<[u32; 2]>,
 }
 
 impl DoctorReport {
@@ -148,8 +162,8 @@ impl DoctorReport {
     }
 
     /// `None` when the surface is a closed polyhedron — closed, manifold, consistently oriented,
-    /// every component enclosing a positive volume, with finite coordinates; else the first
-    /// reason it is not, in that order. (Self-intersections are not examined yet.)
+    /// every component enclosing a positive volume, no self-intersection, with finite
+    /// coordinates and no zero-area face; else the first reason it is not, in that order.
     pub fn not_a_closed_polyhedron(&self) -> Option<&'static str> {
         self.closed_polyhedron_fault()
             .map(|reason| reason.to_str().unwrap_or("not a closed polyhedron"))
@@ -176,6 +190,12 @@ impl DoctorReport {
         if self.components.iter().any(|c| c.outward != Some(true)) {
             return Some(c"a component faces inward or encloses no volume");
         }
+        if !self.self_intersections.is_empty() {
+            return Some(c"faces intersect each other");
+        }
+        if !d.degenerate_faces.is_empty() {
+            return Some(c"some faces have no area");
+        }
         None
     }
 }
@@ -185,7 +205,7 @@ impl DoctorReport {
 pub fn examine(list: &FaceList<'_>, options: &DoctorOptions) -> Result<DoctorReport, DoctorError> {
     check_options(options)?;
     let inspection = inspect(list).map_err(DoctorError::MalformedList)?;
-    Ok(examine_inspected(&inspection, list.positions, options))
+    examine_inspected(&inspection, list.positions, options)
 }
 
 impl Mesh {
@@ -241,7 +261,7 @@ fn examine_inspected(
     inspection: &Inspection<'_>,
     positions: &[[f64; 3]],
     options: &DoctorOptions,
-) -> DoctorReport {
+) -> Result<DoctorReport, DoctorError> {
     let diagnostic = inspection.diagnostic.clone();
     let surface = &inspection.well_formed;
     let pairing = &inspection.pairing;
@@ -263,7 +283,8 @@ fn examine_inspected(
     let tolerance =
         duplicates::absolute_tolerance(&inspection.table, positions, options.relative_tolerance);
     let near = duplicates::coincident_vertices(&inspection.table, positions, tolerance);
-    DoctorReport {
+    let self_intersections = intersections::self_intersections(surface, positions)?;
+    Ok(DoctorReport {
         non_manifold_vertex_fans,
         small_components,
         non_orientable_witness: topology.non_orientable_witness,
@@ -277,7 +298,8 @@ fn examine_inspected(
         near_duplicate_vertices: near.within_tolerance,
         duplicate_faces: duplicates::duplicate_faces(surface),
         t_vertices: duplicates::t_vertices(surface, pairing, positions, tolerance),
+        self_intersections,
         boundary_loops: boundary_loops.into_iter().map(|(found, _)| found).collect(),
         diagnostic,
-    }
+    })
 }

@@ -3,7 +3,7 @@
 
 use std::fmt::{self, Write};
 
-use super::DoctorReport;
+use super::{DoctorReport, Finding};
 
 /// How many elements of a finding the text names before counting the rest.
 const SHOWN: usize = 8;
@@ -66,7 +66,7 @@ impl fmt::Display for DoctorReport {
         };
         counted(
             f,
-            "small components",
+            Finding::SmallComponents.name(),
             self.small_components
                 .iter()
                 .map(|c| format!("#{c}"))
@@ -74,38 +74,46 @@ impl fmt::Display for DoctorReport {
         )?;
         counted(
             f,
-            "faces on a path that flips orientation",
+            Finding::NonOrientableWitness.name(),
             faces(&self.non_orientable_witness),
         )?;
-        counted(f, "zero-length edges", edges(&self.zero_length_edges))?;
-        counted(f, "needles", faces(&self.needles))?;
-        counted(f, "caps", faces(&self.caps))?;
+        counted(f, Finding::ZeroLengthEdges.name(), edges(&self.zero_length_edges))?;
+        counted(f, Finding::Needles.name(), faces(&self.needles))?;
+        counted(f, Finding::Caps.name(), faces(&self.caps))?;
         counted(
             f,
-            "folded edges",
+            Finding::FoldedEdges.name(),
             self.folded_edges
                 .iter()
                 .map(|e| format!("v{}-v{}", e.vertices[0], e.vertices[1]))
                 .collect(),
         )?;
-        counted(f, "long edges", edges(&self.long_edges))?;
+        counted(f, Finding::LongEdges.name(), edges(&self.long_edges))?;
         counted(
             f,
-            "duplicate positions",
+            Finding::DuplicatePositions.name(),
             pairs(&self.duplicate_positions, "v"),
         )?;
         counted(
             f,
-            "near-duplicate vertices",
+            Finding::NearDuplicateVertices.name(),
             pairs(&self.near_duplicate_vertices, "v"),
         )?;
-        counted(f, "duplicate faces", pairs(&self.duplicate_faces, "f"))?;
+        counted(f, Finding::DuplicateFaces.name(), pairs(&self.duplicate_faces, "f"))?;
         counted(
             f,
-            "T-vertices",
+            Finding::TVertices.name(),
             self.t_vertices
                 .iter()
                 .map(|t| format!("v{} on v{}-v{}", t.vertex, t.edge[0], t.edge[1]))
+                .collect(),
+        )?;
+        counted(
+            f,
+            Finding::SelfIntersections.name(),
+            self.self_intersections
+                .iter()
+                .map(|[a, b]| format!("f{a}×f{b}"))
                 .collect(),
         )
     }
@@ -159,6 +167,7 @@ impl DoctorReport {
             ("duplicate_positions", &self.duplicate_positions),
             ("near_duplicate_vertices", &self.near_duplicate_vertices),
             ("duplicate_faces", &self.duplicate_faces),
+            ("self_intersections", &self.self_intersections),
         ];
         for (key, list) in pairs {
             let _ = write!(out, ",\"{key}\":{}", json_list(list.iter().map(pair)));

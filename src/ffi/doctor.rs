@@ -1,6 +1,6 @@
 //! `hw_doctor_report`: the mesh doctor's findings on a face list or a mesh.
 
-use crate::doctor::{DoctorOptions, DoctorReport, examine};
+use crate::doctor::{DoctorOptions, DoctorReport, Finding, examine};
 
 use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, view_start};
 use super::diagnostic::hw_diagnostic;
@@ -95,7 +95,8 @@ fn doctor_error(error: crate::doctor::DoctorError) -> FfiError {
 /// Examines an indexed face list (same arrays as hw_mesh_from_indexed()) with `options` (NULL
 /// for the defaults). Malformed faces and non-finite coordinates are findings, not errors;
 /// `HW_ERR_INVALID_INPUT` means an option is out of range or the list as a whole is malformed
-/// (sizes not adding up to `n_indices`). On success `*out_report` receives a report to release
+/// (sizes not adding up to `n_indices`), or its triangulation is too large for 32-bit indices.
+/// On success `*out_report` receives a report to release
 /// with hw_doctor_report_free(). The input is never changed.
 ///
 /// # Safety
@@ -207,79 +208,24 @@ pub const HW_DOCTOR_DUPLICATE_FACES: hw_doctor_finding = 9;
 /// Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
 /// the edge's two ends, smaller first, and the edge's face).
 pub const HW_DOCTOR_T_VERTICES: hw_doctor_finding = 10;
+/// Pairs of faces that intersect other than along the vertices and edges they share, decided
+/// exactly (polygons as their triangles; touching counts; triangles with exactly collinear
+/// corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+pub const HW_DOCTOR_SELF_INTERSECTIONS: hw_doctor_finding = 11;
 /// The number of finding kinds (one past the last).
-pub const HW_DOCTOR_FINDING_COUNT: hw_doctor_finding = 11;
+pub const HW_DOCTOR_FINDING_COUNT: hw_doctor_finding = 12;
 
-/// The finding's elements as one flat array, its ids per item, and its name.
-fn finding(
-    report: &DoctorReport,
-    kind: hw_doctor_finding,
-) -> Result<(&[u32], usize, &'static str), FfiError> {
-    let r = report;
-    Ok(match kind {
-        HW_DOCTOR_SMALL_COMPONENTS => (&r.small_components, 1, "small components"),
-        HW_DOCTOR_NON_ORIENTABLE_WITNESS => (
-            &r.non_orientable_witness,
-            1,
-            "faces on a path that flips orientation",
-        ),
-        HW_DOCTOR_ZERO_LENGTH_EDGES => (r.zero_length_edges.as_flattened(), 2, "zero-length edges"),
-        HW_DOCTOR_NEEDLES => (&r.needles, 1, "needles"),
-        HW_DOCTOR_CAPS => (&r.caps, 1, "caps"),
-        HW_DOCTOR_FOLDED_EDGES => (flat_folded(r), 4, "folded edges"),
-        HW_DOCTOR_LONG_EDGES => (r.long_edges.as_flattened(), 2, "long edges"),
-        HW_DOCTOR_DUPLICATE_POSITIONS => (
-            r.duplicate_positions.as_flattened(),
-            2,
-            "duplicate positions",
-        ),
-        HW_DOCTOR_NEAR_DUPLICATE_VERTICES => (
-            r.near_duplicate_vertices.as_flattened(),
-            2,
-            "near-duplicate vertices",
-        ),
-        HW_DOCTOR_DUPLICATE_FACES => (r.duplicate_faces.as_flattened(), 2, "duplicate faces"),
-        HW_DOCTOR_T_VERTICES => (flat_t_vertices(r), 4, "T-vertices"),
-        other => {
-            return Err(FfiError::invalid_input(format!(
-                "unknown doctor finding {other}"
-            )));
-        }
-    })
-}
-
-fn flat_folded(report: &DoctorReport) -> &[u32] {
-    let edges = &report.folded_edges;
-    // SAFETY: `FoldedEdge` is `repr(C)`, four `u32` and no padding.
-    unsafe { std::slice::from_raw_parts(edges.as_ptr().cast::<u32>(), 4 * edges.len()) }
-}
-
-fn flat_t_vertices(report: &DoctorReport) -> &[u32] {
-    let found = &report.t_vertices;
-    // SAFETY: `TVertex` is `repr(C)`, four `u32` and no padding.
-    unsafe { std::slice::from_raw_parts(found.as_ptr().cast::<u32>(), 4 * found.len()) }
+/// The kind numbered `kind`.
+pub(super) fn finding_kind(kind: hw_doctor_finding) -> Result<Finding, FfiError> {
+    Finding::from_index(kind)
+        .ok_or_else(|| FfiError::invalid_input(format!("unknown doctor finding {kind}")))
 }
 
 /// The name of a finding kind ("needles", "T-vertices", …) as static text; NULL for an unknown
 /// kind.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_doctor_finding_name(kind: hw_doctor_finding) -> *const std::ffi::c_char {
-    const NAMES: [&std::ffi::CStr; HW_DOCTOR_FINDING_COUNT as usize] = [
-        c"small components",
-        c"faces on a path that flips orientation",
-        c"zero-length edges",
-        c"needles",
-        c"caps",
-        c"folded edges",
-        c"long edges",
-        c"duplicate positions",
-        c"near-duplicate vertices",
-        c"duplicate faces",
-        c"T-vertices",
-    ];
-    NAMES
-        .get(kind as usize)
-        .map_or(std::ptr::null(), |name| name.as_ptr())
+    Finding::from_index(kind).map_or(std::ptr::null(), |kind| kind.c_name().as_ptr())
 }
 
 /// A zero-copy view of one finding: `*out_ids` holds `*out_n_items` items of
@@ -302,7 +248,7 @@ pub unsafe extern "C" fn hw_doctor_report_finding(
         let out_ids_per_item = Out::new(out_ids_per_item, "out_ids_per_item")?;
         // SAFETY: forwarded from the caller.
         let report = &unsafe { arg_ref(report, "report") }?.report;
-        let (ids, per_item, _) = finding(report, kind)?;
+        let (ids, per_item) = report.finding(finding_kind(kind)?);
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe {
             out_ids.write(view_start(ids));
@@ -315,8 +261,8 @@ pub unsafe extern "C" fn hw_doctor_report_finding(
 
 /// The surface's verdicts. `manifold`: no non-manifold edge or vertex and no malformed face;
 /// `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
-/// `closed_polyhedron`: all three, finite coordinates, and every component enclosing a
-/// positive volume (self-intersections are not examined yet).
+/// `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
+/// volume, no self-intersection and no zero-area face.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct hw_doctor_verdict {
@@ -623,15 +569,30 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_finding_kind_has_its_name_and_list() {
-        let report = DoctorReport::default();
-        for kind in 0..HW_DOCTOR_FINDING_COUNT {
-            let (ids, per_item, name) = finding(&report, kind).unwrap();
-            assert!(ids.is_empty() && per_item >= 1);
-            let c_name = unsafe { std::ffi::CStr::from_ptr(hw_doctor_finding_name(kind)) };
-            assert_eq!(c_name.to_str().unwrap(), name);
+    fn the_c_kinds_number_the_rust_kinds_in_order() {
+        let numbered = [
+            (HW_DOCTOR_SMALL_COMPONENTS, Finding::SmallComponents),
+            (HW_DOCTOR_NON_ORIENTABLE_WITNESS, Finding::NonOrientableWitness),
+            (HW_DOCTOR_ZERO_LENGTH_EDGES, Finding::ZeroLengthEdges),
+            (HW_DOCTOR_NEEDLES, Finding::Needles),
+            (HW_DOCTOR_CAPS, Finding::Caps),
+            (HW_DOCTOR_FOLDED_EDGES, Finding::FoldedEdges),
+            (HW_DOCTOR_LONG_EDGES, Finding::LongEdges),
+            (HW_DOCTOR_DUPLICATE_POSITIONS, Finding::DuplicatePositions),
+            (HW_DOCTOR_NEAR_DUPLICATE_VERTICES, Finding::NearDuplicateVertices),
+            (HW_DOCTOR_DUPLICATE_FACES, Finding::DuplicateFaces),
+            (HW_DOCTOR_T_VERTICES, Finding::TVertices),
+            (HW_DOCTOR_SELF_INTERSECTIONS, Finding::SelfIntersections),
+        ];
+        assert_eq!(numbered.len(), HW_DOCTOR_FINDING_COUNT as usize);
+        assert_eq!(Finding::ALL.len(), HW_DOCTOR_FINDING_COUNT as usize);
+        for (c, kind) in numbered {
+            assert_eq!(finding_kind(c).ok(), Some(kind));
+            // SAFETY: a known kind's name is static text.
+            let c_name = unsafe { std::ffi::CStr::from_ptr(hw_doctor_finding_name(c)) };
+            assert_eq!(c_name.to_str(), Ok(kind.name()));
         }
-        assert!(finding(&report, HW_DOCTOR_FINDING_COUNT).is_err());
+        assert!(finding_kind(HW_DOCTOR_FINDING_COUNT).is_err());
         assert!(hw_doctor_finding_name(HW_DOCTOR_FINDING_COUNT).is_null());
     }
 }

@@ -14,6 +14,7 @@ pub(crate) mod boundary;
 pub mod circulator;
 pub mod diagnostic;
 pub mod doctor;
+pub mod self_intersections;
 pub mod edit;
 pub mod elements;
 pub(crate) mod error;

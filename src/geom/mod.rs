@@ -7,10 +7,20 @@ pub(crate) use newell::{
 };
 mod normals;
 pub(crate) use normals::normalized;
+mod box_tree;
+mod exact_orientation;
+mod parallel;
+mod plane_side;
+mod self_intersections;
+mod triangle_intersection;
+mod wide_integer;
 
 pub use newell::{
     is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle, newell_vector,
     quad_area_vector, triangle_area_vector,
+};
+pub use self_intersections::{
+    SelfIntersectionError, face_self_intersections, self_intersections,
 };
 pub use normals::{
     VertexNormalWeighting, corner_angle, corner_normals, face_and_vertex_normals, face_area_vector,
