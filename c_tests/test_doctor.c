@@ -221,8 +221,66 @@ static void self_intersections_alone(void) {
   hw_face_pairs_free(NULL);
 }
 
+/* Findings drawn over the broken faces: the intersecting pairs fill their 5 faces; the
+ * T-vertex is a point on its edge; the duplicate position a point with an edge to its
+ * original; a report of another list is refused. */
+static void findings_are_drawable(void) {
+  hw_doctor_report *report = NULL;
+  hw_render_buffers *buffers = NULL;
+  const float *floats = NULL;
+  const uint32_t *ids = NULL;
+  size_t n = 0;
+  float low[3], high[3];
+  CHECK(hw_doctor_examine_indexed(broken_positions, 11, broken_sizes, 6, broken_indices, 19,
+                                  NULL, &report) == HW_OK);
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_SELF_INTERSECTIONS, broken_positions,
+                                       11, broken_sizes, 6, broken_indices, 19,
+                                       &buffers) == HW_OK);
+  /* Faces 0 (a square: 4 corners, 2 triangles) and 1, 2, 3, 4, 5 (triangles). */
+  CHECK(hw_render_buffers_n_vertices(buffers) == 4 + 5 * 3);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLE_FACES, &ids, &n) == HW_OK);
+  CHECK(n == 7 && ids[0] == 0 && ids[1] == 0 && ids[2] == 1 && ids[6] == 5);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 0);
+  CHECK(hw_render_buffers_bounds(buffers, low, high) == HW_OK);
+  CHECK(low[0] == -1 && low[1] == -1 && high[0] == 2 && high[1] == 1);
+  hw_render_buffers_free(buffers);
+
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_T_VERTICES, broken_positions, 11,
+                                       broken_sizes, 6, broken_indices, 19, &buffers) == HW_OK);
+  CHECK(hw_render_buffers_n_vertices(buffers) == 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 3);
+  CHECK(floats[0] == 1 && floats[1] == 0.5f && floats[2] == 0);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_POINT_SOURCES, &ids, &n) == HW_OK);
+  CHECK(n == 1 && ids[0] == 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_BOUNDARY, &floats, &n) == HW_OK && n == 6);
+  CHECK(floats[0] == 1 && floats[1] == 0 && floats[3] == 1 && floats[4] == 1);
+  hw_render_buffers_free(buffers);
+
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_DUPLICATE_POSITIONS, broken_positions,
+                                       11, broken_sizes, 6, broken_indices, 19,
+                                       &buffers) == HW_OK);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 3);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_BOUNDARY, &floats, &n) == HW_OK && n == 6);
+  hw_render_buffers_free(buffers);
+
+  buffers = NULL;
+  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DOCTOR_SELF_INTERSECTIONS,
+                                              cube_positions, 8, cube_sizes, 1, cube_indices, 4,
+                                              &buffers),
+               HW_ERR_INVALID_INPUT, "names face 1, but the face list has 1");
+  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_COUNT, broken_positions,
+                                              11, broken_sizes, 6, broken_indices, 19, &buffers),
+               HW_ERR_INVALID_INPUT, "unknown doctor finding");
+  CHECK_STATUS(hw_render_buffers_from_finding(NULL, HW_DOCTOR_NEEDLES, broken_positions, 11,
+                                              broken_sizes, 6, broken_indices, 19, &buffers),
+               HW_ERR_NULL_ARGUMENT, "report");
+  CHECK(buffers == NULL);
+  hw_doctor_report_free(report);
+}
+
 int main(void) {
   a_cube_is_a_closed_polyhedron();
+  findings_are_drawable();
   self_intersections_alone();
   defects_are_named();
   bad_arguments_are_refused();

@@ -963,6 +963,12 @@ typedef struct {
 #define HW_RENDER_FACE_NORMALS 8
 
 /**
+ * `GL_POINTS` points, x y z: the vertices a doctor's finding names
+ * (hw_render_buffers_from_finding(); empty otherwise).
+ */
+#define HW_RENDER_POINTS 9
+
+/**
  * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
  */
 #define HW_RENDER_TRIANGLES 0
@@ -986,6 +992,11 @@ typedef struct {
  * Per ::HW_RENDER_BOUNDARY segment, its edge id.
  */
 #define HW_RENDER_BOUNDARY_SOURCES 4
+
+/**
+ * Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+ */
+#define HW_RENDER_POINT_SOURCES 5
 
 /**
  * Success.
@@ -2385,6 +2396,40 @@ hw_status hw_render_buffers_from_polygons(const double *corners,
  */
 hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
                                                hw_render_buffers **out_buffers);
+
+/**
+ * Builds the buffers that draw one kind of finding of a doctor's report over the face list it
+ * examined (the same arrays as given to hw_doctor_examine_indexed()):
+ * - the faces it names, each once with its own corners, as ::HW_RENDER_POSITIONS,
+ *   ::HW_RENDER_NORMALS and ::HW_RENDER_TRIANGLES, outlined by ::HW_RENDER_WIREFRAME;
+ *   ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
+ *   name faces of the list;
+ * - the edges it names, and the 12 edges of the bounding box of each small component, as
+ *   ::HW_RENDER_BOUNDARY segments, whose ::HW_RENDER_BOUNDARY_SOURCES are item indices of the
+ *   finding;
+ * - the vertices it names as ::HW_RENDER_POINTS, with ::HW_RENDER_POINT_SOURCES (items).
+ *
+ * What each kind names: faces for the orientation witness, needles, caps, duplicate faces and
+ * intersecting face pairs; the edge and its two faces for folded edges; the edge for long
+ * edges; the vertex for zero-length edges; the vertex and an edge to the vertex it repeats for
+ * duplicate positions and near duplicates; the vertex and the edge it lies on for T-vertices.
+ * Faces, edges and vertices on NaN or infinite positions cannot be drawn and are left out.
+ * `HW_ERR_INVALID_INPUT` for an unknown kind, a report that names a face or vertex the list
+ * does not have (it is another list's report) or sizes that do not add up to `n_indices`.
+ *
+ * # Safety
+ * `report` must be NULL or live; the arrays as for hw_mesh_from_indexed(); `out_buffers`
+ * writable.
+ */
+hw_status hw_render_buffers_from_finding(const hw_doctor_report *report,
+                                         hw_doctor_finding kind,
+                                         const double *positions,
+                                         size_t n_vertices,
+                                         const uint32_t *face_sizes,
+                                         size_t n_faces,
+                                         const uint32_t *indices,
+                                         size_t n_indices,
+                                         hw_render_buffers **out_buffers);
 
 /**
  * Releases render buffers (their views die with them). NULL is a no-op; a second free is

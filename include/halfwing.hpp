@@ -1059,6 +1059,21 @@ class render_buffers {
     return render_buffers(raw);
   }
 
+  /// One kind of a doctor's findings over the face list it examined; see
+  /// hw_render_buffers_from_finding().
+  static render_buffers finding(const doctor_report& report, hw_doctor_finding kind,
+                                const std::vector<double>& positions,
+                                const std::vector<uint32_t>& face_sizes,
+                                const std::vector<uint32_t>& indices) {
+    if (positions.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    hw_render_buffers* raw = nullptr;
+    check(hw_render_buffers_from_finding(report.get(), kind, positions.data(),
+                                         positions.size() / 3, face_sizes.data(),
+                                         face_sizes.size(), indices.data(), indices.size(), &raw));
+    return render_buffers(raw);
+  }
+
   /// One float array (see hw_render_buffers_floats()), valid while this object lives.
   values_view<const float> floats(hw_render_floats which) const {
     const float* data = nullptr;

@@ -484,3 +484,45 @@ fn real_models_match_the_manifest() {
     }
     assert!(checked > 40, "{checked}");
 }
+
+#[test]
+fn findings_are_drawn_over_the_examined_list() {
+    use halfwing::doctor::Finding;
+    use halfwing::render::{RenderError, finding_buffers};
+    // A unit cube beside one a thousandth its size: a small component, drawn as its box.
+    let (positions, sizes, indices) = two_cubes([5.0, 0.0, 0.0], 1e-3);
+    let list = FaceList::polygons(&positions, &sizes, &indices);
+    let r = examine(&list, &DoctorOptions::default()).unwrap();
+    assert_eq!(r.small_components, vec![1]);
+    let drawn = finding_buffers(&r, Finding::SmallComponents, &list).unwrap();
+    assert_eq!(drawn.lines.n_segments(), 12);
+    assert!(drawn.lines.sources.iter().all(|&item| item == 0));
+    assert!(drawn.points.is_empty() && drawn.faces.triangles.is_empty());
+    assert!((drawn.bounds.max[0] - 5.001).abs() < 1e-6 && (drawn.bounds.min[0] - 4.999).abs() < 1e-6);
+    // Every kind draws, empty or not; the report of another list is refused.
+    for kind in Finding::ALL {
+        let (ids, per_item) = r.finding(kind);
+        assert_eq!(ids.len() % per_item, 0, "{}", kind.name());
+        finding_buffers(&r, kind, &list).unwrap();
+    }
+    let (cube_positions, cube_sizes, cube_indices) = cube();
+    let other = FaceList::polygons(&cube_positions, &cube_sizes, &cube_indices);
+    assert_eq!(
+        finding_buffers(&r, Finding::SmallComponents, &other).unwrap().lines.n_segments(),
+        12
+    );
+    let overlapping = two_cubes([1.0, 0.3, 0.2], 1.0);
+    let list = FaceList::polygons(&overlapping.0, &overlapping.1, &overlapping.2);
+    let r = examine(&list, &DoctorOptions::default()).unwrap();
+    let drawn = finding_buffers(&r, Finding::SelfIntersections, &list).unwrap();
+    // Faces 1, 3, 5, 6, 8, 10: quads of two triangles each, named by face.
+    assert_eq!(drawn.faces.triangle_polygons, vec![1, 1, 3, 3, 5, 5, 6, 6, 8, 8, 10, 10]);
+    assert_eq!(
+        finding_buffers(&r, Finding::SelfIntersections, &other),
+        Err(RenderError::ReportMismatch {
+            what: "face",
+            id: 6,
+            count: 6
+        })
+    );
+}

@@ -75,8 +75,10 @@ class gpu_surface {
 /// One line set of a render-buffer object, for glDrawArrays(GL_LINES).
 class gpu_lines {
  public:
-  gpu_lines(const hw::render_buffers& buffers, hw_render_floats which) {
-    const auto points = buffers.floats(which);
+  gpu_lines(const hw::render_buffers& buffers, hw_render_floats which)
+      : gpu_lines(buffers.floats(which)) {}
+  /// x y z of two points per segment.
+  explicit gpu_lines(const hw::values_view<const float>& points) {
     glBindVertexArray(vao_.get());
     upload_attribute(points_, points, 0, 3);
     glBindVertexArray(0);

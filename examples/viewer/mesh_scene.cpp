@@ -36,7 +36,7 @@ void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines)
 }  // namespace
 
 mesh_scene::mesh_scene(const std::string& path)
-    : path_(path), mesh_(hw::mesh::read(path, HW_BUILD_REPAIR, &report_)) {
+    : path_(path), mesh_(hw::mesh::read(path, HW_BUILD_REPAIR, &report_)), findings_(path) {
   options_.shading = HW_SHADING_CREASE;
   rebuild();
 }
@@ -66,6 +66,7 @@ void mesh_scene::draw(const programs& with) const {
   glDepthFunc(GL_LEQUAL);
   if (show_boundary_) draw_lines(with.lines, styles::boundary, *boundary_);
   if (show_non_manifold_) draw_lines(with.lines, styles::non_manifold, *non_manifold_);
+  findings_.draw(with.lines);
   glDepthFunc(GL_LESS);
   glBindVertexArray(0);
 }
@@ -88,7 +89,7 @@ bool mesh_scene::on_key(int key) {
     case GLFW_KEY_M: show_non_manifold_ = !show_non_manifold_; return true;
     case GLFW_KEY_N: show_vertex_normals_ = !show_vertex_normals_; return true;
     case GLFW_KEY_F: show_face_normals_ = !show_face_normals_; return true;
-    default: return false;
+    default: return findings_.on_key(key);
   }
   rebuild();  // the shading changed: new normals, maybe new vertex splits
   return true;
@@ -101,7 +102,9 @@ std::string mesh_scene::help() const {
          "  W          wireframe\n"
          "  B          boundary loops (magenta)\n"
          "  M          non-manifold edges from the diagnostic (cyan)\n"
-         "  N / F      vertex / face normal glyphs (green / yellow)\n";
+         "  N / F      vertex / face normal glyphs (green / yellow)\n"
+         "the doctor's findings on the file, one key each:\n" +
+         findings_.help();
 }
 
 std::string mesh_scene::status() const {
@@ -124,7 +127,8 @@ std::string mesh_scene::summary() const {
       << mesh_.n_faces() << " faces, " << mesh_.boundary_loops().size() << " boundary loops ("
       << boundary_->n_segments() << " edges), " << non_manifold_->n_segments()
       << " non-manifold edges\n"
-      << "diagnostic: " << (report_.is_clean() ? std::string("clean") : report_.summary());
+      << "diagnostic: " << (report_.is_clean() ? std::string("clean") : report_.summary())
+      << "\n" << findings_.summary();
   return out.str();
 }
 

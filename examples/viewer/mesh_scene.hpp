@@ -1,12 +1,14 @@
-// mesh_scene.hpp — a loaded polygon mesh as the viewer shows it: shaded flat, smooth or with a
-// crease angle, with its wireframe, boundary loops, non-manifold edges and normal glyphs, each
-// toggled by a key. Every array comes from hw::render_buffers.
+// mesh_scene.hpp — a loaded polygon mesh as the viewer shows it: shaded flat, smooth, with a
+// crease angle or with the file's normals, with its wireframe, boundary loops, non-manifold
+// edges, normal glyphs and the doctor's findings on the file, each toggled by a key. Every array
+// comes from hw::render_buffers.
 #ifndef HALFWING_VIEWER_MESH_SCENE_HPP
 #define HALFWING_VIEWER_MESH_SCENE_HPP
 
 #include <memory>
 #include <string>
 
+#include "findings_layer.hpp"
 #include "gl_objects.hpp"
 #include "halfwing.hpp"
 #include "scene.hpp"
@@ -50,6 +52,7 @@ class mesh_scene : public scene {
   std::unique_ptr<hw::render_buffers> buffers_;
   std::unique_ptr<gpu_surface> surface_;
   std::unique_ptr<gpu_lines> wireframe_, boundary_, non_manifold_, vertex_normals_, face_normals_;
+  findings_layer findings_;
   bool show_wireframe_ = true, show_boundary_ = true, show_non_manifold_ = true;
   bool show_vertex_normals_ = false, show_face_normals_ = false;
 };

@@ -9,9 +9,10 @@ set(HALFWING_EXAMPLE_GL_SOURCES
   "${HALFWING_EXAMPLES_SHARED_DIR}/orbit_camera.c"
   "${HALFWING_EXAMPLES_SHARED_DIR}/offscreen.c"
   "${HALFWING_EXAMPLES_SHARED_DIR}/png_write.c")
-# The C++ viewer: a scene interface, the mesh and Voronoi scenes, GL object owners, and the window
-# loop.
+# The C++ viewer: a scene interface, the mesh and Voronoi scenes, the doctor's findings layer, GL
+# object owners, and the window loop.
 set(HALFWING_VIEWER_SOURCES
   "${CMAKE_CURRENT_LIST_DIR}/main.cpp"
+  "${CMAKE_CURRENT_LIST_DIR}/findings_layer.cpp"
   "${CMAKE_CURRENT_LIST_DIR}/mesh_scene.cpp"
   "${CMAKE_CURRENT_LIST_DIR}/voronoi_scene.cpp")

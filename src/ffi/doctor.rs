@@ -247,7 +247,7 @@ pub unsafe extern "C" fn hw_doctor_report_finding(
         let out_n_items = Out::new(out_n_items, "out_n_items")?;
         let out_ids_per_item = Out::new(out_ids_per_item, "out_ids_per_item")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         let (ids, per_item) = report.finding(finding_kind(kind)?);
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe {
@@ -286,7 +286,7 @@ pub unsafe extern "C" fn hw_doctor_report_verdict(
     guard(|| {
         let out = Out::new(out_verdict, "out_verdict")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         let reason = report.closed_polyhedron_fault();
         let verdict = hw_doctor_verdict {
             manifold: report.is_manifold(),
@@ -360,7 +360,7 @@ pub unsafe extern "C" fn hw_doctor_report_component(
     guard(|| {
         let out = Out::new(out_component, "out_component")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         let c = item(&report.components, index, "component")?;
         let [low, high] = c.bounding_box;
         let component = hw_doctor_component {
@@ -420,7 +420,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
         let out_perimeter = Out::new(out_perimeter, "out_perimeter")?;
         let out_face = Out::new(out_face, "out_face")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         let found = item(&report.boundary_loops, index, "boundary loop")?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe {
@@ -469,7 +469,7 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fan(
         let out_faces = Out::new(out_faces, "out_faces")?;
         let out_n_faces = Out::new(out_n_faces, "out_n_faces")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         let fans = item(
             &report.non_manifold_vertex_fans,
             index,
@@ -534,7 +534,7 @@ unsafe fn give_text(
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         // SAFETY: forwarded from the caller.
         unsafe { copy_text(&render(report), buf, len, needed) }
     })
@@ -552,7 +552,7 @@ unsafe fn give_count(
     guard(|| {
         let out = Out::new(out_count, "out_count")?;
         // SAFETY: forwarded from the caller.
-        let report = &unsafe { arg_ref(report, "report") }?.report;
+        let report = unsafe { report_ref(report) }?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(count(report)) };
         Ok(())
@@ -562,6 +562,17 @@ unsafe fn give_count(
 fn item<'a, T>(list: &'a [T], index: usize, what: &str) -> Result<&'a T, FfiError> {
     list.get(index)
         .ok_or_else(|| FfiError::invalid_input(format!("{what} {index} of {}", list.len())))
+}
+
+/// The report behind a C handle.
+///
+/// # Safety
+/// `report` must be NULL or live.
+pub(super) unsafe fn report_ref<'a>(
+    report: *const hw_doctor_report,
+) -> Result<&'a DoctorReport, FfiError> {
+    // SAFETY: forwarded from the caller.
+    Ok(&unsafe { arg_ref(report, "report") }?.report)
 }
 
 #[cfg(test)]

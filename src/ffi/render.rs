@@ -3,13 +3,15 @@
 
 use crate::geom::VertexNormalWeighting;
 use crate::render::{
-    Bounds, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
-    SurfaceOptions, VertexLayout, mesh_buffers, polygon_buffer, polygon_buffer_2d,
-    voronoi_cell_buffer,
+    Bounds, FindingBuffers, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
+    SurfaceOptions, VertexLayout, finding_buffers, mesh_buffers, polygon_buffer,
+    polygon_buffer_2d, voronoi_cell_buffer,
 };
 
 use super::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
 use super::diagnostic::hw_diagnostic;
+use super::doctor::{finding_kind, hw_doctor_finding, hw_doctor_report, report_ref};
+use super::face_list::face_list_arg;
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{hw_mesh, mesh_ref};
@@ -96,6 +98,7 @@ pub extern "C" fn hw_render_options_default() -> hw_render_options {
 enum Contents {
     Mesh(Box<MeshBuffers>),
     Polygons(Box<PolygonBuffer>),
+    Finding(Box<FindingBuffers>),
 }
 
 /// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
@@ -132,6 +135,9 @@ pub const HW_RENDER_NON_MANIFOLD: hw_render_floats = 6;
 pub const HW_RENDER_VERTEX_NORMALS: hw_render_floats = 7;
 /// `GL_LINES` glyphs of the face normals, from each face's centroid.
 pub const HW_RENDER_FACE_NORMALS: hw_render_floats = 8;
+/// `GL_POINTS` points, x y z: the vertices a doctor's finding names
+/// (hw_render_buffers_from_finding(); empty otherwise).
+pub const HW_RENDER_POINTS: hw_render_floats = 9;
 
 /// The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
 pub type hw_render_indices = u32;
@@ -145,9 +151,11 @@ pub const HW_RENDER_VERTEX_SOURCES: hw_render_indices = 2;
 pub const HW_RENDER_WIREFRAME_SOURCES: hw_render_indices = 3;
 /// Per ::HW_RENDER_BOUNDARY segment, its edge id.
 pub const HW_RENDER_BOUNDARY_SOURCES: hw_render_indices = 4;
+/// Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+pub const HW_RENDER_POINT_SOURCES: hw_render_indices = 5;
 
 fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], FfiError> {
-    if which > HW_RENDER_FACE_NORMALS {
+    if which > HW_RENDER_POINTS {
         return Err(FfiError::invalid_input(format!(
             "unknown render float array {which}"
         )));
@@ -162,7 +170,8 @@ fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], F
             HW_RENDER_BOUNDARY => &buffers.boundary.positions,
             HW_RENDER_NON_MANIFOLD => &buffers.non_manifold.positions,
             HW_RENDER_VERTEX_NORMALS => &buffers.vertex_normals.positions,
-            _ => &buffers.face_normals.positions,
+            HW_RENDER_FACE_NORMALS => &buffers.face_normals.positions,
+            _ => &[],
         },
         Contents::Polygons(polygons) => match which {
             HW_RENDER_POSITIONS => &polygons.positions,
@@ -170,11 +179,19 @@ fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], F
             HW_RENDER_WIREFRAME => &polygons.outline.positions,
             _ => &[],
         },
+        Contents::Finding(finding) => match which {
+            HW_RENDER_POSITIONS => &finding.faces.positions,
+            HW_RENDER_NORMALS => &finding.faces.normals,
+            HW_RENDER_WIREFRAME => &finding.faces.outline.positions,
+            HW_RENDER_BOUNDARY => &finding.lines.positions,
+            HW_RENDER_POINTS => &finding.points,
+            _ => &[],
+        },
     })
 }
 
 fn index_array(contents: &Contents, which: hw_render_indices) -> Result<&[u32], FfiError> {
-    if which > HW_RENDER_BOUNDARY_SOURCES {
+    if which > HW_RENDER_POINT_SOURCES {
         return Err(FfiError::invalid_input(format!(
             "unknown render index array {which}"
         )));
@@ -185,13 +202,23 @@ fn index_array(contents: &Contents, which: hw_render_indices) -> Result<&[u32], 
             HW_RENDER_TRIANGLE_FACES => &buffers.surface.triangle_faces,
             HW_RENDER_VERTEX_SOURCES => &buffers.surface.vertex_sources,
             HW_RENDER_WIREFRAME_SOURCES => &buffers.wireframe.sources,
-            _ => &buffers.boundary.sources,
+            HW_RENDER_BOUNDARY_SOURCES => &buffers.boundary.sources,
+            _ => &[],
         },
         Contents::Polygons(polygons) => match which {
             HW_RENDER_TRIANGLES => &polygons.triangles,
             HW_RENDER_TRIANGLE_FACES => &polygons.triangle_polygons,
             HW_RENDER_VERTEX_SOURCES => &polygons.vertex_polygons,
             HW_RENDER_WIREFRAME_SOURCES => &polygons.outline.sources,
+            _ => &[],
+        },
+        Contents::Finding(finding) => match which {
+            HW_RENDER_TRIANGLES => &finding.faces.triangles,
+            HW_RENDER_TRIANGLE_FACES => &finding.faces.triangle_polygons,
+            HW_RENDER_VERTEX_SOURCES => &finding.faces.vertex_polygons,
+            HW_RENDER_WIREFRAME_SOURCES => &finding.faces.outline.sources,
+            HW_RENDER_BOUNDARY_SOURCES => &finding.lines.sources,
+            HW_RENDER_POINT_SOURCES => &finding.point_items,
             _ => &[],
         },
     })
@@ -387,6 +414,62 @@ pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
     })
 }
 
+/// Builds the buffers that draw one kind of finding of a doctor's report over the face list it
+/// examined (the same arrays as given to hw_doctor_examine_indexed()):
+/// - the faces it names, each once with its own corners, as ::HW_RENDER_POSITIONS,
+///   ::HW_RENDER_NORMALS and ::HW_RENDER_TRIANGLES, outlined by ::HW_RENDER_WIREFRAME;
+///   ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
+///   name faces of the list;
+/// - the edges it names, and the 12 edges of the bounding box of each small component, as
+///   ::HW_RENDER_BOUNDARY segments, whose ::HW_RENDER_BOUNDARY_SOURCES are item indices of the
+///   finding;
+/// - the vertices it names as ::HW_RENDER_POINTS, with ::HW_RENDER_POINT_SOURCES (items).
+///
+/// What each kind names: faces for the orientation witness, needles, caps, duplicate faces and
+/// intersecting face pairs; the edge and its two faces for folded edges; the edge for long
+/// edges; the vertex for zero-length edges; the vertex and an edge to the vertex it repeats for
+/// duplicate positions and near duplicates; the vertex and the edge it lies on for T-vertices.
+/// Faces, edges and vertices on NaN or infinite positions cannot be drawn and are left out.
+/// `HW_ERR_INVALID_INPUT` for an unknown kind, a report that names a face or vertex the list
+/// does not have (it is another list's report) or sizes that do not add up to `n_indices`.
+///
+/// # Safety
+/// `report` must be NULL or live; the arrays as for hw_mesh_from_indexed(); `out_buffers`
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_render_buffers_from_finding(
+    report: *const hw_doctor_report,
+    kind: hw_doctor_finding,
+    positions: *const f64,
+    n_vertices: usize,
+    face_sizes: *const u32,
+    n_faces: usize,
+    indices: *const u32,
+    n_indices: usize,
+    out_buffers: *mut *mut hw_render_buffers,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_buffers, "out_buffers")?;
+        // SAFETY: forwarded from the caller.
+        let (report, list) = unsafe {
+            (
+                report_ref(report)?,
+                face_list_arg(
+                    positions, n_vertices, face_sizes, n_faces, indices, n_indices,
+                )?,
+            )
+        };
+        let buffers = finding_buffers(report, finding_kind(kind)?, &list)?;
+        // SAFETY: checked non-NULL; writable per the caller.
+        unsafe {
+            out.write(into_handle(hw_render_buffers {
+                contents: Contents::Finding(Box::new(buffers)),
+            }))
+        };
+        Ok(())
+    })
+}
+
 /// Releases render buffers (their views die with them). NULL is a no-op; a second free is
 /// refused (within the limits the ownership conventions at the top of the header state).
 ///
@@ -458,6 +541,7 @@ pub unsafe extern "C" fn hw_render_buffers_n_vertices(buffers: *const hw_render_
         Ok(match unsafe { contents_ref(buffers) }? {
             Contents::Mesh(buffers) => buffers.surface.n_vertices(),
             Contents::Polygons(polygons) => polygons.vertex_polygons.len(),
+            Contents::Finding(finding) => finding.faces.vertex_polygons.len(),
         })
     })
 }
@@ -502,6 +586,7 @@ pub unsafe extern "C" fn hw_render_buffers_bounds(
         let bounds: Bounds = match unsafe { contents_ref(buffers) }? {
             Contents::Mesh(buffers) => buffers.surface.bounds,
             Contents::Polygons(polygons) => polygons.bounds,
+            Contents::Finding(finding) => finding.bounds,
         };
         // SAFETY: checked non-NULL; 3 writable floats per the caller (alignment of f32).
         unsafe {

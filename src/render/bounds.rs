@@ -36,6 +36,14 @@ impl Bounds {
         bounds
     }
 
+    /// The smallest box holding both.
+    pub fn union(self, other: Bounds) -> Bounds {
+        Bounds {
+            min: [0, 1, 2].map(|k| self.min[k].min(other.min[k])),
+            max: [0, 1, 2].map(|k| self.max[k].max(other.max[k])),
+        }
+    }
+
     /// `true` when no point was added.
     pub fn is_empty(&self) -> bool {
         (0..3).any(|axis| self.min[axis] > self.max[axis])

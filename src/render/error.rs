@@ -49,7 +49,22 @@ pub enum RenderError {
         /// The corner's coordinates.
         point: [f64; 3],
     },
+    /// A doctor's report names a face or vertex the face list does not have: it is the report
+    /// of another list.
+    #[error("the report names {what} {id}, but the face list has {count}")]
+    ReportMismatch {
+        /// "face" or "vertex".
+        what: &'static str,
+        /// The id named.
+        id: u32,
+        /// How many the list has.
+        count: usize,
+    },
+    /// The face list's sizes and indices do not fit together.
+    #[error("malformed face list: {0}")]
+    MalformedFaceList(String),
     /// The polygons could not be triangulated (sizes or indices do not fit).
     #[error(transparent)]
     Polygons(#[from] TriangulateError),
 }
+

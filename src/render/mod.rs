@@ -7,10 +7,12 @@
 //!   [`face_normal_glyphs`]: [`LineBuffer`]s for `GL_LINES`;
 //! - [`mesh_buffers`]: all of the above in one call;
 //! - [`polygon_buffer`], [`polygon_buffer_2d`]: fills and outlines of a polygon list;
-//!   [`voronoi_cell_buffer`]: those of a Voronoi diagram's clipped cells.
+//!   [`voronoi_cell_buffer`]: those of a Voronoi diagram's clipped cells;
+//! - [`finding_buffers`]: one kind of the mesh doctor's findings (faces, lines, points).
 
 mod bounds;
 mod error;
+mod finding_buffers;
 mod line_buffer;
 mod mesh_buffers;
 mod mesh_lines;
@@ -23,6 +25,7 @@ mod voronoi_cells;
 
 pub use bounds::Bounds;
 pub use error::RenderError;
+pub use finding_buffers::{FindingBuffers, finding_buffers};
 pub use line_buffer::LineBuffer;
 pub use mesh_buffers::{MeshBufferOptions, MeshBuffers, mesh_buffers};
 pub use mesh_lines::{boundary_lines, non_manifold_lines, wireframe_lines};
