@@ -27,7 +27,10 @@ fn data_root() -> PathBuf {
 
 /// Positions and triangles of a triangle soup.
 fn triangles_of(soup: &PolygonSoup) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    assert!(soup.face_sizes.iter().all(|&size| size == 3), "triangles only");
+    assert!(
+        soup.face_sizes.iter().all(|&size| size == 3),
+        "triangles only"
+    );
     let triangles = soup
         .indices
         .chunks_exact(3)
@@ -36,7 +39,10 @@ fn triangles_of(soup: &PolygonSoup) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
     (soup.positions.clone(), triangles)
 }
 
-fn inputs() -> Vec<(String, Vec<[f64; 3]>, Vec<[u32; 3]>)> {
+/// A named triangle mesh: positions and triangles.
+type Input = (String, Vec<[f64; 3]>, Vec<[u32; 3]>);
+
+fn inputs() -> Vec<Input> {
     let ring = torus(&Torus {
         major_radius: 1.0,
         minor_radius: 0.35,

@@ -370,18 +370,43 @@ fn overlapping_closed_surfaces_intersect_and_are_no_closed_polyhedron() {
         vec![[1, 8], [1, 10], [3, 6], [3, 10], [5, 6], [5, 8]],
         "{r}"
     );
-    assert_eq!(r.not_a_closed_polyhedron(), Some("faces intersect each other"));
+    assert_eq!(
+        r.not_a_closed_polyhedron(),
+        Some("faces intersect each other")
+    );
     assert!(r.to_string().contains("intersecting face pairs: f"), "{r}");
-    assert!(r.to_json().contains("\"self_intersections\":[["), "{}", r.to_json());
+    assert!(
+        r.to_json().contains("\"self_intersections\":[["),
+        "{}",
+        r.to_json()
+    );
 
     // One cube inside the other: nothing crosses, although the union is no solid.
     let (positions, sizes, indices) = two_cubes([0.0; 3], 0.5);
-    assert!(report(&positions, &sizes, &indices).self_intersections.is_empty());
+    assert!(
+        report(&positions, &sizes, &indices)
+            .self_intersections
+            .is_empty()
+    );
 
     // Faces sharing an edge meet only there; folded onto each other they overlap.
-    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.5, -0.5, 0.0]];
-    assert!(triangles(&positions, &[0, 1, 2, 1, 0, 3]).self_intersections.is_empty());
-    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.2, 0.2, 0.0]];
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.5, -0.5, 0.0],
+    ];
+    assert!(
+        triangles(&positions, &[0, 1, 2, 1, 0, 3])
+            .self_intersections
+            .is_empty()
+    );
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.2, 0.2, 0.0],
+    ];
     assert_eq!(
         triangles(&positions, &[0, 1, 2, 1, 0, 3]).self_intersections,
         vec![[0, 1]]
@@ -411,7 +436,11 @@ fn self_intersections_are_exact_at_extreme_magnitudes() {
             .enumerate()
             .map(|(v, p)| {
                 if v >= 3 {
-                    [p[0], p[1], f64::from_bits(1) + if v == 3 { 0.0 } else { p[2] }]
+                    [
+                        p[0],
+                        p[1],
+                        f64::from_bits(1) + if v == 3 { 0.0 } else { p[2] },
+                    ]
                 } else {
                     *p
                 }
@@ -498,7 +527,9 @@ fn findings_are_drawn_over_the_examined_list() {
     assert_eq!(drawn.lines.n_segments(), 12);
     assert!(drawn.lines.sources.iter().all(|&item| item == 0));
     assert!(drawn.points.is_empty() && drawn.faces.triangles.is_empty());
-    assert!((drawn.bounds.max[0] - 5.001).abs() < 1e-6 && (drawn.bounds.min[0] - 4.999).abs() < 1e-6);
+    assert!(
+        (drawn.bounds.max[0] - 5.001).abs() < 1e-6 && (drawn.bounds.min[0] - 4.999).abs() < 1e-6
+    );
     // Every kind draws, empty or not; the report of another list is refused.
     for kind in Finding::ALL {
         let (ids, per_item) = r.finding(kind);
@@ -508,7 +539,10 @@ fn findings_are_drawn_over_the_examined_list() {
     let (cube_positions, cube_sizes, cube_indices) = cube();
     let other = FaceList::polygons(&cube_positions, &cube_sizes, &cube_indices);
     assert_eq!(
-        finding_buffers(&r, Finding::SmallComponents, &other).unwrap().lines.n_segments(),
+        finding_buffers(&r, Finding::SmallComponents, &other)
+            .unwrap()
+            .lines
+            .n_segments(),
         12
     );
     let overlapping = two_cubes([1.0, 0.3, 0.2], 1.0);
@@ -516,7 +550,10 @@ fn findings_are_drawn_over_the_examined_list() {
     let r = examine(&list, &DoctorOptions::default()).unwrap();
     let drawn = finding_buffers(&r, Finding::SelfIntersections, &list).unwrap();
     // Faces 1, 3, 5, 6, 8, 10: quads of two triangles each, named by face.
-    assert_eq!(drawn.faces.triangle_polygons, vec![1, 1, 3, 3, 5, 5, 6, 6, 8, 8, 10, 10]);
+    assert_eq!(
+        drawn.faces.triangle_polygons,
+        vec![1, 1, 3, 3, 5, 5, 6, 6, 8, 8, 10, 10]
+    );
     assert_eq!(
         finding_buffers(&r, Finding::SelfIntersections, &other),
         Err(RenderError::ReportMismatch {

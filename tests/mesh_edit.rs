@@ -368,3 +368,68 @@ proptest! {
         );
     }
 }
+
+/// Twice the signed area, in the xy plane, of a triangular face.
+fn signed_area(mesh: &Mesh, f: FaceId) -> f64 {
+    let [a, b, c]: [[f64; 3]; 3] = mesh
+        .face_vertices(f)
+        .map(|v| mesh.position(v))
+        .collect::<Vec<_>>()
+        .try_into()
+        .unwrap();
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+/// Before: a fan from the first free corner folded the L-shaped hexagon from 4 of its 6 start
+/// corners (a triangle of signed area -0.5).
+#[test]
+fn triangulating_a_non_convex_face_folds_nothing_from_any_start_corner() {
+    let l_shape = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]];
+    for start in 0..6 {
+        let positions: Vec<[f64; 3]> = (0..6)
+            .map(|k| {
+                let [x, y] = l_shape[(start + k) % 6];
+                [f64::from(x), f64::from(y), 0.0]
+            })
+            .collect();
+        let indices: Vec<u32> = (0..6).collect();
+        let (mut mesh, _) = Mesh::from_face_list(
+            &FaceList::polygons(&positions, &[6], &indices),
+            BuildPolicy::Strict,
+        )
+        .unwrap();
+        let faces = mesh.triangulate_face(FaceId(0)).unwrap();
+        assert_eq!(faces.len(), 4);
+        assert_eq!(mesh.check(), Ok(()));
+        let areas: Vec<f64> = faces.iter().map(|&f| signed_area(&mesh, f)).collect();
+        assert!(areas.iter().all(|&a| a > 0.0), "start {start}: {areas:?}");
+        assert_eq!(areas.iter().sum::<f64>(), 6.0, "start {start}");
+    }
+}
+
+/// A comb of 1,000 teeth (4,002 corners: a bar [0, 1000] x [0, 1] with teeth of width 0.5 and
+/// height 1) is covered exactly, without a folded triangle.
+#[test]
+fn triangulating_a_comb_covers_it_exactly() {
+    let teeth = 1_000u32;
+    let mut positions = vec![[0.0, 0.0, 0.0], [f64::from(teeth), 0.0, 0.0]];
+    for t in (0..teeth).rev() {
+        let x = f64::from(t);
+        positions.extend(
+            [[x + 1.0, 1.0], [x + 0.5, 1.0], [x + 0.5, 2.0], [x, 2.0]].map(|[x, y]| [x, y, 0.0]),
+        );
+    }
+    let n = positions.len() as u32;
+    let indices: Vec<u32> = (0..n).collect();
+    let (mut mesh, _) = Mesh::from_face_list(
+        &FaceList::polygons(&positions, &[n], &indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap();
+    let faces = mesh.triangulate_face(FaceId(0)).unwrap();
+    assert_eq!(faces.len(), n as usize - 2);
+    assert_eq!(mesh.check(), Ok(()));
+    assert!(faces.iter().all(|&f| signed_area(&mesh, f) > 0.0));
+    let area: f64 = faces.iter().map(|&f| signed_area(&mesh, f)).sum();
+    assert_eq!(area, 3.0 * f64::from(teeth));
+}

@@ -77,7 +77,11 @@ impl fmt::Display for DoctorReport {
             Finding::NonOrientableWitness.name(),
             faces(&self.non_orientable_witness),
         )?;
-        counted(f, Finding::ZeroLengthEdges.name(), edges(&self.zero_length_edges))?;
+        counted(
+            f,
+            Finding::ZeroLengthEdges.name(),
+            edges(&self.zero_length_edges),
+        )?;
         counted(f, Finding::Needles.name(), faces(&self.needles))?;
         counted(f, Finding::Caps.name(), faces(&self.caps))?;
         counted(
@@ -99,7 +103,11 @@ impl fmt::Display for DoctorReport {
             Finding::NearDuplicateVertices.name(),
             pairs(&self.near_duplicate_vertices, "v"),
         )?;
-        counted(f, Finding::DuplicateFaces.name(), pairs(&self.duplicate_faces, "f"))?;
+        counted(
+            f,
+            Finding::DuplicateFaces.name(),
+            pairs(&self.duplicate_faces, "f"),
+        )?;
         counted(
             f,
             Finding::TVertices.name(),

@@ -583,14 +583,20 @@ mod tests {
     fn the_c_kinds_number_the_rust_kinds_in_order() {
         let numbered = [
             (HW_DOCTOR_SMALL_COMPONENTS, Finding::SmallComponents),
-            (HW_DOCTOR_NON_ORIENTABLE_WITNESS, Finding::NonOrientableWitness),
+            (
+                HW_DOCTOR_NON_ORIENTABLE_WITNESS,
+                Finding::NonOrientableWitness,
+            ),
             (HW_DOCTOR_ZERO_LENGTH_EDGES, Finding::ZeroLengthEdges),
             (HW_DOCTOR_NEEDLES, Finding::Needles),
             (HW_DOCTOR_CAPS, Finding::Caps),
             (HW_DOCTOR_FOLDED_EDGES, Finding::FoldedEdges),
             (HW_DOCTOR_LONG_EDGES, Finding::LongEdges),
             (HW_DOCTOR_DUPLICATE_POSITIONS, Finding::DuplicatePositions),
-            (HW_DOCTOR_NEAR_DUPLICATE_VERTICES, Finding::NearDuplicateVertices),
+            (
+                HW_DOCTOR_NEAR_DUPLICATE_VERTICES,
+                Finding::NearDuplicateVertices,
+            ),
             (HW_DOCTOR_DUPLICATE_FACES, Finding::DuplicateFaces),
             (HW_DOCTOR_T_VERTICES, Finding::TVertices),
             (HW_DOCTOR_SELF_INTERSECTIONS, Finding::SelfIntersections),

@@ -3,16 +3,16 @@
 
 use crate::geom::VertexNormalWeighting;
 use crate::render::{
-    Bounds, FindingBuffers, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList, RenderError, Shading,
-    SurfaceOptions, VertexLayout, finding_buffers, mesh_buffers, polygon_buffer,
-    polygon_buffer_2d, voronoi_cell_buffer,
+    Bounds, FindingBuffers, MeshBufferOptions, MeshBuffers, PolygonBuffer, PolygonList,
+    RenderError, Shading, SurfaceOptions, VertexLayout, finding_buffers, mesh_buffers,
+    polygon_buffer, polygon_buffer_2d, voronoi_cell_buffer,
 };
 
 use super::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
 use super::diagnostic::hw_diagnostic;
 use super::doctor::{finding_kind, hw_doctor_finding, hw_doctor_report, report_ref};
-use super::face_list::face_list_arg;
 use super::error::FfiError;
+use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{hw_mesh, mesh_ref};
 use super::normals::{HW_WEIGHT_ANGLE, hw_normal_weighting, weighting};

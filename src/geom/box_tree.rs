@@ -32,10 +32,7 @@ impl BoundingBox {
             max: points[0],
         };
         for p in &points[1..] {
-            for k in 0..3 {
-                bounds.min[k] = bounds.min[k].min(p[k]);
-                bounds.max[k] = bounds.max[k].max(p[k]);
-            }
+            bounds = bounds.union(&BoundingBox { min: *p, max: *p });
         }
         bounds
     }
@@ -106,7 +103,11 @@ impl<T: Boxed + Copy + Send + Sync> BoxTree<T> {
             let b = item.bounding_box();
             (0..3).fold(m, |m, k| m.max(b.min[k].abs()).max(b.max[k].abs()))
         });
-        let scale = if largest > 0.0 { 1.0 / power_of_two_above(largest) } else { 1.0 };
+        let scale = if largest > 0.0 {
+            1.0 / power_of_two_above(largest)
+        } else {
+            1.0
+        };
         let mut keys = map_indexed(items.len(), |i| Key {
             centre: items[i].bounding_box().centre().map(|c| (c * scale) as f32),
             item: i as u32,
@@ -256,7 +257,13 @@ struct Key {
 
 /// Builds the subtree of the items of `keys` (those from `start` on in leaf order) into `nodes`,
 /// whose first node is node `index` of the tree.
-fn build<T: Boxed + Sync>(nodes: &mut [Node], index: u32, keys: &mut [Key], start: u32, items: &[T]) {
+fn build<T: Boxed + Sync>(
+    nodes: &mut [Node],
+    index: u32,
+    keys: &mut [Key],
+    start: u32,
+    items: &[T],
+) {
     let len = keys.len();
     if len <= LEAF_SIZE {
         let bounds = |key: &Key| *items[key.item as usize].bounding_box();

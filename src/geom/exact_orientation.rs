@@ -192,8 +192,9 @@ fn power_of_two(e: i32) -> f64 {
 
 /// `robust::orient3d`'s determinant, in integers.
 fn wide_orient3d(a: Point, b: Point, c: Point, d: Point) -> Sign {
-    let [ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz] =
-        integers([a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]]);
+    let [ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz] = integers([
+        a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2],
+    ]);
     let (adx, ady, adz) = (ax.sub(&dx), ay.sub(&dy), az.sub(&dz));
     let (bdx, bdy, bdz) = (bx.sub(&dx), by.sub(&dy), bz.sub(&dz));
     let (cdx, cdy, cdz) = (cx.sub(&dx), cy.sub(&dy), cz.sub(&dz));
@@ -266,7 +267,7 @@ mod tests {
         /// values, so that ties and coplanarity happen.
         fn coordinate(&mut self) -> f64 {
             let n = self.next();
-            if n % 2 == 0 {
+            if n.is_multiple_of(2) {
                 (n / 2 % 64) as f64 / 4.0 - 8.0
             } else {
                 (n / 2 % 5) as f64 - 2.0
@@ -298,7 +299,11 @@ mod tests {
         for _ in 0..4000 {
             let [a, b, c, d] = [(); 4].map(|_| samples.point());
             let adaptive = ExactOrientation::Adaptive.orient3d(a, b, c, d);
-            assert_eq!(adaptive, wide_orient3d(a, b, c, d), "{a:?} {b:?} {c:?} {d:?}");
+            assert_eq!(
+                adaptive,
+                wide_orient3d(a, b, c, d),
+                "{a:?} {b:?} {c:?} {d:?}"
+            );
             let [p, q, r] = [a, b, c].map(|p| [p[0], p[1]]);
             assert_eq!(
                 ExactOrientation::Adaptive.orient2d(p, q, r),
@@ -330,7 +335,10 @@ mod tests {
             let arithmetic = ExactOrientation::for_points(&mut scaled, range);
             let [a, b, c, d] = scaled;
             let sign = arithmetic.orient3d(a, b, c, d);
-            assert_eq!(sign, wide_orient3d(points[0], points[1], points[2], points[3]));
+            assert_eq!(
+                sign,
+                wide_orient3d(points[0], points[1], points[2], points[3])
+            );
             assert_ne!(sign, Sign::Zero, "scale 2^{exponent}");
             // Lifted to the plane z = 0 exactly: coplanar at every scale.
             let mut flat = [points[0], points[1], points[2], [s / 3.0, s / 3.0, 0.0]];
@@ -370,7 +378,11 @@ mod tests {
                 let range = ExponentRange::of(scaled.iter().flatten().copied());
                 let arithmetic = ExactOrientation::for_points(&mut scaled, range);
                 let [a, b, c, d] = scaled;
-                assert_eq!(arithmetic.orient3d(a, b, c, d), exact, "{points:?} 2^{exponent}");
+                assert_eq!(
+                    arithmetic.orient3d(a, b, c, d),
+                    exact,
+                    "{points:?} 2^{exponent}"
+                );
             }
         }
     }

@@ -19,10 +19,8 @@ pub use newell::{
     is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle, newell_vector,
     quad_area_vector, triangle_area_vector,
 };
-pub use self_intersections::{
-    SelfIntersectionError, face_self_intersections, self_intersections,
-};
 pub use normals::{
     VertexNormalWeighting, corner_angle, corner_normals, face_and_vertex_normals, face_area_vector,
     face_normals, face_normals_into, normals_into, vertex_normals,
 };
+pub use self_intersections::{SelfIntersectionError, face_self_intersections, self_intersections};

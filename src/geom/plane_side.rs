@@ -109,7 +109,11 @@ mod tests {
             let far = [on[0] + next(), on[1] + next(), on[2] + next()];
             for p in [on, near, far, t[0], t[1], t[2]] {
                 let exact = ExactOrientation::Adaptive.orient3d(t[0], t[1], t[2], p);
-                assert_eq!(plane.side(ExactOrientation::Adaptive, p), exact, "{t:?} {p:?}");
+                assert_eq!(
+                    plane.side(ExactOrientation::Adaptive, p),
+                    exact,
+                    "{t:?} {p:?}"
+                );
                 assert_eq!(plane.side(ExactOrientation::Wide, p), exact);
                 zeros += usize::from(exact == Sign::Zero);
             }

@@ -285,25 +285,49 @@ mod tests {
     #[test]
     fn shared_corners_are_found_in_any_rotation() {
         assert_eq!(SharedCorners::of([0, 1, 2], [3, 4, 5]), SharedCorners::None);
-        assert_eq!(SharedCorners::of([0, 1, 2], [5, 2, 4]), SharedCorners::Vertex(2, 1));
+        assert_eq!(
+            SharedCorners::of([0, 1, 2], [5, 2, 4]),
+            SharedCorners::Vertex(2, 1)
+        );
         // Edge 1 → 2 of the first; the second's third corner is 7, at index 0.
-        assert_eq!(SharedCorners::of([0, 1, 2], [7, 2, 1]), SharedCorners::Edge(1, 0));
+        assert_eq!(
+            SharedCorners::of([0, 1, 2], [7, 2, 1]),
+            SharedCorners::Edge(1, 0)
+        );
         // Edge 2 → 0 (wrapping round) of the first.
-        assert_eq!(SharedCorners::of([0, 1, 2], [0, 9, 2]), SharedCorners::Edge(2, 1));
-        assert_eq!(SharedCorners::of([0, 1, 2], [1, 0, 9]), SharedCorners::Edge(0, 2));
+        assert_eq!(
+            SharedCorners::of([0, 1, 2], [0, 9, 2]),
+            SharedCorners::Edge(2, 1)
+        );
+        assert_eq!(
+            SharedCorners::of([0, 1, 2], [1, 0, 9]),
+            SharedCorners::Edge(0, 2)
+        );
         assert_eq!(SharedCorners::of([0, 1, 2], [2, 0, 1]), SharedCorners::All);
     }
 
     #[test]
     fn collinear_segments_meet_by_their_extents() {
         let meet = |a: [[f64; 2]; 2], b: [[f64; 2]; 2]| segments_meet_2d(ADAPTIVE, a, b);
-        assert!(meet([[0.0, 0.0], [2.0, 2.0]], [[2.0, 2.0], [3.0, 3.0]]), "touching ends");
+        assert!(
+            meet([[0.0, 0.0], [2.0, 2.0]], [[2.0, 2.0], [3.0, 3.0]]),
+            "touching ends"
+        );
         assert!(!meet([[0.0, 0.0], [2.0, 2.0]], [[2.5, 2.5], [3.0, 3.0]]));
-        assert!(meet([[0.0, 0.0], [0.0, 4.0]], [[0.0, 3.0], [0.0, 1.0]]), "vertical, nested");
+        assert!(
+            meet([[0.0, 0.0], [0.0, 4.0]], [[0.0, 3.0], [0.0, 1.0]]),
+            "vertical, nested"
+        );
         assert!(!meet([[0.0, 0.0], [0.0, 4.0]], [[0.0, 5.0], [0.0, 6.0]]));
-        assert!(meet([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [1.0, 5.0]]), "T");
+        assert!(
+            meet([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [1.0, 5.0]]),
+            "T"
+        );
         assert!(!meet([[0.0, 0.0], [2.0, 0.0]], [[3.0, 0.0], [3.0, 5.0]]));
-        assert!(meet([[0.0, 0.0], [2.0, 2.0]], [[0.0, 2.0], [2.0, 0.0]]), "crossing");
+        assert!(
+            meet([[0.0, 0.0], [2.0, 2.0]], [[0.0, 2.0], [2.0, 0.0]]),
+            "crossing"
+        );
     }
 
     /// A triangle against a second one sharing its corner at the origin, whose far edge is
@@ -318,15 +342,33 @@ mod tests {
             assert_eq!(forward, backward, "{p:?} {q:?}");
             forward
         };
-        assert!(meets([-1.0, 1.0, 0.0], [1.0, 1.0, 0.0]), "coplanar, overlapping");
-        assert!(!meets([-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0]), "coplanar, apart");
+        assert!(
+            meets([-1.0, 1.0, 0.0], [1.0, 1.0, 0.0]),
+            "coplanar, overlapping"
+        );
+        assert!(
+            !meets([-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0]),
+            "coplanar, apart"
+        );
         assert!(meets([1.0, 1.0, -1.0], [1.0, 1.0, 1.0]), "piercing");
         assert!(meets([1.0, 1.0, 0.0], [1.0, 1.0, 1.0]), "standing on it");
         assert!(!meets([1.0, 1.0, 1e-300], [1.0, 1.0, 1.0]), "hovering");
-        assert!(meets([4.0, 0.0, -1.0], [4.0, 0.0, 1.0]), "along an edge, to a corner");
-        assert!(meets([5.0, 0.0, -1.0], [5.0, 0.0, 1.0]), "along an edge, beyond it");
-        assert!(!meets([5.0, -1.0, -1.0], [5.0, -1.0, 1.0]), "beside an edge");
+        assert!(
+            meets([4.0, 0.0, -1.0], [4.0, 0.0, 1.0]),
+            "along an edge, to a corner"
+        );
+        assert!(
+            meets([5.0, 0.0, -1.0], [5.0, 0.0, 1.0]),
+            "along an edge, beyond it"
+        );
+        assert!(
+            !meets([5.0, -1.0, -1.0], [5.0, -1.0, 1.0]),
+            "beside an edge"
+        );
         // Both far edges cross the other's plane, on opposite sides of the shared vertex.
-        assert!(!meets([-1.0, -1.0, -1.0], [-1.0, -1.0, 1.0]), "crossing the planes' line");
+        assert!(
+            !meets([-1.0, -1.0, -1.0], [-1.0, -1.0, 1.0]),
+            "crossing the planes' line"
+        );
     }
 }

@@ -23,7 +23,11 @@ impl WideInteger {
         let mut limbs = vec![0; whole_limbs];
         // The mantissa shifted by `bits` needs at most 96 bits: three limbs.
         let shifted = u128::from(mantissa) << bits;
-        limbs.extend([shifted as u32, (shifted >> 32) as u32, (shifted >> 64) as u32]);
+        limbs.extend([
+            shifted as u32,
+            (shifted >> 32) as u32,
+            (shifted >> 64) as u32,
+        ]);
         let mut number = WideInteger { negative, limbs };
         number.normalise();
         number
@@ -160,7 +164,11 @@ mod tests {
             .iter()
             .rev()
             .fold(0i128, |total, &limb| (total << 32) | i128::from(limb));
-        if number.negative { -magnitude } else { magnitude }
+        if number.negative {
+            -magnitude
+        } else {
+            magnitude
+        }
     }
 
     #[test]

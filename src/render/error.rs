@@ -67,4 +67,3 @@ pub enum RenderError {
     #[error(transparent)]
     Polygons(#[from] TriangulateError),
 }
-

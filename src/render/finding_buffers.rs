@@ -41,8 +41,8 @@ pub fn finding_buffers(
     kind: Finding,
     list: &FaceList<'_>,
 ) -> Result<FindingBuffers, RenderError> {
-    let table =
-        FaceTable::new(list).map_err(|problem| RenderError::MalformedFaceList(problem.to_string()))?;
+    let table = FaceTable::new(list)
+        .map_err(|problem| RenderError::MalformedFaceList(problem.to_string()))?;
     let mismatch = |what, id, count| RenderError::ReportMismatch { what, id, count };
     let highlight = report.highlight(kind);
     let position = |v: u32| -> Result<Option<[f64; 3]>, RenderError> {

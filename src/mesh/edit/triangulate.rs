@@ -2,14 +2,19 @@
 
 use super::{EditError, refuse};
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
+use crate::render::EarClipper;
 
 const TRIANGULATE: &str = "face triangulation";
 
 impl Mesh {
-    /// Splits face `f` into triangles by a fan of diagonals from one of its corners: the first
-    /// corner (in face order from [`Mesh::face_halfedge`]) none of whose diagonals already exists
-    /// as an edge. A fan suits convex and star-shaped polygons (the usual mesh faces). Returns the
-    /// faces, `f` first. Refused, with the mesh unchanged, when no corner has a free fan.
+    /// Splits face `f` into triangles, the ones the render buffers draw for it: ear clipping in
+    /// the plane of the face's Newell normal, so non-convex polygons come out with every
+    /// triangle facing the face's way (a simple polygon is covered exactly once). A polygon
+    /// with no area, non-finite corners or crossing sides gets the fan [`EarClipper`] falls back
+    /// to. Returns the faces, `f` first (it keeps the last triangle). Refused, with the mesh
+    /// unchanged, when a diagonal the triangulation needs already exists as an edge (the two
+    /// corners are joined outside the face: a second edge between them would make the mesh
+    /// non-manifold).
     pub fn triangulate_face(&mut self, f: FaceId) -> Result<Vec<FaceId>, EditError> {
         self.check_face(f)?;
         let loop_: Vec<HalfedgeId> = self.face_loop(f).collect();
@@ -17,21 +22,26 @@ impl Mesh {
         if n <= 3 {
             return Ok(vec![f]);
         }
-        // Apex `target(loop_[i])`; its diagonals reach the targets of loop_[i + 2 .. i + n - 2].
-        let apex = (0..n).find(|&i| {
-            let apex = self.target(loop_[i]);
-            (2..n - 1).all(|k| {
-                let other = self.target(loop_[(i + k) % n]);
-                self.find_halfedge(apex, other).is_none()
-                    && self.find_halfedge(other, apex).is_none()
-            })
-        });
-        let Some(i) = apex else {
-            return refuse(
-                TRIANGULATE,
-                "every corner's fan would duplicate an existing edge",
+        // Corner k is the target of loop_[k].
+        let corners: Vec<[f64; 3]> = loop_
+            .iter()
+            .map(|&h| self.position(self.target(h)))
+            .collect();
+        let mut triangles = Vec::with_capacity(n - 2);
+        EarClipper::new().triangulate(&corners, &mut triangles);
+        let cuts = &triangles[..n - 3];
+        for &[a, _, c] in cuts {
+            let (u, v) = (
+                self.target(loop_[a as usize]),
+                self.target(loop_[c as usize]),
             );
-        };
+            if self.find_halfedge(u, v).is_some() || self.find_halfedge(v, u).is_some() {
+                return refuse(
+                    TRIANGULATE,
+                    "a diagonal of its triangulation already exists as an edge",
+                );
+            }
+        }
         let needed_edges = (n - 3) as u64;
         if self.origin.len() as u64 + 2 * needed_edges >= u64::from(u32::MAX)
             || self.face_halfedge.len() as u64 + needed_edges >= u64::from(u32::MAX)
@@ -40,12 +50,15 @@ impl Mesh {
                 operation: TRIANGULATE,
             });
         }
-        let h0 = loop_[i];
+        // Each triangle [a, e, c] cuts the ear e off what is left of `f` (a and c are its
+        // neighbours there). With `into[k]` the half-edge of `f` whose target is corner k,
+        // splitting `f` from target(into[a]) to target(into[c]) gives the new face the side
+        // through e, and `f` the rest, where the new half-edge a → c leads into c.
+        let mut into = loop_;
         let mut faces = vec![f];
-        // Each split cuts the triangle (apex, target(next(h0)), target(next(next(h0)))) off `f`.
-        for _ in 0..n - 3 {
-            let h1 = self.next(self.next(h0));
-            self.split_face(h0, h1)?;
+        for &[a, _, c] in cuts {
+            let new_into_c = self.split_face(into[a as usize], into[c as usize])?;
+            into[c as usize] = new_into_c;
             faces.push(FaceId((self.face_halfedge.len() - 1) as u32));
         }
         Ok(faces)
