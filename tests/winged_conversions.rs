@@ -135,6 +135,25 @@ fn assert_same_winged(found: &Winged, expected: &Winged, what: &str) {
 /// the half-edge build, every array of it, and the half-edge build converted to a winged
 /// structure is the winged build, every record of it; both refuse the same input with the same
 /// diagnostic.
+/// One geometry module computes both kernels' normals: the face normals are the same bit for
+/// bit, and the vertex normals (unit face normals summed around the vertex, in another order)
+/// agree to rounding.
+fn assert_same_normals(mesh: &Mesh, winged: &Winged, what: &str) {
+    let faces = halfwing::geom::face_normals(mesh);
+    assert_same_array("face normals", &winged.face_normals(), &faces, what);
+    let vertices =
+        halfwing::geom::vertex_normals(mesh, halfwing::geom::VertexNormalWeighting::Uniform);
+    for (v, (found, expected)) in winged.vertex_normals().iter().zip(&vertices).enumerate() {
+        let distance = (0..3)
+            .map(|k| (found[k] - expected[k]).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            distance <= 1e-12,
+            "{what}: vertex {v}: {found:?} against {expected:?}"
+        );
+    }
+}
+
 #[test]
 fn both_builders_give_the_same_structure_on_every_model() {
     let mut compared = 0;
@@ -151,6 +170,7 @@ fn both_builders_give_the_same_structure_on_every_model() {
                     let converted = winged.to_mesh().unwrap_or_else(|e| panic!("{what}: {e}"));
                     assert_same_mesh(&converted, &mesh, &what);
                     assert_same_winged(&Winged::from_mesh(&mesh), &winged, &what);
+                    assert_same_normals(&mesh, &winged, &what);
                     compared += 1;
                 }
                 (Err(mesh_error), Err(winged_error)) => {

@@ -16,8 +16,8 @@ mod triangle_intersection;
 mod wide_integer;
 
 pub use newell::{
-    is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle, newell_vector,
-    quad_area_vector, triangle_area_vector,
+    face_corners_area_vector, is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle,
+    newell_vector, quad_area_vector, triangle_area_vector,
 };
 pub use normals::{
     VertexNormalWeighting, corner_angle, corner_normals, face_and_vertex_normals, face_area_vector,

@@ -79,6 +79,19 @@ fn unscaled_polygon_area_test(points: impl IntoIterator<Item = [f64; 3]>) -> (bo
     )
 }
 
+/// The area vector of a face from its corners in loop order, as both kernels compute it: the
+/// cross-product forms of [`triangle_area_vector`] and [`quad_area_vector`] for triangles and
+/// quads (fewer operations, and the bulk passes use them), Newell's sums for larger polygons.
+pub fn face_corners_area_vector(corners: impl IntoIterator<Item = [f64; 3]>) -> [f64; 3] {
+    let mut corners = corners.into_iter();
+    let first: [Option<[f64; 3]>; 5] = std::array::from_fn(|_| corners.next());
+    match first {
+        [Some(a), Some(b), Some(c), None, _] => triangle_area_vector(a, b, c),
+        [Some(a), Some(b), Some(c), Some(d), None] => quad_area_vector(a, b, c, d),
+        _ => newell_vector(first.into_iter().flatten().chain(corners)),
+    }
+}
+
 /// The area vector of triangle `abc` (as [`newell_vector`]: along its normal, twice its area
 /// long) from the cross product of two edges: fewer operations than Newell's sums, for the bulk
 /// passes over triangle meshes.

@@ -13,7 +13,7 @@
 
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
-use super::{newell_vector, quad_area_vector, triangle_area_vector};
+use super::{face_corners_area_vector, quad_area_vector, triangle_area_vector};
 
 /// How a vertex normal weighs the normals of the faces around the vertex.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -68,7 +68,9 @@ pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     let h0 = mesh.face_halfedges().get(f.idx()).copied();
     SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
         .area_vector(mesh.positions())
-        .unwrap_or_else(|| newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v))))
+        .unwrap_or_else(|| {
+            face_corners_area_vector(mesh.face_vertices(f).map(|v| mesh.position(v)))
+        })
 }
 
 /// The corner vertices of a triangle or a quad, read straight from the raw arrays: these make
@@ -499,7 +501,9 @@ mod tests {
     fn every_face_degree_gets_its_newell_normal_in_every_pass() {
         let mut mesh = mixed_degrees();
         for f in 0..3 {
-            let walked = newell_vector(mesh.face_vertices(FaceId(f)).map(|v| mesh.position(v)));
+            let walked = super::super::newell_vector(
+                mesh.face_vertices(FaceId(f)).map(|v| mesh.position(v)),
+            );
             assert!(
                 close(face_area_vector(&mesh, FaceId(f)), walked),
                 "face {f}"

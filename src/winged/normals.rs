@@ -3,18 +3,20 @@
 use super::error::WingedError;
 use super::ids::{FaceId, VertexId};
 use super::structure::Winged;
-use crate::geom::{newell_vector, normalized};
+use crate::geom::{face_corners_area_vector, normalized};
 
 impl Winged {
-    /// The unit normal of `f` by Newell's method over its loop (exact for planar polygons,
-    /// a least-squares plane normal for non-planar ones); zero for a degenerate face.
+    /// The unit normal of `f` from its area vector (Newell's method: exact for planar
+    /// polygons, a least-squares plane normal for non-planar ones); zero for a degenerate face.
+    /// The half-edge kernel's formula ([`face_corners_area_vector`]), so the two kernels give
+    /// the same normals for the same faces.
     ///
     /// Points outward for a counter-clockwise face.
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
         let corners = self
             .face_loop(f)?
             .map(|u| self.positions[self.tail_of(u).index()]);
-        Ok(normalized(newell_vector(corners)))
+        Ok(normalized(face_corners_area_vector(corners)))
     }
 
     /// Unit normals of all faces, indexed by face id (zero for deleted and degenerate faces).
