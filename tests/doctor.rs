@@ -147,6 +147,50 @@ fn a_moebius_strip_is_not_orientable_and_the_witness_is_a_closed_path() {
 }
 
 #[test]
+fn a_klein_bottle_is_closed_and_manifold_but_not_orientable() {
+    // An 8 x 6 grid of quads glued into a torus, except that the seam around the first
+    // direction is glued with a flip: (8, j) is (0, 6 - j). Positions on a torus of revolution
+    // (the flipped seam's quads cross the surface: the topology is what matters here).
+    let (m, n) = (8u32, 6u32);
+    let positions: Vec<[f64; 3]> = (0..m)
+        .flat_map(|i| {
+            (0..n).map(move |j| {
+                let (u, v) = (
+                    std::f64::consts::TAU * f64::from(i) / f64::from(m),
+                    std::f64::consts::TAU * f64::from(j) / f64::from(n),
+                );
+                [u.cos() * (3.0 + v.cos()), u.sin() * (3.0 + v.cos()), v.sin()]
+            })
+        })
+        .collect();
+    let vertex = |i: u32, j: u32| {
+        let (i, j) = if i == m { (0, (n - j % n) % n) } else { (i, j % n) };
+        i * n + j
+    };
+    let mut indices = Vec::new();
+    for i in 0..m {
+        for j in 0..n {
+            indices.extend([
+                vertex(i, j),
+                vertex(i + 1, j),
+                vertex(i + 1, j + 1),
+                vertex(i, j + 1),
+            ]);
+        }
+    }
+    let r = report(&positions, &vec![4; (m * n) as usize], &indices);
+    assert!(r.is_closed() && r.is_manifold(), "{r}");
+    assert_eq!(r.components.len(), 1);
+    let bottle = &r.components[0];
+    assert!(!bottle.orientable && bottle.genus.is_none(), "{r}");
+    assert_eq!(bottle.euler_characteristic, 0);
+    assert_eq!(bottle.volume, None);
+    assert!(!r.non_orientable_witness.is_empty());
+    assert!(!r.diagnostic.inconsistent_edges.is_empty());
+    assert_eq!(r.not_a_closed_polyhedron(), Some("not consistently oriented"));
+}
+
+#[test]
 fn a_bow_tie_and_an_hourglass_have_a_non_manifold_vertex_with_its_fans() {
     let positions = [
         [0.0, 0.0, 0.0],
