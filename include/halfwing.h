@@ -1768,53 +1768,6 @@ hw_status hw_doctor_report_json(const hw_doctor_report *report,
                                 size_t *needed);
 
 /**
- * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that
- * intersect other than along the vertices and edges they share (by vertex index), with the
- * semantics of CGAL's `Polygon_mesh_processing::self_intersections`: faces sharing no vertex
- * that touch anywhere, faces sharing one vertex that meet elsewhere, faces sharing an edge that
- * overlap beyond it (coplanar, third corners on the same side). A face whose triangle has
- * exactly collinear corners is degenerate: it is reported once as the pair (f, f) and not
- * tested against the others. Polygons are tested as the triangles hw_render_buffers_build()
- * gives them; the triangles of one face are not tested against each other.
- *
- * Every decision is exact, at any magnitude of finite coordinates. O(n log n + k) for n
- * triangles and k pairs of overlapping bounding boxes; on hw_set_thread_count() threads. On
- * success `*out_pairs` receives the pairs, sorted, smaller face first; release them with
- * hw_face_pairs_free(). `HW_ERR_INVALID_INPUT`: the sizes do not add up to `n_indices`, an
- * index is out of range, or a corner of a face has a NaN or infinite coordinate (the
- * message names the face and the vertex).
- *
- * # Safety
- * As for hw_mesh_from_indexed(); `out_pairs` writable.
- */
-hw_status hw_self_intersections_indexed(const double *positions,
-                                        size_t n_vertices,
-                                        const uint32_t *face_sizes,
-                                        size_t n_faces,
-                                        const uint32_t *indices,
-                                        size_t n_indices,
-                                        hw_face_pairs **out_pairs);
-
-/**
- * A zero-copy view of the pairs: `*out_ids` holds `2 * *out_n_pairs` face ids (NULL when there
- * are none), valid as long as `pairs`.
- *
- * # Safety
- * `pairs` must be NULL or live; `out_ids` and `out_n_pairs` writable.
- */
-hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
-                             const uint32_t **out_ids,
-                             size_t *out_n_pairs);
-
-/**
- * Releases face pairs. NULL is a no-op; freeing twice is detected and refused.
- *
- * # Safety
- * `pairs` must be NULL or from this library, not in use by another thread.
- */
-void hw_face_pairs_free(hw_face_pairs *pairs);
-
-/**
  * Adds an isolated vertex at `xyz[0..3]` (finite) and gives its id in `*out_vertex`.
  *
  * # Safety
@@ -2493,6 +2446,53 @@ size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
 hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
                                    float *out_min,
                                    float *out_max);
+
+/**
+ * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that
+ * intersect other than along the vertices and edges they share (by vertex index), with the
+ * semantics of CGAL's `Polygon_mesh_processing::self_intersections`: faces sharing no vertex
+ * that touch anywhere, faces sharing one vertex that meet elsewhere, faces sharing an edge that
+ * overlap beyond it (coplanar, third corners on the same side). A face whose triangle has
+ * exactly collinear corners is degenerate: it is reported once as the pair (f, f) and not
+ * tested against the others. Polygons are tested as the triangles hw_render_buffers_build()
+ * gives them; the triangles of one face are not tested against each other.
+ *
+ * Every decision is exact, at any magnitude of finite coordinates. O(n log n + k) for n
+ * triangles and k pairs of overlapping bounding boxes; on hw_set_thread_count() threads. On
+ * success `*out_pairs` receives the pairs, sorted, smaller face first; release them with
+ * hw_face_pairs_free(). `HW_ERR_INVALID_INPUT`: the sizes do not add up to `n_indices`, an
+ * index is out of range, or a corner of a face has a NaN or infinite coordinate (the
+ * message names the face and the vertex).
+ *
+ * # Safety
+ * As for hw_mesh_from_indexed(); `out_pairs` writable.
+ */
+hw_status hw_self_intersections_indexed(const double *positions,
+                                        size_t n_vertices,
+                                        const uint32_t *face_sizes,
+                                        size_t n_faces,
+                                        const uint32_t *indices,
+                                        size_t n_indices,
+                                        hw_face_pairs **out_pairs);
+
+/**
+ * A zero-copy view of the pairs: `*out_ids` holds `2 * *out_n_pairs` face ids (NULL when there
+ * are none), valid as long as `pairs`.
+ *
+ * # Safety
+ * `pairs` must be NULL or live; `out_ids` and `out_n_pairs` writable.
+ */
+hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
+                             const uint32_t **out_ids,
+                             size_t *out_n_pairs);
+
+/**
+ * Releases face pairs. NULL is a no-op; freeing twice is detected and refused.
+ *
+ * # Safety
+ * `pairs` must be NULL or from this library, not in use by another thread.
+ */
+void hw_face_pairs_free(hw_face_pairs *pairs);
 
 /**
  * A short, static, NUL-terminated English description of `status`. Unknown values give

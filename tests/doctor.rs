@@ -159,12 +159,20 @@ fn a_klein_bottle_is_closed_and_manifold_but_not_orientable() {
                     std::f64::consts::TAU * f64::from(i) / f64::from(m),
                     std::f64::consts::TAU * f64::from(j) / f64::from(n),
                 );
-                [u.cos() * (3.0 + v.cos()), u.sin() * (3.0 + v.cos()), v.sin()]
+                [
+                    u.cos() * (3.0 + v.cos()),
+                    u.sin() * (3.0 + v.cos()),
+                    v.sin(),
+                ]
             })
         })
         .collect();
     let vertex = |i: u32, j: u32| {
-        let (i, j) = if i == m { (0, (n - j % n) % n) } else { (i, j % n) };
+        let (i, j) = if i == m {
+            (0, (n - j % n) % n)
+        } else {
+            (i, j % n)
+        };
         i * n + j
     };
     let mut indices = Vec::new();
@@ -187,7 +195,10 @@ fn a_klein_bottle_is_closed_and_manifold_but_not_orientable() {
     assert_eq!(bottle.volume, None);
     assert!(!r.non_orientable_witness.is_empty());
     assert!(!r.diagnostic.inconsistent_edges.is_empty());
-    assert_eq!(r.not_a_closed_polyhedron(), Some("not consistently oriented"));
+    assert_eq!(
+        r.not_a_closed_polyhedron(),
+        Some("not consistently oriented")
+    );
 }
 
 #[test]

@@ -36,6 +36,8 @@ pub enum Invariant {
     /// Walking `twin(prev(h))` around a vertex returns to `vertex_halfedge(v)` within the
     /// half-edge count.
     VertexFanClosed,
+    /// No two edges join the same two vertices (nor an edge a vertex to itself).
+    EdgesDistinct,
 }
 
 impl fmt::Display for Invariant {
@@ -54,6 +56,7 @@ impl fmt::Display for Invariant {
             Invariant::VertexHalfedgeOnBoundary => "a boundary vertex stores a boundary half-edge",
             Invariant::IsolatedVertexHasNoHalfedge => "an isolated vertex has no half-edge",
             Invariant::VertexFanClosed => "vertex fan closes",
+            Invariant::EdgesDistinct => "no two edges join the same two vertices",
         })
     }
 }
@@ -106,7 +109,44 @@ impl Mesh {
         self.check_lengths()?;
         self.check_halfedges()?;
         self.check_faces()?;
-        self.check_vertices()
+        self.check_vertices()?;
+        self.check_edges_distinct()
+    }
+
+    /// Half-edges grouped by origin (a counting sort), then each vertex's targets stamped: a
+    /// target met twice is a second edge between the two vertices. Linear in the elements.
+    fn check_edges_distinct(&self) -> Result<(), InvariantError> {
+        let n_v = self.vertex_halfedge.len();
+        let live =
+            || (0..self.origin.len() as u32).filter(|&h| !self.is_halfedge_deleted(HalfedgeId(h)));
+        let mut start = vec![0u32; n_v + 1];
+        for h in live() {
+            start[self.origin[h as usize] as usize + 1] += 1;
+        }
+        for v in 0..n_v {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut by_origin = vec![0u32; start[n_v] as usize];
+        for h in live() {
+            let slot = &mut fill[self.origin[h as usize] as usize];
+            by_origin[*slot as usize] = h;
+            *slot += 1;
+        }
+        let mut stamp = vec![INVALID_INDEX; n_v];
+        for v in 0..n_v {
+            for &h in &by_origin[start[v] as usize..start[v + 1] as usize] {
+                let target = self.origin[h as usize ^ 1] as usize;
+                if stamp[target] == v as u32 {
+                    return fail(
+                        Invariant::EdgesDistinct,
+                        Element::Edge(HalfedgeId(h).edge()),
+                    );
+                }
+                stamp[target] = v as u32;
+            }
+        }
+        Ok(())
     }
 
     fn check_lengths(&self) -> Result<(), InvariantError> {
@@ -276,6 +316,36 @@ mod tests {
         assert_eq!(mesh.check(), Ok(()));
         corrupt(&mut mesh);
         mesh.check().unwrap_err()
+    }
+
+    /// Before: two edges between the same vertices passed the check (triangulate_face could
+    /// make them).
+    #[test]
+    fn a_second_edge_between_two_vertices_is_found() {
+        // Two triangles apart, 0-1-2 and 3-4-5; then vertices 3 and 5 renamed 0 and 2: edge
+        // 3-5 becomes a second edge 0-2, each vertex keeping a fan of its own.
+        let positions = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [0.0, -1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        let list = FaceList::triangles(&positions, &[0, 1, 2, 3, 5, 4]);
+        let mut mesh = Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0;
+        assert_eq!(mesh.check(), Ok(()));
+        for origin in &mut mesh.origin {
+            *origin = match *origin {
+                3 => 0,
+                5 => 2,
+                v => v,
+            };
+        }
+        mesh.vertex_halfedge[3] = INVALID_INDEX;
+        mesh.vertex_halfedge[5] = INVALID_INDEX;
+        let error = mesh.check().unwrap_err();
+        assert_eq!(error.invariant, Invariant::EdgesDistinct, "{error}");
     }
 
     #[test]
