@@ -76,6 +76,13 @@ impl<'a> FaceTable<'a> {
                 }
             }
             FaceSizes::PerFace(sizes) => {
+                // Refused before the offsets are allocated: 2^32 - 1 faces would take 16 GiB.
+                if sizes.len() as u64 >= u64::from(u32::MAX) {
+                    return Err(ListProblem::TooManyElements {
+                        what: "faces",
+                        count: sizes.len() as u64,
+                    });
+                }
                 let mut offsets = Vec::with_capacity(sizes.len() + 1);
                 let mut total: u64 = 0;
                 offsets.push(0);
