@@ -6,6 +6,7 @@ pub(crate) use newell::{
     triangle_squared_size,
 };
 mod normals;
+pub(crate) use newell::rescued_area_vector;
 pub(crate) use normals::normalized;
 mod box_tree;
 mod exact_orientation;

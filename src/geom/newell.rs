@@ -92,6 +92,32 @@ pub fn face_corners_area_vector(corners: impl IntoIterator<Item = [f64; 3]>) -> 
     }
 }
 
+/// `area_vector`, the area vector of a face whose corners `corners` gives, when its length is a
+/// normal double; when the length overflowed (coordinates near 1e308) or underflowed (a face
+/// smaller than about 1e-154), the area vector of the corners moved to the origin and scaled to
+/// unit size: the same direction, another length. Zero stays zero for a face without area.
+pub(crate) fn rescued_area_vector(
+    area_vector: [f64; 3],
+    corners: impl FnOnce() -> Vec<[f64; 3]>,
+) -> [f64; 3] {
+    /// Faces whose corners differ by more than this have area vectors that cannot underflow:
+    /// a zero one is a face without area.
+    const UNDERFLOW_FREE_SIZE: f64 = 1e-140;
+    let squared = squared_length(area_vector);
+    if squared.is_normal() && squared < f64::INFINITY {
+        return area_vector;
+    }
+    let corners = corners();
+    let overflowed = !squared.is_finite();
+    let tiny = corners
+        .iter()
+        .all(|p| (0..3).all(|k| (p[k] - corners[0][k]).abs() <= UNDERFLOW_FREE_SIZE));
+    match scaled_to_unit_size(&corners) {
+        Some(scaled) if overflowed || tiny => face_corners_area_vector(scaled),
+        _ => area_vector,
+    }
+}
+
 /// The area vector of triangle `abc` (as [`newell_vector`]: along its normal, twice its area
 /// long) from the cross product of two edges: fewer operations than Newell's sums, for the bulk
 /// passes over triangle meshes.

@@ -13,6 +13,7 @@
 
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
+use super::newell::rescued_area_vector;
 use super::{face_corners_area_vector, quad_area_vector, triangle_area_vector};
 
 /// How a vertex normal weighs the normals of the faces around the vertex.
@@ -63,14 +64,16 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
     }
 }
 
-/// Newell vector of face `f`: along its normal, twice its area long.
+/// Newell vector of face `f`: along its normal, twice its area long; when that length would
+/// overflow or underflow a double (coordinates near 1e308, faces smaller than about 1e-154),
+/// along its normal at another length.
 pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
     let h0 = mesh.face_halfedges().get(f.idx()).copied();
-    SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
+    let corners = || mesh.face_vertices(f).map(|v| mesh.position(v));
+    let area_vector = SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
         .area_vector(mesh.positions())
-        .unwrap_or_else(|| {
-            face_corners_area_vector(mesh.face_vertices(f).map(|v| mesh.position(v)))
-        })
+        .unwrap_or_else(|| face_corners_area_vector(corners()));
+    rescued_area_vector(area_vector, || corners().collect())
 }
 
 /// The corner vertices of a triangle or a quad, read straight from the raw arrays: these make
@@ -224,6 +227,11 @@ fn accumulate_face_weighted(
             continue;
         };
         let unit = normalized(area_vector);
+        if unit == [0.0; 3] {
+            // No area, or a length out of a double's range: the general walk rescues the latter.
+            add_polygon(mesh, f, weighting, visit_face, sums);
+            continue;
+        }
         visit_face(f, unit);
         corners.add_to_corners(sums, face_weighted(weighting, area_vector, unit));
     }
@@ -361,8 +369,20 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
 /// `origin(prev(h))`, in radians (0 for a zero-length edge).
 pub fn corner_angle(mesh: &Mesh, h: HalfedgeId) -> f64 {
     let at = mesh.position(mesh.origin(h));
-    let to_next = sub(mesh.position(mesh.target(h)), at);
-    let to_prev = sub(mesh.position(mesh.origin(mesh.prev(h))), at);
+    // Each edge vector scaled to a largest component of 1 (halved first, so no difference
+    // overflows): the angle does not change, and no product over- or underflows at any scale.
+    let direction = |to: [f64; 3]| {
+        let half: [f64; 3] = std::array::from_fn(|k| 0.5 * to[k] - 0.5 * at[k]);
+        let largest = half.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        // A division, not a reciprocal: 1 / largest overflows for subnormal edges.
+        if largest > 0.0 {
+            half.map(|x| x / largest)
+        } else {
+            half
+        }
+    };
+    let to_next = direction(mesh.position(mesh.target(h)));
+    let to_prev = direction(mesh.position(mesh.origin(mesh.prev(h))));
     let c = cross(to_next, to_prev);
     // atan2 of |a×b| and a·b is accurate for small and near-π angles alike.
     dot(c, c).sqrt().atan2(dot(to_next, to_prev))
@@ -372,10 +392,6 @@ fn add_scaled(sum: &mut [f64; 3], v: [f64; 3], weight: f64) {
     for i in 0..3 {
         sum[i] += weight * v[i];
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -440,7 +456,7 @@ mod tests {
                 add_scaled(&mut c, mesh.position(v), 0.25);
                 c
             });
-            assert!(dot(normals[f as usize], sub(centre, [0.5; 3])) > 0.0);
+            assert!(dot(normals[f as usize], centre.map(|x| x - 0.5)) > 0.0);
         }
     }
 

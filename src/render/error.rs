@@ -20,6 +20,16 @@ pub enum RenderError {
     /// The crease angle is NaN, infinite or negative.
     #[error("crease angle {0} is not a finite angle of at least 0 radians")]
     BadCreaseAngle(f64),
+    /// A vertex lies beyond single precision (±3.4e38), which every render buffer holds.
+    #[error(
+        "vertex {vertex} at {position:?} is beyond the single-precision range (3.4e38) of the render buffers"
+    )]
+    BeyondSinglePrecision {
+        /// The first such vertex.
+        vertex: u32,
+        /// Its position.
+        position: [f64; 3],
+    },
     /// The normal glyph length is NaN, infinite, zero or negative.
     #[error("normal glyph length {0} is not a positive finite length")]
     BadGlyphLength(f64),

@@ -44,12 +44,25 @@ pub struct MeshBuffers {
 /// it supplies the non-manifold edges (which a half-edge mesh cannot hold as such).
 ///
 /// # Errors
-/// As [`surface_buffer`], [`non_manifold_lines`] and the glyph builders.
+/// [`RenderError::BeyondSinglePrecision`] for a vertex beyond ±3.4e38; as [`surface_buffer`],
+/// [`non_manifold_lines`] and the glyph builders.
 pub fn mesh_buffers(
     mesh: &Mesh,
     diagnostic: Option<&Diagnostic>,
     options: &MeshBufferOptions<'_>,
 ) -> Result<MeshBuffers, RenderError> {
+    if let Some(v) = (0..mesh.vertex_capacity() as u32).find(|&v| {
+        !mesh.is_vertex_deleted(crate::mesh::VertexId(v))
+            && mesh
+                .position(crate::mesh::VertexId(v))
+                .iter()
+                .any(|x| x.abs() > f64::from(f32::MAX))
+    }) {
+        return Err(RenderError::BeyondSinglePrecision {
+            vertex: v,
+            position: mesh.position(crate::mesh::VertexId(v)),
+        });
+    }
     let glyph_length = match options.glyph_length {
         Some(length) => length,
         // A mesh without edges has no glyphs to draw; any positive length will do.

@@ -22,7 +22,9 @@ fn along(from: [f64; 3], unit: [f64; 3], length: f64) -> [f64; 3] {
 /// The mean length of the live edges (0 without edges): a glyph length that suits the mesh's
 /// resolution, whatever its units.
 pub fn mean_edge_length(mesh: &Mesh) -> f64 {
-    let (mut sum, mut count) = (0.0, 0usize);
+    // A running mean of lengths computed without squaring overflow: finite for any finite
+    // coordinates (a sum of lengths near 1e308, or their squares above 1e154, would not be).
+    let (mut mean, mut count) = (0.0, 0.0);
     for e in 0..mesh.edge_capacity() {
         let e = crate::mesh::EdgeId(e as u32);
         if mesh.is_edge_deleted(e) {
@@ -30,11 +32,18 @@ pub fn mean_edge_length(mesh: &Mesh) -> f64 {
         }
         let h = e.halfedge(0);
         let (a, b) = (mesh.position(mesh.origin(h)), mesh.position(mesh.target(h)));
-        let d: f64 = (0..3).map(|axis| (b[axis] - a[axis]).powi(2)).sum();
-        sum += d.sqrt();
-        count += 1;
+        let half: [f64; 3] = std::array::from_fn(|k| 0.5 * b[k] - 0.5 * a[k]);
+        let largest = half.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let length = if largest > 0.0 {
+            let sum: f64 = half.iter().map(|x| (x / largest).powi(2)).sum();
+            2.0 * largest * sum.sqrt()
+        } else {
+            0.0
+        };
+        count += 1.0;
+        mean += (length - mean) / count;
     }
-    if count == 0 { 0.0 } else { sum / count as f64 }
+    if mean.is_finite() { mean } else { f64::MAX }
 }
 
 /// One glyph per vertex that has a normal (isolated vertices have none), `length` long.

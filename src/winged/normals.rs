@@ -3,7 +3,7 @@
 use super::error::WingedError;
 use super::ids::{FaceId, VertexId};
 use super::structure::Winged;
-use crate::geom::{face_corners_area_vector, normalized};
+use crate::geom::{face_corners_area_vector, normalized, rescued_area_vector};
 
 impl Winged {
     /// The unit normal of `f` from its area vector (Newell's method: exact for planar
@@ -13,10 +13,17 @@ impl Winged {
     ///
     /// Points outward for a counter-clockwise face.
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
-        let corners = self
-            .face_loop(f)?
-            .map(|u| self.positions[self.tail_of(u).index()]);
-        Ok(normalized(face_corners_area_vector(corners)))
+        let corners = || {
+            self.face_loop(f)
+                .into_iter()
+                .flatten()
+                .map(|u| self.positions[self.tail_of(u).index()])
+        };
+        self.face_loop(f)?;
+        let area_vector = face_corners_area_vector(corners());
+        Ok(normalized(rescued_area_vector(area_vector, || {
+            corners().collect()
+        })))
     }
 
     /// Unit normals of all faces, indexed by face id (zero for deleted and degenerate faces).
