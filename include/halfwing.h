@@ -33,7 +33,7 @@
  * Many ids at once, four ways: copies into a caller's buffer (the size needed is always
  * reported, so a caller can ask, allocate and call again); zero-copy views of the internal arrays
  * (hw_mesh_view(), valid until the next mutating call); stack circulators (`hw_circ_*`, for the
- * course notes' `do { ... } while (h != start);` loops); and callbacks (hw_mesh_visit(),
+ * textbook `do { ... } while (h != start);` loops); and callbacks (hw_mesh_visit(),
  * hw_circ_visit(): a function and a `void *userdata`; the function stops a visit by returning
  * false and must not throw or `longjmp` through the call).
  */
@@ -576,10 +576,10 @@ typedef struct {
 /**
  * Baumgart's edge record. An edge runs `start → end`; its **left** side is the loop that walks
  * it `start → end`, its **right** side the loop that walks it `end → start`; each side has the
- * previous and next edge of that loop (its wings). The same fields under the course notes'
- * three naming conventions:
+ * previous and next edge of that loop (its wings). The same fields under three naming
+ * conventions:
  *
- * | field        | seed 000 (Baumgart) | seed 003 (Granada) | seed 001 (Wikipedia) |
+ * | field        | Baumgart            | Granada            | Wikipedia            |
  * |--------------|---------------------|--------------------|----------------------|
  * | `start`      | VSTART              | Vi                 | vert_origin          |
  * | `end`        | VEND                | Vf                 | vert_destination     |
@@ -614,7 +614,7 @@ typedef uint32_t hw_wnormals;
 typedef uint32_t hw_wtable;
 
 /**
- * Which course notes' column names a table uses.
+ * Which naming scheme a table's columns use.
  */
 typedef uint32_t hw_wnaming;
 
@@ -877,7 +877,7 @@ typedef struct {
 #define HW_BUILD_REPAIR 2
 
 /**
- * Unit face normals summed: OpenMesh's default, the course notes' average.
+ * Unit face normals summed: OpenMesh's default, the textbook average.
  */
 #define HW_WEIGHT_UNIFORM 0
 
@@ -1232,7 +1232,7 @@ typedef struct {
 #define HW_WNORMALS_VERTICES 1
 
 /**
- * The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge" table).
+ * The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
  */
 #define HW_WTABLE_VERTICES 0
 
@@ -1252,18 +1252,18 @@ typedef struct {
 #define HW_WTABLE_ALL 3
 
 /**
- * Seed 000 (Baumgart's cube): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
+ * Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
  * from 1 with a letter (V1, E1, F1).
  */
 #define HW_WNAMING_CW_CCW 0
 
 /**
- * Seed 003 (Granada): Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+ * The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
  */
 #define HW_WNAMING_DIRECT_INVERSE 1
 
 /**
- * Seed 001 (Wikipedia): vert_origin ... edge_right_ccw; elements numbered from 0.
+ * Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
  */
 #define HW_WNAMING_LEFT_RIGHT 2
 
@@ -2071,7 +2071,7 @@ size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
 
 /**
- * The vertex half-edge `h` leaves (the seeds' `Origin`/`v`).
+ * The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
@@ -2087,7 +2087,7 @@ hw_vertex hw_mesh_he_origin(const hw_mesh *mesh, hw_halfedge h);
 hw_vertex hw_mesh_he_target(const hw_mesh *mesh, hw_halfedge h);
 
 /**
- * The opposite half-edge of `h` (`h.idx ^ 1`; the seeds' `Twin`/`sym`).
+ * The opposite half-edge of `h` (`h.idx ^ 1`; `Twin` or `sym` in textbook notation).
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
@@ -2501,7 +2501,8 @@ void hw_face_pairs_free(hw_face_pairs *pairs);
 const char *hw_status_str(hw_status status);
 
 /**
- * The tetrahedron of seed `000_…`, with its exact coordinates and faces.
+ * The regular tetrahedron of the winged-edge literature's worked example, with its exact
+ * coordinates and faces.
  *
  * # Safety
  * `out_mesh` must be writable.
@@ -2825,7 +2826,7 @@ hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
  * arrays are built on first use (by this call or any half-edge query), once, safely even when
  * several threads ask at the same time.
  *
- * A cell walk in C, as in the course notes:
+ * A cell walk in C:
  * ```c
  * uint32_t h = cell_halfedge[s], start = h;
  * if (h != HW_INVALID_INDEX) do { visit(h); h = next[h]; } while (h != start);
@@ -3134,8 +3135,8 @@ hw_status hw_voronoi_lloyd(const double *xy,
 hw_winged *hw_winged_new(void);
 
 /**
- * Builds a winged-edge structure from an indexed polygon list, by the algorithm of the slide
- * "Creación a partir de malla indexada" (seed 003) with a bulk edge lookup.
+ * Builds a winged-edge structure from an indexed polygon list: each face's edges are found
+ * or created through a bulk edge lookup, as in the classic construction from an indexed mesh.
  *
  * The arrays, `policy`, the statuses and the diagnostic are exactly those of
  * hw_mesh_from_indexed(): the same input is refused, skipped or repaired the same way by both
@@ -3165,7 +3166,7 @@ hw_status hw_winged_from_indexed(const double *positions,
  * Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
  * `edge_order` lists them: edge `i` runs from `edge_order[2 i]` to `edge_order[2 i + 1]`, and
  * the face walking it that way is its left face. This reproduces tables whose edge numbering was
- * made by hand, as the course notes' are. `n_edges` must be the edge count of the faces and
+ * made by hand, as textbook examples are. `n_edges` must be the edge count of the faces and
  * every edge must be listed once, in either direction; otherwise `HW_ERR_INVALID_INPUT` with
  * the first mismatch in the message.
  *
@@ -3349,14 +3350,16 @@ hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
 /**
- * Unit normal of vertex `v` as seed 000 computes it: the normalised sum of the unit normals of
+ * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit normals of
  * the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
  * NULL gives `HW_ERR_NULL_ARGUMENT`).
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  */
-hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+hw_status hw_winged_vertex_normal(const hw_winged *winged,
+                                  hw_wvertex v,
+                                  double *out_normal);
 
 /**
  * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
@@ -3386,7 +3389,7 @@ hw_status hw_winged_normals(const hw_winged *winged,
 hw_status hw_winged_check(const hw_winged *winged);
 
 /**
- * Prints a table of the structure in the course notes' layout (`which`: ::HW_WTABLE_VERTICES,
+ * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
  * ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_TEXT, ...) into `buf` (`len`
  * bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL) always
  * receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or

@@ -763,7 +763,7 @@ class winged {
   /// Throws hw::error naming the first broken invariant, if any.
   void check_invariants() const { check(hw_winged_check(get())); }
 
-  /// A table in the course notes' layout; see hw_winged_table().
+  /// A table in a textbook layout; see hw_winged_table().
   std::string table(hw_wtable which, hw_wnaming naming = HW_WNAMING_CW_CCW,
                     hw_table_format format = HW_TABLE_TEXT) const {
     return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
@@ -1105,7 +1105,8 @@ class render_buffers {
   owner raw_;
 };
 
-/// Surface generators (seed 003) and primitives; bad parameters throw hw::error.
+/// Surface generators (sweeps, revolutions, ruled surfaces) and primitives; bad parameters throw
+/// hw::error.
 namespace surface {
 
 using point = std::array<double, 3>;

@@ -1,6 +1,6 @@
 //! Navigation on a `const hw_mesh *`: one step from an element to its neighbour.
 //!
-//! These return the id (or value) directly so that the course notes' loops read almost word for
+//! These return the id (or value) directly so that textbook half-edge loops read almost word for
 //! word in C:
 //! ```c
 //! hw_halfedge start = hw_mesh_face_halfedge(mesh, f), h = start;
@@ -13,7 +13,7 @@ use super::elements::{hw_edge, hw_face, hw_halfedge, hw_vertex};
 use super::error::FfiError;
 use super::mesh::{hw_mesh, query};
 
-/// The vertex half-edge `h` leaves (the seeds' `Origin`/`v`).
+/// The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
@@ -39,7 +39,7 @@ pub unsafe extern "C" fn hw_mesh_he_target(mesh: *const hw_mesh, h: hw_halfedge)
     }
 }
 
-/// The opposite half-edge of `h` (`h.idx ^ 1`; the seeds' `Twin`/`sym`).
+/// The opposite half-edge of `h` (`h.idx ^ 1`; `Twin` or `sym` in textbook notation).
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.

@@ -15,7 +15,7 @@ use super::threads::with_threads;
 
 /// How a vertex normal weighs the faces around it.
 pub type hw_normal_weighting = u32;
-/// Unit face normals summed: OpenMesh's default, the course notes' average.
+/// Unit face normals summed: OpenMesh's default, the textbook average.
 pub const HW_WEIGHT_UNIFORM: hw_normal_weighting = 0;
 /// Face normals weighted by face area.
 pub const HW_WEIGHT_AREA: hw_normal_weighting = 1;

@@ -1,4 +1,4 @@
-//! Surface generators (seed `003_…`, last slides) and primitives, returning new meshes.
+//! Surface generators (sweeps, revolutions, ruled surfaces) and primitives, returning new meshes.
 //!
 //! Every generator checks every parameter: a bad one gives `HW_ERR_INVALID_INPUT` with a message
 //! naming it (a NaN coordinate, too few points, a segment on the axis...), and `*out_mesh` is left
@@ -95,7 +95,8 @@ unsafe fn give_mesh(
     Ok(())
 }
 
-/// The tetrahedron of seed `000_…`, with its exact coordinates and faces.
+/// The regular tetrahedron of the winged-edge literature's worked example, with its exact
+/// coordinates and faces.
 ///
 /// # Safety
 /// `out_mesh` must be writable.

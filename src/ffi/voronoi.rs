@@ -267,7 +267,7 @@ fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError>
 /// arrays are built on first use (by this call or any half-edge query), once, safely even when
 /// several threads ask at the same time.
 ///
-/// A cell walk in C, as in the course notes:
+/// A cell walk in C:
 /// ```c
 /// uint32_t h = cell_halfedge[s], start = h;
 /// if (h != HW_INVALID_INDEX) do { visit(h); h = next[h]; } while (h != start);

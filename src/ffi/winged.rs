@@ -57,10 +57,10 @@ id_conversions!(hw_wvertex <=> VertexId, hw_wedge <=> EdgeId, hw_wface <=> FaceI
 
 /// Baumgart's edge record. An edge runs `start → end`; its **left** side is the loop that walks
 /// it `start → end`, its **right** side the loop that walks it `end → start`; each side has the
-/// previous and next edge of that loop (its wings). The same fields under the course notes'
-/// three naming conventions:
+/// previous and next edge of that loop (its wings). The same fields under three naming
+/// conventions:
 ///
-/// | field        | seed 000 (Baumgart) | seed 003 (Granada) | seed 001 (Wikipedia) |
+/// | field        | Baumgart            | Granada            | Wikipedia            |
 /// |--------------|---------------------|--------------------|----------------------|
 /// | `start`      | VSTART              | Vi                 | vert_origin          |
 /// | `end`        | VEND                | Vf                 | vert_destination     |
@@ -173,8 +173,8 @@ pub extern "C" fn hw_winged_new() -> *mut hw_winged {
     })
 }
 
-/// Builds a winged-edge structure from an indexed polygon list, by the algorithm of the slide
-/// "Creación a partir de malla indexada" (seed 003) with a bulk edge lookup.
+/// Builds a winged-edge structure from an indexed polygon list: each face's edges are found
+/// or created through a bulk edge lookup, as in the classic construction from an indexed mesh.
 ///
 /// The arrays, `policy`, the statuses and the diagnostic are exactly those of
 /// hw_mesh_from_indexed(): the same input is refused, skipped or repaired the same way by both
@@ -217,7 +217,7 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
 /// Builds like hw_winged_from_indexed() (strict policy), but numbers and directs the edges as
 /// `edge_order` lists them: edge `i` runs from `edge_order[2 i]` to `edge_order[2 i + 1]`, and
 /// the face walking it that way is its left face. This reproduces tables whose edge numbering was
-/// made by hand, as the course notes' are. `n_edges` must be the edge count of the faces and
+/// made by hand, as textbook examples are. `n_edges` must be the edge count of the faces and
 /// every edge must be listed once, in either direction; otherwise `HW_ERR_INVALID_INPUT` with
 /// the first mismatch in the message.
 ///
@@ -514,7 +514,7 @@ pub unsafe extern "C" fn hw_winged_face_normal(
     }
 }
 
-/// Unit normal of vertex `v` as seed 000 computes it: the normalised sum of the unit normals of
+/// Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit normals of
 /// the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
 /// NULL gives `HW_ERR_NULL_ARGUMENT`).
 ///
@@ -611,7 +611,7 @@ pub unsafe extern "C" fn hw_winged_check(winged: *const hw_winged) -> hw_status 
 
 /// Which table hw_winged_table() prints.
 pub type hw_wtable = u32;
-/// The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge" table).
+/// The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
 pub const HW_WTABLE_VERTICES: hw_wtable = 0;
 /// The face table: id, stored edge ("Face-Edge").
 pub const HW_WTABLE_FACES: hw_wtable = 1;
@@ -620,14 +620,14 @@ pub const HW_WTABLE_EDGES: hw_wtable = 2;
 /// The three tables, vertex, face and edge, separated by a blank line.
 pub const HW_WTABLE_ALL: hw_wtable = 3;
 
-/// Which course notes' column names a table uses.
+/// Which naming scheme a table's columns use.
 pub type hw_wnaming = u32;
-/// Seed 000 (Baumgart's cube): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
+/// Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
 /// from 1 with a letter (V1, E1, F1).
 pub const HW_WNAMING_CW_CCW: hw_wnaming = 0;
-/// Seed 003 (Granada): Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+/// The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
 pub const HW_WNAMING_DIRECT_INVERSE: hw_wnaming = 1;
-/// Seed 001 (Wikipedia): vert_origin ... edge_right_ccw; elements numbered from 0.
+/// Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
 pub const HW_WNAMING_LEFT_RIGHT: hw_wnaming = 2;
 
 /// How a table is written.
@@ -639,7 +639,7 @@ pub const HW_TABLE_MARKDOWN: hw_table_format = 1;
 /// Comma-separated values with a header row; a hole is an empty field.
 pub const HW_TABLE_CSV: hw_table_format = 2;
 
-/// Prints a table of the structure in the course notes' layout (`which`: ::HW_WTABLE_VERTICES,
+/// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
 /// ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_TEXT, ...) into `buf` (`len`
 /// bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL) always
 /// receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or
