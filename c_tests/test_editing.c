@@ -359,9 +359,77 @@ static void thread_count(void) {
   hw_mesh_free(mesh);
 }
 
+/* A quad 0-1-2-3 (corners from `start` on) closed into a pillow by triangles 0-2-1 and 0-3-2:
+ * its diagonal 0-2 is an edge already. */
+static hw_mesh *pillow(uint32_t start) {
+  static const double positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const uint32_t sizes[] = {4, 3, 3};
+  uint32_t faces[] = {0, 0, 0, 0, 0, 2, 1, 0, 3, 2};
+  uint32_t k;
+  hw_mesh *mesh = NULL;
+  for (k = 0; k < 4; ++k) faces[k] = (start + k) % 4;
+  CHECK(hw_mesh_from_indexed(positions, 4, sizes, 3, faces, 10, HW_BUILD_STRICT, &mesh, NULL) ==
+        HW_OK);
+  return mesh;
+}
+
+/* The half-edge of face `f` into vertex `v`. */
+static hw_halfedge into_vertex(const hw_mesh *mesh, hw_face f, uint32_t v) {
+  hw_halfedge h = hw_mesh_face_halfedge(mesh, f);
+  while (hw_mesh_he_target(mesh, h).idx != v) h = hw_mesh_he_next(mesh, h);
+  return h;
+}
+
+/* Before: hw_mesh_triangulate_face refused the quad from 2 of its 4 start corners (its
+ * triangulation's diagonal was the edge 0-2), hw_mesh_split_face joined the two corners of one
+ * vertex (an edge from a vertex to itself) and triangulating that face did too. */
+static void existing_edges_and_repeated_corners(void) {
+  hw_face quad = {0};
+  hw_halfedge h0, h1, made;
+  size_t n_tri = 0;
+  uint32_t start;
+  hw_winged *winged = hw_winged_new();
+  hw_wvertex v0, v1, v2;
+  hw_wface point_face;
+  hw_wedge edge;
+  hw_mesh *struts = NULL;
+  const double origin[3] = {0, 0, 0}, east[3] = {1, 0, 0}, north_east[3] = {1, 1, 0};
+
+  for (start = 0; start < 4; ++start) {
+    hw_mesh *mesh = pillow(start);
+    CHECK(hw_mesh_triangulate_face(mesh, quad, &n_tri) == HW_OK && n_tri == 2);
+    CHECK(hw_mesh_n_edges(mesh) == 6 && hw_mesh_check(mesh) == HW_OK);
+    hw_mesh_free(mesh);
+  }
+  {
+    hw_mesh *mesh = pillow(0);
+    h0 = into_vertex(mesh, quad, 0);
+    h1 = into_vertex(mesh, quad, 2);
+    CHECK_STATUS(hw_mesh_split_face(mesh, h0, h1, &made), HW_ERR_REFUSED, "already joined");
+    CHECK(hw_mesh_n_edges(mesh) == 5 && hw_mesh_check(mesh) == HW_OK);
+    hw_mesh_free(mesh);
+  }
+
+  /* A path of two struts v0-v1-v2: its face's loop v0 v1 v2 v1 visits v1 twice. */
+  CHECK(hw_winged_mvfs(winged, origin, &v0, &point_face) == HW_OK);
+  CHECK(hw_winged_mev(winged, point_face, v0, east, &edge, &v1) == HW_OK);
+  CHECK(hw_winged_mev(winged, point_face, v1, north_east, &edge, &v2) == HW_OK);
+  CHECK(hw_winged_to_mesh(winged, &struts) == HW_OK);
+  h0 = into_vertex(struts, quad, v1.idx);
+  h1 = hw_mesh_he_next(struts, hw_mesh_he_next(struts, h0));
+  CHECK(hw_mesh_he_target(struts, h1).idx == v1.idx);
+  CHECK_STATUS(hw_mesh_split_face(struts, h0, h1, &made), HW_ERR_REFUSED, "one vertex");
+  CHECK(hw_mesh_n_edges(struts) == 2);
+  CHECK(hw_mesh_triangulate_face(struts, quad, &n_tri) == HW_OK && n_tri == 2);
+  CHECK(hw_mesh_n_edges(struts) == 3 && hw_mesh_check(struts) == HW_OK);
+  hw_mesh_free(struts);
+  hw_winged_free(winged);
+}
+
 int main(void) {
   normals();
   editing();
+  existing_edges_and_repeated_corners();
   collapse();
   deleted_elements_and_null_outputs();
   thread_count();

@@ -1837,6 +1837,8 @@ hw_status hw_mesh_split_edge(hw_mesh *mesh, hw_edge e, const double *xyz, hw_ver
 /**
  * Splits the face holding half-edges `h0` and `h1` with a new edge from `target(h0)` to
  * `target(h1)`; `*out_halfedge` receives the new half-edge inside the original face.
+ * `HW_ERR_REFUSED`, the mesh unchanged, when the two corners are one vertex or already joined
+ * by an edge, or a side would have fewer than 3 corners.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
@@ -1857,9 +1859,11 @@ hw_status hw_mesh_split_face(hw_mesh *mesh,
 hw_status hw_mesh_collapse_halfedge(hw_mesh *mesh, hw_halfedge h, hw_vertex *out_vertex);
 
 /**
- * Splits polygon `f` into triangles by a fan of new edges (from the first corner whose diagonals
- * are all new edges); `*out_n_faces`, when not NULL, receives the number of triangles (`f` is
- * the first of them).
+ * Splits polygon `f` into triangles, the ones the render buffers draw for it (none folded on a
+ * non-convex face; O(n log n) for n corners); `*out_n_faces`, when not NULL, receives the number
+ * of triangles (`f` is the first of them). When a diagonal of those triangles is an edge
+ * already, a few other triangulations are tried; `HW_ERR_REFUSED`, the mesh unchanged, when
+ * each needs an existing edge or joins a vertex to itself.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.
@@ -2288,9 +2292,9 @@ hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *
 hw_render_options hw_render_options_default(void);
 
 /**
- * Builds the render buffers of a mesh: the triangulated surface (polygons ear clipped), its
- * vertex attributes as `float`, the wireframe, the boundary, the non-manifold edges of
- * `diagnostic` and the normal glyphs.
+ * Builds the render buffers of a mesh: the triangulated surface (every polygon, non-convex ones
+ * included, in O(n log n) for n corners), its vertex attributes as `float`, the wireframe, the
+ * boundary, the non-manifold edges of `diagnostic` and the normal glyphs.
  *
  * `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
  * mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
@@ -2315,7 +2319,7 @@ hw_status hw_render_buffers_build(const hw_mesh *mesh,
  * Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
  * ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
  * coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
- * ::HW_RENDER_TRIANGLES (ear clipped) with ::HW_RENDER_TRIANGLE_FACES and
+ * ::HW_RENDER_TRIANGLES (every polygon triangulated) with ::HW_RENDER_TRIANGLE_FACES and
  * ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
  * other arrays are empty, and the layout is always separate.
  *

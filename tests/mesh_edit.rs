@@ -2,9 +2,12 @@
 //! leave the mesh untouched when refused, and survive compaction.
 
 mod mesh_support;
+#[path = "../benches/common/polygons.rs"]
+mod polygons;
 
 use halfwing::mesh::{BuildPolicy, EdgeId, EditError, FaceId, HalfedgeId, Mesh, VertexId};
 use halfwing::soup::FaceList;
+use halfwing::winged::Winged;
 use mesh_support::grid;
 use proptest::prelude::*;
 
@@ -412,13 +415,7 @@ fn triangulating_a_non_convex_face_folds_nothing_from_any_start_corner() {
 #[test]
 fn triangulating_a_comb_covers_it_exactly() {
     let teeth = 1_000u32;
-    let mut positions = vec![[0.0, 0.0, 0.0], [f64::from(teeth), 0.0, 0.0]];
-    for t in (0..teeth).rev() {
-        let x = f64::from(t);
-        positions.extend(
-            [[x + 1.0, 1.0], [x + 0.5, 1.0], [x + 0.5, 2.0], [x, 2.0]].map(|[x, y]| [x, y, 0.0]),
-        );
-    }
+    let positions = polygons::comb(teeth);
     let n = positions.len() as u32;
     let indices: Vec<u32> = (0..n).collect();
     let (mut mesh, _) = Mesh::from_face_list(
@@ -432,4 +429,140 @@ fn triangulating_a_comb_covers_it_exactly() {
     assert!(faces.iter().all(|&f| signed_area(&mesh, f) > 0.0));
     let area: f64 = faces.iter().map(|&f| signed_area(&mesh, f)).sum();
     assert_eq!(area, 3.0 * f64::from(teeth));
+}
+
+/// A quad 0-1-2-3 closed into a pillow by triangles 0-2-1 and 0-3-2: its diagonal 0-2 is an
+/// edge already. The quad's corners start at `start`.
+fn pillow(start: u32) -> Mesh {
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    let quad = (0..4).map(|k| (start + k) % 4);
+    let indices: Vec<u32> = quad.chain([0, 2, 1, 0, 3, 2]).collect();
+    let list = FaceList::polygons(&positions, &[4, 3, 3], &indices);
+    Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0
+}
+
+/// Whether an edge joins `u` and `v` (either way round).
+fn joined(mesh: &Mesh, u: VertexId, v: VertexId) -> bool {
+    mesh.find_halfedge(u, v).is_some() || mesh.find_halfedge(v, u).is_some()
+}
+
+/// Before: the quad was cut along the render triangulation's diagonal or refused when that was
+/// the pillow's edge 0-2 (from 2 of the 4 start corners). Now the other diagonal is cut.
+#[test]
+fn triangulating_a_face_avoids_a_diagonal_that_is_an_edge_already() {
+    for start in 0..4 {
+        let mut mesh = pillow(start);
+        let faces = mesh.triangulate_face(FaceId(0)).unwrap();
+        assert_eq!(faces.len(), 2, "start {start}");
+        assert_eq!(mesh.check(), Ok(()), "start {start}");
+        assert!(joined(&mesh, VertexId(1), VertexId(3)), "start {start}");
+        assert_eq!(mesh.n_edges(), 6, "start {start}");
+    }
+}
+
+/// A face that goes round a path of two struts, made with Euler operators and converted: its
+/// loop is `v0 → v1 → v2 → v1 → v0`, visiting `v1` twice.
+fn strut_face() -> Mesh {
+    let mut w = Winged::new();
+    let (v0, f) = w.mvfs([0.0, 0.0, 0.0]).unwrap();
+    let (_, v1) = w.mev(f, v0, [1.0, 0.0, 0.0]).unwrap();
+    w.mev(f, v1, [1.0, 1.0, 0.0]).unwrap();
+    let mesh = w.to_mesh().unwrap();
+    assert_eq!(mesh.face_degree(FaceId(0)), 4);
+    mesh
+}
+
+/// Before: the face was cut from one corner of `v1` to the other, an edge from `v1` to itself
+/// (which `Mesh::check` then took for two edges joining the same vertices).
+#[test]
+fn triangulating_a_face_joins_no_vertex_to_itself() {
+    let mut mesh = strut_face();
+    mesh.triangulate_face(FaceId(0)).unwrap();
+    assert_eq!(mesh.check(), Ok(()));
+    assert!(joined(&mesh, VertexId(0), VertexId(2)));
+}
+
+/// Before: accepted, giving an edge from `v1` to itself.
+#[test]
+fn splitting_a_face_between_two_corners_of_one_vertex_is_refused() {
+    let mut mesh = strut_face();
+    let before = mesh.clone();
+    let into_v1: Vec<HalfedgeId> = mesh
+        .face_loop(FaceId(0))
+        .filter(|&h| mesh.target(h) == VertexId(1))
+        .collect();
+    let error = mesh.split_face(into_v1[0], into_v1[1]).unwrap_err();
+    assert!(error.to_string().contains("one vertex"), "{error}");
+    assert_eq!(mesh, before);
+}
+
+/// Splitting the pillow's quad along its edge 0-2 is refused, the mesh unchanged.
+#[test]
+fn splitting_along_an_existing_edge_is_refused() {
+    let mut mesh = pillow(0);
+    let before = mesh.clone();
+    let into: Vec<HalfedgeId> = mesh.face_loop(FaceId(0)).collect();
+    let at = |v: u32| {
+        *into
+            .iter()
+            .find(|&&h| mesh.target(h) == VertexId(v))
+            .unwrap()
+    };
+    let error = mesh.split_face(at(0), at(2)).unwrap_err();
+    assert!(error.to_string().contains("already joined"), "{error}");
+    assert_eq!(mesh, before);
+}
+
+/// Faces of trees of struts and the faces cut off them (random Euler operators), converted:
+/// loops that visit vertices several times. Triangulating any of them keeps every invariant or
+/// is refused with the mesh unchanged.
+#[test]
+fn triangulating_faces_that_visit_vertices_twice_keeps_the_mesh_valid() {
+    let mut state = 12_345u64;
+    let mut below = |n: usize| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as usize
+    };
+    let (mut cut, mut refused) = (0, 0);
+    for _ in 0..300 {
+        let mut w = Winged::new();
+        let (v0, _) = w.mvfs([0.0, 0.0, 0.0]).unwrap();
+        let mut vertices = vec![v0];
+        for _ in 0..3 + below(8) {
+            let f = halfwing::winged::FaceId(below(w.face_capacity() as usize) as u32);
+            let v = vertices[below(vertices.len())];
+            if below(2) == 0 {
+                let at = [below(9) as f64 - 4.0, below(9) as f64 - 4.0, 0.0];
+                if let Ok((_, new)) = w.mev(f, v, at) {
+                    vertices.push(new);
+                }
+            } else {
+                let _ = w.mef(f, v, vertices[below(vertices.len())]);
+            }
+        }
+        // MEF may join two vertices joined already: no mesh has such a second edge.
+        let Ok(mesh) = w.to_mesh() else { continue };
+        for f in (0..mesh.face_capacity() as u32).map(FaceId) {
+            let mut edited = mesh.clone();
+            match edited.triangulate_face(f) {
+                Ok(_) => {
+                    assert_eq!(edited.check(), Ok(()));
+                    cut += 1;
+                }
+                Err(_) => {
+                    assert_eq!(edited, mesh);
+                    refused += 1;
+                }
+            }
+        }
+    }
+    // Both ways are taken (a tree's face of no area is tried as fans only, which often fail).
+    assert!(cut > 0 && refused > 0, "{cut} cut, {refused} refused");
 }

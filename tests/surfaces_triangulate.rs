@@ -1,4 +1,4 @@
-//! Ear clipping of non-convex, degenerate and self-intersecting polygons, and of whole meshes.
+//! Triangulation of non-convex, degenerate and self-intersecting polygons, and of whole meshes.
 
 use glam::{DQuat, DVec3};
 use halfwing::render::*;
@@ -20,7 +20,7 @@ fn newell(corners: &[[f64; 3]]) -> DVec3 {
 /// areas adding up to the polygon's area.
 fn assert_exact_triangulation(corners: &[[f64; 3]]) -> Vec<[u32; 3]> {
     let (triangles, outcome) = triangulate_polygon(corners);
-    assert_eq!(outcome, PolygonOutcome::Clipped);
+    assert_eq!(outcome, PolygonOutcome::Exact);
     assert_eq!(triangles.len(), corners.len() - 2);
     let normal = newell(corners);
     let unit = normal.normalize();
@@ -121,7 +121,7 @@ fn collinear_and_repeated_corners_stay_in_the_triangulation() {
         [0.0, 1.0],
     ]);
     let (triangles, outcome) = triangulate_polygon(&square);
-    assert_eq!(outcome, PolygonOutcome::Clipped);
+    assert_eq!(outcome, PolygonOutcome::Exact);
     assert_eq!(triangles.len(), square.len() - 2);
     let area: f64 = triangles
         .iter()
@@ -181,7 +181,7 @@ fn overflowing_coordinates_fan_instead_of_panicking() {
 
 #[test]
 fn self_intersecting_polygons_still_give_n_minus_2_triangles() {
-    // A figure eight with lobes of different sizes: non-zero area, no valid ear clipping.
+    // A figure eight with lobes of different sizes: non-zero area, no triangulation without an inverted triangle.
     let eight = planar(&[
         [0.0, 0.0],
         [3.0, 3.0],
@@ -279,9 +279,9 @@ fn malformed_face_lists_are_typed_errors() {
 
 proptest! {
     /// Polygons through random radii at sorted random angles, with every angular gap below π,
-    /// are star-shaped about the origin, hence simple: they must always be clipped exactly.
+    /// are star-shaped about the origin, hence simple: they must always be triangulated exactly.
     #[test]
-    fn random_star_shaped_polygons_are_clipped_exactly(
+    fn random_star_shaped_polygons_are_triangulated_exactly(
         mut angles in prop::collection::vec(0.0f64..std::f64::consts::TAU, 3..40),
         radii in prop::collection::vec(0.05f64..10.0, 40),
     ) {

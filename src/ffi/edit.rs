@@ -170,6 +170,8 @@ pub unsafe extern "C" fn hw_mesh_split_edge(
 
 /// Splits the face holding half-edges `h0` and `h1` with a new edge from `target(h0)` to
 /// `target(h1)`; `*out_halfedge` receives the new half-edge inside the original face.
+/// `HW_ERR_REFUSED`, the mesh unchanged, when the two corners are one vertex or already joined
+/// by an edge, or a side would have fewer than 3 corners.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
@@ -212,9 +214,11 @@ pub unsafe extern "C" fn hw_mesh_collapse_halfedge(
     }
 }
 
-/// Splits polygon `f` into triangles by a fan of new edges (from the first corner whose diagonals
-/// are all new edges); `*out_n_faces`, when not NULL, receives the number of triangles (`f` is
-/// the first of them).
+/// Splits polygon `f` into triangles, the ones the render buffers draw for it (none folded on a
+/// non-convex face; O(n log n) for n corners); `*out_n_faces`, when not NULL, receives the number
+/// of triangles (`f` is the first of them). When a diagonal of those triangles is an edge
+/// already, a few other triangulations are tried; `HW_ERR_REFUSED`, the mesh unchanged, when
+/// each needs an existing edge or joins a vertex to itself.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.

@@ -234,9 +234,9 @@ fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
     }
 }
 
-/// Builds the render buffers of a mesh: the triangulated surface (polygons ear clipped), its
-/// vertex attributes as `float`, the wireframe, the boundary, the non-manifold edges of
-/// `diagnostic` and the normal glyphs.
+/// Builds the render buffers of a mesh: the triangulated surface (every polygon, non-convex ones
+/// included, in O(n log n) for n corners), its vertex attributes as `float`, the wireframe, the
+/// boundary, the non-manifold edges of `diagnostic` and the normal glyphs.
 ///
 /// `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
 /// mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
@@ -332,7 +332,7 @@ unsafe fn corner_array<'a, const N: usize>(
 /// Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
 /// ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
 /// coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
-/// ::HW_RENDER_TRIANGLES (ear clipped) with ::HW_RENDER_TRIANGLE_FACES and
+/// ::HW_RENDER_TRIANGLES (every polygon triangulated) with ::HW_RENDER_TRIANGLE_FACES and
 /// ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
 /// other arrays are empty, and the layout is always separate.
 ///

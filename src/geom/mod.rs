@@ -1,4 +1,4 @@
-//! Geometry: vectors, exact predicates, normals, intersections.
+//! Geometry: vectors, exact predicates, normals, intersections, polygon triangulation.
 
 mod newell;
 pub(crate) use newell::{
@@ -12,6 +12,7 @@ mod box_tree;
 mod exact_orientation;
 mod parallel;
 mod plane_side;
+mod polygon_triangulation;
 mod self_intersections;
 mod triangle_intersection;
 mod wide_integer;
@@ -23,5 +24,8 @@ pub use newell::{
 pub use normals::{
     VertexNormalWeighting, corner_angle, corner_normals, face_and_vertex_normals, face_area_vector,
     face_normals, face_normals_into, normals_into, vertex_normals,
+};
+pub use polygon_triangulation::{
+    FallbackReason, PolygonOutcome, PolygonTriangulator, triangulate_polygon,
 };
 pub use self_intersections::{SelfIntersectionError, face_self_intersections, self_intersections};

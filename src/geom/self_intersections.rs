@@ -92,8 +92,8 @@ pub fn self_intersections(
 /// of faces `f` and `g` one triangle of which intersects one of the other, and `[f, f]` for every
 /// degenerate face `f`.
 ///
-/// Faces are triangulated as [`triangulate_faces`] does it: by ear clipping, which covers a
-/// simple polygon (planar or nearly) exactly with `n − 2` triangles. A non-planar or
+/// Faces are triangulated as [`triangulate_faces`] does it, which covers a simple polygon
+/// (planar or nearly) exactly with `n − 2` triangles. A non-planar or
 /// self-intersecting polygon is tested as the triangles it gets there, so its pairs are those of
 /// that triangulation. The triangles of one face are not tested against each other: a polygon's
 /// own self-intersections are not reported. A face is degenerate when it has fewer than three

@@ -1,8 +1,8 @@
 //! Rendering buffers: what `glBufferData` wants (the seed's VBO/EBO slide).
 //!
-//! - [`surface_buffer`]: a mesh's triangles (`u32` indices, ear clipped) and `f32` vertex
-//!   attributes, flat, smooth or crease shaded or with given corner normals (a file's own),
-//!   separate or interleaved;
+//! - [`surface_buffer`]: a mesh's triangles (`u32` indices, every polygon triangulated) and
+//!   `f32` vertex attributes, flat, smooth or crease shaded or with given corner normals (a
+//!   file's own), separate or interleaved;
 //! - [`wireframe_lines`], [`boundary_lines`], [`non_manifold_lines`], [`vertex_normal_glyphs`],
 //!   [`face_normal_glyphs`]: [`LineBuffer`]s for `GL_LINES`;
 //! - [`mesh_buffers`]: all of the above in one call;
@@ -23,6 +23,7 @@ mod surface;
 mod triangulate;
 mod voronoi_cells;
 
+pub use crate::geom::{FallbackReason, PolygonOutcome, PolygonTriangulator, triangulate_polygon};
 pub use bounds::Bounds;
 pub use error::RenderError;
 pub use finding_buffers::{FindingBuffers, finding_buffers};
@@ -33,8 +34,5 @@ pub use normal_glyphs::{face_normal_glyphs, mean_edge_length, vertex_normal_glyp
 pub use polygon_buffer::{PolygonBuffer, PolygonList, polygon_buffer, polygon_buffer_2d};
 pub use shading::{Shading, VertexLayout};
 pub use surface::{SurfaceBuffer, SurfaceOptions, surface_buffer};
-pub use triangulate::{
-    EarClipper, FallbackReason, PolygonOutcome, TriangleBuffer, TriangulateError,
-    triangulate_faces, triangulate_polygon,
-};
+pub use triangulate::{TriangleBuffer, TriangulateError, triangulate_faces};
 pub use voronoi_cells::voronoi_cell_buffer;

@@ -30,13 +30,13 @@ pub struct PolygonBuffer {
     pub normals: Vec<f32>,
     /// Per corner, the polygon it belongs to (for per-polygon colours).
     pub vertex_polygons: Vec<u32>,
-    /// Three corner indices per fill triangle (ear clipped, so non-convex polygons work).
+    /// Three corner indices per fill triangle (non-convex polygons work too).
     pub triangles: Vec<u32>,
     /// Per triangle, its polygon.
     pub triangle_polygons: Vec<u32>,
     /// Every polygon's sides; the source of each segment is its polygon.
     pub outline: LineBuffer,
-    /// Polygons that could not be ear clipped exactly.
+    /// Polygons whose triangles may not cover them exactly.
     pub fallbacks: Vec<(u32, FallbackReason)>,
     /// Box around the corners.
     pub bounds: Bounds,

@@ -1,7 +1,7 @@
 //! The shaded surface of a mesh as GPU buffers: `f32` vertex attributes and a `u32` triangle index
 //! buffer (the seed's VBO/EBO slide).
 //!
-//! Every polygon is ear clipped (non-convex faces included). A triangle corner is a mesh corner
+//! Every polygon is triangulated (non-convex faces included). A triangle corner is a mesh corner
 //! (a half-edge with a face: the corner at its origin), and its attributes — position, normal,
 //! uv — are chosen per corner. Corners of one mesh vertex with bit-identical attributes share a
 //! render vertex; where they differ (a flat-shaded edge, a crease, a uv seam) the vertex is split,
@@ -13,7 +13,7 @@ use crate::mesh::{FaceId, HalfedgeId, Mesh};
 use super::error::RenderError;
 use super::line_buffer::push_point;
 use super::shading::{Shading, VertexLayout};
-use super::{Bounds, EarClipper, FallbackReason, PolygonOutcome};
+use super::{Bounds, FallbackReason, PolygonOutcome, PolygonTriangulator};
 
 /// What to build a [`SurfaceBuffer`] with.
 #[derive(Clone, Copy, Debug, Default)]
@@ -56,7 +56,7 @@ pub struct SurfaceBuffer {
     pub triangles: Vec<u32>,
     /// Per triangle, the mesh face it comes from.
     pub triangle_faces: Vec<u32>,
-    /// Faces that could not be ear clipped exactly (see [`FallbackReason`]).
+    /// Faces whose triangles may not cover them exactly (see [`FallbackReason`]).
     pub fallbacks: Vec<(u32, FallbackReason)>,
     /// Box around the vertices.
     pub bounds: Bounds,
@@ -245,7 +245,7 @@ pub fn surface_buffer(
         stride: if options.corner_uvs.is_some() { 8 } else { 6 },
         ..SurfaceBuffer::default()
     };
-    let mut clipper = EarClipper::new();
+    let mut triangulator = PolygonTriangulator::new();
     let (mut corner_positions, mut corner_vertices, mut local) =
         (Vec::new(), Vec::new(), Vec::new());
     for f in 0..mesh.face_capacity() {
@@ -265,7 +265,8 @@ pub fn surface_buffer(
             corner_vertices.push(splitter.vertex(v.idx(), normal, uv));
         }
         local.clear();
-        if let PolygonOutcome::Fallback(reason) = clipper.triangulate(&corner_positions, &mut local)
+        if let PolygonOutcome::Fallback(reason) =
+            triangulator.triangulate(&corner_positions, &mut local)
         {
             buffer.fallbacks.push((face.0, reason));
         }

@@ -51,6 +51,17 @@ impl Mesh {
             .find(|&h| self.target(h) == to)
     }
 
+    /// Whether an edge joins `u` and `v`, in any of their fans. Every edge has a half-edge leaving
+    /// each end, so looking round `u` is enough: its fan walk, or a scan while the mesh may
+    /// have vertices whose fans the builder kept apart.
+    pub(super) fn are_joined(&self, u: VertexId, v: VertexId) -> bool {
+        if self.may_have_pinched_vertices {
+            self.scan_halfedges_leaving(u).any(|h| self.target(h) == v)
+        } else {
+            self.find_halfedge(u, v).is_some()
+        }
+    }
+
     /// Every live half-edge leaving `v`, whatever its fan: a scan of all half-edges. The fan walk
     /// sees one fan only, and a vertex whose fans the builder kept apart has several; operators
     /// scan only while the mesh may have such vertices.

@@ -57,7 +57,9 @@ impl Mesh {
     /// `target(h0)` to `target(h1)`. The original face keeps the side holding `h0` (from the new
     /// half-edge `target(h0) → target(h1)` on); a new face takes the side holding `h1`. Returns
     /// the new half-edge in the original face. Refused when the half-edges are not in one face,
-    /// when a side would have fewer than 3 corners, or when the two vertices are already joined.
+    /// when a side would have fewer than 3 corners, when the two corners are one vertex, or when
+    /// an edge already joins the two vertices (in any of their fans): a second edge between them
+    /// would make the mesh non-manifold.
     pub fn split_face(&mut self, h0: HalfedgeId, h1: HalfedgeId) -> Result<HalfedgeId, EditError> {
         self.check_halfedge(h0)?;
         self.check_halfedge(h1)?;
@@ -69,7 +71,10 @@ impl Mesh {
             return refuse(SPLIT_FACE, "a side would have fewer than 3 corners");
         }
         let (v0, v1) = (self.target(h0), self.target(h1));
-        if self.find_halfedge(v0, v1).is_some() || self.find_halfedge(v1, v0).is_some() {
+        if v0 == v1 {
+            return refuse(SPLIT_FACE, "the two corners are one vertex");
+        }
+        if self.are_joined(v0, v1) {
             return refuse(SPLIT_FACE, "the two corners are already joined by an edge");
         }
         if self.face_halfedge.len() as u64 + 1 >= u64::from(u32::MAX) {
@@ -77,6 +82,17 @@ impl Mesh {
                 operation: SPLIT_FACE,
             });
         }
+        self.cut_face(h0, h1)
+    }
+
+    /// [`Mesh::split_face`] once its preconditions hold (the caller checked them).
+    pub(super) fn cut_face(
+        &mut self,
+        h0: HalfedgeId,
+        h1: HalfedgeId,
+    ) -> Result<HalfedgeId, EditError> {
+        let f = self.face(h0);
+        let (v0, v1) = (self.target(h0), self.target(h1));
         let a = self.push_edge(SPLIT_FACE)?; // a: v0 → v1 stays in f; twin(a): v1 → v0 in the new face
         let b = a.twin();
         let (h0_next, h1_next) = (self.next(h0), self.next(h1));
