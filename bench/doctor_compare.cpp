@@ -15,7 +15,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -38,20 +37,7 @@ using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 using cgal_soup::Soup;
-using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
-using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
-
-/// The soup as a surface mesh with exact predicates, for self_intersections (built outside the
-/// timed calls, like the doctor's input arrays).
-ExactMesh exact_mesh(const Soup& soup) {
-  std::vector<Exact::Point_3> points;
-  points.reserve(soup.points.size());
-  for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
-  ExactMesh mesh;
-  if (PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
-    PMP::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
-  return mesh;
-}
+using cgal_soup::ExactMesh;
 
 std::size_t cgal_self_intersections(const ExactMesh& mesh) {
   if (mesh.is_empty() || !CGAL::is_triangle_mesh(mesh)) return 0;
@@ -98,7 +84,8 @@ void print_row(const char* what, const bench::IndexedMesh& m, double one_thread,
 
 void compare(const bench::IndexedMesh& m, int repeats) {
   const Soup soup = cgal_soup::of(m);
-  const ExactMesh exact = exact_mesh(soup);
+  // Built outside the timed calls, like the doctor's input arrays.
+  const ExactMesh exact = cgal_soup::exact_mesh(soup);
   hw::check(hw_set_thread_count(1));
   const auto [one_thread, cgal] = bench::best_ms(
       repeats, [&] { return halfwing_findings(m); }, [&] { return cgal_findings(soup, exact); });

@@ -5,13 +5,8 @@
 #   bench/run-doctor-compare.sh [--quick] [--repeats N] [model files...]
 set -euo pipefail
 
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${HALFWING_BENCH_BUILD_DIR:-$root/build-bench}"
-data="$root/../shared/data/meshes"
-
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_BUILD_BENCHMARKS=ON \
-  -DHALFWING_BUILD_TESTS=OFF -DHALFWING_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build "$build" --target doctor_compare -j 2 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/build.sh"
+build_benchmark doctor_compare
 
 options=()
 models=()

@@ -9,13 +9,8 @@
 # HALFWING_BENCH_BUILD_DIR).
 set -euo pipefail
 
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${HALFWING_BENCH_BUILD_DIR:-$root/build-bench}"
-data="$root/../shared/data/meshes"
-
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_BUILD_BENCHMARKS=ON \
-  -DHALFWING_BUILD_TESTS=OFF -DHALFWING_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build "$build" --target mesh_compare -j 2 >/dev/null
+source "$(dirname "${BASH_SOURCE[0]}")/build.sh"
+build_benchmark mesh_compare
 
 options=()
 models=()

@@ -1,9 +1,13 @@
 // An indexed mesh as CGAL's polygon-soup functions take it: points and one vector of indices per
-// polygon. Shared by the comparisons against CGAL and the benchmarks.
+// polygon, and as a surface mesh over exact predicates. Shared by the comparisons against CGAL
+// and the benchmarks.
 #ifndef HALFWING_C_TESTS_CGAL_SOUP_HPP
 #define HALFWING_C_TESTS_CGAL_SOUP_HPP
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <vector>
 
@@ -30,6 +34,22 @@ inline Soup of(const indexed::Mesh& m) {
     corner += size;
   }
   return soup;
+}
+
+using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
+using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
+
+/// The soup as a surface mesh over exact predicates (what self_intersections needs to decide
+/// exactly); empty when the soup is not a polygon mesh.
+inline ExactMesh exact_mesh(const Soup& soup) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<Exact::Point_3> points;
+  points.reserve(soup.points.size());
+  for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
+  ExactMesh mesh;
+  if (PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    PMP::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  return mesh;
 }
 
 }  // namespace cgal_soup

@@ -15,7 +15,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -38,18 +37,13 @@ using SurfaceMesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 using cgal_soup::Soup;
-using Exact = CGAL::Exact_predicates_inexact_constructions_kernel;
-using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
+using cgal_soup::ExactMesh;
 using FacePair = std::array<uint32_t, 2>;
 
 // CGAL's self-intersecting face pairs of a triangle soup that is a polygon mesh, sorted, smaller
 // face first, without its (f, f) pairs; `degenerate` receives those pairs' faces.
 std::vector<FacePair> cgal_self_intersections(const Soup& soup, std::vector<uint32_t>& degenerate) {
-  std::vector<Exact::Point_3> points;
-  points.reserve(soup.points.size());
-  for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
-  ExactMesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  const ExactMesh mesh = cgal_soup::exact_mesh(soup);
   std::vector<std::pair<ExactMesh::Face_index, ExactMesh::Face_index>> found;
   PMP::self_intersections(mesh, std::back_inserter(found));
   std::vector<FacePair> pairs;
