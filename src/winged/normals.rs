@@ -13,16 +13,13 @@ impl Winged {
     ///
     /// Points outward for a counter-clockwise face.
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
-        let corners = || {
-            self.face_loop(f)
-                .into_iter()
-                .flatten()
-                .map(|u| self.positions[self.tail_of(u).index()])
-        };
-        self.face_loop(f)?;
-        let area_vector = face_corners_area_vector(corners());
+        let corners = self
+            .face_loop(f)?
+            .map(|u| self.positions[self.tail_of(u).index()]);
+        // One walk for the area vector; its unwalked copy serves the rare rescaling.
+        let area_vector = face_corners_area_vector(corners.clone());
         Ok(normalized(rescued_area_vector(area_vector, || {
-            corners().collect()
+            corners.collect()
         })))
     }
 
@@ -44,7 +41,7 @@ impl Winged {
     }
 
     /// The unit normal of `v`: the normalised sum of the unit normals of the faces around it
-    /// (seed 000: `v->norm += e->f->norm; e = e->prev->sym`), holes left out; zero if none.
+    /// (Baumgart's `v->norm += e->f->norm; e = e->prev->sym`), holes left out; zero if none.
     pub fn vertex_normal(&self, v: VertexId) -> Result<[f64; 3], WingedError> {
         self.vertex_normal_from(v, |f| self.face_normal(f).unwrap_or([0.0; 3]))
     }
