@@ -9,6 +9,7 @@ mod normals;
 pub(crate) use newell::rescued_area_vector;
 pub(crate) use normals::normalized;
 mod box_tree;
+mod embedded_stars;
 mod exact_orientation;
 mod parallel;
 mod plane_side;

@@ -5,6 +5,7 @@
 use thiserror::Error;
 
 use super::box_tree::{BoundingBox, BoxTree, Boxed};
+use super::embedded_stars::{StarTriangle, embedded_stars};
 use super::exact_orientation::{ExactOrientation, ExponentRange, scale_points};
 use super::parallel::map_indexed;
 use super::triangle_intersection::{SharedCorners, corners_are_collinear, triangles_meet};
@@ -195,12 +196,26 @@ fn intersecting_faces(
             }
         })
         .collect();
+    let embedded = embedded_stars(positions, proper.len(), |t| StarTriangle {
+        corners: proper[t].corners,
+        exponents: proper[t].exponents,
+    });
     let tree = BoxTree::new(proper);
     let mut pairs = tree.overlapping_pairs(|a, b| {
         if a.face == b.face {
             return None;
         }
         let shared = SharedCorners::of(a.corners, b.corners);
+        // Pairs meeting at a vertex whose star is embedded do not intersect.
+        let embedded_at = |i: usize| embedded[a.corners[i] as usize];
+        let settled = match shared {
+            SharedCorners::Vertex(i, _) => embedded_at(i),
+            SharedCorners::Edge(i, _) => embedded_at(i) || embedded_at((i + 1) % 3),
+            SharedCorners::None | SharedCorners::All => false,
+        };
+        if settled {
+            return None;
+        }
         let corner = |v: u32| positions[v as usize];
         let [a0, a1, a2] = a.corners;
         let [b0, b1, b2] = b.corners;

@@ -214,7 +214,7 @@ fn projection_axis(arithmetic: ExactOrientation, t: &[Point; 3]) -> usize {
 
 /// `p` without coordinate `axis`.
 #[inline]
-fn project(p: Point, axis: usize) -> [f64; 2] {
+pub(crate) fn project(p: Point, axis: usize) -> [f64; 2] {
     match axis {
         0 => [p[1], p[2]],
         1 => [p[2], p[0]],
