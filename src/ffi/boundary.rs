@@ -5,9 +5,9 @@
 //! written only after the whole body has succeeded (see [`Out`]).
 
 use std::any::Any;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::error::{FfiError, record};
+use super::quiet_panics::{catch_quietly, last_panic_location};
 use super::status::*;
 
 fn panic_message(payload: &(dyn Any + Send)) -> String {
@@ -16,14 +16,15 @@ fn panic_message(payload: &(dyn Any + Send)) -> String {
         .copied()
         .or_else(|| payload.downcast_ref::<String>().map(String::as_str))
         .unwrap_or("unknown panic payload");
-    format!("internal error, please report it: panic caught at the C boundary: {what}")
+    let place = last_panic_location().map_or_else(String::new, |at| format!(" at {at}"));
+    format!("internal error, please report it: panic{place} caught at the C boundary: {what}")
 }
 
 /// Drops a caught panic payload without letting a second panic out: a payload whose destructor
 /// panics would otherwise unwind from here into C, outside every `catch_unwind`. Such a payload
 /// is leaked instead.
 pub(crate) fn drop_payload(payload: Box<dyn Any + Send>) {
-    if let Err(second) = catch_unwind(AssertUnwindSafe(move || drop(payload))) {
+    if let Err(second) = catch_quietly(move || drop(payload)) {
         std::mem::forget(second);
     }
 }
@@ -37,7 +38,7 @@ fn record_panic(payload: Box<dyn Any + Send>) -> hw_status {
 
 /// Runs the body of a status-returning exported function.
 pub(crate) fn guard(body: impl FnOnce() -> Result<(), FfiError>) -> hw_status {
-    match catch_unwind(AssertUnwindSafe(body)) {
+    match catch_quietly(body) {
         Ok(Ok(())) => HW_OK,
         Ok(Err(error)) => record(error),
         Err(payload) => record_panic(payload),
@@ -47,7 +48,7 @@ pub(crate) fn guard(body: impl FnOnce() -> Result<(), FfiError>) -> hw_status {
 /// Runs the body of a value-returning exported function (a getter or a navigation step). On an
 /// error or a panic the message is recorded and `fallback` (an invalid id, zero, false) returned.
 pub(crate) fn guard_value<T>(fallback: T, body: impl FnOnce() -> Result<T, FfiError>) -> T {
-    match catch_unwind(AssertUnwindSafe(body)) {
+    match catch_quietly(body) {
         Ok(Ok(value)) => value,
         Ok(Err(error)) => {
             record(error);

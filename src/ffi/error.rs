@@ -111,7 +111,7 @@ pub unsafe extern "C" fn hw_last_error_message(
     needed: *mut usize,
 ) -> hw_status {
     // Not through `guard`: reading the last error must not overwrite it.
-    let result = std::panic::catch_unwind(|| {
+    let result = super::quiet_panics::catch_quietly(|| {
         // SAFETY: the caller's guarantees are those of `copy_text`.
         let copy = |text: &str| unsafe { copy_text(text, buf, len, needed) };
         // Storage already torn down (see `record`): nothing was recorded, the message is empty.

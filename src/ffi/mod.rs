@@ -24,6 +24,7 @@ pub mod mesh;
 pub mod navigation;
 pub mod normals;
 pub mod positions;
+mod quiet_panics;
 pub mod render;
 pub mod self_intersections;
 pub mod status;
