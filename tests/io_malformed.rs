@@ -238,3 +238,46 @@ proptest! {
         }
     }
 }
+
+/// Errors of the operating system name the file and what was being done, once, without
+/// Rust's "(os error N)" suffix.
+#[test]
+fn file_errors_name_the_file() {
+    let dir = std::env::temp_dir().join(format!("halfwing-io-errors-{}", std::process::id()));
+    let missing = dir.join("missing.obj");
+    let error = halfwing::io::read_path(&missing).expect_err("no such file");
+    assert_eq!(
+        error.to_string(),
+        format!(
+            "cannot open '{}': No such file or directory",
+            missing.display()
+        )
+    );
+    let soup = halfwing::soup::PolygonSoup::default();
+    let error = halfwing::io::write_path(&missing, &soup).expect_err("no such folder");
+    assert_eq!(
+        error.to_string(),
+        format!(
+            "cannot create '{}': No such file or directory",
+            missing.display()
+        )
+    );
+}
+
+/// A binary file is refused by the OBJ reader (which skips unknown statements) instead of
+/// reading as an empty mesh, and the bytes of a bad token are escaped in messages.
+#[test]
+fn binary_bytes_are_refused_and_never_echoed() {
+    let png = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR";
+    let error = halfwing::io::read_obj_bytes(png).expect_err("not text");
+    assert_eq!(
+        error.to_string(),
+        "OBJ parse error at line 3: the file holds a NUL byte: it is not a text file"
+    );
+    let error = halfwing::io::read_obj_bytes(b"v 1 2 3\nf 1 2 \xff\xfe\x01\x02abc\n")
+        .expect_err("bad index");
+    assert_eq!(
+        error.to_string(),
+        "OBJ parse error at line 2: vertex index `\\xff\\xfe\\x01\\x02abc` is not an integer"
+    );
+}

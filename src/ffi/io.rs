@@ -26,7 +26,7 @@ pub struct hw_soup {
 impl From<IoError> for FfiError {
     fn from(error: IoError) -> Self {
         let status = match &error {
-            IoError::Io(_) => HW_ERR_IO,
+            IoError::Io(_) | IoError::File { .. } => HW_ERR_IO,
             IoError::Parse { .. } => HW_ERR_PARSE,
             _ => HW_ERR_INVALID_INPUT,
         };

@@ -31,12 +31,47 @@ impl fmt::Display for Location {
     }
 }
 
+/// What was being done to a file when the operating system refused it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileAction {
+    /// Opening it for reading.
+    Open,
+    /// Reading it once open.
+    Read,
+    /// Creating (or truncating) it for writing.
+    Create,
+    /// Writing it once created.
+    Write,
+}
+
+impl fmt::Display for FileAction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            FileAction::Open => "open",
+            FileAction::Read => "read",
+            FileAction::Create => "create",
+            FileAction::Write => "write",
+        })
+    }
+}
+
 /// Why reading or writing a mesh failed.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum IoError {
-    /// The operating system refused a read or a write.
-    #[error("I/O error: {0}")]
+    /// The operating system refused to open, read, create or write a named file.
+    #[error("cannot {action} '{}': {}", path.display(), system_message(source))]
+    File {
+        /// What was being done.
+        action: FileAction,
+        /// The file.
+        path: std::path::PathBuf,
+        /// The operating system's error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// A read from or a write to a stream failed (a reader or writer given no file name).
+    #[error("the stream failed: {}", system_message(.0))]
     Io(#[from] std::io::Error),
     /// The file is malformed: truncated, non-numeric where a number belongs, an index out of range
     /// of the declared vertex count, and so on.
@@ -59,7 +94,29 @@ pub enum IoError {
     InvalidSoup(String),
 }
 
+/// The operating system's description of `error`, without Rust's " (os error N)" suffix.
+fn system_message(error: &std::io::Error) -> String {
+    let text = error.to_string();
+    match (error.raw_os_error(), text.rfind(" (os error ")) {
+        (Some(_), Some(suffix)) => text[..suffix].to_string(),
+        _ => text,
+    }
+}
+
 impl IoError {
+    /// The error of `action` on the file `path`, from the operating system's `error`; errors of
+    /// other kinds pass through.
+    pub(crate) fn on_file(self, action: FileAction, path: &std::path::Path) -> IoError {
+        match self {
+            IoError::Io(source) => IoError::File {
+                action,
+                path: path.to_path_buf(),
+                source,
+            },
+            other => other,
+        }
+    }
+
     /// The 1-based line of a text parse error, if this is one.
     pub fn line(&self) -> Option<u64> {
         match self {

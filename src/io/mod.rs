@@ -35,7 +35,7 @@ mod ply_read;
 mod ply_write;
 mod text;
 
-pub use error::{IoError, Location};
+pub use error::{FileAction, IoError, Location};
 pub use format::MeshFormat;
 pub use obj_read::{read_obj, read_obj_bytes};
 pub use obj_write::write_obj;
@@ -52,9 +52,15 @@ use crate::soup::PolygonSoup;
 /// Reads a mesh file, choosing the reader by the path's extension (`.obj`, `.off`, `.ply`, in any
 /// case).
 pub fn read_path(path: impl AsRef<Path>) -> Result<PolygonSoup, IoError> {
+    use std::io::Read;
     let path = path.as_ref();
     let format = format_of(path)?;
-    read_bytes(format, &std::fs::read(path)?)
+    let mut file = std::fs::File::open(path)
+        .map_err(|error| IoError::from(error).on_file(FileAction::Open, path))?;
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes)
+        .map_err(|error| IoError::from(error).on_file(FileAction::Read, path))?;
+    read_bytes(format, &bytes)
 }
 
 /// Reads a mesh held in memory in the given format.
@@ -71,12 +77,14 @@ pub fn read_bytes(format: MeshFormat, bytes: &[u8]) -> Result<PolygonSoup, IoErr
 pub fn write_path(path: impl AsRef<Path>, soup: &PolygonSoup) -> Result<(), IoError> {
     let path = path.as_ref();
     let format = format_of(path)?;
-    let file = std::fs::File::create(path)?;
+    let file = std::fs::File::create(path)
+        .map_err(|error| IoError::from(error).on_file(FileAction::Create, path))?;
     match format {
         MeshFormat::Obj => write_obj(file, soup),
         MeshFormat::Off => write_off(file, soup),
         MeshFormat::Ply => write_ply(file, soup, PlyEncoding::BinaryLittleEndian),
     }
+    .map_err(|error| error.on_file(FileAction::Write, path))
 }
 
 fn format_of(path: &Path) -> Result<MeshFormat, IoError> {

@@ -37,7 +37,7 @@ use crate::soup::PolygonSoup;
 
 use super::error::IoError;
 use super::format::MeshFormat;
-use super::text::{Lines, Tokens, parse_f64, parse_i64, quote, strip_comment};
+use super::text::{Lines, Tokens, first_nul_line, parse_f64, parse_i64, quote, strip_comment};
 
 /// Marks a corner without a normal or texture coordinate.
 const ABSENT: u32 = u32::MAX;
@@ -51,6 +51,14 @@ pub fn read_obj(mut reader: impl Read) -> Result<PolygonSoup, IoError> {
 
 /// Reads an OBJ file held in memory.
 pub fn read_obj_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
+    // OBJ readers skip statements they do not know, so binary data would read as an empty mesh.
+    if let Some(line) = first_nul_line(bytes) {
+        return Err(IoError::at_line(
+            MeshFormat::Obj,
+            line,
+            "the file holds a NUL byte: it is not a text file",
+        ));
+    }
     // OBJ declares no counts; vectors grow as records come (large regrowths are cheap `mremap`s).
     let mut reader = ObjReader::default();
     // A record continued over several lines is joined here, its lines separated by `\n` so the

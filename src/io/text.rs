@@ -152,12 +152,21 @@ pub(crate) fn parse_i64(token: &[u8]) -> Option<i64> {
     as_str(token)?.parse().ok()
 }
 
-/// A token quoted for an error message, shortened when long so a binary blob cannot flood it.
+/// A token quoted for an error message: bytes other than printable ASCII escaped (`\xff`,
+/// `\t`), so that a binary file's bytes never reach a terminal raw, and shortened when long so
+/// a blob cannot flood the message.
 pub(crate) fn quote(token: &[u8]) -> String {
     const MAX_SHOWN: usize = 40;
     let shown = &token[..token.len().min(MAX_SHOWN)];
     let ellipsis = if token.len() > MAX_SHOWN { "…" } else { "" };
-    format!("`{}{ellipsis}`", String::from_utf8_lossy(shown))
+    format!("`{}{ellipsis}`", shown.escape_ascii())
+}
+
+/// The 1-based line of the first NUL byte of `bytes`, if any: text files have none, and a file
+/// that does (an image, a binary mesh, UTF-16 text) is not what a text reader can read.
+pub(crate) fn first_nul_line(bytes: &[u8]) -> Option<u64> {
+    let at = bytes.iter().position(|&b| b == 0)?;
+    Some(1 + bytes[..at].iter().filter(|&&b| b == b'\n').count() as u64)
 }
 
 /// How many records of at least `min_record_bytes` bytes a buffer of `len` bytes can hold: caps
