@@ -45,7 +45,10 @@ static void circulation_and_normals() {
   hw::diagnostic report;
   hw::mesh m = hw::mesh::read(path, HW_BUILD_STRICT, &report);
   CHECK(report && report.is_clean());
-  CHECK(report.summary() == "no defects found\n");
+  CHECK(report.summary() == "no defects found");
+  const hw::diagnostic empty;
+  CHECK(!empty && empty.is_clean() && empty.summary().empty() &&
+        empty.ids(HW_DIAG_ISOLATED_VERTICES).empty());
   m.check_invariants();
   std::size_t ring_total = 0;
   for (uint32_t i = 0; i < m.n_vertices(); ++i) {

@@ -91,7 +91,12 @@ class owned {
 template <class Copy>
 std::string copied_text(Copy copy) {
   std::size_t needed = 0;
-  copy(nullptr, 0, &needed);
+  const hw_status sized = copy(nullptr, 0, &needed);
+  // The size query answers HW_ERR_BUFFER_TOO_SMALL with the size; no size means another failure.
+  if (needed == 0) {
+    check(sized);
+    return std::string();
+  }
   std::string text(needed, '\0');
   check(copy(&text[0], text.size(), &needed));
   text.resize(needed - 1);
@@ -198,16 +203,19 @@ class diagnostic {
     return diagnostic(raw);
   }
 
-  bool is_clean() const { return hw_diagnostic_is_clean(raw_.get()); }
-  /// One id list (faces or vertices, per `list`).
+  /// True when nothing is wrong; an empty (default-constructed) diagnostic is clean.
+  bool is_clean() const { return !raw_ || hw_diagnostic_is_clean(raw_.get()); }
+  /// One id list (faces or vertices, per `list`); empty for an empty diagnostic.
   std::vector<uint32_t> ids(hw_diagnostic_list list) const {
+    if (!raw_) return {};
     const uint32_t* data = nullptr;
     std::size_t n = 0;
     check(hw_diagnostic_ids(raw_.get(), list, &data, &n));
     return std::vector<uint32_t>(data, data + n);
   }
-  /// The human-readable account.
+  /// The human-readable account; empty for an empty diagnostic.
   std::string summary() const {
+    if (!raw_) return std::string();
     return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
       return hw_diagnostic_summary(raw_.get(), buf, len, needed);
     });

@@ -17,6 +17,7 @@ pub mod winged;
 
 pub mod ffi;
 
+mod counted;
 mod cycles;
 mod disjoint_sets;
 mod id_set;

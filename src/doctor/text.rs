@@ -4,6 +4,7 @@
 use std::fmt::{self, Write};
 
 use super::{DoctorReport, Finding};
+use crate::counted::counted;
 
 /// How many elements of a finding the text names before counting the rest.
 const SHOWN: usize = 8;
@@ -16,21 +17,20 @@ impl fmt::Display for DoctorReport {
         };
         writeln!(
             f,
-            "{} component{}, {} boundary loop{}; {}",
-            self.components.len(),
-            plural(self.components.len()),
-            self.boundary_loops.len(),
-            plural(self.boundary_loops.len()),
+            "{}, {}; {}",
+            counted(self.components.len(), "component", "components"),
+            counted(self.boundary_loops.len(), "boundary loop", "boundary loops"),
             verdict
         )?;
         if !self.diagnostic.is_clean() {
-            write!(f, "{}", self.diagnostic)?;
+            writeln!(f, "{}", self.diagnostic)?;
         }
         for (i, component) in self.components.iter().enumerate().take(SHOWN) {
             write!(
                 f,
-                "component {i}: {} faces, Euler characteristic {}",
-                component.n_faces, component.euler_characteristic
+                "component {i}: {}, Euler characteristic {}",
+                counted(component.n_faces, "face", "faces"),
+                component.euler_characteristic
             )?;
             if let Some(genus) = component.genus {
                 write!(f, ", genus {genus}")?;
@@ -125,10 +125,6 @@ impl fmt::Display for DoctorReport {
                 .collect(),
         )
     }
-}
-
-fn plural(n: usize) -> &'static str {
-    if n == 1 { "" } else { "s" }
 }
 
 impl DoctorReport {

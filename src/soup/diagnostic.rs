@@ -2,6 +2,8 @@
 
 use std::fmt;
 
+use crate::counted::counted;
+
 /// How many elements of one list [`Diagnostic::summary`] names before it only counts the rest.
 const SUMMARY_SAMPLE: usize = 8;
 
@@ -148,7 +150,7 @@ impl Diagnostic {
         !self.non_manifold_edges.is_empty() || !self.inconsistent_edges.is_empty()
     }
 
-    /// A human-readable, multi-line account: one line per non-empty list, with its count and
+    /// A human-readable account: one line per non-empty list (no newline after the last), with its count and
     /// its first 8 elements (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an
     /// edge names its first 8 faces the same way. Its size does not grow with the input: a few
     /// kilobytes at most.
@@ -175,78 +177,144 @@ fn write_sample<T>(
     Ok(())
 }
 
-fn write_ids(f: &mut fmt::Formatter<'_>, label: &str, prefix: &str, ids: &[u32]) -> fmt::Result {
-    if ids.is_empty() {
-        return Ok(());
-    }
-    write!(f, "{} {label}:", ids.len())?;
-    write_sample(f, ids, |f, id| write!(f, "{prefix}{id}"))?;
-    writeln!(f)
+/// The line of one list of ids, when it is not empty: its count with `label` (singular and
+/// plural: the count's noun comes first), then a sample of the ids, each after `prefix`.
+fn ids_line(label: [&str; 2], prefix: &str, ids: &[u32]) -> Option<String> {
+    (!ids.is_empty()).then(|| {
+        format!(
+            "{}:{}",
+            counted(ids.len(), label[0], label[1]),
+            Sample(ids, |f: &mut fmt::Formatter<'_>, id: &u32| write!(
+                f,
+                "{prefix}{id}"
+            ))
+        )
+    })
 }
 
-fn write_edges(f: &mut fmt::Formatter<'_>, label: &str, edges: &[EdgeReport]) -> fmt::Result {
-    if edges.is_empty() {
-        return Ok(());
-    }
-    write!(f, "{} {label}:", edges.len())?;
-    write_sample(f, edges, |f, edge| {
-        write!(f, "(v{}-v{} in faces", edge.vertices[0], edge.vertices[1])?;
-        write_sample(f, &edge.faces, |f, face| write!(f, "f{face}"))?;
-        write!(f, ")")
-    })?;
-    writeln!(f)
+/// The line of one list of edges, as [`ids_line`], each edge with a sample of its faces.
+fn edges_line(label: [&str; 2], edges: &[EdgeReport]) -> Option<String> {
+    (!edges.is_empty()).then(|| {
+        let edge = |f: &mut fmt::Formatter<'_>, edge: &EdgeReport| {
+            let face = |f: &mut fmt::Formatter<'_>, face: &u32| write!(f, "f{face}");
+            let [u, v] = edge.vertices;
+            write!(f, "(v{u}-v{v} in faces{})", Sample(&edge.faces, face))
+        };
+        format!(
+            "{}:{}",
+            counted(edges.len(), label[0], label[1]),
+            Sample(edges, edge)
+        )
+    })
 }
 
+/// A list shown through [`write_sample`].
+struct Sample<'a, T, W>(&'a [T], W);
+
+impl<T, W: Fn(&mut fmt::Formatter<'_>, &T) -> fmt::Result> fmt::Display for Sample<'_, T, W> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_sample(f, self.0, &self.1)
+    }
+}
+
+/// One line per non-empty list, separated by newlines (no newline after the last).
 impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.is_clean() {
-            return writeln!(f, "no defects found");
+            return f.write_str("no defects found");
         }
-        if let Some(problem) = &self.list_problem {
-            writeln!(f, "malformed face list: {problem}")?;
+        let lines = [
+            self.list_problem
+                .as_ref()
+                .map(|problem| format!("malformed face list: {problem}")),
+            ids_line(
+                [
+                    "face with fewer than 3 corners",
+                    "faces with fewer than 3 corners",
+                ],
+                "f",
+                &self.faces_too_small,
+            ),
+            ids_line(
+                [
+                    "face with out-of-range vertex indices",
+                    "faces with out-of-range vertex indices",
+                ],
+                "f",
+                &self.faces_out_of_range,
+            ),
+            ids_line(
+                [
+                    "face with a repeated vertex",
+                    "faces with a repeated vertex",
+                ],
+                "f",
+                &self.faces_repeated_vertex,
+            ),
+            ids_line(
+                [
+                    "vertex with NaN/infinite coordinates",
+                    "vertices with NaN/infinite coordinates",
+                ],
+                "v",
+                &self.non_finite_vertices,
+            ),
+            edges_line(
+                [
+                    "non-manifold edge (3+ faces)",
+                    "non-manifold edges (3+ faces)",
+                ],
+                &self.non_manifold_edges,
+            ),
+            edges_line(
+                [
+                    "inconsistently oriented edge",
+                    "inconsistently oriented edges",
+                ],
+                &self.inconsistent_edges,
+            ),
+            ids_line(
+                ["non-manifold vertex", "non-manifold vertices"],
+                "v",
+                &self.non_manifold_vertices,
+            ),
+            ids_line(
+                ["isolated vertex", "isolated vertices"],
+                "v",
+                &self.isolated_vertices,
+            ),
+            ids_line(
+                [
+                    "degenerate (zero-area) face",
+                    "degenerate (zero-area) faces",
+                ],
+                "f",
+                &self.degenerate_faces,
+            ),
+            ids_line(["face skipped", "faces skipped"], "f", &self.skipped_faces),
+            ids_line(
+                ["face reversed by repair", "faces reversed by repair"],
+                "f",
+                &self.reoriented_faces,
+            ),
+            ids_line(
+                [
+                    "vertex duplicated, copies of",
+                    "vertices duplicated, copies of",
+                ],
+                "v",
+                &self.vertex_copies,
+            ),
+        ];
+        let mut first = true;
+        for line in lines.into_iter().flatten() {
+            if !first {
+                f.write_str("\n")?;
+            }
+            first = false;
+            f.write_str(&line)?;
         }
-        write_ids(
-            f,
-            "faces with fewer than 3 corners",
-            "f",
-            &self.faces_too_small,
-        )?;
-        write_ids(
-            f,
-            "faces with out-of-range vertex indices",
-            "f",
-            &self.faces_out_of_range,
-        )?;
-        write_ids(
-            f,
-            "faces with a repeated vertex",
-            "f",
-            &self.faces_repeated_vertex,
-        )?;
-        write_ids(
-            f,
-            "vertices with NaN/infinite coordinates",
-            "v",
-            &self.non_finite_vertices,
-        )?;
-        write_edges(f, "non-manifold edges (3+ faces)", &self.non_manifold_edges)?;
-        write_edges(f, "inconsistently oriented edges", &self.inconsistent_edges)?;
-        write_ids(f, "non-manifold vertices", "v", &self.non_manifold_vertices)?;
-        write_ids(f, "isolated vertices", "v", &self.isolated_vertices)?;
-        write_ids(
-            f,
-            "degenerate (zero-area) faces",
-            "f",
-            &self.degenerate_faces,
-        )?;
-        write_ids(f, "faces skipped", "f", &self.skipped_faces)?;
-        write_ids(f, "faces reversed by repair", "f", &self.reoriented_faces)?;
-        write_ids(
-            f,
-            "vertices duplicated, copies of",
-            "v",
-            &self.vertex_copies,
-        )
+        Ok(())
     }
 }
 
@@ -267,17 +335,17 @@ mod tests {
         };
         let text = diagnostic.summary();
         assert!(
-            text.contains("1 faces with fewer than 3 corners: f3\n"),
+            text.contains("1 face with fewer than 3 corners: f3\n"),
             "{text}"
         );
         assert!(text.contains("(v1-v2 in faces f0 f4 f5)"), "{text}");
         assert!(
-            text.contains("20 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 12 more\n"),
+            text.contains("20 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 12 more"),
             "{text}"
         );
         assert!(!diagnostic.is_clean());
         assert!(diagnostic.has_invalid_input());
-        assert_eq!(Diagnostic::default().summary(), "no defects found\n");
+        assert_eq!(Diagnostic::default().summary(), "no defects found");
     }
 
     #[test]
@@ -287,7 +355,7 @@ mod tests {
             reoriented_faces: vec![1, 4],
             ..Diagnostic::default()
         };
-        assert_eq!(diagnostic.summary(), "2 faces reversed by repair: f1 f4\n");
+        assert_eq!(diagnostic.summary(), "2 faces reversed by repair: f1 f4");
     }
 
     #[test]
