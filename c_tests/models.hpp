@@ -1,6 +1,6 @@
-// Test models for the comparisons against OpenMesh and CGAL: every mesh file of a folder of
-// the test data (tests/data), read once through halfwing's own reader so that all three libraries get the
-// same indexed face list.
+// Test models for the comparisons against OpenMesh and CGAL: every mesh file of a folder of the
+// test data (tests/data), read once through halfwing's own reader so that all three libraries get
+// the same indexed face list.
 #ifndef HALFWING_C_TESTS_MODELS_HPP
 #define HALFWING_C_TESTS_MODELS_HPP
 

@@ -49,11 +49,12 @@ add_test(NAME consumer_examples
 set_tests_properties(consumer_examples PROPERTIES FIXTURES_REQUIRED halfwing_installed)
 
 # The installed libraries carry no debug info unless HALFWING_INSTALL_DEBUG_INFO asks for it.
+set(_prefix_libdir "${HALFWING_TEST_PREFIX}/${CMAKE_INSTALL_LIBDIR}")
 find_program(READELF_EXECUTABLE readelf REQUIRED)
 add_test(NAME consumer_debug_info
   COMMAND "${CMAKE_COMMAND}" -DREADELF=${READELF_EXECUTABLE}
           -DEXPECT_DEBUG_INFO=${HALFWING_INSTALL_DEBUG_INFO}
-          "-DLIBRARIES=${HALFWING_TEST_PREFIX}/${CMAKE_INSTALL_LIBDIR}/${HALFWING_SHARED_FILE}|${HALFWING_TEST_PREFIX}/${CMAKE_INSTALL_LIBDIR}/libhalfwing.a"
+          "-DLIBRARIES=${_prefix_libdir}/${HALFWING_SHARED_FILE}|${_prefix_libdir}/libhalfwing.a"
           -P "${_consumer_src}/debug_info.cmake")
 set_tests_properties(consumer_debug_info PROPERTIES FIXTURES_REQUIRED halfwing_installed)
 

@@ -164,14 +164,18 @@ void on_glfw_error(int code, const char* message) {
   std::fprintf(stderr, "halfwing_viewer: GLFW error %d: %s\n", code, message);
 }
 
-int usage(std::FILE* to, const char* argv0) {
+void print_usage(std::FILE* to, const char* argv0) {
   std::fprintf(to, "usage: %s [model.obj|.off|.ply] [--screenshot out.png] [--size WxH] [--keys KEYS]\n",
                argv0);
-  return to == stdout ? 0 : 2;
+}
+
+int usage(const char* argv0) {
+  print_usage(stderr, argv0);
+  return 2;
 }
 
 int help(const char* argv0) {
-  usage(stdout, argv0);
+  print_usage(stdout, argv0);
   std::printf(
       "Opens the model (default: the bundled capsule) in a window; H there lists the keys.\n"
       "  --screenshot out.png  render one frame offscreen, write it as a PNG and exit\n"
@@ -260,7 +264,7 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) {
       if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16 ||
           width > 8192 || height > 8192)
-        return usage(stderr, argv[0]);
+        return usage(argv[0]);
     } else if (!std::strcmp(argv[i], "--keys") && i + 1 < argc) {
       keys = argv[++i];
     } else if (!std::strcmp(argv[i], "--help")) {
@@ -268,7 +272,7 @@ int main(int argc, char** argv) {
     } else if (argv[i][0] != '-') {
       model = argv[i];
     } else {
-      return usage(stderr, argv[0]);
+      return usage(argv[0]);
     }
   }
   if (model.empty()) model = default_model();
