@@ -2,7 +2,8 @@
 # benchmark target (build-bench/, or $HALFWING_BENCH_BUILD_DIR).
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HALFWING_BENCH_BUILD_DIR:-$root/build-bench}"
-data="$root/../shared/data/meshes"
+# The test data: the repository's copy, or a fuller set named by HALFWING_DATA.
+data="${HALFWING_DATA:-$root/tests/data}/meshes"
 
 build_benchmark() {
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHALFWING_BUILD_BENCHMARKS=ON \

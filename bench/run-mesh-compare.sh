@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the side-by-side benchmark (halfwing vs OpenMesh vs CGAL) in Release and runs it on the
-# generated ~1M-face models and the largest clean real models of ../shared/data/meshes.
+# generated ~1M-face models and the largest clean real models of the test data (tests/data, or
+# $HALFWING_DATA; models it lacks are left out).
 #
 #   bench/run-mesh-compare.sh [mesh_compare options] [model files...]
 #

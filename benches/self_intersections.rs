@@ -1,29 +1,25 @@
 //! Exact self-intersection detection with one and with two threads: the 1M-triangle torus and
-//! the largest closed models of the shared data set (which are read from `HALFWING_DATA`, else
-//! from `../shared/data` beside the repository, and left out when missing).
+//! the largest closed models of the test data set (read from `HALFWING_DATA`, else from the copy
+//! in `tests/data`, which has the first of them; the others are left out when missing).
 //!
 //!   cargo bench --bench self_intersections [-- filter]
 
 use std::hint::black_box;
-use std::path::{Path, PathBuf};
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use halfwing::geom::self_intersections;
 use halfwing::soup::PolygonSoup;
 use halfwing::surfaces::{CellFaces, Torus, torus};
 
-/// The shared models with the most triangles (about 100k, 100k and 86k).
+#[path = "../tests/shared_data/mod.rs"]
+mod shared_data;
+
+/// The test models with the most triangles (about 100k, 100k and 86k).
 const MODELS: [&str; 3] = [
     "meshes/closed/luke_dragon.obj",
     "meshes/closed/c3d_nefertiti.obj",
     "meshes/closed/igl_armadillo.obj",
 ];
-
-fn data_root() -> PathBuf {
-    std::env::var_os("HALFWING_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"))
-}
 
 /// Positions and triangles of a triangle soup.
 fn triangles_of(soup: &PolygonSoup) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
@@ -54,7 +50,7 @@ fn inputs() -> Vec<Input> {
     let (positions, triangles) = triangles_of(&ring);
     let mut inputs = vec![("torus-1M".to_string(), positions, triangles)];
     for model in MODELS {
-        let path = data_root().join(model);
+        let path = shared_data::root().join(model);
         let Ok(soup) = halfwing::io::read_path(&path) else {
             eprintln!("skipping {}: not readable", path.display());
             continue;

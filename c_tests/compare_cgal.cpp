@@ -1,4 +1,4 @@
-// halfwing against CGAL 5 Surface_mesh on the real models of ../shared/data, the same indexed face
+// halfwing against CGAL 5 Surface_mesh on the real models of tests/data, the same indexed face
 // list fed to both (through PMP::polygon_soup_to_polygon_mesh): vertex/edge/face counts, boundary
 // cycles and their lengths, the valence histogram and the connected components.
 #include <CGAL/Polygon_mesh_processing/border.h>

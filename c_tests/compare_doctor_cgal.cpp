@@ -1,4 +1,4 @@
-// The mesh doctor against CGAL 5 Polygon Mesh Processing on every model of ../shared/data/meshes
+// The mesh doctor against CGAL 5 Polygon Mesh Processing on every model of tests/data/meshes
 // (closed, open, polygonal and broken), the same indexed face list fed to both:
 // - is_polygon_soup_a_polygon_mesh against the doctor's manifold and oriented verdicts;
 // - where CGAL can build the surface: connected_components, extract_boundary_cycles (count and

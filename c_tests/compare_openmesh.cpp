@@ -1,4 +1,4 @@
-// halfwing against OpenMesh 9 on the real models of ../shared/data, the same indexed face list fed
+// halfwing against OpenMesh 9 on the real models of tests/data, the same indexed face list fed
 // to both: vertex/edge/face counts, per-vertex valence, boundary loops and their lengths,
 // connected components, uniform vertex normals (OpenMesh's update_normals) and angle-weighted
 // vertex normals (a reference computed here); and, on the broken models, every face OpenMesh's

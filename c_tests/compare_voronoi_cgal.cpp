@@ -1,6 +1,6 @@
 // halfwing's Delaunay triangulation and Voronoi diagram against CGAL 5
 // (Delaunay_triangulation_2 with exact predicates + the Voronoi_diagram_2 adaptor with degeneracy
-// removal) on the point sets of ../shared/data/points2d and on generated ones:
+// removal) on the point sets of tests/data/points2d and on generated ones:
 //  - the same set of Delaunay edges, on inputs without four cocircular sites (decided with CGAL's
 //    exact in-circle test);
 //  - every Voronoi vertex within 1e-9 (relative) of the exactly constructed circumcentre;

@@ -1,5 +1,5 @@
 // halfwing's winged-edge kernel against OpenMesh 9's circulators on the manifold models of
-// ../shared/data (closed, open, polygonal), the same indexed face list fed to both: every face's
+// the test data (closed, open, polygonal), the same indexed face list fed to both: every face's
 // vertex loop (same cyclic order, whatever corner each starts at), every vertex's ring of
 // neighbours (same set and same counter-clockwise cyclic order), the faces around every vertex
 // and the faces adjacent to every face (same multisets). Face and vertex ids agree because both

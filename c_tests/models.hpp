@@ -1,6 +1,6 @@
-// Test models for the comparisons against OpenMesh and CGAL: every mesh file of a folder of
-// ../shared/data, read once through halfwing's own reader so that all three libraries get the
-// same indexed face list.
+// Test models for the comparisons against OpenMesh and CGAL: every mesh file of a folder of the
+// test data (tests/data), read once through halfwing's own reader so that all three libraries get
+// the same indexed face list.
 #ifndef HALFWING_C_TESTS_MODELS_HPP
 #define HALFWING_C_TESTS_MODELS_HPP
 
@@ -21,7 +21,7 @@ inline Indexed read(const std::filesystem::path& path) {
                        path.parent_path().filename().string() + "/" + path.filename().string());
 }
 
-/// The mesh files of `folder` (relative to the shared data folder), sorted by name.
+/// The mesh files of `folder` (relative to the test data folder), sorted by name.
 inline std::vector<std::filesystem::path> files(const std::string& folder) {
   std::vector<std::filesystem::path> paths;
   for (const auto& entry :

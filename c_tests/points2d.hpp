@@ -1,4 +1,4 @@
-// 2D point sets of ../shared/data/points2d (formats described in its MANIFEST.md) and generated
+// 2D point sets of tests/data/points2d (formats described in its MANIFEST.md) and generated
 // ones, for the Voronoi comparisons. Each reader keeps the points in file order, duplicates
 // included, so that site indices mean the same thing to every library.
 #ifndef HALFWING_C_TESTS_POINTS2D_HPP
@@ -103,7 +103,7 @@ inline std::vector<double> counted_points(const std::string& text) {
   return out;
 }
 
-/// Reads one file of ../shared/data/points2d by its extension.
+/// Reads one file of tests/data/points2d by its extension.
 inline PointSet read(const std::filesystem::path& path) {
   const std::string text = read_text(path), ext = path.extension().string();
   PointSet set{path.filename().string(), {}};

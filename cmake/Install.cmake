@@ -1,5 +1,6 @@
-# Installs the libraries, headers, CMake package (HalfwingConfig.cmake, HalfwingConfigVersion.cmake)
-# and pkg-config file (halfwing.pc).
+# Installs the libraries (stripped unless HALFWING_INSTALL_DEBUG_INFO is ON), headers, CMake
+# package (HalfwingConfig.cmake, HalfwingConfigVersion.cmake), pkg-config file (halfwing.pc),
+# licenses and changelog. The viewer is installed by examples/CMakeLists.txt.
 
 include(CMakePackageConfigHelpers)
 
@@ -20,6 +21,34 @@ install(FILES "${_links}/${HALFWING_SONAME}" "${_links}/libhalfwing.so"
         DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES "${HALFWING_STATIC_LIB}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES include/halfwing.h include/halfwing.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(FILES LICENSE-MIT LICENSE-APACHE CHANGELOG.md DESTINATION "${CMAKE_INSTALL_DOCDIR}")
+
+# The release profile keeps line tables for the tests' backtraces (a ~20 MB shared library);
+# users get the libraries without them unless they ask. Stripped where they were installed,
+# so `cmake --install --prefix` and DESTDIR are honoured.
+option(HALFWING_INSTALL_DEBUG_INFO "Install the libraries with their debug info (not stripped)" OFF)
+if(NOT HALFWING_INSTALL_DEBUG_INFO)
+  if(NOT CMAKE_STRIP)
+    message(FATAL_ERROR "no strip program found: install one (binutils) or set "
+                        "HALFWING_INSTALL_DEBUG_INFO=ON")
+  endif()
+  if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+    set(_installed_libdir "\$ENV{DESTDIR}${CMAKE_INSTALL_LIBDIR}")
+  else()
+    set(_installed_libdir "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}")
+  endif()
+  # The shared library keeps the symbols it exports; the archive keeps every symbol a link needs.
+  foreach(_strip IN ITEMS "--strip-unneeded;${HALFWING_SHARED_FILE}" "--strip-debug;libhalfwing.a")
+    list(GET _strip 0 _how)
+    list(GET _strip 1 _file)
+    install(CODE "
+      execute_process(COMMAND \"${CMAKE_STRIP}\" ${_how} \"${_installed_libdir}/${_file}\"
+                      RESULT_VARIABLE _halfwing_strip_status)
+      if(NOT _halfwing_strip_status EQUAL 0)
+        message(FATAL_ERROR \"${CMAKE_STRIP} ${_how} ${_installed_libdir}/${_file} failed\")
+      endif()")
+  endforeach()
+endif()
 
 string(REPLACE ";" " -l" HALFWING_PC_LIBS_PRIVATE "-l${HALFWING_STATIC_DEPS}")
 configure_package_config_file(cmake/HalfwingConfig.cmake.in

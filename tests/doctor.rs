@@ -506,7 +506,7 @@ fn self_intersections_are_exact_at_extreme_magnitudes() {
     }
 }
 
-/// On every shared model: the duplicate positions the data manifest measured; and on those
+/// On every test model: the duplicate positions the data manifest measured; and on those
 /// without non-manifold vertices (where components joined through edges and through vertices
 /// are the same) its boundary edges, components and Euler characteristic.
 #[test]

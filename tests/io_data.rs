@@ -1,8 +1,7 @@
-//! Every mesh of the shared data set reads without panicking, with the vertex and face counts and
+//! Every mesh of the test data set reads without panicking, with the vertex and face counts and
 //! the face-size histogram that `data/MANIFEST.md` states, and every OBJ agrees with `tobj`.
 //!
-//! The data lives beside the repository (`../shared/data`, as DESIGN.md says); set
-//! `HALFWING_DATA` to point elsewhere.
+//! The data is the repository's `tests/data`; set `HALFWING_DATA` to point at a fuller set.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

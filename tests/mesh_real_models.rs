@@ -1,6 +1,6 @@
 //! Seed 004's loops (sides of a face, star of a vertex, faces around a vertex, adjacent faces,
 //! boundary walk), written with the raw navigation exactly as the slides do, on the real models
-//! of the shared data set; and the build's counts and diagnostics against the data manifest.
+//! of the test data set; and the build's counts and diagnostics against the data manifest.
 
 mod mesh_support;
 

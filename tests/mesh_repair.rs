@@ -1,4 +1,4 @@
-//! Repair on the shared broken models: every face kept, a valid mesh, and the surface cut only
+//! Repair on the broken test models: every face kept, a valid mesh, and the surface cut only
 //! where it must be — fans around a non-manifold edge's ends get vertices of their own.
 
 use halfwing::io::read_path;
@@ -8,7 +8,7 @@ use halfwing::soup::BuildPolicy;
 mod shared_data;
 
 fn broken(name: &str) -> halfwing::soup::PolygonSoup {
-    read_path(shared_data::root().join("meshes/broken").join(name)).expect("the shared model reads")
+    read_path(shared_data::root().join("meshes/broken").join(name)).expect("the test model reads")
 }
 
 fn repaired(name: &str) -> Mesh {

@@ -1,11 +1,10 @@
-//! Render buffers of every mesh of the shared data set (read with halfwing's readers, built with
+//! Render buffers of every mesh of the test data set (read with halfwing's readers, built with
 //! the repair policy so broken files render too), in every shading mode: what a GPU is given must
 //! be consistent whatever the model — indices in range, one triangle count per polygon, finite
 //! positions equal to the mesh's, unit normals (the file's own ones too), finite uvs, and line
 //! sets matching the topology.
 //!
-//! The data lives beside the repository (`../shared/data`); set `HALFWING_DATA` to point
-//! elsewhere.
+//! The data is the repository's `tests/data`; set `HALFWING_DATA` to point at a fuller set.
 
 use std::path::PathBuf;
 
@@ -23,7 +22,7 @@ fn mesh_files() -> Vec<PathBuf> {
     let mut files = Vec::new();
     let mut pending = vec![dir.join("meshes")];
     while let Some(folder) = pending.pop() {
-        for entry in std::fs::read_dir(&folder).expect("shared data (set HALFWING_DATA)") {
+        for entry in std::fs::read_dir(&folder).expect("test data (set HALFWING_DATA)") {
             let path = entry.unwrap().path();
             if path.is_dir() {
                 pending.push(path);

@@ -1,10 +1,10 @@
 //! Building from face lists: round trips, boundaries, queries and bad input.
 
-use std::path::Path;
-
 use halfwing::soup::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, PolygonSoup};
 use halfwing::winged::{EdgeId, FaceId, Side, VertexId, Winged, WingedError};
 use proptest::prelude::*;
+
+mod shared_data;
 
 fn soup(positions: Vec<[f64; 3]>, faces: &[&[u32]]) -> PolygonSoup {
     PolygonSoup {
@@ -421,19 +421,16 @@ fn invalid_handles_are_errors() {
     assert!(w.set_position(VertexId(0), [f64::NAN, 0.0, 0.0]).is_err());
 }
 
-// --- the shared test models ------------------------------------------------------------------
+// --- the test models -------------------------------------------------------------------------
 
-/// A minimal OFF reader for the test models (positions and polygons; colours ignored). The
-/// crate's readers live in `crate::io`; this keeps the kernel's tests independent of them.
-/// Every model file of `../shared/data/meshes/<dir>`, read with the crate's reader (files the
+/// Every model file of the test data's `meshes/<dir>`, read with the crate's reader (files the
 /// reader refuses are left out: the readers have their own tests).
 fn models(dir: &str) -> Vec<(std::path::PathBuf, PolygonSoup)> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data/meshes")
-        .join(dir);
-    let mut files: Vec<_> = std::fs::read_dir(root)
-        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
-        .unwrap_or_default();
+    let root = shared_data::root().join("meshes").join(dir);
+    let mut files: Vec<_> = std::fs::read_dir(&root)
+        .unwrap_or_else(|e| panic!("{} (set HALFWING_DATA): {e}", root.display()))
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .collect();
     files.sort();
     files
         .into_iter()
@@ -474,13 +471,7 @@ fn manifold_models_round_trip() {
             built += 1;
         }
     }
-    // The data folder is shared and read-only; when it is present it has many manifold models.
-    if Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/data")
-        .exists()
-    {
-        assert!(built >= 30, "only {built} manifold models built");
-    }
+    assert!(built >= 30, "only {built} manifold models built");
 }
 
 /// Every policy either refuses a broken model with a diagnostic or builds a valid structure

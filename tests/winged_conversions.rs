@@ -1,4 +1,4 @@
-//! Conversions between the winged-edge and half-edge kernels on the shared data set: both
+//! Conversions between the winged-edge and half-edge kernels on the test data set: both
 //! builders give the same structure (every array, every record) on every model that builds,
 //! under every policy; indexed → winged → half-edge → indexed reproduces the faces exactly; and
 //! half-edge → winged → half-edge reproduces the mesh array for array.
@@ -12,7 +12,7 @@ use halfwing::winged::{EdgeId, FaceId, VertexId, Winged, WingedError};
 
 mod shared_data;
 
-/// The meshes of the shared data set under `dirs` that read, positions and faces only, in file
+/// The meshes of the test data set under `dirs` that read, positions and faces only, in file
 /// name order. Fails when the data set is missing (see `shared_data`).
 fn models_in(dirs: &[&str]) -> Vec<(PathBuf, PolygonSoup)> {
     let root = shared_data::root().join("meshes");
@@ -43,7 +43,7 @@ fn models_in(dirs: &[&str]) -> Vec<(PathBuf, PolygonSoup)> {
     models
 }
 
-/// Every mesh of the shared data set that reads, broken ones included.
+/// Every mesh of the test data set that reads, broken ones included.
 fn every_model() -> Vec<(PathBuf, PolygonSoup)> {
     models_in(&["closed", "open", "polygonal", "broken"])
 }

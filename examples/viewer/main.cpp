@@ -4,7 +4,7 @@
 // V switches to a 2D Voronoi diagram (clicks add sites, L runs Lloyd steps) and back.
 // Everything drawn comes from hw::render_buffers. GLFW + OpenGL 3.3 core, no other library.
 //
-//   halfwing_viewer [model] [--screenshot out.png] [--size WxH] [--keys KEYS]
+//   halfwing_viewer [model] [--screenshot out.png] [--size WxH] [--keys KEYS] [--help]
 //
 // --screenshot renders one frame offscreen, writes the PNG and exits (headless under Xvfb).
 // --keys presses keys before the first frame, as if typed (e.g. "1WN": flat shading, no
@@ -18,7 +18,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 #include <string>
 
 #include "gl_program.h"
@@ -30,6 +32,10 @@
 
 #ifndef HALFWING_EXAMPLE_MODEL
 #define HALFWING_EXAMPLE_MODEL "hole_capsule.off"
+#endif
+// Where an installed viewer finds its copy of the bundled model, relative to its own folder.
+#ifndef HALFWING_INSTALLED_MODEL
+#define HALFWING_INSTALLED_MODEL "../share/halfwing/hole_capsule.off"
 #endif
 
 namespace {
@@ -158,10 +164,36 @@ void on_glfw_error(int code, const char* message) {
   std::fprintf(stderr, "halfwing_viewer: GLFW error %d: %s\n", code, message);
 }
 
-int usage(const char* argv0) {
-  std::fprintf(stderr, "usage: %s [model.obj|.off|.ply] [--screenshot out.png] [--size WxH] [--keys KEYS]\n",
+void print_usage(std::FILE* to, const char* argv0) {
+  std::fprintf(to, "usage: %s [model.obj|.off|.ply] [--screenshot out.png] [--size WxH] [--keys KEYS]\n",
                argv0);
+}
+
+int usage(const char* argv0) {
+  print_usage(stderr, argv0);
   return 2;
+}
+
+int help(const char* argv0) {
+  print_usage(stdout, argv0);
+  std::printf(
+      "Opens the model (default: the bundled capsule) in a window; H there lists the keys.\n"
+      "  --screenshot out.png  render one frame offscreen, write it as a PNG and exit\n"
+      "  --size WxH            window or screenshot size (default 1024x768)\n"
+      "  --keys KEYS           keys pressed before the first frame, as if typed (e.g. VLL)\n"
+      "  --help                this text\n");
+  return 0;
+}
+
+/// The bundled model: the installed copy beside an installed viewer, else the source tree's.
+std::string default_model() {
+  std::error_code error;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const auto installed = self.parent_path() / HALFWING_INSTALLED_MODEL;
+    if (std::filesystem::is_regular_file(installed, error)) return installed.string();
+  }
+  return HALFWING_EXAMPLE_MODEL;
 }
 
 /// Creates the window and its OpenGL 3.3 core context (hidden for screenshots).
@@ -222,7 +254,7 @@ int run(GLFWwindow* window, viewer_state& state, const std::string& model, const
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string model = HALFWING_EXAMPLE_MODEL;
+  std::string model;
   const char* shot = nullptr;
   std::string keys;
   int width = 1024, height = 768;
@@ -235,12 +267,15 @@ int main(int argc, char** argv) {
         return usage(argv[0]);
     } else if (!std::strcmp(argv[i], "--keys") && i + 1 < argc) {
       keys = argv[++i];
+    } else if (!std::strcmp(argv[i], "--help")) {
+      return help(argv[0]);
     } else if (argv[i][0] != '-') {
       model = argv[i];
     } else {
       return usage(argv[0]);
     }
   }
+  if (model.empty()) model = default_model();
 
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) return 1;

@@ -1,5 +1,5 @@
 //! Test-only helpers shared by the `mesh_*` integration tests: a minimal OFF/OBJ reader for the
-//! shared data set (positions and polygons only) and mesh generators.
+//! test data set (positions and polygons only) and mesh generators.
 
 #![allow(dead_code)] // each test binary uses a different subset
 
@@ -10,7 +10,7 @@ use halfwing::soup::PolygonSoup;
 #[path = "../shared_data/mod.rs"]
 mod shared_data;
 
-/// Root of the shared, read-only test meshes.
+/// Root of the test meshes.
 pub fn data_dir() -> PathBuf {
     shared_data::root().join("meshes")
 }

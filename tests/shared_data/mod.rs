@@ -1,5 +1,5 @@
-//! Where the integration tests find the shared, read-only data set: `HALFWING_DATA` when set,
-//! else `../shared/data` beside the repository (as DESIGN.md says).
+//! Where the tests and benchmarks find the test data set: `HALFWING_DATA` when set (a fuller set
+//! laid out the same way), else the copy in the repository (`tests/data`, see its MANIFEST.md).
 
 use std::path::{Path, PathBuf};
 
@@ -7,5 +7,5 @@ use std::path::{Path, PathBuf};
 pub fn root() -> PathBuf {
     std::env::var_os("HALFWING_DATA")
         .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data"))
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data"))
 }
