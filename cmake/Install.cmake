@@ -19,7 +19,7 @@ install(FILES "${HALFWING_SHARED_LIB}" RENAME "${HALFWING_SHARED_FILE}"
 install(FILES "${_links}/${HALFWING_SONAME}" "${_links}/libhalfwing.so"
         DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES "${HALFWING_STATIC_LIB}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
-install(FILES include/halfwing.h include/halfwing.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(FILES include/halfwing.h include/halfwing_nav.h include/halfwing.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 
 string(REPLACE ";" " -l" HALFWING_PC_LIBS_PRIVATE "-l${HALFWING_STATIC_DEPS}")
 configure_package_config_file(cmake/HalfwingConfig.cmake.in

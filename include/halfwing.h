@@ -370,6 +370,65 @@ typedef struct {
 typedef uint32_t hw_build_policy;
 
 /**
+ * A navigation view of a mesh: its connectivity arrays (zero-copy, as hw_mesh_view() gives them)
+ * and their sizes, filled by hw_mesh_nav() and read by the inline `hw_nav_*` functions of
+ * halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
+ * indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
+ * `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
+ */
+typedef struct {
+  /**
+   * Per half-edge: the vertex it leaves.
+   */
+  const uint32_t *origin;
+  /**
+   * Per half-edge: the next half-edge around its face or boundary loop.
+   */
+  const uint32_t *next;
+  /**
+   * Per half-edge: the previous half-edge around its face or boundary loop.
+   */
+  const uint32_t *prev;
+  /**
+   * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+   */
+  const uint32_t *face;
+  /**
+   * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated
+   * or deleted).
+   */
+  const uint32_t *vertex_halfedge;
+  /**
+   * Per face: one of its half-edges.
+   */
+  const uint32_t *face_halfedge;
+  /**
+   * Per vertex slot: `true` when deleted; NULL while no vertex has been deleted.
+   */
+  const bool *vertex_deleted;
+  /**
+   * Per edge slot: `true` when deleted (both half-edges); NULL while no edge has been deleted.
+   */
+  const bool *edge_deleted;
+  /**
+   * Per face slot: `true` when deleted; NULL while no face has been deleted.
+   */
+  const bool *face_deleted;
+  /**
+   * Vertex slots (valid vertex ids are below this), deleted ones included.
+   */
+  size_t n_vertex_slots;
+  /**
+   * Half-edge slots, deleted ones included.
+   */
+  size_t n_halfedge_slots;
+  /**
+   * Face slots, deleted ones included.
+   */
+  size_t n_face_slots;
+} hw_nav;
+
+/**
  * How a vertex normal weighs the faces around it.
  */
 typedef uint32_t hw_normal_weighting;
@@ -2075,6 +2134,14 @@ size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
 
 /**
+ * Fills `*out` with the navigation view of `mesh` (see ::hw_nav and halfwing_nav.h).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` NULL or writable.
+ */
+hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
+
+/**
  * The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
  *
  * # Safety
@@ -3563,3 +3630,5 @@ hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *
 #endif  // __cplusplus
 
 #endif  /* HALFWING_H */
+
+#include "halfwing_nav.h"
