@@ -30,12 +30,14 @@
  * Element ids (`hw_vertex`, `hw_halfedge`, `hw_edge`, `hw_face`) are small structs passed by
  * value, so the compiler keeps their kinds apart; `idx == HW_INVALID_INDEX` means none.
  *
- * Many ids at once, four ways: copies into a caller's buffer (the size needed is always
+ * Many ids at once, five ways: copies into a caller's buffer (the size needed is always
  * reported, so a caller can ask, allocate and call again); zero-copy views of the internal arrays
  * (hw_mesh_view(), valid until the next mutating call); stack circulators (`hw_circ_*`, for the
- * textbook `do { ... } while (h != start);` loops); and callbacks (hw_mesh_visit(),
- * hw_circ_visit(): a function and a `void *userdata`; the function stops a visit by returning
- * false and must not throw or `longjmp` through the call).
+ * textbook `do { ... } while (h != start);` loops); the inline navigation (hw_mesh_nav() and the
+ * `static inline` `hw_nav_*` steps and circulators of halfwing_nav.h, included at the end of this
+ * header: the same walks at the speed of array code, over trusted ids); and callbacks
+ * (hw_mesh_visit(), hw_circ_visit(): a function and a `void *userdata`; the function stops a
+ * visit by returning false and must not throw or `longjmp` through the call).
  */
 
 #ifndef HALFWING_H
