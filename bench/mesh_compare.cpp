@@ -1,7 +1,8 @@
 // Side-by-side benchmark: halfwing (through its C API) against OpenMesh and CGAL Surface_mesh, in
 // one run, on the same inputs. Prints a table of times and ratios (halfwing / reference) for:
-// bulk build, face + vertex normals, a one-ring valence sum over all vertices, boundary-loop
-// count, connected components, and heap bytes per face.
+// bulk build, face + vertex normals, a one-ring valence sum over all vertices (checked and inline
+// C circulators, C++ ranges, a loop by hand), boundary-loop count, connected components, and heap
+// bytes per face.
 //
 //   bench/run-mesh-compare.sh [model files...]     (builds it in Release and runs it)
 //   mesh_compare [--quick] [--warm] [--repeats N] [--only GENERATED-MODEL] [model files...]
@@ -37,6 +38,7 @@
 #include "halfwing.hpp"
 #include "models.hpp"
 #include "timing.hpp"
+#include "valence_sums.h"
 
 namespace {
 
@@ -147,24 +149,27 @@ std::size_t openmesh_boundary_loops(const OM& mesh) {
   return loops;
 }
 
-/// halfwing's one-ring walk through the zero-copy views of the C API, as a C user writes it:
-/// around each vertex from its outgoing half-edge, `h = twin(prev(h))` (`prev[h] ^ 1`), until
-/// back at the start.
-std::size_t halfwing_valence_sum(const hw::mesh& mesh) {
-  const uint32_t *prev = nullptr, *vertex_halfedge = nullptr;
-  std::size_t n_halfedges = 0, n_vertices = 0;
-  hw::check(hw_mesh_view(mesh.get(), HW_ARRAY_HALFEDGE_PREV, &prev, &n_halfedges));
-  hw::check(hw_mesh_view(mesh.get(), HW_ARRAY_VERTEX_HALFEDGE, &vertex_halfedge, &n_vertices));
+/// halfwing's one-ring walk as a C++ range-for over the inline navigation (hw::nav_view).
+std::size_t halfwing_valence_sum_nav_range(const hw::mesh& mesh) {
+  const hw::nav_view nav = mesh.nav();
   std::size_t sum = 0;
-  for (std::size_t v = 0; v < n_vertices; ++v) {
-    const uint32_t start = vertex_halfedge[v];
-    if (start == HW_INVALID_INDEX) continue;
-    uint32_t h = start;
-    do {
+  for (uint32_t v = 0; v < nav.n_vertex_slots(); ++v)
+    for (hw_vertex w : nav.vertices_around(hw_vertex{v})) {
+      (void)w;
       ++sum;
-      h = prev[h] ^ 1u;
-    } while (h != start);
-  }
+    }
+  return sum;
+}
+
+/// The same with hw::mesh's own ranges, which check each vertex id before stepping inline.
+std::size_t halfwing_valence_sum_mesh_range(const hw::mesh& mesh) {
+  std::size_t sum = 0;
+  const std::size_t n_vertices = mesh.n_vertices();
+  for (uint32_t v = 0; v < n_vertices; ++v)
+    for (hw_vertex w : mesh.vertices_around(hw_vertex{v})) {
+      (void)w;
+      ++sum;
+    }
   return sum;
 }
 
@@ -254,13 +259,24 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
     std::printf("  !! vertex normals differ by up to %g\n", worst_normal_gap);
   row("face+vertex normals (ms)", hw_normals, om_normals, om_name + " update_normals", 0.5);
 
-  // One-ring traversal.
-  std::size_t hw_sum = 0, om_sum = 0;
-  const auto [hw_ring, om_ring] = best_ms(
-      repeats, [&] { hw_sum = halfwing_valence_sum(mesh); },
+  // One-ring traversal: the valence sum over all vertices, five ways, against OpenMesh's
+  // cvv_iter in the same interleaved rounds.
+  std::array<std::size_t, 5> hw_sums{};
+  std::size_t om_sum = 0;
+  const auto [checked_ms, inline_ms, nav_range_ms, mesh_range_ms, by_hand_ms, om_ring] = best_ms(
+      repeats, [&] { hw_sums[0] = valence_sum_checked_circulator(mesh.get()); },
+      [&] { hw_sums[1] = valence_sum_inline_circulator(mesh.get()); },
+      [&] { hw_sums[2] = halfwing_valence_sum_nav_range(mesh); },
+      [&] { hw_sums[3] = halfwing_valence_sum_mesh_range(mesh); },
+      [&] { hw_sums[4] = valence_sum_by_hand(mesh.get()); },
       [&] { om_sum = openmesh_valence_sum(om); });
-  expect_equal("valence sums", hw_sum, om_sum);
-  row("one-ring valence sum (ms)", hw_ring, om_ring, om_name + " vv_iter", 1.0);
+  for (std::size_t sum : hw_sums) expect_equal("valence sums", sum, om_sum);
+  const std::string cvv = om_name + " cvv_iter";
+  row("ring: C checked circ (ms)", checked_ms, om_ring, cvv);
+  row("ring: C inline circ (ms)", inline_ms, om_ring, cvv, 1.0);
+  row("ring: C++ nav range (ms)", nav_range_ms, om_ring, cvv, 0.5);
+  row("ring: C++ mesh range (ms)", mesh_range_ms, om_ring, cvv);
+  row("ring: C by hand (ms)", by_hand_ms, om_ring, cvv, 0.5);
 
   // Boundary loops.
   std::size_t hw_loops = 0, om_loops = 0, cgal_loops = 0;

@@ -1,5 +1,10 @@
-# Fails when a function declared in halfwing.h is called by no C or C++ test in c_tests/.
-file(READ "${HEADER}" header)
+# Fails when a function declared in halfwing.h (or defined inline in halfwing_nav.h) is called by
+# no C or C++ test in c_tests/. HEADERS is the list of headers to read.
+set(header "")
+foreach(path IN LISTS HEADERS)
+  file(READ "${path}" text)
+  string(APPEND header "${text}")
+endforeach()
 string(REGEX MATCHALL "[a-z_0-9 *]+ (hw_[a-z_0-9]+)\\(" declarations "${header}")
 file(GLOB sources "${TESTS}/*.c" "${TESTS}/*.cpp")
 set(all_tests "")
@@ -20,4 +25,4 @@ endforeach()
 if(untested)
   message(FATAL_ERROR "functions no test calls: ${untested}")
 endif()
-message(STATUS "all ${count} functions of halfwing.h are called by the tests")
+message(STATUS "all ${count} functions of the headers are called by the tests")

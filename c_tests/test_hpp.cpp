@@ -328,10 +328,147 @@ static void doctor() {
 
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
 
+// ---- range-for over the inline navigation -----------------------------------------------------
+
+/// The ids a checked C circulator yields, to its end.
+template <class Id>
+static std::vector<uint32_t> checked_walk(hw_circulator c, bool (*next)(hw_circulator*, Id*)) {
+  std::vector<uint32_t> ids;
+  Id id;
+  while (next(&c, &id)) ids.push_back(id.idx);
+  return ids;
+}
+
+/// The ids a range-for over `range` yields.
+template <class Range>
+static std::vector<uint32_t> range_walk(const Range& range) {
+  std::vector<uint32_t> ids;
+  for (auto id : range) ids.push_back(id.idx);
+  return ids;
+}
+
+static hw_circulator around(const hw::mesh& m, hw_vertex v, hw_circulator_kind kind) {
+  hw_circulator c;
+  hw::check(hw_circ_around_vertex(m.get(), v, kind, &c));
+  return c;
+}
+
+static hw_circulator around(const hw::mesh& m, hw_face f, hw_circulator_kind kind) {
+  hw_circulator c;
+  hw::check(hw_circ_around_face(m.get(), f, kind, &c));
+  return c;
+}
+
+/// Every range of hw::mesh (checked start, inline steps) and of hw::nav_view yields what the
+/// checked C circulators yield, and every nav_view step agrees with the checked one. Returns the
+/// number of walks compared.
+static std::size_t ranges_match_checked(const hw::mesh& m) {
+  const hw::nav_view nav = m.nav();
+  CHECK(nav.n_vertex_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_VERTEX));
+  CHECK(nav.n_halfedge_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_HALFEDGE));
+  CHECK(nav.n_face_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_FACE));
+  CHECK(nav.raw().origin != nullptr || nav.n_halfedge_slots() == 0);
+  std::size_t walks = 0;
+  auto same = [&](const std::vector<uint32_t>& want, const std::vector<uint32_t>& got) {
+    ++walks;
+    CHECK(want == got);
+  };
+  for (uint32_t i = 0; i < nav.n_vertex_slots(); ++i) {
+    const hw_vertex v{i};
+    if (nav.is_deleted(v)) {
+      bool thrown = false;
+      try {
+        m.vertices_around(v);
+      } catch (const hw::error& e) {
+        thrown = e.status() == HW_ERR_INVALID_HANDLE;
+      }
+      CHECK(thrown);
+      CHECK(range_walk(nav.outgoing(v)).empty());
+      continue;
+    }
+    CHECK(nav.halfedge(v).idx == m.halfedge(v).idx);
+    const auto outgoing = checked_walk(around(m, v, HW_CIRC_HALFEDGES), hw_circ_next_halfedge);
+    same(outgoing, range_walk(m.outgoing(v)));
+    same(outgoing, range_walk(nav.outgoing(v)));
+    const auto incoming = checked_walk(around(m, v, HW_CIRC_INCOMING), hw_circ_next_halfedge);
+    same(incoming, range_walk(m.incoming(v)));
+    same(incoming, range_walk(nav.incoming(v)));
+    const auto ring = checked_walk(around(m, v, HW_CIRC_VERTICES), hw_circ_next_vertex);
+    same(ring, range_walk(m.vertices_around(v)));
+    same(ring, range_walk(nav.vertices_around(v)));
+    const auto edges = checked_walk(around(m, v, HW_CIRC_EDGES), hw_circ_next_edge);
+    same(edges, range_walk(m.edges_around(v)));
+    same(edges, range_walk(nav.edges_around(v)));
+    const auto faces = checked_walk(around(m, v, HW_CIRC_FACES), hw_circ_next_face);
+    same(faces, range_walk(m.faces_around(v)));
+    same(faces, range_walk(nav.faces_around(v)));
+    if (!outgoing.empty()) {
+      // From its second outgoing half-edge: the same ring, rotated by one.
+      std::vector<uint32_t> rotated(outgoing.begin() + 1, outgoing.end());
+      rotated.push_back(outgoing.front());
+      same(rotated, range_walk(nav.around_origin(hw_halfedge{outgoing.size() > 1 ? outgoing[1] : outgoing[0]})));
+    }
+  }
+  for (uint32_t i = 0; i < nav.n_face_slots(); ++i) {
+    const hw_face f{i};
+    if (nav.is_deleted(f)) continue;
+    CHECK(nav.halfedge(f).idx == m.halfedge(f).idx);
+    const auto sides = checked_walk(around(m, f, HW_CIRC_HALFEDGES), hw_circ_next_halfedge);
+    same(sides, range_walk(m.halfedges_of(f)));
+    same(sides, range_walk(nav.halfedges_of(f)));
+    const auto corners = checked_walk(around(m, f, HW_CIRC_VERTICES), hw_circ_next_vertex);
+    same(corners, range_walk(m.vertices_of(f)));
+    same(corners, range_walk(nav.vertices_of(f)));
+    const auto edges = checked_walk(around(m, f, HW_CIRC_EDGES), hw_circ_next_edge);
+    same(edges, range_walk(m.edges_of(f)));
+    same(edges, range_walk(nav.edges_of(f)));
+    const auto across = checked_walk(around(m, f, HW_CIRC_FACES), hw_circ_next_face);
+    same(across, range_walk(m.faces_across(f)));
+    same(across, range_walk(nav.faces_across(f)));
+  }
+  for (uint32_t i = 0; i < nav.n_halfedge_slots(); ++i) {
+    const hw_halfedge h{i};
+    if (nav.is_deleted(nav.edge(h))) continue;
+    CHECK(nav.origin(h).idx == m.origin(h).idx && nav.target(h).idx == m.target(h).idx);
+    CHECK(nav.twin(h).idx == m.twin(h).idx && nav.edge(h).idx == m.edge(h).idx);
+    CHECK(nav.next(h).idx == m.next(h).idx && nav.prev(h).idx == m.prev(h).idx);
+    CHECK(nav.face(h).idx == m.face(h).idx && nav.is_boundary(h) == m.is_boundary(h));
+    hw_circulator c;
+    hw::check(hw_circ_along_loop(m.get(), h, &c));
+    const auto loop = checked_walk(c, hw_circ_next_halfedge);
+    same(loop, range_walk(m.loop(h)));
+    same(loop, range_walk(nav.loop(h)));
+  }
+  return walks;
+}
+
+static void ranges_on_real_models() {
+  for (const char* model : {"closed/pmp_fandisk.off", "open/cgal_elephant-with-holes.off",
+                            "polygonal/igl_horse_quad.obj", "polygonal/igl_cylinder.obj"}) {
+    const hw::mesh m = hw::mesh::read(std::string(HALFWING_DATA_DIR) + "/meshes/" + model);
+    CHECK(ranges_match_checked(m) > 1000);
+  }
+  // After deleting faces (their isolated vertices too) and garbage collection.
+  hw::mesh m =
+      hw::mesh::read(std::string(HALFWING_DATA_DIR) + "/meshes/open/cgal_elephant-with-holes.off");
+  const std::size_t n_faces = m.n_faces();
+  for (uint32_t f = 0; f < n_faces; f += 23) m.remove(hw_face{f});
+  CHECK(m.nav().raw().face_deleted != nullptr);
+  std::size_t deleted_vertices = 0;
+  const hw::nav_view nav = m.nav();
+  for (uint32_t v = 0; v < nav.n_vertex_slots(); ++v) deleted_vertices += nav.is_deleted(hw_vertex{v});
+  CHECK(deleted_vertices > 0);
+  CHECK(ranges_match_checked(m) > 1000);
+  m.garbage_collect();
+  CHECK(m.nav().raw().face_deleted == nullptr);
+  CHECK(ranges_match_checked(m) > 1000);
+}
+
 int main() {
   exceptions_carry_status_and_message();
   ownership_moves();
   circulation_and_normals();
+  ranges_on_real_models();
   visits();
   editing();
   faces_and_attributes();

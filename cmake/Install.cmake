@@ -20,7 +20,8 @@ install(FILES "${HALFWING_SHARED_LIB}" RENAME "${HALFWING_SHARED_FILE}"
 install(FILES "${_links}/${HALFWING_SONAME}" "${_links}/libhalfwing.so"
         DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES "${HALFWING_STATIC_LIB}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
-install(FILES include/halfwing.h include/halfwing.hpp DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(FILES include/halfwing.h include/halfwing_nav.h include/halfwing.hpp
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
 install(FILES LICENSE-MIT LICENSE-APACHE CHANGELOG.md DESTINATION "${CMAKE_INSTALL_DOCDIR}")
 
 # The release profile keeps line tables for the tests' backtraces (a ~20 MB shared library);

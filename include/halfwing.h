@@ -30,12 +30,14 @@
  * Element ids (`hw_vertex`, `hw_halfedge`, `hw_edge`, `hw_face`) are small structs passed by
  * value, so the compiler keeps their kinds apart; `idx == HW_INVALID_INDEX` means none.
  *
- * Many ids at once, four ways: copies into a caller's buffer (the size needed is always
+ * Many ids at once, five ways: copies into a caller's buffer (the size needed is always
  * reported, so a caller can ask, allocate and call again); zero-copy views of the internal arrays
  * (hw_mesh_view(), valid until the next mutating call); stack circulators (`hw_circ_*`, for the
- * textbook `do { ... } while (h != start);` loops); and callbacks (hw_mesh_visit(),
- * hw_circ_visit(): a function and a `void *userdata`; the function stops a visit by returning
- * false and must not throw or `longjmp` through the call).
+ * textbook `do { ... } while (h != start);` loops); the inline navigation (hw_mesh_nav() and the
+ * `static inline` `hw_nav_*` steps and circulators of halfwing_nav.h, included at the end of this
+ * header: the same walks at the speed of array code, over trusted ids); and callbacks
+ * (hw_mesh_visit(), hw_circ_visit(): a function and a `void *userdata`; the function stops a
+ * visit by returning false and must not throw or `longjmp` through the call).
  */
 
 #ifndef HALFWING_H
@@ -368,6 +370,65 @@ typedef struct {
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
  */
 typedef uint32_t hw_build_policy;
+
+/**
+ * A navigation view of a mesh: its connectivity arrays (zero-copy, as hw_mesh_view() gives them)
+ * and their sizes, filled by hw_mesh_nav() and read by the inline `hw_nav_*` functions of
+ * halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
+ * indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
+ * `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
+ */
+typedef struct {
+  /**
+   * Per half-edge: the vertex it leaves.
+   */
+  const uint32_t *origin;
+  /**
+   * Per half-edge: the next half-edge around its face or boundary loop.
+   */
+  const uint32_t *next;
+  /**
+   * Per half-edge: the previous half-edge around its face or boundary loop.
+   */
+  const uint32_t *prev;
+  /**
+   * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+   */
+  const uint32_t *face;
+  /**
+   * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated
+   * or deleted).
+   */
+  const uint32_t *vertex_halfedge;
+  /**
+   * Per face: one of its half-edges.
+   */
+  const uint32_t *face_halfedge;
+  /**
+   * Per vertex slot: `true` when deleted; NULL while no vertex has been deleted.
+   */
+  const bool *vertex_deleted;
+  /**
+   * Per edge slot: `true` when deleted (both half-edges); NULL while no edge has been deleted.
+   */
+  const bool *edge_deleted;
+  /**
+   * Per face slot: `true` when deleted; NULL while no face has been deleted.
+   */
+  const bool *face_deleted;
+  /**
+   * Vertex slots (valid vertex ids are below this), deleted ones included.
+   */
+  size_t n_vertex_slots;
+  /**
+   * Half-edge slots, deleted ones included.
+   */
+  size_t n_halfedge_slots;
+  /**
+   * Face slots, deleted ones included.
+   */
+  size_t n_face_slots;
+} hw_nav;
 
 /**
  * How a vertex normal weighs the faces around it.
@@ -2075,6 +2136,14 @@ size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
 
 /**
+ * Fills `*out` with the navigation view of `mesh` (see ::hw_nav and halfwing_nav.h).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` NULL or writable.
+ */
+hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
+
+/**
  * The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
  *
  * # Safety
@@ -3563,3 +3632,5 @@ hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *
 #endif  // __cplusplus
 
 #endif  /* HALFWING_H */
+
+#include "halfwing_nav.h"

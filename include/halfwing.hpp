@@ -178,14 +178,65 @@ class circulation_of {
   Circulator start_;
 };
 
-/// A range over a half-edge circulator (see circulation_of).
-template <class Id, bool (*Next)(hw_circulator*, Id*)>
-using circulation = circulation_of<hw_circulator, Id, Next>;
+/// A range over an inline circulator of halfwing_nav.h (see circulation_of): every step is a few
+/// array reads the compiler inlines.
+template <class Id, bool (*Next)(hw_nav_circ*, Id*)>
+using circulation = circulation_of<hw_nav_circ, Id, Next>;
 
-using halfedge_circulation = circulation<hw_halfedge, hw_circ_next_halfedge>;
-using vertex_circulation = circulation<hw_vertex, hw_circ_next_vertex>;
-using edge_circulation = circulation<hw_edge, hw_circ_next_edge>;
-using face_circulation = circulation<hw_face, hw_circ_next_face>;
+using halfedge_circulation = circulation<hw_halfedge, hw_nav_circ_next_halfedge>;
+using incoming_circulation = circulation<hw_halfedge, hw_nav_circ_next_incoming>;
+using vertex_circulation = circulation<hw_vertex, hw_nav_circ_next_vertex>;
+using edge_circulation = circulation<hw_edge, hw_nav_circ_next_edge>;
+using face_circulation = circulation<hw_face, hw_nav_circ_next_face>;
+
+/// The inline navigation of a mesh (hw_nav, see halfwing.h / halfwing_nav.h), from
+/// hw::mesh::nav(): navigation and range-for walks that compile to array reads. Valid until the
+/// next call that modifies the mesh. Ids are trusted, not checked: pass ids the mesh gave since
+/// its last modification, and use hw::mesh's checked methods for any other. Orders, boundary
+/// vertices and deleted elements as documented in halfwing_nav.h (the same orders as the checked
+/// circulators).
+class nav_view {
+ public:
+  /// The navigation view of `mesh` (throws hw::error for a NULL mesh).
+  explicit nav_view(const hw_mesh* mesh) { check(hw_mesh_nav(mesh, &raw_)); }
+
+  /// The C view, for the `hw_nav_*` functions.
+  const hw_nav& raw() const noexcept { return raw_; }
+  std::size_t n_vertex_slots() const noexcept { return raw_.n_vertex_slots; }
+  std::size_t n_halfedge_slots() const noexcept { return raw_.n_halfedge_slots; }
+  std::size_t n_face_slots() const noexcept { return raw_.n_face_slots; }
+
+  hw_vertex origin(hw_halfedge h) const noexcept { return hw_nav_origin(&raw_, h); }
+  hw_vertex target(hw_halfedge h) const noexcept { return hw_nav_target(&raw_, h); }
+  hw_halfedge twin(hw_halfedge h) const noexcept { return hw_nav_twin(&raw_, h); }
+  hw_halfedge next(hw_halfedge h) const noexcept { return hw_nav_next(&raw_, h); }
+  hw_halfedge prev(hw_halfedge h) const noexcept { return hw_nav_prev(&raw_, h); }
+  hw_face face(hw_halfedge h) const noexcept { return hw_nav_face(&raw_, h); }
+  hw_edge edge(hw_halfedge h) const noexcept { return hw_nav_edge(&raw_, h); }
+  hw_halfedge halfedge(hw_vertex v) const noexcept { return hw_nav_vertex_halfedge(&raw_, v); }
+  hw_halfedge halfedge(hw_face f) const noexcept { return hw_nav_face_halfedge(&raw_, f); }
+  bool is_boundary(hw_halfedge h) const noexcept { return hw_nav_is_boundary(&raw_, h); }
+  bool is_deleted(hw_vertex v) const noexcept { return hw_nav_vertex_is_deleted(&raw_, v); }
+  bool is_deleted(hw_edge e) const noexcept { return hw_nav_edge_is_deleted(&raw_, e); }
+  bool is_deleted(hw_face f) const noexcept { return hw_nav_face_is_deleted(&raw_, f); }
+
+  halfedge_circulation outgoing(hw_vertex v) const noexcept { return halfedge_circulation(hw_nav_around_vertex(&raw_, v)); }
+  incoming_circulation incoming(hw_vertex v) const noexcept { return incoming_circulation(hw_nav_around_vertex(&raw_, v)); }
+  vertex_circulation vertices_around(hw_vertex v) const noexcept { return vertex_circulation(hw_nav_around_vertex(&raw_, v)); }
+  edge_circulation edges_around(hw_vertex v) const noexcept { return edge_circulation(hw_nav_around_vertex(&raw_, v)); }
+  face_circulation faces_around(hw_vertex v) const noexcept { return face_circulation(hw_nav_around_vertex(&raw_, v)); }
+  halfedge_circulation halfedges_of(hw_face f) const noexcept { return halfedge_circulation(hw_nav_around_face(&raw_, f)); }
+  vertex_circulation vertices_of(hw_face f) const noexcept { return vertex_circulation(hw_nav_around_face(&raw_, f)); }
+  edge_circulation edges_of(hw_face f) const noexcept { return edge_circulation(hw_nav_around_face(&raw_, f)); }
+  face_circulation faces_across(hw_face f) const noexcept { return face_circulation(hw_nav_around_face(&raw_, f)); }
+  /// The loop through `h` by next: a face's sides or a boundary loop.
+  halfedge_circulation loop(hw_halfedge h) const noexcept { return halfedge_circulation(hw_nav_along_loop(&raw_, h)); }
+  /// The outgoing half-edges around the origin of `h`, counter-clockwise from `h`.
+  halfedge_circulation around_origin(hw_halfedge h) const noexcept { return halfedge_circulation(hw_nav_around_origin(&raw_, h)); }
+
+ private:
+  hw_nav raw_{};
+};
 
 /// What a build found wrong with its input (owns an hw_diagnostic).
 class diagnostic {
@@ -451,21 +502,27 @@ class mesh {
     return p;
   }
 
-  // Circulation, in the orders documented in halfwing.h (counter-clockwise from outside).
-  halfedge_circulation outgoing(hw_vertex v) const { return halfedge_circulation(around(v, HW_CIRC_HALFEDGES)); }
-  halfedge_circulation incoming(hw_vertex v) const { return halfedge_circulation(around(v, HW_CIRC_INCOMING)); }
-  vertex_circulation vertices_around(hw_vertex v) const { return vertex_circulation(around(v, HW_CIRC_VERTICES)); }
-  edge_circulation edges_around(hw_vertex v) const { return edge_circulation(around(v, HW_CIRC_EDGES)); }
-  face_circulation faces_around(hw_vertex v) const { return face_circulation(around(v, HW_CIRC_FACES)); }
-  halfedge_circulation halfedges_of(hw_face f) const { return halfedge_circulation(around(f, HW_CIRC_HALFEDGES)); }
-  vertex_circulation vertices_of(hw_face f) const { return vertex_circulation(around(f, HW_CIRC_VERTICES)); }
-  edge_circulation edges_of(hw_face f) const { return edge_circulation(around(f, HW_CIRC_EDGES)); }
-  face_circulation faces_across(hw_face f) const { return face_circulation(around(f, HW_CIRC_FACES)); }
+  /// The inline navigation (see hw::nav_view), valid until the next call that modifies the
+  /// mesh: the fastest walks, over trusted ids.
+  nav_view nav() const { return nav_view(get()); }
+
+  // Circulation, in the orders documented in halfwing_nav.h (counter-clockwise from outside).
+  // The id is checked once (hw::error for an invalid or deleted one); the steps are inline. A
+  // range is valid until the next call that modifies the mesh.
+  halfedge_circulation outgoing(hw_vertex v) const { return checked_nav(v).outgoing(v); }
+  incoming_circulation incoming(hw_vertex v) const { return checked_nav(v).incoming(v); }
+  vertex_circulation vertices_around(hw_vertex v) const { return checked_nav(v).vertices_around(v); }
+  edge_circulation edges_around(hw_vertex v) const { return checked_nav(v).edges_around(v); }
+  face_circulation faces_around(hw_vertex v) const { return checked_nav(v).faces_around(v); }
+  halfedge_circulation halfedges_of(hw_face f) const { return checked_nav(f).halfedges_of(f); }
+  vertex_circulation vertices_of(hw_face f) const { return checked_nav(f).vertices_of(f); }
+  edge_circulation edges_of(hw_face f) const { return checked_nav(f).edges_of(f); }
+  face_circulation faces_across(hw_face f) const { return checked_nav(f).faces_across(f); }
   /// The loop through `h` by next: a face's sides or a boundary loop.
   halfedge_circulation loop(hw_halfedge h) const {
     hw_circulator c;
     check(hw_circ_along_loop(get(), h, &c));
-    return halfedge_circulation(c);
+    return nav().loop(h);
   }
 
   /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` (HW_ELEMENT_VERTEX,
@@ -636,15 +693,17 @@ class mesh {
   friend class voronoi;
   friend class voronoi_cells;
   explicit mesh(hw_mesh* raw) : raw_(raw) {}
-  hw_circulator around(hw_vertex v, hw_circulator_kind kind) const {
+  // The navigation view once `v` (or `f`) is known to be live: the checked circulator start
+  // throws hw::error with the library's message otherwise.
+  nav_view checked_nav(hw_vertex v) const {
     hw_circulator c;
-    check(hw_circ_around_vertex(get(), v, kind, &c));
-    return c;
+    check(hw_circ_around_vertex(get(), v, HW_CIRC_HALFEDGES, &c));
+    return nav();
   }
-  hw_circulator around(hw_face f, hw_circulator_kind kind) const {
+  nav_view checked_nav(hw_face f) const {
     hw_circulator c;
-    check(hw_circ_around_face(get(), f, kind, &c));
-    return c;
+    check(hw_circ_around_face(get(), f, HW_CIRC_HALFEDGES, &c));
+    return nav();
   }
   std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;

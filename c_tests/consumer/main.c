@@ -12,6 +12,9 @@ int main(void) {
   static const uint32_t indices[] = {0, 1, 3, 1, 2, 3, 0, 3, 2, 0, 2, 1};
   hw_mesh *mesh = NULL;
   hw_status status;
+  hw_nav nav;
+  uint32_t v;
+  size_t valence_sum = 0;
   int ok;
 
   if (hw_version_number() != HW_VERSION_NUMBER) {
@@ -25,6 +28,14 @@ int main(void) {
     return 1;
   }
   ok = hw_mesh_n_vertices(mesh) == 4 && hw_mesh_n_faces(mesh) == 4 && hw_mesh_n_edges(mesh) == 6;
+  /* The inline navigation comes with the installed headers: every vertex has three neighbours. */
+  ok = ok && hw_mesh_nav(mesh, &nav) == HW_OK;
+  for (v = 0; ok && v < nav.n_vertex_slots; ++v) {
+    hw_vertex vertex = {v}, w;
+    hw_nav_circ c = hw_nav_around_vertex(&nav, vertex);
+    while (hw_nav_circ_next_vertex(&c, &w)) ++valence_sum;
+  }
+  ok = ok && valence_sum == 12;
   printf("halfwing %s: V=%zu E=%zu F=%zu\n", hw_version_string(), hw_mesh_n_vertices(mesh),
          hw_mesh_n_edges(mesh), hw_mesh_n_faces(mesh));
   hw_mesh_free(mesh);

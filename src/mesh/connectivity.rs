@@ -173,6 +173,21 @@ impl Mesh {
         &self.face_halfedge
     }
 
+    /// Deletion mark of every vertex slot; empty while no vertex was ever deleted.
+    pub fn vertex_deletion_marks(&self) -> &[bool] {
+        &self.deleted.vertices
+    }
+
+    /// Deletion mark of every edge slot; empty while no edge was ever deleted.
+    pub fn edge_deletion_marks(&self) -> &[bool] {
+        &self.deleted.edges
+    }
+
+    /// Deletion mark of every face slot; empty while no face was ever deleted.
+    pub fn face_deletion_marks(&self) -> &[bool] {
+        &self.deleted.faces
+    }
+
     /// Vertex positions.
     pub fn positions(&self) -> &[[f64; 3]] {
         &self.positions
