@@ -17,6 +17,7 @@ pub mod winged;
 
 pub mod ffi;
 
+mod allocation;
 mod cycles;
 mod disjoint_sets;
 mod id_set;
@@ -24,6 +25,8 @@ mod large_arrays;
 mod order;
 mod prefetch;
 mod rare_hits;
+
+pub use allocation::OutOfMemory;
 
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

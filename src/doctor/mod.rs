@@ -74,6 +74,9 @@ impl Default for DoctorOptions {
 /// Why options were refused.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum DoctorError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A threshold is NaN, infinite or outside its range.
     #[error("doctor option {name} is {value}: it must be {range}")]
     BadOption {

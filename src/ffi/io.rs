@@ -28,6 +28,7 @@ impl From<IoError> for FfiError {
         let status = match &error {
             IoError::Io(_) => HW_ERR_IO,
             IoError::Parse { .. } => HW_ERR_PARSE,
+            IoError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             _ => HW_ERR_INVALID_INPUT,
         };
         FfiError::new(status, error.to_string())

@@ -35,6 +35,9 @@ impl fmt::Display for Location {
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum IoError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// The operating system refused a read or a write.
     #[error("I/O error: {0}")]
     Io(#[from] std::io::Error),

@@ -6,6 +6,9 @@ use thiserror::Error;
 /// (or the C API's last-error message) can point at it.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum SurfaceError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A point of an input polyline has a NaN or infinite coordinate.
     #[error("{what}: point {index} has a non-finite coordinate")]
     NonFinitePoint {
