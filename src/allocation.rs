@@ -83,6 +83,28 @@ pub(crate) fn try_reserve<T>(
         .map_err(|_| OutOfMemory::of::<T>(array.len().saturating_add(additional), what))
 }
 
+/// Working memory smaller than this is not worth asking for ahead (see [`ensure_room`]).
+const ROOM_CHECK_THRESHOLD_BYTES: u64 = 64 << 20;
+
+/// Makes sure `bytes` of memory, the most an operation's arrays for `count` items of `what` add
+/// up to, can be had before the operation starts, so that it does not stop half way (or abort,
+/// in the many arrays of a hand-tuned build that are not allocated here): the block is asked for
+/// and given back untouched (no page of it is ever faulted in), a mapping made and unmade.
+pub(crate) fn ensure_room(bytes: u64, count: usize, what: &'static str) -> Result<(), OutOfMemory> {
+    if bytes < ROOM_CHECK_THRESHOLD_BYTES {
+        return Ok(());
+    }
+    let refusal = OutOfMemory {
+        bytes,
+        count: count as u64,
+        what,
+    };
+    let bytes = usize::try_from(bytes).map_err(|_| refusal)?;
+    Vec::<u8>::new()
+        .try_reserve_exact(bytes)
+        .map_err(|_| refusal)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,5 +142,20 @@ mod tests {
         let refused = try_reserve(&mut room, usize::MAX, "bytes").unwrap_err();
         assert_eq!(refused.count, u64::MAX);
         assert_eq!(room, [1]);
+    }
+
+    #[test]
+    fn room_is_checked_for_large_operations_only() {
+        assert!(ensure_room(u64::MAX, 7, "faces").is_err());
+        assert_eq!(
+            ensure_room(u64::MAX / 2, 7, "faces").unwrap_err(),
+            OutOfMemory {
+                bytes: u64::MAX / 2,
+                count: 7,
+                what: "faces"
+            }
+        );
+        assert!(ensure_room(1 << 20, 7, "faces").is_ok());
+        assert!(ensure_room(256 << 20, 7, "faces").is_ok());
     }
 }

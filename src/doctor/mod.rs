@@ -207,6 +207,7 @@ impl DoctorReport {
 /// range or the list as a whole is malformed (its diagnostic says why).
 pub fn examine(list: &FaceList<'_>, options: &DoctorOptions) -> Result<DoctorReport, DoctorError> {
     check_options(options)?;
+    list.ensure_working_room()?;
     let inspection = inspect(list).map_err(DoctorError::MalformedList)?;
     examine_inspected(&inspection, list.positions, options)
 }

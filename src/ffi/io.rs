@@ -26,6 +26,7 @@ pub struct hw_soup {
 impl From<IoError> for FfiError {
     fn from(error: IoError) -> Self {
         let status = match &error {
+            IoError::Io(io) if io.kind() == std::io::ErrorKind::OutOfMemory => HW_ERR_OUT_OF_MEMORY,
             IoError::Io(_) => HW_ERR_IO,
             IoError::Parse { .. } => HW_ERR_PARSE,
             IoError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,

@@ -3,6 +3,7 @@
 use glam::DVec3;
 
 use super::SurfaceError;
+use crate::allocation::{OutOfMemory, try_vec_with_capacity};
 use crate::soup::PolygonSoup;
 
 /// Largest vertex count a generator may produce: `u32::MAX` is the invalid index.
@@ -28,13 +29,19 @@ pub(crate) struct SoupBuilder {
 }
 
 impl SoupBuilder {
-    /// An empty builder with room for the expected sizes.
-    pub(crate) fn with_capacity(vertices: usize, faces: usize, corners: usize) -> Self {
-        let mut soup = PolygonSoup::default();
-        soup.positions.reserve(vertices);
-        soup.face_sizes.reserve(faces);
-        soup.indices.reserve(corners);
-        SoupBuilder { soup }
+    /// An empty builder with room for the expected sizes, or the refusal of that memory.
+    pub(crate) fn with_capacity(
+        vertices: usize,
+        faces: usize,
+        corners: usize,
+    ) -> Result<Self, OutOfMemory> {
+        let soup = PolygonSoup {
+            positions: try_vec_with_capacity(vertices, "vertices")?,
+            face_sizes: try_vec_with_capacity(faces, "faces")?,
+            indices: try_vec_with_capacity(corners, "corners")?,
+            ..PolygonSoup::default()
+        };
+        Ok(SoupBuilder { soup })
     }
 
     /// Adds a vertex and returns its index.
