@@ -1,5 +1,6 @@
 //! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
 
+use crate::allocation::ensure_room;
 use std::sync::OnceLock;
 
 use super::error::VoronoiError;
@@ -104,6 +105,11 @@ impl Delaunay {
     pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
         check_sites(sites)?;
         let n = sites.len();
+        // The triangulation's arrays (about two triangles per site, three corners each, in
+        // several arrays), the copies of the sites in input and insertion order, and those of
+        // the Voronoi diagram usually made from it, take under this per site.
+        const BYTES_PER_SITE: u64 = 320;
+        ensure_room(n as u64 * BYTES_PER_SITE, n, "sites")?;
         // One pass over the sites gives the scale and, scaled (a power of two is monotone, so
         // it maps the box), the scaled sites' box.
         let site_box = bounding_box(sites);
