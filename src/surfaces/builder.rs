@@ -26,6 +26,8 @@ pub(crate) fn ensure_fits(
 #[derive(Debug, Default)]
 pub(crate) struct SoupBuilder {
     soup: PolygonSoup,
+    /// A vertex position overflowed (finite parameters whose sums or products do not fit).
+    overflowed: bool,
 }
 
 impl SoupBuilder {
@@ -41,12 +43,16 @@ impl SoupBuilder {
             indices: try_vec_with_capacity(corners, "corners")?,
             ..PolygonSoup::default()
         };
-        Ok(SoupBuilder { soup })
+        Ok(SoupBuilder {
+            soup,
+            overflowed: false,
+        })
     }
 
     /// Adds a vertex and returns its index.
     pub(crate) fn vertex(&mut self, position: DVec3) -> u32 {
         let id = self.soup.positions.len() as u32;
+        self.overflowed |= !position.is_finite();
         self.soup.positions.push(position.to_array());
         id
     }
@@ -57,8 +63,19 @@ impl SoupBuilder {
         self.soup.indices.extend_from_slice(corners);
     }
 
-    /// The finished soup.
-    pub(crate) fn finish(self) -> PolygonSoup {
-        self.soup
+    /// The finished soup, or the refusal of one whose coordinates overflowed: non-finite
+    /// coordinates never leave a generator.
+    pub(crate) fn finish(self) -> Result<PolygonSoup, SurfaceError> {
+        self.ensure_finite()?;
+        Ok(self.soup)
+    }
+
+    /// Refuses the vertices so far when a coordinate overflowed, before faces on them are
+    /// judged (an overflowed cell would look collapsed).
+    pub(crate) fn ensure_finite(&self) -> Result<(), SurfaceError> {
+        if self.overflowed {
+            return Err(SurfaceError::CoordinatesOverflow);
+        }
+        Ok(())
     }
 }

@@ -80,10 +80,11 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
         wrap_v: false,
     };
     // Every node has its own vertex and no segment is parallel to r, so no cell collapses.
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, sweep.faces)
         .map_err(|cell| SurfaceError::SegmentParallelToSweep { segment: cell.u })?;
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -117,6 +117,10 @@ pub enum SurfaceError {
         /// Tube radius.
         minor: f64,
     },
+    /// Finite parameters whose surface has coordinates beyond the range of doubles (a profile
+    /// near the largest double swept further out).
+    #[error("the surface's coordinates overflow the range of double-precision numbers")]
+    CoordinatesOverflow,
     /// The surface would need more vertices or corners than `u32` indices can address.
     #[error("the surface would need more than 2^32 - 1 vertices or corners")]
     TooLarge,

@@ -55,10 +55,11 @@ pub fn grid(g: &Grid) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: false,
         wrap_v: false,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, g.faces)
         .expect("grid lattice nodes are all distinct, so no cell collapses");
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -85,7 +85,7 @@ pub fn icosphere(radius: f64, level: u32) -> Result<PolygonSoup, SurfaceError> {
     for t in &triangles {
         out.face(t);
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -152,6 +152,7 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         wrap_u: full,
         wrap_v: closed,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, rev.faces)
         .map_err(|cell| SurfaceError::SegmentOnAxis { segment: cell.v })?;
@@ -163,7 +164,7 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         let reversed = end == 0;
         push_cap(&mut out, ring, foot(profile[end]), full, reversed, rev.caps);
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 /// Closes one ring (or arc, for a partial turn) with a polygon or a fan around `centre`.

@@ -72,10 +72,11 @@ pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: ruling.closed,
         wrap_v: false,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, ruling.faces)
         .map_err(|cell| SurfaceError::DegenerateCell { segment: cell.u })?;
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

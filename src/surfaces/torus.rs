@@ -61,10 +61,11 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: true,
         wrap_v: true,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, t.faces)
         .expect("torus lattice nodes are all distinct, so no cell collapses");
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]
