@@ -3,7 +3,9 @@
  * The calls run in a forked child whose address space is limited (setrlimit(RLIMIT_AS)) to what
  * it uses plus HEADROOM; an abort there fails the test through the child's exit status. Input
  * arrays far larger than the limit are a mapping of zero pages made before the limit is set:
- * they cost no memory, and nothing should read them beyond the first few elements. */
+ * they cost no memory, and nothing should read them beyond the first few elements. The limit
+ * counts what is mapped already (under AddressSanitizer, its shadow), so it is set relative to
+ * that. */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE 1 /* fork, setrlimit, mmap's MAP_NORESERVE under -std=c11 */
 #endif
