@@ -110,7 +110,7 @@ fn builds_whose_working_memory_is_not_there_are_refused_before_starting() {
             let BuildError::OutOfMemory(OutOfMemory { count, what, .. }) = refused else {
                 panic!("{refused:?}")
             };
-            assert_eq!((count, what), (4_000_000, "faces"));
+            assert_eq!((count, what), (16_000_000, "corners"));
             let refused = halfwing::doctor::examine(&soup.as_face_list(), &Default::default());
             assert!(
                 matches!(refused, Err(halfwing::doctor::DoctorError::OutOfMemory(_))),

@@ -12,9 +12,9 @@
 //! Vertex normals and texture coordinates are spread onto the corners. `4OFF`, `nOFF` and binary
 //! OFF are refused as unsupported. Text after the last face is ignored.
 
-use crate::allocation::try_vec_with_capacity;
 use std::io::Read;
 
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 use super::attributes::spread_to_corners;

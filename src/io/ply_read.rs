@@ -13,9 +13,9 @@
 //! policy could not be applied; and its errors are free text, not a line or record index. The
 //! format is small and fully described by its header, so halfwing reads it directly.
 
-use crate::allocation::try_vec_with_capacity;
 use std::io::Read;
 
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 use super::attributes::spread_to_corners;

@@ -66,9 +66,15 @@ impl<'a> FaceList<'a> {
         if n_vertices > MAX_VERTICES || n_corners > MAX_CORNERS || n_faces >= u64::from(u32::MAX) {
             return Ok(());
         }
-        let bytes =
-            n_corners * BYTES_PER_CORNER + n_vertices * BYTES_PER_VERTEX + n_faces * BYTES_PER_FACE;
-        ensure_room(bytes, n_faces as usize, "faces")
+        let parts = [
+            (n_corners * BYTES_PER_CORNER, n_corners, "corners"),
+            (n_vertices * BYTES_PER_VERTEX, n_vertices, "vertices"),
+            (n_faces * BYTES_PER_FACE, n_faces, "faces"),
+        ];
+        let bytes = parts.iter().map(|&(bytes, ..)| bytes).sum();
+        // The message names the count that asks for the most.
+        let (_, count, what) = parts.into_iter().max().expect("three parts");
+        ensure_room(bytes, count as usize, what)
     }
 }
 

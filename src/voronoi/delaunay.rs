@@ -1,6 +1,5 @@
 //! The Delaunay triangulation of a set of 2D sites: exact, with duplicates merged and reported.
 
-use crate::allocation::ensure_room;
 use std::sync::OnceLock;
 
 use super::error::VoronoiError;
@@ -8,6 +7,7 @@ use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{SetBounds, normalising_scale_of_box, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
+use crate::allocation::ensure_room;
 use crate::id_set::IdSet;
 use crate::large_arrays;
 use crate::prefetch::prefetch;

@@ -1,9 +1,10 @@
 //! One named column of per-element values: a plain numeric type, a fixed number of components
 //! per element, stored flat (element `i` owns `values[i * components .. (i + 1) * components]`).
 
-use crate::allocation::{OutOfMemory, try_filled};
 use std::any::Any;
 use std::fmt;
+
+use crate::allocation::{OutOfMemory, try_filled};
 
 /// The numeric type of an attribute column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
