@@ -9,7 +9,7 @@
 
 static void status_text(void) {
   hw_status s;
-  for (s = HW_OK; s <= HW_ERR_NOT_FOUND; ++s) {
+  for (s = HW_OK; s <= HW_ERR_OUT_OF_MEMORY; ++s) {
     const char *text = hw_status_str(s);
     CHECK(text != NULL && text[0] != '\0');
   }

@@ -11,6 +11,9 @@
  * arguments (`out_*`) are written only on success. A Rust panic never crosses this boundary: it
  * becomes ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation)
  * return an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
+ * Counts given (cells, pixels, sites, a file's declared records) are checked against the data
+ * given before memory proportional to them is allocated, and memory the system refuses gives
+ * ::HW_ERR_OUT_OF_MEMORY, never an abort.
  *
  * Ownership. Objects (`hw_mesh *`, ...) are created by `hw_<type>_new`, `_build` or `_from_*`
  * and released by `hw_<type>_free`. `_free(NULL)` is a no-op, and `_free` refuses any pointer
@@ -1116,6 +1119,13 @@ typedef struct {
  * A named item (an attribute) does not exist.
  */
 #define HW_ERR_NOT_FOUND 10
+
+/**
+ * The system refused memory the call needed (an array proportional to a count given: cells,
+ * pixels, vertices); the message names the size. Nothing was changed, and calls needing less
+ * memory still work.
+ */
+#define HW_ERR_OUT_OF_MEMORY 11
 
 /**
  * One quadrilateral per cell (a triangle where a pole collapses a side).

@@ -22,7 +22,10 @@
 
 namespace hw {
 
-/// A failed halfwing call: the status code and the detailed message of the failure.
+/// A failed halfwing call: the status code and the detailed message of the failure. Every
+/// status is thrown as this class, HW_ERR_OUT_OF_MEMORY included (memory the library could not
+/// get for an input's count, the size in the message): it leaves the library and the objects
+/// passed in usable, unlike the std::bad_alloc of the wrapper's own containers.
 class error : public std::runtime_error {
  public:
   error(hw_status status, const std::string& message)

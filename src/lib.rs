@@ -17,6 +17,7 @@ pub mod winged;
 
 pub mod ffi;
 
+mod allocation;
 mod counted;
 mod cycles;
 mod disjoint_sets;
@@ -25,6 +26,8 @@ mod large_arrays;
 mod order;
 mod prefetch;
 mod rare_hits;
+
+pub use allocation::OutOfMemory;
 
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -74,6 +74,9 @@ impl Default for DoctorOptions {
 /// Why options were refused.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum DoctorError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A threshold is NaN, infinite or outside its range.
     #[error("doctor option {name} is {value}: it must be {range}")]
     BadOption {
@@ -204,6 +207,7 @@ impl DoctorReport {
 /// range or the list as a whole is malformed (its diagnostic says why).
 pub fn examine(list: &FaceList<'_>, options: &DoctorOptions) -> Result<DoctorReport, DoctorError> {
     check_options(options)?;
+    list.ensure_working_room()?;
     let inspection = inspect(list).map_err(DoctorError::MalformedList)?;
     examine_inspected(&inspection, list.positions, options)
 }

@@ -59,6 +59,7 @@ impl From<AttributeError> for FfiError {
     fn from(error: AttributeError) -> Self {
         let status = match error {
             AttributeError::NotFound { .. } => HW_ERR_NOT_FOUND,
+            AttributeError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             _ => HW_ERR_INVALID_INPUT,
         };
         FfiError::new(status, error.to_string())

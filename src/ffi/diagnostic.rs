@@ -48,6 +48,8 @@ pub(crate) unsafe fn give_built<T: 'static>(
         let out_diagnostic = Out::optional(out_diagnostic);
         let (object, diagnostic) = match build()? {
             Ok(built) => built,
+            // Not a refusal of the input: there is no diagnostic to give.
+            Err(BuildError::OutOfMemory(refusal)) => return Err(refusal.into()),
             Err(refused) => {
                 if let Some(out_diagnostic) = out_diagnostic {
                     let diagnostic = hw_diagnostic::into_handle(refused.diagnostic().clone());

@@ -89,7 +89,10 @@ unsafe fn options_arg(options: *const hw_doctor_options) -> DoctorOptions {
 }
 
 fn doctor_error(error: crate::doctor::DoctorError) -> FfiError {
-    FfiError::invalid_input(error.to_string())
+    match error {
+        crate::doctor::DoctorError::OutOfMemory(refusal) => refusal.into(),
+        _ => FfiError::invalid_input(error.to_string()),
+    }
 }
 
 /// Examines an indexed face list (same arrays as hw_mesh_from_indexed()) with `options` (NULL

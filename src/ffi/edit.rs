@@ -19,6 +19,7 @@ impl From<EditError> for FfiError {
         let status = match error {
             EditError::Handle(_) => HW_ERR_INVALID_HANDLE,
             EditError::Refused { .. } | EditError::Full { .. } => HW_ERR_REFUSED,
+            EditError::NonFinitePosition { .. } => HW_ERR_INVALID_INPUT,
         };
         FfiError::new(status, error.to_string())
     }
@@ -51,9 +52,7 @@ pub unsafe extern "C" fn hw_mesh_add_vertex(
         edit(mesh, |mesh| {
             let out = Out::new(out_vertex, "out_vertex")?;
             let point = point_arg(xyz, "xyz")?;
-            let v = mesh
-                .add_vertex(point)
-                .ok_or_else(|| FfiError::new(HW_ERR_REFUSED, "the mesh is full (32-bit ids)"))?;
+            let v = mesh.add_vertex(point)?;
             out.write(v.into());
             Ok(())
         })

@@ -29,8 +29,18 @@ impl FfiError {
         Self::new(HW_ERR_INVALID_INPUT, message)
     }
 
+    pub fn out_of_memory(refusal: crate::OutOfMemory) -> Self {
+        Self::new(HW_ERR_OUT_OF_MEMORY, refusal.to_string())
+    }
+
     pub fn invalid_handle(message: impl Into<String>) -> Self {
         Self::new(HW_ERR_INVALID_HANDLE, message)
+    }
+}
+
+impl From<crate::OutOfMemory> for FfiError {
+    fn from(refusal: crate::OutOfMemory) -> Self {
+        FfiError::out_of_memory(refusal)
     }
 }
 

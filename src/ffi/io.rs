@@ -26,8 +26,14 @@ pub struct hw_soup {
 impl From<IoError> for FfiError {
     fn from(error: IoError) -> Self {
         let status = match &error {
+            IoError::Io(io) | IoError::File { source: io, .. }
+                if io.kind() == std::io::ErrorKind::OutOfMemory =>
+            {
+                HW_ERR_OUT_OF_MEMORY
+            }
             IoError::Io(_) | IoError::File { .. } => HW_ERR_IO,
             IoError::Parse { .. } => HW_ERR_PARSE,
+            IoError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             _ => HW_ERR_INVALID_INPUT,
         };
         FfiError::new(status, error.to_string())

@@ -54,6 +54,7 @@ impl From<BuildError> for FfiError {
         let status = match &error {
             BuildError::NonManifold(_) => HW_ERR_NON_MANIFOLD,
             BuildError::InvalidInput(_) => HW_ERR_INVALID_INPUT,
+            BuildError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
         };
         FfiError::new(status, error.to_string())
     }

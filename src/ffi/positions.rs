@@ -38,8 +38,6 @@ pub unsafe extern "C" fn hw_mesh_set_vertex_position(
     guard(|| {
         // SAFETY: forwarded from the caller.
         let (mesh, xyz) = unsafe { (arg_mut(mesh, "mesh")?, point_arg(xyz, "xyz")?) };
-        let v = mesh.mesh.check_vertex(v.into())?;
-        mesh.mesh.positions_mut()[v.idx()] = xyz;
-        Ok(())
+        Ok(mesh.mesh.set_position(v.into(), xyz)?)
     })
 }

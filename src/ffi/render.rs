@@ -110,7 +110,10 @@ pub struct hw_render_buffers {
 
 impl From<RenderError> for FfiError {
     fn from(error: RenderError) -> Self {
-        FfiError::invalid_input(error.to_string())
+        match error {
+            RenderError::OutOfMemory(refusal) => refusal.into(),
+            _ => FfiError::invalid_input(error.to_string()),
+        }
     }
 }
 

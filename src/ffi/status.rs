@@ -35,9 +35,13 @@ pub const HW_ERR_REFUSED: hw_status = 8;
 pub const HW_ERR_PANIC: hw_status = 9;
 /// A named item (an attribute) does not exist.
 pub const HW_ERR_NOT_FOUND: hw_status = 10;
+/// The system refused memory the call needed (an array proportional to a count given: cells,
+/// pixels, vertices); the message names the size. Nothing was changed, and calls needing less
+/// memory still work.
+pub const HW_ERR_OUT_OF_MEMORY: hw_status = 11;
 
 /// Static text for every status.
-const STATUS_TEXT: [&str; 11] = [
+const STATUS_TEXT: [&str; 12] = [
     "ok\0",
     "a required pointer argument was NULL\0",
     "invalid or deleted handle\0",
@@ -49,6 +53,7 @@ const STATUS_TEXT: [&str; 11] = [
     "operation refused: precondition does not hold\0",
     "internal error (panic caught at the C boundary)\0",
     "not found\0",
+    "out of memory\0",
 ];
 
 /// A short, static, NUL-terminated English description of `status`. Unknown values give
@@ -69,7 +74,7 @@ mod tests {
 
     #[test]
     fn every_status_has_text_and_unknown_values_are_safe() {
-        for status in HW_OK..=HW_ERR_NOT_FOUND {
+        for status in HW_OK..=HW_ERR_OUT_OF_MEMORY {
             let text = unsafe { CStr::from_ptr(hw_status_str(status)) };
             assert!(!text.to_bytes().is_empty());
         }

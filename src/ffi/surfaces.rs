@@ -35,7 +35,10 @@ pub const HW_CAPS_FAN: hw_caps = 2;
 
 impl From<SurfaceError> for FfiError {
     fn from(error: SurfaceError) -> Self {
-        FfiError::invalid_input(error.to_string())
+        match error {
+            SurfaceError::OutOfMemory(refusal) => refusal.into(),
+            _ => FfiError::invalid_input(error.to_string()),
+        }
     }
 }
 

@@ -33,6 +33,7 @@ impl From<VoronoiError> for FfiError {
     fn from(error: VoronoiError) -> Self {
         let status = match &error {
             VoronoiError::InvalidSite { .. } => HW_ERR_INVALID_HANDLE,
+            VoronoiError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             VoronoiError::NonFiniteSite { .. }
             | VoronoiError::TooManySites { .. }
             | VoronoiError::DegenerateClip(_)

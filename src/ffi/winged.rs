@@ -112,6 +112,7 @@ impl From<WingedError> for FfiError {
             | WingedError::InvalidEdge(_)
             | WingedError::InvalidFace(_) => HW_ERR_INVALID_HANDLE,
             WingedError::InvalidFaceList(build) => return build.clone().into(),
+            WingedError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             WingedError::VertexNotOnFace { .. }
             | WingedError::AmbiguousCorner { .. }
             | WingedError::SelfLoop(_)

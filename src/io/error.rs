@@ -70,6 +70,9 @@ pub enum IoError {
         #[source]
         source: std::io::Error,
     },
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A read from or a write to a stream failed (a reader or writer given no file name).
     #[error("the stream failed: {}", system_message(.0))]
     Io(#[from] std::io::Error),

@@ -14,6 +14,7 @@
 
 use std::io::Read;
 
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 use super::attributes::spread_to_corners;
@@ -113,17 +114,16 @@ pub fn read_off_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
         ));
     }
 
-    let mut positions = Vec::with_capacity(capacity_for(vertex_count, bytes.len(), 6));
-    let mut normals = Vec::with_capacity(if variant.normals {
-        positions.capacity()
-    } else {
-        0
-    });
-    let mut uvs = Vec::with_capacity(if variant.texture {
-        positions.capacity()
-    } else {
-        0
-    });
+    let vertex_capacity = capacity_for(vertex_count, bytes.len(), 6);
+    let mut positions = try_vec_with_capacity(vertex_capacity, "vertices")?;
+    let mut normals = try_vec_with_capacity(
+        if variant.normals { vertex_capacity } else { 0 },
+        "vertex normals",
+    )?;
+    let mut uvs = try_vec_with_capacity(
+        if variant.texture { vertex_capacity } else { 0 },
+        "vertex texture coordinates",
+    )?;
     for vertex in 0..vertex_count {
         let (line, record) =
             records.expect(|| format!("{vertex} of {vertex_count} vertices read"))?;
@@ -178,8 +178,9 @@ pub fn read_off_bytes(bytes: &[u8]) -> Result<PolygonSoup, IoError> {
         }
     }
 
-    let mut face_sizes = Vec::with_capacity(capacity_for(face_count, bytes.len(), 8));
-    let mut indices = Vec::with_capacity(face_sizes.capacity().saturating_mul(3));
+    let face_capacity = capacity_for(face_count, bytes.len(), 8);
+    let mut face_sizes = try_vec_with_capacity(face_capacity, "faces")?;
+    let mut indices = try_vec_with_capacity(face_capacity.saturating_mul(3), "corners")?;
     for face in 0..face_count {
         let (line, record) = records.expect(|| format!("{face} of {face_count} faces read"))?;
         let mut tokens = Tokens::new(record, line);

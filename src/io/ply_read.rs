@@ -15,6 +15,7 @@
 
 use std::io::Read;
 
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 use super::attributes::spread_to_corners;
@@ -301,13 +302,19 @@ fn read_body<V: Values>(elements: &[Element], mut values: V) -> Result<PolygonSo
     let face_count = face_element.map_or(0, |i| elements[i].count);
     let face_capacity = capacity_for(face_count, remaining, 4 * V::MIN_VALUE_BYTES);
     let mut soup = PolygonSoup {
-        positions: Vec::with_capacity(vertex_capacity),
-        face_sizes: Vec::with_capacity(face_capacity),
-        indices: Vec::with_capacity(face_capacity.saturating_mul(3)),
+        positions: try_vec_with_capacity(vertex_capacity, "vertices")?,
+        face_sizes: try_vec_with_capacity(face_capacity, "faces")?,
+        indices: try_vec_with_capacity(face_capacity.saturating_mul(3), "corners")?,
         ..Default::default()
     };
-    let mut normals = Vec::with_capacity(if has_normals { vertex_capacity } else { 0 });
-    let mut texcoords = Vec::with_capacity(if has_texcoords { vertex_capacity } else { 0 });
+    let mut normals = try_vec_with_capacity(
+        if has_normals { vertex_capacity } else { 0 },
+        "vertex normals",
+    )?;
+    let mut texcoords = try_vec_with_capacity(
+        if has_texcoords { vertex_capacity } else { 0 },
+        "vertex texture coordinates",
+    )?;
 
     for (element_index, element) in elements.iter().enumerate() {
         let is_vertex = Some(element_index) == vertex_element;

@@ -2,6 +2,7 @@
 
 use super::ElementKind;
 use super::attributes::Attributes;
+use super::edit::EditError;
 use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 
 /// A half-edge polygon mesh (general polygons), stored as struct-of-arrays of `u32` indices.
@@ -193,22 +194,42 @@ impl Mesh {
         &self.positions
     }
 
-    /// Vertex positions, writable (connectivity stays as it is).
-    pub fn positions_mut(&mut self) -> &mut [[f64; 3]] {
-        &mut self.positions
+    /// Moves `v` (connectivity stays as it is). Refuses a deleted or out-of-range vertex and
+    /// non-finite coordinates.
+    pub fn set_position(&mut self, v: VertexId, position: [f64; 3]) -> Result<(), EditError> {
+        let v = self.check_vertex(v)?;
+        require_finite(position, v.0)?;
+        self.positions[v.idx()] = position;
+        Ok(())
     }
 
-    /// Adds an isolated vertex (its attributes are zero). `None` when the vertex count would reach `u32::MAX`.
-    pub fn add_vertex(&mut self, position: [f64; 3]) -> Option<VertexId> {
+    /// Adds an isolated vertex (its attributes are zero). Refuses non-finite coordinates, and
+    /// a vertex count reaching `u32::MAX` ([`EditError::Full`], for `operation`).
+    pub fn add_vertex(&mut self, position: [f64; 3]) -> Result<VertexId, EditError> {
+        const OPERATION: &str = "vertex addition";
         let id = u32::try_from(self.vertex_halfedge.len())
             .ok()
-            .filter(|&id| id != INVALID_INDEX)?;
+            .filter(|&id| id != INVALID_INDEX)
+            .ok_or(EditError::Full {
+                operation: OPERATION,
+            })?;
+        require_finite(position, id)?;
         self.vertex_halfedge.push(INVALID_INDEX);
         self.positions.push(position);
         if !self.deleted.vertices.is_empty() {
             self.deleted.vertices.push(false);
         }
         self.grow_attributes();
-        Some(VertexId(id))
+        Ok(VertexId(id))
+    }
+}
+
+/// Refuses a position with a NaN or infinite coordinate for `vertex` (see
+/// [`EditError::NonFinitePosition`]).
+fn require_finite(position: [f64; 3], vertex: u32) -> Result<(), EditError> {
+    if position.iter().all(|c| c.is_finite()) {
+        Ok(())
+    } else {
+        Err(EditError::NonFinitePosition { vertex })
     }
 }

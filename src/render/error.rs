@@ -7,6 +7,9 @@ use super::TriangulateError;
 /// A refused render-buffer request; every variant names the offending input.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum RenderError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A per-corner attribute array does not have one entry per half-edge slot.
     #[error("{what}: {got} entries given, the mesh has {expected} half-edge slots")]
     CornerAttributeLength {

@@ -2,6 +2,7 @@
 //! diagram, or any set of regions. Each polygon owns its corners (neighbours do not share
 //! vertices), so each can get its own colour from [`PolygonBuffer::vertex_polygons`].
 
+use crate::allocation::ensure_room;
 use crate::geom::newell_vector;
 use crate::soup::{FaceList, FaceSizes};
 
@@ -84,6 +85,10 @@ pub(super) fn build_polygon_buffer(
     polygons: &PolygonList<'_>,
 ) -> Result<PolygonBuffer, RenderError> {
     let n = polygons.corners.len();
+    // Per corner, at most: its triangle corners and their polygons (16 bytes), its vertex
+    // (position, normal, polygon: 52) and the triangulation's work (12).
+    const BYTES_PER_CORNER: u64 = 80;
+    ensure_room(n as u64 * BYTES_PER_CORNER, n, "corners")?;
     let identity: Vec<u32> =
         (0..u32::try_from(n).map_err(|_| super::TriangulateError::TooLarge)?).collect();
     let triangulated = triangulate_faces(&FaceList::polygons(

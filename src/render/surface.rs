@@ -7,6 +7,7 @@
 //! render vertex; where they differ (a flat-shaded edge, a crease, a uv seam) the vertex is split,
 //! since OpenGL has one index per vertex for all attributes.
 
+use crate::allocation::ensure_room;
 use crate::geom::{VertexNormalWeighting, corner_normals, face_normals, vertex_normals};
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
@@ -237,6 +238,16 @@ pub fn surface_buffer(
 ) -> Result<SurfaceBuffer, RenderError> {
     check_corner_attribute(mesh, "corner normals", options.corner_normals)?;
     check_corner_attribute(mesh, "corner uvs", options.corner_uvs)?;
+    // Per half-edge slot, at most: its corner normal and the smooth normals behind it (48
+    // bytes), a buffer vertex (position, normal, uv, in both layouts and in the splitter: 84)
+    // and a triangle corner with its face (8).
+    const BYTES_PER_HALFEDGE: u64 = 140;
+    let n_halfedges = mesh.halfedge_capacity();
+    ensure_room(
+        n_halfedges as u64 * BYTES_PER_HALFEDGE,
+        n_halfedges,
+        "half-edges",
+    )?;
     let normals = shaded_corner_normals(mesh, options)?;
 
     let mut splitter = VertexSplitter::new(mesh.vertex_capacity());

@@ -130,6 +130,23 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// Nothing found (what [`Diagnostic::default`] gives, as a constant).
+    pub const EMPTY: Diagnostic = Diagnostic {
+        list_problem: None,
+        faces_too_small: Vec::new(),
+        faces_out_of_range: Vec::new(),
+        faces_repeated_vertex: Vec::new(),
+        non_finite_vertices: Vec::new(),
+        non_manifold_edges: Vec::new(),
+        inconsistent_edges: Vec::new(),
+        non_manifold_vertices: Vec::new(),
+        isolated_vertices: Vec::new(),
+        degenerate_faces: Vec::new(),
+        skipped_faces: Vec::new(),
+        reoriented_faces: Vec::new(),
+        vertex_copies: Vec::new(),
+    };
+
     /// `true` when nothing at all was found.
     pub fn is_clean(&self) -> bool {
         self == &Diagnostic::default()

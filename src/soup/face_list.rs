@@ -1,5 +1,8 @@
 //! Borrowed and owned indexed face lists.
 
+use super::table::{MAX_CORNERS, MAX_VERTICES};
+use crate::allocation::{OutOfMemory, ensure_room};
+
 /// How the polygons of a face list are sized.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FaceSizes<'a> {
@@ -40,6 +43,38 @@ impl<'a> FaceList<'a> {
             sizes: FaceSizes::PerFace(sizes),
             indices,
         }
+    }
+
+    /// Makes sure the memory that building or examining this list needs at most can be had
+    /// (see [`ensure_room`]), before anything the size of the list is allocated. Lists beyond
+    /// the 32-bit limits are left to the list check, which refuses them without allocating.
+    pub(crate) fn ensure_working_room(&self) -> Result<(), OutOfMemory> {
+        // The most the arrays of either kernel's build, its repair and the doctor take: per
+        // corner, up to two half-edges in four arrays (32 bytes), its edge bucket (8) and its
+        // pairing (4); per vertex, the structure's copy of the position (24), its bucket start
+        // and half-edge (8); per face, its offset and half-edge (8). The repair's copies of
+        // vertices and the doctor's findings are bounded by these counts too.
+        const BYTES_PER_CORNER: u64 = 48;
+        const BYTES_PER_VERTEX: u64 = 40;
+        const BYTES_PER_FACE: u64 = 16;
+        let (n_vertices, n_corners) = (self.positions.len() as u64, self.indices.len() as u64);
+        let n_faces = match self.sizes {
+            FaceSizes::Uniform(0) => 0,
+            FaceSizes::Uniform(size) => n_corners / u64::from(size),
+            FaceSizes::PerFace(sizes) => sizes.len() as u64,
+        };
+        if n_vertices > MAX_VERTICES || n_corners > MAX_CORNERS || n_faces >= u64::from(u32::MAX) {
+            return Ok(());
+        }
+        let parts = [
+            (n_corners * BYTES_PER_CORNER, n_corners, "corners"),
+            (n_vertices * BYTES_PER_VERTEX, n_vertices, "vertices"),
+            (n_faces * BYTES_PER_FACE, n_faces, "faces"),
+        ];
+        let bytes = parts.iter().map(|&(bytes, ..)| bytes).sum();
+        // The message names the count that asks for the most.
+        let (_, count, what) = parts.into_iter().max().expect("three parts");
+        ensure_room(bytes, count as usize, what)
     }
 }
 

@@ -87,6 +87,7 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
     route: Route,
     walk: impl Walk<T>,
 ) -> Result<Walked<'a, T>, BuildError> {
+    list.ensure_working_room()?;
     // The structure's copy of the positions needs nothing from the faces: with two threads it
     // is made beside the bucket count; with one, after the walk, in the buckets' block, whose
     // pages are faulted in already (cold memory, one thread, best of 300 builds in three rounds

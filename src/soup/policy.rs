@@ -43,6 +43,9 @@ pub enum BuildPolicy {
 /// Why a build failed. Every variant carries the full diagnostic.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum BuildError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// The input is malformed: the list as a whole (sizes vs. indices, 32-bit overflow), faces
     /// with fewer than 3 corners, out-of-range or repeated indices, or (under
     /// [`BuildPolicy::Strict`]) non-finite coordinates.
@@ -54,11 +57,15 @@ pub enum BuildError {
     NonManifold(Box<Diagnostic>),
 }
 
+/// The diagnostic of a build that ran out of memory before it had one.
+static NOTHING_FOUND: Diagnostic = Diagnostic::EMPTY;
+
 impl BuildError {
-    /// The diagnostic of the refused input.
+    /// The diagnostic of the refused input (empty when memory ran out before it was made).
     pub fn diagnostic(&self) -> &Diagnostic {
         match self {
             BuildError::InvalidInput(d) | BuildError::NonManifold(d) => d,
+            BuildError::OutOfMemory(_) => &NOTHING_FOUND,
         }
     }
 }

@@ -34,6 +34,7 @@ pub struct Resolved<'a> {
 
 /// Checks `list` and applies `policy` (see [`BuildPolicy`] for what each one does).
 pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<'a>, BuildError> {
+    list.ensure_working_room()?;
     let Inspection {
         mut table,
         defects,

@@ -3,6 +3,7 @@
 use glam::DVec3;
 
 use super::SurfaceError;
+use crate::allocation::{OutOfMemory, try_vec_with_capacity};
 use crate::soup::PolygonSoup;
 
 /// Largest vertex count a generator may produce: `u32::MAX` is the invalid index.
@@ -25,21 +26,33 @@ pub(crate) fn ensure_fits(
 #[derive(Debug, Default)]
 pub(crate) struct SoupBuilder {
     soup: PolygonSoup,
+    /// A vertex position overflowed (finite parameters whose sums or products do not fit).
+    overflowed: bool,
 }
 
 impl SoupBuilder {
-    /// An empty builder with room for the expected sizes.
-    pub(crate) fn with_capacity(vertices: usize, faces: usize, corners: usize) -> Self {
-        let mut soup = PolygonSoup::default();
-        soup.positions.reserve(vertices);
-        soup.face_sizes.reserve(faces);
-        soup.indices.reserve(corners);
-        SoupBuilder { soup }
+    /// An empty builder with room for the expected sizes, or the refusal of that memory.
+    pub(crate) fn with_capacity(
+        vertices: usize,
+        faces: usize,
+        corners: usize,
+    ) -> Result<Self, OutOfMemory> {
+        let soup = PolygonSoup {
+            positions: try_vec_with_capacity(vertices, "vertices")?,
+            face_sizes: try_vec_with_capacity(faces, "faces")?,
+            indices: try_vec_with_capacity(corners, "corners")?,
+            ..PolygonSoup::default()
+        };
+        Ok(SoupBuilder {
+            soup,
+            overflowed: false,
+        })
     }
 
     /// Adds a vertex and returns its index.
     pub(crate) fn vertex(&mut self, position: DVec3) -> u32 {
         let id = self.soup.positions.len() as u32;
+        self.overflowed |= !position.is_finite();
         self.soup.positions.push(position.to_array());
         id
     }
@@ -50,8 +63,19 @@ impl SoupBuilder {
         self.soup.indices.extend_from_slice(corners);
     }
 
-    /// The finished soup.
-    pub(crate) fn finish(self) -> PolygonSoup {
-        self.soup
+    /// The finished soup, or the refusal of one whose coordinates overflowed: non-finite
+    /// coordinates never leave a generator.
+    pub(crate) fn finish(self) -> Result<PolygonSoup, SurfaceError> {
+        self.ensure_finite()?;
+        Ok(self.soup)
+    }
+
+    /// Refuses the vertices so far when a coordinate overflowed, before faces on them are
+    /// judged (an overflowed cell would look collapsed).
+    pub(crate) fn ensure_finite(&self) -> Result<(), SurfaceError> {
+        if self.overflowed {
+            return Err(SurfaceError::CoordinatesOverflow);
+        }
+        Ok(())
     }
 }

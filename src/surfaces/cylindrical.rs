@@ -5,6 +5,7 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_direction, checked_polyline, checked_steps};
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 /// Relative size below which a segment counts as parallel to the sweep: `|s × r| ≤ tol·|s|·|r|`.
@@ -63,8 +64,8 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
         profile.len() * rows,
         segments * steps * 2,
         segments * steps * 6,
-    );
-    let mut ids = Vec::with_capacity(profile.len() * rows);
+    )?;
+    let mut ids = try_vec_with_capacity(profile.len() * rows, "vertices")?;
     for row in 0..rows {
         let offset = direction * (row as f64 / steps as f64);
         for &p in &profile {
@@ -79,10 +80,11 @@ pub fn cylindrical_surface(sweep: &Sweep<'_>) -> Result<PolygonSoup, SurfaceErro
         wrap_v: false,
     };
     // Every node has its own vertex and no segment is parallel to r, so no cell collapses.
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, sweep.faces)
         .map_err(|cell| SurfaceError::SegmentParallelToSweep { segment: cell.u })?;
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -6,6 +6,9 @@ use thiserror::Error;
 /// (or the C API's last-error message) can point at it.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum SurfaceError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A point of an input polyline has a NaN or infinite coordinate.
     #[error("{what}: point {index} has a non-finite coordinate")]
     NonFinitePoint {
@@ -114,6 +117,10 @@ pub enum SurfaceError {
         /// Tube radius.
         minor: f64,
     },
+    /// Finite parameters whose surface has coordinates beyond the range of doubles (a profile
+    /// near the largest double swept further out).
+    #[error("the surface's coordinates overflow the range of double-precision numbers")]
+    CoordinatesOverflow,
     /// The surface would need more vertices or corners than `u32` indices can address.
     #[error("the surface would need more than 2^32 - 1 vertices or corners")]
     TooLarge,

@@ -6,6 +6,7 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_length, checked_steps};
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 /// Parameters of a grid in the plane z = 0, centred at the origin.
@@ -38,8 +39,8 @@ pub fn grid(g: &Grid) -> Result<PolygonSoup, SurfaceError> {
     ensure_fits(columns.checked_mul(rows), corners)?;
 
     let mut out =
-        SoupBuilder::with_capacity(columns * rows, cells_x * cells_y * 2, cells_x * cells_y * 6);
-    let mut ids = Vec::with_capacity(columns * rows);
+        SoupBuilder::with_capacity(columns * rows, cells_x * cells_y * 2, cells_x * cells_y * 6)?;
+    let mut ids = try_vec_with_capacity(columns * rows, "vertices")?;
     for row in 0..rows {
         let y = height * (row as f64 / cells_y as f64 - 0.5);
         for column in 0..columns {
@@ -54,10 +55,11 @@ pub fn grid(g: &Grid) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: false,
         wrap_v: false,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, g.faces)
         .expect("grid lattice nodes are all distinct, so no cell collapses");
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

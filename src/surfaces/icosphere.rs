@@ -78,14 +78,14 @@ pub fn icosphere(radius: f64, level: u32) -> Result<PolygonSoup, SurfaceError> {
     }
 
     let mut out =
-        SoupBuilder::with_capacity(directions.len(), triangles.len(), triangles.len() * 3);
+        SoupBuilder::with_capacity(directions.len(), triangles.len(), triangles.len() * 3)?;
     for d in directions {
         out.vertex(d * radius);
     }
     for t in &triangles {
         out.face(t);
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

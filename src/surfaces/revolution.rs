@@ -9,6 +9,7 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_direction, checked_point, checked_polyline, checked_steps};
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 /// A profile point closer to the axis than this fraction of the profile's size is a pole: it
@@ -122,11 +123,13 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         .and_then(|cells| cells.checked_mul(6));
     ensure_fits(vertices, corners)?;
 
-    let mut out = SoupBuilder::with_capacity(vertices.unwrap_or(0), 0, corners.unwrap_or(0));
-    let rotations: Vec<DQuat> = (0..columns)
-        .map(|column| DQuat::from_axis_angle(axis, angle * column as f64 / steps as f64))
-        .collect();
-    let mut ids = Vec::with_capacity(profile.len() * columns);
+    let mut out = SoupBuilder::with_capacity(vertices.unwrap_or(0), 0, corners.unwrap_or(0))?;
+    let mut rotations: Vec<DQuat> = try_vec_with_capacity(columns, "columns")?;
+    rotations.extend(
+        (0..columns)
+            .map(|column| DQuat::from_axis_angle(axis, angle * column as f64 / steps as f64)),
+    );
+    let mut ids = try_vec_with_capacity(profile.len() * columns, "vertices")?;
     for (i, &p) in profile.iter().enumerate() {
         if is_pole[i] {
             let pole = out.vertex(foot(p));
@@ -149,6 +152,7 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         wrap_u: full,
         wrap_v: closed,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, rev.faces)
         .map_err(|cell| SurfaceError::SegmentOnAxis { segment: cell.v })?;
@@ -160,7 +164,7 @@ pub fn revolution_surface(rev: &Revolution<'_>) -> Result<PolygonSoup, SurfaceEr
         let reversed = end == 0;
         push_cap(&mut out, ring, foot(profile[end]), full, reversed, rev.caps);
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 /// Closes one ring (or arc, for a partial turn) with a polygon or a fan around `centre`.

@@ -5,6 +5,7 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_polyline, checked_steps};
+use crate::allocation::try_filled;
 use crate::soup::PolygonSoup;
 
 /// Parameters of a ruled surface.
@@ -48,8 +49,8 @@ pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
     let vertices = n.checked_mul(rows);
     let corners = n.checked_mul(steps).and_then(|cells| cells.checked_mul(6));
     ensure_fits(vertices, corners)?;
-    let mut out = SoupBuilder::with_capacity(n * rows, 0, n * steps * 6);
-    let mut ids = vec![0u32; n * rows];
+    let mut out = SoupBuilder::with_capacity(n * rows, 0, n * steps * 6)?;
+    let mut ids = try_filled(n * rows, 0u32, "vertices")?;
     for i in 0..n {
         let (a, b) = (first[i], second[i]);
         if a == b {
@@ -71,10 +72,11 @@ pub fn ruled_surface(ruling: &Ruling<'_>) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: ruling.closed,
         wrap_v: false,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, ruling.faces)
         .map_err(|cell| SurfaceError::DegenerateCell { segment: cell.u })?;
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_length, checked_steps};
+use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
 
 /// Parameters of a torus centred at the origin with the z axis as its axis.
@@ -42,8 +43,8 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
     ensure_fits(vertices, vertices.and_then(|v| v.checked_mul(6)))?;
 
     let mut out =
-        SoupBuilder::with_capacity(columns * rows, columns * rows * 2, columns * rows * 6);
-    let mut ids = Vec::with_capacity(columns * rows);
+        SoupBuilder::with_capacity(columns * rows, columns * rows * 2, columns * rows * 6)?;
+    let mut ids = try_vec_with_capacity(columns * rows, "vertices")?;
     for row in 0..rows {
         let (sin_v, cos_v) = (TAU * row as f64 / rows as f64).sin_cos();
         for column in 0..columns {
@@ -60,10 +61,11 @@ pub fn torus(t: &Torus) -> Result<PolygonSoup, SurfaceError> {
         wrap_u: true,
         wrap_v: true,
     };
+    out.ensure_finite()?;
     lattice
         .push_faces(&mut out, t.faces)
         .expect("torus lattice nodes are all distinct, so no cell collapses");
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@ use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{SetBounds, normalising_scale_of_box, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
+use crate::allocation::ensure_room;
 use crate::id_set::IdSet;
 use crate::large_arrays;
 use crate::prefetch::prefetch;
@@ -104,6 +105,11 @@ impl Delaunay {
     pub fn new(sites: &[[f64; 2]]) -> Result<Self, VoronoiError> {
         check_sites(sites)?;
         let n = sites.len();
+        // The triangulation's arrays (about two triangles per site, three corners each, in
+        // several arrays), the copies of the sites in input and insertion order, and those of
+        // the Voronoi diagram usually made from it, take under this per site.
+        const BYTES_PER_SITE: u64 = 320;
+        ensure_room(n as u64 * BYTES_PER_SITE, n, "sites")?;
         // One pass over the sites gives the scale and, scaled (a power of two is monotone, so
         // it maps the box), the scaled sites' box.
         let site_box = bounding_box(sites);

@@ -5,6 +5,9 @@ use thiserror::Error;
 /// Why a Delaunay triangulation, Voronoi diagram or one of their queries was refused.
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum VoronoiError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// A site coordinate is NaN or infinite.
     #[error("site {site} has a non-finite coordinate ({x}, {y})")]
     NonFiniteSite {

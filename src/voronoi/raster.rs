@@ -11,6 +11,8 @@ use super::error::VoronoiError;
 use super::exact_distance::Metric;
 use std::cmp::Ordering;
 
+use crate::allocation::try_filled;
+
 /// A `width × height` image of site indices, row-major, row 0 at the top (largest y).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LabelImage {
@@ -161,6 +163,7 @@ impl Delaunay {
         if !(min.iter().chain(&max).all(|c| c.is_finite())) {
             return Err(VoronoiError::NonFiniteQuery);
         }
+        let mut labels = try_filled(pixels.unwrap_or(0), INVALID, "pixels")?;
         let unique: Vec<u32> = (0..self.n_sites() as u32)
             .filter(|&s| self.representative[s as usize] == s)
             .collect();
@@ -189,7 +192,6 @@ impl Delaunay {
                 };
             }
         };
-        let mut labels = vec![INVALID; pixels.unwrap_or(0)];
         #[cfg(feature = "parallel")]
         {
             use rayon::prelude::*;

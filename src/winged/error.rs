@@ -9,6 +9,9 @@ use crate::soup::BuildError;
 /// structure is left exactly as it was.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum WingedError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     // --- face-list input ---
     /// The face list was refused by the shared analysis (see [`BuildError`]: it carries the
     /// [`Diagnostic`](crate::soup::Diagnostic) of everything found).

@@ -82,7 +82,7 @@ impl Mesh {
             });
         }
         set.columns
-            .push(Column::zeroed(name, scalar, components, n_elements));
+            .push(Column::zeroed(name, scalar, components, n_elements)?);
         Ok(set.columns.last_mut().expect("pushed just now"))
     }
 

@@ -4,6 +4,8 @@
 use std::any::Any;
 use std::fmt;
 
+use crate::allocation::{OutOfMemory, try_filled};
+
 /// The numeric type of an attribute column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ScalarType {
@@ -112,26 +114,27 @@ pub(crate) struct Column {
 }
 
 impl Column {
-    /// A zero-filled column for `n_elements` elements.
+    /// A zero-filled column for `n_elements` elements, or the refusal of its memory.
     pub(crate) fn zeroed(
         name: &str,
         scalar: ScalarType,
         components: usize,
         n_elements: usize,
-    ) -> Self {
-        let len = n_elements * components;
+    ) -> Result<Self, OutOfMemory> {
+        let len = n_elements.saturating_mul(components);
+        const WHAT: &str = "attribute values";
         let data = match scalar {
-            ScalarType::F64 => ColumnData::F64(vec![0.0; len]),
-            ScalarType::F32 => ColumnData::F32(vec![0.0; len]),
-            ScalarType::I32 => ColumnData::I32(vec![0; len]),
-            ScalarType::U32 => ColumnData::U32(vec![0; len]),
+            ScalarType::F64 => ColumnData::F64(try_filled(len, 0.0, WHAT)?),
+            ScalarType::F32 => ColumnData::F32(try_filled(len, 0.0, WHAT)?),
+            ScalarType::I32 => ColumnData::I32(try_filled(len, 0, WHAT)?),
+            ScalarType::U32 => ColumnData::U32(try_filled(len, 0, WHAT)?),
         };
-        Column {
+        Ok(Column {
             name: name.to_owned(),
             components,
             data,
             unit_vectors: false,
-        }
+        })
     }
 
     pub(crate) fn scalar_type(&self) -> ScalarType {

@@ -6,6 +6,9 @@ use crate::mesh::ElementKind;
 /// Why an attribute call failed; the mesh is unchanged.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum AttributeError {
+    /// The system refused memory the operation needed (see [`OutOfMemory`](crate::OutOfMemory)).
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::OutOfMemory),
     /// No attribute of that kind has that name.
     #[error("no {kind} attribute is named \"{name}\"")]
     NotFound {

@@ -32,6 +32,12 @@ pub enum EditError {
         /// The failed precondition.
         reason: &'static str,
     },
+    /// A position has a NaN or infinite coordinate: such coordinates never enter a mesh.
+    #[error("vertex {vertex} has a non-finite coordinate")]
+    NonFinitePosition {
+        /// The vertex moved, or the id the added vertex would have had.
+        vertex: u32,
+    },
     /// The mesh would need more elements than 32-bit ids can name.
     #[error("{operation} refused: the mesh is full (32-bit ids exhausted)")]
     Full {

@@ -18,8 +18,11 @@ impl Mesh {
                 operation: SPLIT_EDGE,
             });
         }
-        let w = self.add_vertex(position).ok_or(EditError::Full {
-            operation: SPLIT_EDGE,
+        let w = self.add_vertex(position).map_err(|error| match error {
+            EditError::Full { .. } => EditError::Full {
+                operation: SPLIT_EDGE,
+            },
+            other => other,
         })?;
         let (h0, h1) = (e.halfedge(0), e.halfedge(1));
         let (a, b) = (self.origin(h0), self.target(h0));
