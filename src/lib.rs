@@ -10,6 +10,7 @@ pub mod geom;
 pub mod io;
 pub mod mesh;
 pub mod render;
+pub mod repair;
 pub mod soup;
 pub mod surfaces;
 pub mod voronoi;

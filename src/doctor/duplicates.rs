@@ -44,14 +44,14 @@ pub(super) fn absolute_tolerance(
 const CELLS_PER_TOLERANCE: f64 = 4.0;
 
 /// Vertices that coincide with a lower one.
-pub(super) struct Coincident {
+pub(crate) struct Coincident {
     /// `[v, first]`: same position exactly.
-    pub(super) exact: Vec<[u32; 2]>,
+    pub(crate) exact: Vec<[u32; 2]>,
     /// `[v, first]`: within the tolerance, not at the same position.
-    pub(super) within_tolerance: Vec<[u32; 2]>,
+    pub(crate) within_tolerance: Vec<[u32; 2]>,
 }
 
-/// The vertices (all of `positions` with finite coordinates, named by a face or not) at the
+/// The vertices (all of `positions` with finite coordinates) at the
 /// position of a lower vertex, and those within `tolerance` of one.
 ///
 /// Near duplicates are grouped greedily, as a merge would: vertices are taken in order; one
@@ -59,31 +59,25 @@ pub(super) struct Coincident {
 /// else it starts a group. Group leaders are more than the tolerance apart, so a grid of cells
 /// the tolerance wide holds a bounded number of them per cell and each vertex is checked against
 /// a bounded number: linear time whatever the input's shape.
-pub(super) fn coincident_vertices(
-    table: &FaceTable<'_>,
-    positions: &[[f64; 3]],
-    tolerance: f64,
-) -> Coincident {
+pub(crate) fn coincident_vertices(positions: &[[f64; 3]], tolerance: f64) -> Coincident {
     let finite = |v: usize| positions[v].iter().all(|x| x.is_finite());
     // -0.0 and 0.0 are one position.
     let key = |v: usize| positions[v].map(|x| (x + 0.0).to_bits());
-    let mut order: Vec<u32> = (0..positions.len() as u32)
-        .filter(|&v| finite(v as usize))
+    // Keys stored beside the ids: the sort then reads no position.
+    let mut order: Vec<([u64; 3], u32)> = (0..positions.len())
+        .filter(|&v| finite(v))
+        .map(|v| (key(v), v as u32))
         .collect();
-    order.sort_by_key(|&v| (key(v as usize), v));
+    order.sort_unstable();
     let mut exact: Vec<[u32; 2]> = order
-        .chunk_by(|&a, &b| key(a as usize) == key(b as usize))
-        .flat_map(|group| group[1..].iter().map(move |&v| [v, group[0]]))
+        .chunk_by(|a, b| a.0 == b.0)
+        .flat_map(|group| group[1..].iter().map(move |&(_, v)| [v, group[0].1]))
         .collect();
     exact.sort_unstable();
 
     let mut within_tolerance = Vec::new();
     if tolerance > 0.0 {
-        let named = table
-            .corners()
-            .iter()
-            .filter_map(|&v| positions.get(v as usize));
-        let [low, _] = bounding_box(named.copied().chain(positions.iter().copied()));
+        let [low, _] = bounding_box(positions.iter().copied());
         // Cells CELLS_PER_TOLERANCE tolerances wide, numbered from the box's corner (so the
         // numbers stay below a few times 1 / tolerance); a vertex looks into a neighbouring cell
         // only along the axes where it lies within the tolerance of its cell's side.
@@ -162,7 +156,7 @@ pub(super) fn coincident_vertices(
 /// indices, ascending). Faces are sorted by their sorted vertex sets: triangles and quads by a
 /// fixed-size key, larger polygons by their whole sets (no hashing of input-chosen keys, no
 /// allocation per face of the usual meshes).
-pub(super) fn duplicate_faces(surface: &FaceTable<'_>) -> Vec<[u32; 2]> {
+pub(crate) fn duplicate_faces(surface: &FaceTable<'_>) -> Vec<[u32; 2]> {
     let mut small: Vec<([u32; 4], u32)> = Vec::with_capacity(surface.n_faces());
     let mut large: Vec<(Vec<u32>, u32)> = Vec::new();
     for f in 0..surface.n_faces() {
