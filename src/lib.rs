@@ -24,6 +24,7 @@ mod id_set;
 mod large_arrays;
 mod order;
 mod prefetch;
+mod radix_sort;
 mod rare_hits;
 
 /// The crate version, as `Cargo.toml` states it.

@@ -30,7 +30,7 @@ pub use finding::{Finding, Highlight};
 pub use shape::FoldedEdge;
 
 pub(crate) use components::face_components;
-pub(crate) use duplicates::{coincident_vertices, duplicate_faces};
+pub(crate) use duplicates::{coincident_vertices, duplicate_faces, lowest_at_each_position};
 pub(crate) use measure::{EMPTY_BOX, bounding_box, distance, grow};
 
 use std::ffi::CStr;

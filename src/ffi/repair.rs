@@ -23,10 +23,6 @@ use super::status::*;
 pub struct hw_repair_report {
     report: RepairReport,
     maps: hw_index_maps,
-    /// The pair lists flattened, for zero-copy views.
-    merged_vertices: Vec<u32>,
-    duplicate_faces: Vec<u32>,
-    stitched_halfedges: Vec<u32>,
 }
 
 /// One list of a repair report, for hw_repair_report_list().
@@ -63,10 +59,6 @@ fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
     }
 }
 
-fn flatten(pairs: &[[u32; 2]]) -> Vec<u32> {
-    pairs.as_flattened().to_vec()
-}
-
 /// Runs `repair` on the soup and gives its report (when `out_report` is not NULL).
 ///
 /// # Safety
@@ -86,19 +78,13 @@ unsafe fn repair_soup(
     })
 }
 
-fn give_report(out: Option<Out<*mut hw_repair_report>>, report: RepairReport) {
+fn give_report(out: Option<Out<*mut hw_repair_report>>, mut report: RepairReport) {
     if let Some(out) = out {
-        let handle = hw_repair_report {
-            merged_vertices: flatten(&report.merged_vertices),
-            duplicate_faces: flatten(&report.duplicate_faces),
-            stitched_halfedges: flatten(&report.stitched_halfedges),
-            maps: hw_index_maps {
-                maps: report.maps.clone(),
-            },
-            report,
+        let maps = hw_index_maps {
+            maps: std::mem::take(&mut report.maps),
         };
         // SAFETY: writable per the caller.
-        unsafe { out.write(into_handle(handle)) };
+        unsafe { out.write(into_handle(hw_repair_report { report, maps })) };
     }
 }
 
@@ -285,11 +271,11 @@ pub unsafe extern "C" fn hw_repair_report_list(
         give_view(out_ids, "out_ids", out_len, || {
             let report = arg_ref(report, "report")?;
             match list {
-                HW_REPAIR_MERGED_VERTICES => Ok(&report.merged_vertices[..]),
+                HW_REPAIR_MERGED_VERTICES => Ok(report.report.merged_vertices.as_flattened()),
                 HW_REPAIR_REMOVED_VERTICES => Ok(&report.report.removed_vertices[..]),
                 HW_REPAIR_REMOVED_FACES => Ok(&report.report.removed_faces[..]),
-                HW_REPAIR_DUPLICATE_FACES => Ok(&report.duplicate_faces[..]),
-                HW_REPAIR_STITCHED_HALFEDGES => Ok(&report.stitched_halfedges[..]),
+                HW_REPAIR_DUPLICATE_FACES => Ok(report.report.duplicate_faces.as_flattened()),
+                HW_REPAIR_STITCHED_HALFEDGES => Ok(report.report.stitched_halfedges.as_flattened()),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown repair list {other}"
                 ))),

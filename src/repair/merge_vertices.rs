@@ -31,8 +31,14 @@ pub fn merge_vertices(
     let table = checked_table(soup)?;
     // The diagonal of every position, not only the named ones: a merge can only shrink it, so
     // a second run's tolerance is no larger and finds nothing more.
-    let [low, high] = bounding_box(soup.positions.iter().copied());
-    let absolute = tolerance.absolute(distance(low, high))?;
+    let diagonal = match tolerance {
+        Tolerance::Relative(_) => {
+            let [low, high] = bounding_box(soup.positions.iter().copied());
+            distance(low, high)
+        }
+        Tolerance::Absolute(_) => f64::NAN,
+    };
+    let absolute = tolerance.absolute(diagonal)?;
     let kept = clusters(&soup.positions, absolute)?;
     let merged: Vec<bool> = kept
         .iter()
@@ -69,8 +75,12 @@ pub fn merge_vertices(
                 distinct.push(kept[corners[i] as usize]);
             }
         }
-        distinct.sort_unstable();
-        distinct.dedup();
+        // Three corners left, none repeating the one before, are three vertices; only longer
+        // loops can still name a vertex twice.
+        if distinct.len() > 3 {
+            distinct.sort_unstable();
+            distinct.dedup();
+        }
         if distinct.len() < 3 {
             keep_face[f] = false;
         } else {

@@ -1,7 +1,7 @@
 //! The distance under which two positions count as one, and the clusters it makes.
 
 use super::RepairError;
-use crate::doctor::{coincident_vertices, distance};
+use crate::doctor::{coincident_vertices, distance, lowest_at_each_position};
 
 /// How close two positions must be to be merged or stitched.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,6 +56,15 @@ pub(crate) fn clusters(positions: &[[f64; 3]], tolerance: f64) -> Result<Vec<u32
                          merge exact duplicates only)",
             });
         }
+    }
+    if tolerance == 0.0 {
+        let mut kept = lowest_at_each_position(positions);
+        for (v, k) in kept.iter_mut().enumerate() {
+            if *k == u32::MAX {
+                *k = v as u32;
+            }
+        }
+        return Ok(kept);
     }
     let found = coincident_vertices(positions, tolerance);
     // Near duplicates name the group leader they joined; exact duplicates the lowest vertex at
