@@ -152,6 +152,13 @@ typedef struct hw_mesh hw_mesh;
 typedef struct hw_render_buffers hw_render_buffers;
 
 /**
+ * What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
+ * read with hw_repair_report_list() and hw_repair_report_maps(), release with
+ * hw_repair_report_free(). Ids are those of the input.
+ */
+typedef struct hw_repair_report hw_repair_report;
+
+/**
  * An indexed face list read from a file, exactly as the file numbers its vertices (nothing
  * welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
  * release with hw_soup_free().
@@ -510,6 +517,16 @@ typedef uint32_t hw_render_floats;
  * The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
  */
 typedef uint32_t hw_render_indices;
+
+/**
+ * Which components hw_soup_remove_small_components() removes.
+ */
+typedef uint32_t hw_small_components;
+
+/**
+ * One list of a repair report, for hw_repair_report_list().
+ */
+typedef uint32_t hw_repair_list;
 
 /**
  * How the cells of a parametric surface become faces.
@@ -1061,6 +1078,41 @@ typedef struct {
  * Per ::HW_RENDER_POINTS point, the item of the finding it shows.
  */
 #define HW_RENDER_POINT_SOURCES 5
+
+/**
+ * Pairs `removed, kept` (2 values each) of vertices merged into another.
+ */
+#define HW_REPAIR_MERGED_VERTICES 0
+
+/**
+ * Vertices removed (merged ones included).
+ */
+#define HW_REPAIR_REMOVED_VERTICES 1
+
+/**
+ * Faces removed.
+ */
+#define HW_REPAIR_REMOVED_FACES 2
+
+/**
+ * Pairs `removed, kept` (2 values each) of duplicate faces.
+ */
+#define HW_REPAIR_DUPLICATE_FACES 3
+
+/**
+ * Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
+ */
+#define HW_REPAIR_STITCHED_HALFEDGES 4
+
+/**
+ * Components of at most `value` faces.
+ */
+#define HW_SMALL_BY_FACE_COUNT 0
+
+/**
+ * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
+ */
+#define HW_SMALL_BY_RELATIVE_DIAMETER 1
 
 /**
  * Success.
@@ -2529,6 +2581,129 @@ size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
 hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
                                    float *out_min,
                                    float *out_max);
+
+/**
+ * Makes a soup of an indexed face list (the arrays hw_mesh_from_indexed() takes), copied as
+ * they are (nothing checked until a repair or a build looks at them), for the `hw_soup_*`
+ * repairs; read it back with hw_soup_view(), release it with hw_soup_free().
+ *
+ * # Safety
+ * As for hw_mesh_from_indexed(); `out_soup` writable.
+ */
+hw_status hw_soup_from_indexed(const double *positions,
+                               size_t n_vertices,
+                               const uint32_t *face_sizes,
+                               size_t n_faces,
+                               const uint32_t *indices,
+                               size_t n_indices,
+                               hw_soup **out_soup);
+
+/**
+ * Merges the soup's vertices at one position or within `tolerance` of each other (an absolute
+ * distance, or when `relative` a fraction 0 to 1 of the bounding-box diagonal of the
+ * vertices) into the lowest of each cluster, which keeps its position. Exact duplicates always
+ * merge; near ones greedily, in index order, into the first lower kept vertex within the
+ * tolerance (not transitively). Faces naming a merged vertex drop corners that repeat the one
+ * before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_REMOVED_FACES).
+ * Corner normals and texture coordinates follow their corners. `HW_ERR_INVALID_INPUT`, the
+ * soup unchanged, for a tolerance negative, NaN, infinite, relative above 1 or positive below
+ * 2^-48 of the positions' extent, and for a malformed soup (index out of range, sizes not
+ * adding up). On success `*out_report` (when not NULL) receives the report.
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_merge_vertices(hw_soup *soup,
+                                 double tolerance,
+                                 bool relative,
+                                 hw_repair_report **out_report);
+
+/**
+ * Removes every face whose vertex set is that of a lower face (either orientation, any
+ * starting corner), keeping the lowest (::HW_REPAIR_DUPLICATE_FACES pairs each removed face
+ * with the one kept). Vertices are untouched. Refusals and report as for
+ * hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_remove_duplicate_faces(hw_soup *soup, hw_repair_report **out_report);
+
+/**
+ * Removes the vertices no face names, renumbering the others in order (the report's vertex
+ * map). Refusals and report as for hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_remove_unreferenced_vertices(hw_soup *soup, hw_repair_report **out_report);
+
+/**
+ * Removes the faces of the small components (faces joined through shared edges) and the
+ * vertices only they named: by ::HW_SMALL_BY_FACE_COUNT (at most `value` faces, a whole
+ * number) or ::HW_SMALL_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the largest).
+ * `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
+ * hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_remove_small_components(hw_soup *soup,
+                                          hw_small_components rule,
+                                          double value,
+                                          hw_repair_report **out_report);
+
+/**
+ * Glues the mesh's boundary edges that lie on each other end on end (exactly, or within
+ * `tolerance`, absolute or when `relative` a fraction of the live vertices' bounding-box
+ * diagonal), like CGAL's `stitch_borders`: an edge is stitched when exactly one other boundary
+ * edge joins the same positions the opposite way, and only where the mesh stays manifold with
+ * distinct edges. Faces keep their corners' data; merged vertices go into the lowest, which
+ * keeps its position and attributes. The mesh is then compacted: the report's maps give the
+ * new ids (the identity when nothing was stitched, the mesh then unchanged). Refusals as for
+ * hw_soup_merge_vertices(), the mesh unchanged.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_mesh_stitch_borders(hw_mesh *mesh,
+                                 double tolerance,
+                                 bool relative,
+                                 hw_repair_report **out_report);
+
+/**
+ * A read-only view of one list of the report (`*out_ids`, NULL when empty, with `*out_len`
+ * values; pair lists hold 2 values per pair). Lives as long as the report.
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_ids` and `out_len` writable.
+ */
+hw_status hw_repair_report_list(const hw_repair_report *report,
+                                hw_repair_list list,
+                                const uint32_t **out_ids,
+                                size_t *out_len);
+
+/**
+ * The report's old-to-new maps, to read with hw_index_maps_view() (a soup's repairs fill the
+ * vertex and face maps; hw_mesh_stitch_borders() all four). Owned by the report: do not free
+ * it; it lives as long as the report. Also `*out_removed_corners` (when not NULL): corners
+ * dropped from kept faces.
+ *
+ * # Safety
+ * `report` must be NULL or live; `out_maps` writable; `out_removed_corners` NULL or writable.
+ */
+hw_status hw_repair_report_maps(const hw_repair_report *report,
+                                const hw_index_maps **out_maps,
+                                size_t *out_removed_corners);
+
+/**
+ * Releases a repair report. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
+ *
+ * # Safety
+ * `report` must be NULL or a report from this library, not in use by another thread.
+ */
+void hw_repair_report_free(hw_repair_report *report);
 
 /**
  * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that

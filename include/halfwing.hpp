@@ -386,6 +386,120 @@ inline std::vector<std::array<uint32_t, 2>> self_intersections(
   return found;
 }
 
+/// What a repair changed (owns an hw_repair_report; see hw_soup_merge_vertices()).
+class repair_report {
+ public:
+  repair_report() = default;
+  explicit repair_report(hw_repair_report* raw) : raw_(raw) {}
+
+  /// One list (pair lists hold 2 ids per pair; see ::hw_repair_list).
+  std::vector<uint32_t> list(hw_repair_list which) const {
+    const uint32_t* ids = nullptr;
+    std::size_t n = 0;
+    check(hw_repair_report_list(raw_.get(), which, &ids, &n));
+    return std::vector<uint32_t>(ids, ids + n);
+  }
+  /// The old-to-new map of one element kind (HW_INVALID_INDEX for removed elements).
+  std::vector<uint32_t> map(hw_element_kind kind) const {
+    const hw_index_maps* maps = nullptr;
+    check(hw_repair_report_maps(raw_.get(), &maps, nullptr));
+    const uint32_t* ids = nullptr;
+    std::size_t n = 0;
+    check(hw_index_maps_view(maps, kind, &ids, &n));
+    return std::vector<uint32_t>(ids, ids + n);
+  }
+  /// Corners dropped from kept faces.
+  std::size_t removed_corners() const {
+    const hw_index_maps* maps = nullptr;
+    std::size_t n = 0;
+    check(hw_repair_report_maps(raw_.get(), &maps, &n));
+    return n;
+  }
+  hw_repair_report* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  detail::owned<hw_repair_report, hw_repair_report_free> raw_;
+};
+
+/// An indexed face list, read from a file or copied from arrays, that the repairs change in
+/// place (owns an hw_soup).
+class soup {
+ public:
+  /// Copies positions (x, y, z per vertex), corners per face and corner indices; see
+  /// hw_soup_from_indexed().
+  static soup from_indexed(const std::vector<double>& positions,
+                           const std::vector<uint32_t>& face_sizes,
+                           const std::vector<uint32_t>& indices) {
+    if (positions.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    hw_soup* raw = nullptr;
+    check(hw_soup_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
+                               face_sizes.size(), indices.data(), indices.size(), &raw));
+    return soup(raw);
+  }
+  /// Reads an OBJ, OFF or PLY file as it is; see hw_soup_read().
+  static soup read(const std::string& path) {
+    hw_soup* raw = nullptr;
+    check(hw_soup_read(path.c_str(), &raw));
+    return soup(raw);
+  }
+
+  std::vector<double> positions() const {
+    const double* xyz = nullptr;
+    std::size_t n = 0;
+    check(hw_soup_view(get(), &xyz, &n, nullptr, nullptr, nullptr, nullptr));
+    return std::vector<double>(xyz, xyz + 3 * n);
+  }
+  std::vector<uint32_t> face_sizes() const {
+    const uint32_t* sizes = nullptr;
+    std::size_t n = 0;
+    check(hw_soup_view(get(), nullptr, nullptr, &sizes, &n, nullptr, nullptr));
+    return std::vector<uint32_t>(sizes, sizes + n);
+  }
+  std::vector<uint32_t> indices() const {
+    const uint32_t* ids = nullptr;
+    std::size_t n = 0;
+    check(hw_soup_view(get(), nullptr, nullptr, nullptr, nullptr, &ids, &n));
+    return std::vector<uint32_t>(ids, ids + n);
+  }
+
+  /// See hw_soup_merge_vertices(): `tolerance` absolute, or a fraction of the bounding-box
+  /// diagonal when `relative`; 0 merges exact duplicates only.
+  repair_report merge_vertices(double tolerance = 0, bool relative = false) {
+    return run([&](hw_repair_report** out) {
+      return hw_soup_merge_vertices(get(), tolerance, relative, out);
+    });
+  }
+  /// See hw_soup_remove_duplicate_faces().
+  repair_report remove_duplicate_faces() {
+    return run([&](hw_repair_report** out) { return hw_soup_remove_duplicate_faces(get(), out); });
+  }
+  /// See hw_soup_remove_unreferenced_vertices().
+  repair_report remove_unreferenced_vertices() {
+    return run(
+        [&](hw_repair_report** out) { return hw_soup_remove_unreferenced_vertices(get(), out); });
+  }
+  /// See hw_soup_remove_small_components().
+  repair_report remove_small_components(hw_small_components rule, double value) {
+    return run([&](hw_repair_report** out) {
+      return hw_soup_remove_small_components(get(), rule, value, out);
+    });
+  }
+
+  hw_soup* get() const noexcept { return raw_.get(); }
+
+ private:
+  explicit soup(hw_soup* raw) : raw_(raw) {}
+  template <class Call>
+  static repair_report run(Call call) {
+    hw_repair_report* raw = nullptr;
+    check(call(&raw));
+    return repair_report(raw);
+  }
+  detail::owned<hw_soup, hw_soup_free> raw_;
+};
+
 class winged;
 class voronoi;
 class voronoi_cells;
@@ -594,6 +708,13 @@ class mesh {
     check(hw_mesh_delete_face(get(), f, delete_isolated_vertices));
   }
   void garbage_collect() { check(hw_mesh_garbage_collect(get(), nullptr)); }
+  /// Glues coincident boundary edges (see hw_mesh_stitch_borders()); the mesh is compacted,
+  /// the report's maps giving the new ids.
+  repair_report stitch_borders(double tolerance = 0, bool relative = false) {
+    hw_repair_report* raw = nullptr;
+    check(hw_mesh_stitch_borders(get(), tolerance, relative, &raw));
+    return repair_report(raw);
+  }
 
   /// Adds an isolated vertex.
   hw_vertex add_vertex(double x, double y, double z) { return add_vertex({x, y, z}); }

@@ -10,6 +10,7 @@ pub mod geom;
 pub mod io;
 pub mod mesh;
 pub mod render;
+pub mod repair;
 pub mod soup;
 pub mod surfaces;
 pub mod voronoi;
@@ -25,6 +26,7 @@ mod id_set;
 mod large_arrays;
 mod order;
 mod prefetch;
+mod radix_sort;
 mod rare_hits;
 
 pub use allocation::OutOfMemory;

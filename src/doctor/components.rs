@@ -64,17 +64,10 @@ pub(super) struct Topology {
     pub(super) non_orientable_witness: Vec<u32>,
 }
 
-/// The components of `surface` (whose edges `pairing` pairs), with the number of `loops` each
-/// has (each loop given with a table face along it).
-pub(super) fn components(
-    surface: &FaceTable<'_>,
-    pairing: &EdgePairing,
-    positions: &[[f64; 3]],
-    non_manifold_vertices: &[u32],
-    loops: &[(BoundaryLoop, usize)],
-) -> Topology {
-    let n_faces = surface.n_faces();
-    let mut parent: Vec<u32> = (0..n_faces as u32).collect();
+/// The component of every face of `surface` (faces sharing an edge, whatever its number of
+/// faces, are in one), numbered in order of their lowest face, and the number of components.
+pub(crate) fn face_components(surface: &FaceTable<'_>, pairing: &EdgePairing) -> (Vec<u32>, usize) {
+    let mut parent: Vec<u32> = (0..surface.n_faces() as u32).collect();
     let face_of = |c: u32| surface.face_of_corner(c as usize) as u32;
     for (c, &p) in pairing.partner.iter().enumerate() {
         if p != BOUNDARY && p != UNPAIRED {
@@ -89,7 +82,20 @@ pub(super) fn components(
     }
     // Roots are each set's lowest face (see `disjoint_sets`): number the sets in that order.
     let n_components = disjoint_sets::number_sets(&mut parent, |_| false, |_, _| {});
-    let component_of = parent;
+    (parent, n_components)
+}
+
+/// The components of `surface` (whose edges `pairing` pairs), with the number of `loops` each
+/// has (each loop given with a table face along it).
+pub(super) fn components(
+    surface: &FaceTable<'_>,
+    pairing: &EdgePairing,
+    positions: &[[f64; 3]],
+    non_manifold_vertices: &[u32],
+    loops: &[(BoundaryLoop, usize)],
+) -> Topology {
+    let n_faces = surface.n_faces();
+    let (component_of, n_components) = face_components(surface, pairing);
     let mut components: Vec<Component> = (0..n_components)
         .map(|_| Component {
             first_face: u32::MAX,
@@ -135,8 +141,8 @@ pub(super) fn components(
         }
     }
     for problem in &pairing.problems {
-        let component =
-            &mut components[component_of[face_of(problem.corners[0]) as usize] as usize];
+        let component = &mut components
+            [component_of[surface.face_of_corner(problem.corners[0] as usize) as usize] as usize];
         component.n_edges += 1;
         match problem.defect {
             EdgeDefect::NonManifold => component.manifold = false,

@@ -4,6 +4,8 @@
 
 use super::measure::{bounding_box, distance};
 use super::point_tree::PointTree;
+use crate::prefetch::prefetch;
+use crate::radix_sort::radix_sort_by_high_word;
 use crate::soup::{BOUNDARY, EdgePairing, FaceTable};
 
 /// A vertex lying inside a boundary edge it is not an end of, within the tolerance. Laid out as
@@ -44,14 +46,14 @@ pub(super) fn absolute_tolerance(
 const CELLS_PER_TOLERANCE: f64 = 4.0;
 
 /// Vertices that coincide with a lower one.
-pub(super) struct Coincident {
+pub(crate) struct Coincident {
     /// `[v, first]`: same position exactly.
-    pub(super) exact: Vec<[u32; 2]>,
+    pub(crate) exact: Vec<[u32; 2]>,
     /// `[v, first]`: within the tolerance, not at the same position.
-    pub(super) within_tolerance: Vec<[u32; 2]>,
+    pub(crate) within_tolerance: Vec<[u32; 2]>,
 }
 
-/// The vertices (all of `positions` with finite coordinates, named by a face or not) at the
+/// The vertices (all of `positions` with finite coordinates) at the
 /// position of a lower vertex, and those within `tolerance` of one.
 ///
 /// Near duplicates are grouped greedily, as a merge would: vertices are taken in order; one
@@ -59,31 +61,17 @@ pub(super) struct Coincident {
 /// else it starts a group. Group leaders are more than the tolerance apart, so a grid of cells
 /// the tolerance wide holds a bounded number of them per cell and each vertex is checked against
 /// a bounded number: linear time whatever the input's shape.
-pub(super) fn coincident_vertices(
-    table: &FaceTable<'_>,
-    positions: &[[f64; 3]],
-    tolerance: f64,
-) -> Coincident {
+pub(crate) fn coincident_vertices(positions: &[[f64; 3]], tolerance: f64) -> Coincident {
     let finite = |v: usize| positions[v].iter().all(|x| x.is_finite());
-    // -0.0 and 0.0 are one position.
-    let key = |v: usize| positions[v].map(|x| (x + 0.0).to_bits());
-    let mut order: Vec<u32> = (0..positions.len() as u32)
-        .filter(|&v| finite(v as usize))
+    let first = lowest_at_each_position(positions);
+    let exact: Vec<[u32; 2]> = (0..positions.len() as u32)
+        .filter(|&v| first[v as usize] < v)
+        .map(|v| [v, first[v as usize]])
         .collect();
-    order.sort_by_key(|&v| (key(v as usize), v));
-    let mut exact: Vec<[u32; 2]> = order
-        .chunk_by(|&a, &b| key(a as usize) == key(b as usize))
-        .flat_map(|group| group[1..].iter().map(move |&v| [v, group[0]]))
-        .collect();
-    exact.sort_unstable();
 
     let mut within_tolerance = Vec::new();
     if tolerance > 0.0 {
-        let named = table
-            .corners()
-            .iter()
-            .filter_map(|&v| positions.get(v as usize));
-        let [low, _] = bounding_box(named.copied().chain(positions.iter().copied()));
+        let [low, _] = bounding_box(positions.iter().copied());
         // Cells CELLS_PER_TOLERANCE tolerances wide, numbered from the box's corner (so the
         // numbers stay below a few times 1 / tolerance); a vertex looks into a neighbouring cell
         // only along the axes where it lies within the tolerance of its cell's side.
@@ -158,11 +146,74 @@ pub(super) fn coincident_vertices(
     }
 }
 
+/// For every vertex with finite coordinates, the lowest vertex at exactly its position (itself
+/// when it is the lowest; −0 and 0 are one coordinate); `u32::MAX` for the others.
+///
+/// Vertices are sorted by a 32-bit mix of their coordinates' bits, packed with their index in
+/// one `u64` (a linear radix sort); only vertices whose mixes collide are compared coordinate by
+/// coordinate, sorted by their full positions when several collide, so inputs made to collide
+/// cost a sort, never a quadratic search.
+pub(crate) fn lowest_at_each_position(positions: &[[f64; 3]]) -> Vec<u32> {
+    let bits = |v: usize| positions[v].map(|x| (x + 0.0).to_bits());
+    let mix = |[x, y, z]: [u64; 3]| {
+        let h = x.wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            ^ y.wrapping_mul(0xC2B2_AE3D_27D4_EB4F).rotate_left(21)
+            ^ z.wrapping_mul(0x1656_67B1_9E37_79F9).rotate_left(42);
+        (h ^ (h >> 32)) >> 32
+    };
+    let mut keyed: Vec<u64> = (0..positions.len())
+        .filter(|&v| positions[v].iter().all(|x| x.is_finite()))
+        .map(|v| (mix(bits(v)) << 32) | v as u64)
+        .collect();
+    radix_sort_by_high_word(&mut keyed);
+    let mut first = vec![u32::MAX; positions.len()];
+    let mut run: Vec<u32> = Vec::new();
+    // Positions are read in the mixes' order, far apart in memory: each is asked for a run or
+    // so ahead of its use.
+    const AHEAD: usize = 16;
+    let mut start = 0;
+    while start < keyed.len() {
+        let mix_here = keyed[start] >> 32;
+        let end = start
+            + keyed[start..]
+                .iter()
+                .take_while(|&&k| k >> 32 == mix_here)
+                .count();
+        for &k in keyed.iter().skip(end + AHEAD).take(end - start) {
+            prefetch(&positions[k as u32 as usize]);
+        }
+        let same_mix = &keyed[start..end];
+        start = end;
+        if let &[only] = same_mix {
+            first[only as u32 as usize] = only as u32;
+            continue;
+        }
+        // Ascending ids: usually copies of one position, whose lowest is the first; else a
+        // stable sort by position keeps each position's lowest first.
+        run.clear();
+        run.extend(same_mix.iter().map(|&k| k as u32));
+        let lowest = bits(run[0] as usize);
+        if run.iter().all(|&v| bits(v as usize) == lowest) {
+            for &v in &run {
+                first[v as usize] = run[0];
+            }
+            continue;
+        }
+        run.sort_by_key(|&v| bits(v as usize));
+        for group in run.chunk_by(|&a, &b| bits(a as usize) == bits(b as usize)) {
+            for &v in group {
+                first[v as usize] = group[0];
+            }
+        }
+    }
+    first
+}
+
 /// Pairs `[f, first]` of faces of `surface` on the same vertex set as a lower face (input
 /// indices, ascending). Faces are sorted by their sorted vertex sets: triangles and quads by a
 /// fixed-size key, larger polygons by their whole sets (no hashing of input-chosen keys, no
 /// allocation per face of the usual meshes).
-pub(super) fn duplicate_faces(surface: &FaceTable<'_>) -> Vec<[u32; 2]> {
+pub(crate) fn duplicate_faces(surface: &FaceTable<'_>) -> Vec<[u32; 2]> {
     let mut small: Vec<([u32; 4], u32)> = Vec::with_capacity(surface.n_faces());
     let mut large: Vec<(Vec<u32>, u32)> = Vec::new();
     for f in 0..surface.n_faces() {

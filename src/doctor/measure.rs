@@ -2,7 +2,7 @@
 
 /// The distance between `a` and `b`, scaled so that it neither overflows nor underflows when
 /// the coordinates are huge or tiny.
-pub(super) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+pub(crate) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     // Squares of ordinary sizes are exact enough as they are; only those that under- or
@@ -19,10 +19,10 @@ pub(super) fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 }
 
 /// A box containing nothing yet: [`grow`] it.
-pub(super) const EMPTY_BOX: [[f64; 3]; 2] = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+pub(crate) const EMPTY_BOX: [[f64; 3]; 2] = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
 
 /// Grows `bounds` (lowest corner, highest corner) to contain `p`.
-pub(super) fn grow(bounds: &mut [[f64; 3]; 2], p: [f64; 3]) {
+pub(crate) fn grow(bounds: &mut [[f64; 3]; 2], p: [f64; 3]) {
     for (k, &x) in p.iter().enumerate() {
         bounds[0][k] = bounds[0][k].min(x);
         bounds[1][k] = bounds[1][k].max(x);
@@ -30,7 +30,7 @@ pub(super) fn grow(bounds: &mut [[f64; 3]; 2], p: [f64; 3]) {
 }
 
 /// The box around the finite ones of `points` ([`EMPTY_BOX`] when there are none).
-pub(super) fn bounding_box(points: impl Iterator<Item = [f64; 3]>) -> [[f64; 3]; 2] {
+pub(crate) fn bounding_box(points: impl Iterator<Item = [f64; 3]>) -> [[f64; 3]; 2] {
     let mut bounds = EMPTY_BOX;
     for p in points.filter(|p| p.iter().all(|x| x.is_finite())) {
         grow(&mut bounds, p);

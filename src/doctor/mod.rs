@@ -29,6 +29,10 @@ pub use duplicates::TVertex;
 pub use finding::{Finding, Highlight};
 pub use shape::FoldedEdge;
 
+pub(crate) use components::face_components;
+pub(crate) use duplicates::{coincident_vertices, duplicate_faces, lowest_at_each_position};
+pub(crate) use measure::{EMPTY_BOX, bounding_box, distance, grow};
+
 use std::ffi::CStr;
 
 use crate::geom::SelfIntersectionError;
@@ -286,7 +290,7 @@ fn examine_inspected(
     let shapes = shape::shapes(surface, pairing, positions, options);
     let tolerance =
         duplicates::absolute_tolerance(&inspection.table, positions, options.relative_tolerance);
-    let near = duplicates::coincident_vertices(&inspection.table, positions, tolerance);
+    let near = duplicates::coincident_vertices(positions, tolerance);
     let self_intersections = intersections::self_intersections(surface, positions)?;
     Ok(DoctorReport {
         non_manifold_vertex_fans,

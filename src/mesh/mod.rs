@@ -27,6 +27,7 @@ pub use check::{Element, Invariant, InvariantError};
 pub use circulators::{HalfedgeWalk, Step, WalkProgress};
 pub use components::Components;
 pub use connectivity::Mesh;
+pub(crate) use edit::compaction_map;
 pub use edit::{EditError, IndexMaps};
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};

@@ -79,7 +79,7 @@ pub(crate) fn inspect<'a>(list: &FaceList<'a>) -> Result<Inspection<'a>, Box<Dia
 
 /// The vertices below `n_vertices` that no face of `table` names (malformed faces count),
 /// ascending.
-fn unnamed_vertices(table: &FaceTable<'_>, n_vertices: usize) -> Vec<u32> {
+pub(crate) fn unnamed_vertices(table: &FaceTable<'_>, n_vertices: usize) -> Vec<u32> {
     let mut named = vec![false; n_vertices];
     for &v in table.corners() {
         if let Some(named) = named.get_mut(v as usize) {

@@ -27,7 +27,7 @@ pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Pinched, Unreached, Walked, build_splitting_pinched, walk_faces};
 pub use inspect::diagnose;
-pub(crate) use inspect::{Inspection, inspect};
+pub(crate) use inspect::{Inspection, inspect, unnamed_vertices};
 pub(crate) use orient::{component_volumes, search_orientations};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};

@@ -20,7 +20,7 @@ pub struct IndexMaps {
 
 /// New index of every slot, `INVALID_INDEX` where `deleted`; lengths below `u32::MAX` hold
 /// because the arrays were built with 32-bit ids.
-fn compaction_map(len: usize, deleted: &[bool]) -> Vec<u32> {
+pub(crate) fn compaction_map(len: usize, deleted: &[bool]) -> Vec<u32> {
     let mut next = 0u32;
     (0..len)
         .map(|i| {

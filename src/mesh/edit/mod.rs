@@ -8,10 +8,12 @@ mod collapse;
 mod delete;
 mod flip;
 mod garbage;
+mod glue;
 mod split;
 mod triangulate;
 
 pub use garbage::IndexMaps;
+pub(crate) use garbage::compaction_map;
 
 use super::Mesh;
 use super::circulators::{HalfedgeWalk, Step};

@@ -1,0 +1,97 @@
+// Side-by-side benchmark of halfwing's exact vertex merge against CGAL Polygon Mesh Processing's
+// merge_duplicate_points_in_polygon_soup, in one run, on the same unwelded soups: a generated
+// ~1M-triangle torus written with every corner on a vertex of its own (3M vertices), and real
+// models unwelded the same way. Each run gets a fresh copy of its input (the copy is not timed:
+// both merges change their input in place); rounds alternate between the two, best of N.
+//
+//   bench/run-repair-compare.sh [--quick] [--repeats N] [model files...]
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "../c_tests/cgal_soup.hpp"
+#include "halfwing.hpp"
+#include "models.hpp"
+#include "timing.hpp"
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using cgal_soup::Soup;
+
+/// Every corner on a vertex of its own.
+bench::IndexedMesh unwelded(const bench::IndexedMesh& m) {
+  bench::IndexedMesh out;
+  out.name = m.name + "-unwelded";
+  out.face_sizes = m.face_sizes;
+  out.positions.reserve(3 * m.indices.size());
+  out.indices.reserve(m.indices.size());
+  for (uint32_t v : m.indices) {
+    out.indices.push_back(static_cast<uint32_t>(out.positions.size() / 3));
+    out.positions.insert(out.positions.end(), m.positions.begin() + 3 * v,
+                         m.positions.begin() + 3 * v + 3);
+  }
+  return out;
+}
+
+void compare(const bench::IndexedMesh& welded, int repeats) {
+  const bench::IndexedMesh m = unwelded(welded);
+  double ours = std::numeric_limits<double>::infinity(), theirs = ours;
+  std::size_t our_left = 0, their_left = 0;
+  for (int round = 0; round < repeats; ++round) {
+    {
+      hw::soup soup = hw::soup::from_indexed(m.positions, m.face_sizes, m.indices);
+      const auto start = bench::Clock::now();
+      const hw::repair_report report = soup.merge_vertices();
+      ours = std::min(ours, bench::elapsed_ms(start, bench::Clock::now()));
+      our_left = m.n_vertices() - report.list(HW_REPAIR_MERGED_VERTICES).size() / 2;
+    }
+    {
+      Soup soup = cgal_soup::of(m);
+      const auto start = bench::Clock::now();
+      PMP::merge_duplicate_points_in_polygon_soup(soup.points, soup.polygons);
+      theirs = std::min(theirs, bench::elapsed_ms(start, bench::Clock::now()));
+      their_left = soup.points.size();
+    }
+  }
+  std::printf("%-30s %9zu %9zu %12.1f %12.1f %8.2fx %s\n", m.name.c_str(), m.n_vertices(),
+              our_left, ours, theirs, ours / theirs,
+              our_left == their_left ? "" : "(vertex counts differ!)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int repeats = 5;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) {
+      quick = true;
+    } else if (std::strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
+      repeats = std::max(1, std::atoi(argv[++i]));
+    } else if (argv[i][0] == '-') {
+      std::fprintf(stderr, "usage: %s [--quick] [--repeats N] [model files...]\n", argv[0]);
+      return 2;
+    } else {
+      files.push_back(argv[i]);
+    }
+  }
+  if (quick) repeats = 1;
+  std::printf("halfwing %s merge_vertices vs CGAL %s merge_duplicate_points_in_polygon_soup; "
+              "memory: %s\n",
+              hw::version().c_str(), CGAL_VERSION_STR, bench::set_memory_policy(false));
+  std::printf("times: best of %d runs, in ms; ratio = halfwing / CGAL (lower is better)\n",
+              repeats);
+  std::printf("%-30s %9s %9s %12s %12s %9s\n", "model", "vertices", "left", "halfwing", "CGAL",
+              "ratio");
+  const uint32_t n = quick ? 100 : 708;
+  compare(bench::torus(n, n, true), repeats);
+  for (const std::string& file : files) compare(bench::read_file(file), repeats);
+  return 0;
+}

@@ -1,0 +1,189 @@
+// The repairs against CGAL 5 Polygon Mesh Processing on every model of the test data (tests/data/meshes),
+// the same indexed face list fed to both (through hw::soup, so the C++ wrapper is exercised):
+// - merge_duplicate_points_in_polygon_soup: the same number of points left as
+//   hw::soup::merge_vertices() with tolerance 0, and the same polygons once CGAL's polygons with
+//   fewer than 3 distinct corners are dropped (halfwing removes those as collapsed);
+// - merge_duplicate_polygons_in_polygon_soup after that: the same number of polygons left as
+//   remove_duplicate_faces();
+// - remove_isolated_points_in_polygon_soup: the same number of points left as
+//   remove_unreferenced_vertices();
+// - stitch_borders on every model both build as a polygon mesh, as it is and with every face
+//   given vertices of its own: the same number of boundary half-edges after, where the welded
+//   surface is one halfwing's kernel can hold. Where welding makes an edge of more than two
+//   faces, or collapses a face, CGAL still pairs the half-edges (two edges between the same
+//   vertices, edges from a vertex to itself) and halfwing leaves them open (its meshes have
+//   neither): those models are listed with both counts, not compared.
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "cgal_soup.hpp"
+#include "check.h"
+#include "halfwing.hpp"
+#include "models.hpp"
+
+namespace {
+
+using cgal_soup::Soup;
+using SurfaceMesh = CGAL::Surface_mesh<cgal_soup::Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+std::size_t compared_soups = 0, compared_stitches = 0, models_stitched = 0;
+
+std::size_t distinct_corners(std::vector<std::size_t> polygon) {
+  std::sort(polygon.begin(), polygon.end());
+  return static_cast<std::size_t>(std::unique(polygon.begin(), polygon.end()) - polygon.begin());
+}
+
+std::size_t cgal_boundary_halfedges(const SurfaceMesh& mesh) {
+  std::size_t n = 0;
+  for (auto h : mesh.halfedges()) n += mesh.is_border(h);
+  return n;
+}
+
+// A mesh fresh from a build or a stitch has no deleted slot.
+std::size_t our_boundary_halfedges(const hw::mesh& mesh) {
+  std::size_t n = 0;
+  for (std::size_t h = 0; h < hw_mesh_slot_count(mesh.get(), HW_ELEMENT_HALFEDGE); ++h)
+    n += hw_mesh_he_is_boundary(mesh.get(), hw_halfedge{static_cast<uint32_t>(h)});
+  return n;
+}
+
+/// The list with every face on vertices of its own.
+indexed::Mesh unwelded(const indexed::Mesh& m) {
+  indexed::Mesh out;
+  out.name = m.name + " (unwelded)";
+  out.face_sizes = m.face_sizes;
+  for (uint32_t v : m.indices) {
+    out.indices.push_back(static_cast<uint32_t>(out.positions.size() / 3));
+    out.positions.insert(out.positions.end(), m.positions.begin() + 3 * v,
+                         m.positions.begin() + 3 * v + 3);
+  }
+  return out;
+}
+
+/// Stitches the list as both libraries build it, when both can; compares boundary half-edges
+/// when `comparable`.
+void compare_stitch(const indexed::Mesh& m, bool comparable) {
+  Soup soup = cgal_soup::of(m);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
+  hw::mesh ours;
+  try {
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_STRICT);
+  } catch (const hw::error&) {
+    return;  // non-finite coordinates, degenerate corners: not a mesh for halfwing
+  }
+  SurfaceMesh theirs;
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, theirs);
+  const std::size_t before = our_boundary_halfedges(ours);
+  CHECK(before == cgal_boundary_halfedges(theirs));
+  PMP::stitch_borders(theirs);
+  const hw::repair_report report = ours.stitch_borders();
+  CHECK(hw_mesh_check(ours.get()) == HW_OK);
+  const std::size_t after = our_boundary_halfedges(ours), cgal_after = cgal_boundary_halfedges(theirs);
+  CHECK(report.list(HW_REPAIR_STITCHED_HALFEDGES).size() == before - after);
+  if (!comparable) {
+    std::printf("  %-42s not compared: %zu boundary half-edges after stitching, CGAL %zu\n",
+                m.name.c_str(), after, cgal_after);
+    return;
+  }
+  CHECK(after == cgal_after);
+  if (after != cgal_after)
+    std::fprintf(stderr, "  %s: %zu boundary half-edges after stitching, CGAL %zu\n",
+                 m.name.c_str(), after, cgal_after);
+  ++compared_stitches;
+  models_stitched += after < before;
+}
+
+void compare(const std::filesystem::path& path) {
+  const indexed::Mesh m = models::read(path);
+  hw::soup ours = hw::soup::from_indexed(m.positions, m.face_sizes, m.indices);
+  Soup theirs = cgal_soup::of(m);
+  const bool in_range = std::all_of(m.indices.begin(), m.indices.end(),
+                                    [&](uint32_t v) { return v < m.n_vertices(); });
+  if (!in_range) {
+    // halfwing refuses what CGAL would read out of bounds.
+    CHECK_STATUS(hw_soup_merge_vertices(ours.get(), 0.0, false, nullptr), HW_ERR_INVALID_INPUT,
+                 "names vertex");
+    return;
+  }
+
+  const hw::repair_report merged = ours.merge_vertices();
+  PMP::merge_duplicate_points_in_polygon_soup(theirs.points, theirs.polygons);
+  CHECK(ours.positions().size() / 3 == theirs.points.size());
+  theirs.polygons.erase(std::remove_if(theirs.polygons.begin(), theirs.polygons.end(),
+                                       [](const std::vector<std::size_t>& p) {
+                                         return distinct_corners(p) < 3;
+                                       }),
+                        theirs.polygons.end());
+  // Faces malformed in the input (fewer than 3 distinct corners) that no merge touched stay in
+  // halfwing's list; count the faces with 3 corners or more.
+  std::vector<std::size_t> offsets;
+  const indexed::Mesh after{"", ours.positions(), ours.face_sizes(), ours.indices()};
+  std::size_t proper = 0;
+  for (std::size_t f = 0; f < after.n_faces(); ++f) {
+    const std::vector<uint32_t> face = after.face(f, offsets);
+    proper += distinct_corners(std::vector<std::size_t>(face.begin(), face.end())) >= 3;
+  }
+  CHECK(proper == theirs.polygons.size());
+
+  ours.remove_duplicate_faces();
+  PMP::merge_duplicate_polygons_in_polygon_soup(theirs.points, theirs.polygons);
+  const std::size_t our_faces = ours.face_sizes().size() - (after.n_faces() - proper);
+  CHECK(our_faces == theirs.polygons.size());
+  if (our_faces != theirs.polygons.size())
+    std::fprintf(stderr, "  %s: %zu faces after removing duplicates, CGAL %zu\n",
+                 m.name.c_str(), our_faces, theirs.polygons.size());
+
+  ours.remove_unreferenced_vertices();
+  // CGAL's points no polygon names now include those only malformed faces named, which
+  // halfwing keeps: compare on the points the proper faces name.
+  const std::vector<uint32_t> indices = ours.indices();
+  std::vector<bool> named(ours.positions().size() / 3, false);
+  std::size_t corner = 0;
+  for (uint32_t size : ours.face_sizes()) {
+    std::vector<std::size_t> face(indices.begin() + corner, indices.begin() + corner + size);
+    if (distinct_corners(face) >= 3)
+      for (std::size_t v : face) named[v] = true;
+    corner += size;
+  }
+  PMP::remove_isolated_points_in_polygon_soup(theirs.points, theirs.polygons);
+  CHECK(static_cast<std::size_t>(std::count(named.begin(), named.end(), true)) ==
+        theirs.points.size());
+  std::printf("  %-42s merged %zu vertices, %zu faces left, %zu points left\n", m.name.c_str(),
+              merged.list(HW_REPAIR_MERGED_VERTICES).size() / 2, our_faces, theirs.points.size());
+  ++compared_soups;
+
+  // Whether the welded surface fits a half-edge mesh: no collapsed face, no edge of 3 faces.
+  const hw::diagnostic welded = hw::diagnostic::of(after.positions, after.face_sizes, after.indices);
+  std::size_t non_manifold_edges = 0;
+  hw::check(hw_diagnostic_edge_count(welded.get(), HW_DIAG_NON_MANIFOLD_EDGES, &non_manifold_edges));
+  const bool comparable = merged.list(HW_REPAIR_REMOVED_FACES).empty() &&
+                          proper == after.n_faces() && non_manifold_edges == 0;
+  compare_stitch(m, comparable);
+  if (m.n_faces() <= 20000) compare_stitch(unwelded(m), comparable);
+}
+
+}  // namespace
+
+int main() {
+  for (const char* folder :
+       {"meshes/closed", "meshes/open", "meshes/polygonal", "meshes/broken"})
+    for (const auto& path : models::files(folder)) {
+      try {
+        compare(path);
+      } catch (const hw::error& e) {
+        std::printf("  %-42s not read: %s\n", path.filename().string().c_str(), e.what());
+      }
+    }
+  std::printf("compared: %zu soups, %zu stitches (%zu stitched something)\n", compared_soups,
+              compared_stitches, models_stitched);
+  CHECK(compared_soups > 50 && compared_stitches > 50 && models_stitched > 20);
+  return check_summary("compare_repair_cgal");
+}

@@ -1,0 +1,158 @@
+/* The repairs through the C API: each with its report (lists and maps as zero-copy views),
+ * refusals that leave the input unchanged and write no output, and stitching a mesh. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "check.h"
+
+/* Two triangles sharing an edge, the edge's ends given twice (vertices 3 and 4 repeat 1 and
+ * 2), an unreferenced vertex 5 and a duplicate of the first triangle, rotated. */
+static const double positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1, 0, 9, 9, 9, 1, 1, 0};
+static const uint32_t sizes[] = {3, 3, 3};
+static const uint32_t indices[] = {0, 1, 2, 3, 6, 4, 1, 2, 0};
+
+static hw_soup *make_soup(void) {
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 3, indices, 9, &soup) == HW_OK);
+  return soup;
+}
+
+static size_t list_len(const hw_repair_report *report, hw_repair_list list, const uint32_t **ids) {
+  size_t n = 0;
+  CHECK(hw_repair_report_list(report, list, ids, &n) == HW_OK);
+  return n;
+}
+
+static void merge_vertices(void) {
+  hw_soup *soup = make_soup();
+  hw_repair_report *report = NULL;
+  CHECK(hw_soup_merge_vertices(soup, 0.0, false, &report) == HW_OK);
+  const uint32_t *ids = NULL;
+  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 4);
+  CHECK(ids[0] == 3 && ids[1] == 1 && ids[2] == 4 && ids[3] == 2);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 2);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0 && ids == NULL);
+  const hw_index_maps *maps = NULL;
+  size_t removed_corners = 99;
+  CHECK(hw_repair_report_maps(report, &maps, &removed_corners) == HW_OK);
+  CHECK(removed_corners == 0);
+  const uint32_t *map = NULL;
+  size_t n = 0;
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_VERTEX, &map, &n) == HW_OK);
+  CHECK(n == 7 && map[3] == HW_INVALID_INDEX && map[5] == 3 && map[6] == 4);
+  /* The maps belong to the report: freeing them is refused. */
+  hw_index_maps_free((hw_index_maps *)maps);
+  CHECK(last_error_contains("hw_index_maps"));
+  hw_repair_report_free(report);
+
+  const uint32_t *corners = NULL;
+  size_t n_vertices = 0, n_corners = 0;
+  CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, &corners, &n_corners) == HW_OK);
+  CHECK(n_vertices == 5 && n_corners == 9);
+  CHECK(corners[3] == 1 && corners[4] == 4 && corners[5] == 2);
+
+  /* Then the duplicate face and the unreferenced vertex. */
+  CHECK(hw_soup_remove_duplicate_faces(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_DUPLICATE_FACES, &ids) == 2 && ids[0] == 2 && ids[1] == 0);
+  hw_repair_report_free(report);
+  CHECK(hw_soup_remove_unreferenced_vertices(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 1 && ids[0] == 3);
+  hw_repair_report_free(report);
+  /* A report is optional. */
+  CHECK(hw_soup_remove_unreferenced_vertices(soup, NULL) == HW_OK);
+  hw_soup_free(soup);
+}
+
+static void refusals_change_nothing(void) {
+  hw_soup *soup = make_soup();
+  hw_repair_report *report = (hw_repair_report *)&report; /* must stay as it is */
+  hw_repair_report *const untouched = report;
+  CHECK_STATUS(hw_soup_merge_vertices(soup, -1.0, false, &report), HW_ERR_INVALID_INPUT,
+               "0 or more");
+  CHECK_STATUS(hw_soup_merge_vertices(soup, NAN, false, &report), HW_ERR_INVALID_INPUT, "NaN");
+  CHECK_STATUS(hw_soup_merge_vertices(soup, INFINITY, false, &report), HW_ERR_INVALID_INPUT,
+               "finite");
+  CHECK_STATUS(hw_soup_merge_vertices(soup, 2.0, true, &report), HW_ERR_INVALID_INPUT,
+               "between 0 and 1");
+  CHECK_STATUS(hw_soup_remove_small_components(soup, HW_SMALL_BY_FACE_COUNT, 1.5, &report),
+               HW_ERR_INVALID_INPUT, "whole number");
+  CHECK_STATUS(hw_soup_remove_small_components(soup, 7, 1.0, &report), HW_ERR_INVALID_INPUT,
+               "rule");
+  CHECK_STATUS(
+      hw_soup_remove_small_components(soup, HW_SMALL_BY_RELATIVE_DIAMETER, -0.5, &report),
+      HW_ERR_INVALID_INPUT, "between 0 and 1");
+  CHECK(report == untouched);
+  size_t n_vertices = 0;
+  CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, NULL, NULL) == HW_OK);
+  CHECK(n_vertices == 7);
+  CHECK_STATUS(hw_soup_merge_vertices(NULL, 0.0, false, NULL), HW_ERR_NULL_ARGUMENT, "soup");
+  CHECK_STATUS(hw_repair_report_list(NULL, HW_REPAIR_REMOVED_FACES, NULL, NULL),
+               HW_ERR_NULL_ARGUMENT, "");
+  CHECK_STATUS(hw_repair_report_maps(NULL, NULL, NULL), HW_ERR_NULL_ARGUMENT, "out_maps");
+  hw_soup_free(soup);
+
+  /* An index out of range: refused by name. */
+  const uint32_t bad[] = {0, 1, 9};
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 1, bad, 3, &soup) == HW_OK);
+  CHECK_STATUS(hw_soup_remove_duplicate_faces(soup, NULL), HW_ERR_INVALID_INPUT,
+               "face 0 names vertex 9");
+  hw_soup_free(soup);
+  CHECK_STATUS(hw_soup_from_indexed(NULL, 3, sizes, 1, indices, 3, &soup), HW_ERR_NULL_ARGUMENT,
+               "positions");
+}
+
+static void small_components(void) {
+  /* The two triangles and a far small one. */
+  const double p[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 5, 5, 5, 5.01, 5, 5, 5, 5.01, 5};
+  const uint32_t s[] = {3, 3, 3};
+  const uint32_t ix[] = {0, 1, 2, 1, 3, 2, 4, 5, 6};
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(p, 7, s, 3, ix, 9, &soup) == HW_OK);
+  hw_repair_report *report = NULL;
+  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_BY_RELATIVE_DIAMETER, 0.1, &report) ==
+        HW_OK);
+  const uint32_t *ids = NULL;
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 1 && ids[0] == 2);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 3 && ids[0] == 4);
+  hw_repair_report_free(report);
+  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_BY_FACE_COUNT, 1.0, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  hw_repair_report_free(report);
+  hw_soup_free(soup);
+}
+
+static void stitch_borders(void) {
+  /* Two triangles on the same square, unwelded: stitching glues their diagonal. */
+  const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0};
+  const uint32_t s[] = {3, 3};
+  const uint32_t ix[] = {0, 1, 2, 3, 4, 5};
+  hw_mesh *mesh = NULL;
+  CHECK(hw_mesh_from_indexed(p, 6, s, 2, ix, 6, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_n_edges(mesh) == 6);
+  hw_repair_report *report = NULL;
+  CHECK_STATUS(hw_mesh_stitch_borders(mesh, -1.0, false, &report), HW_ERR_INVALID_INPUT,
+               "0 or more");
+  CHECK(report == NULL && hw_mesh_n_edges(mesh) == 6);
+  CHECK(hw_mesh_stitch_borders(mesh, 0.0, false, &report) == HW_OK);
+  const uint32_t *ids = NULL;
+  CHECK(list_len(report, HW_REPAIR_STITCHED_HALFEDGES, &ids) == 2);
+  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 4);
+  const hw_index_maps *maps = NULL;
+  CHECK(hw_repair_report_maps(report, &maps, NULL) == HW_OK);
+  const uint32_t *map = NULL;
+  size_t n = 0;
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_EDGE, &map, &n) == HW_OK && n == 6);
+  CHECK_STATUS(hw_repair_report_list(report, 42, &ids, &n), HW_ERR_INVALID_INPUT, "42");
+  hw_repair_report_free(report);
+  CHECK(hw_mesh_n_edges(mesh) == 5 && hw_mesh_n_vertices(mesh) == 4);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  hw_mesh_free(mesh);
+}
+
+int main(void) {
+  merge_vertices();
+  refusals_change_nothing();
+  small_components();
+  stitch_borders();
+  return check_summary("test_repair");
+}

@@ -1,0 +1,324 @@
+//! Repairs: merging vertices and removing duplicate faces, unreferenced vertices and small
+//! components of a soup (`hw_soup_*`), stitching a mesh's borders (`hw_mesh_stitch_borders`),
+//! each with a report of what changed (`hw_repair_report`).
+
+use crate::repair::{
+    RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices, remove_duplicate_faces,
+    remove_small_components, remove_unreferenced_vertices, stitch_borders,
+};
+use crate::soup::PolygonSoup;
+
+use super::boundary::{Out, arg_mut, arg_ref, give_view, guard, guard_void};
+use super::edit::hw_index_maps;
+use super::error::FfiError;
+use super::face_list::face_list_arg;
+use super::handle::{free_handle, into_handle};
+use super::io::hw_soup;
+use super::mesh::hw_mesh;
+use super::status::*;
+
+/// What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
+/// read with hw_repair_report_list() and hw_repair_report_maps(), release with
+/// hw_repair_report_free(). Ids are those of the input.
+pub struct hw_repair_report {
+    report: RepairReport,
+    maps: hw_index_maps,
+}
+
+/// One list of a repair report, for hw_repair_report_list().
+pub type hw_repair_list = u32;
+/// Pairs `removed, kept` (2 values each) of vertices merged into another.
+pub const HW_REPAIR_MERGED_VERTICES: hw_repair_list = 0;
+/// Vertices removed (merged ones included).
+pub const HW_REPAIR_REMOVED_VERTICES: hw_repair_list = 1;
+/// Faces removed.
+pub const HW_REPAIR_REMOVED_FACES: hw_repair_list = 2;
+/// Pairs `removed, kept` (2 values each) of duplicate faces.
+pub const HW_REPAIR_DUPLICATE_FACES: hw_repair_list = 3;
+/// Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
+pub const HW_REPAIR_STITCHED_HALFEDGES: hw_repair_list = 4;
+
+/// Which components hw_soup_remove_small_components() removes.
+pub type hw_small_components = u32;
+/// Components of at most `value` faces.
+pub const HW_SMALL_BY_FACE_COUNT: hw_small_components = 0;
+/// Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
+pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
+
+impl From<RepairError> for FfiError {
+    fn from(error: RepairError) -> Self {
+        FfiError::invalid_input(error.to_string())
+    }
+}
+
+fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
+    if relative {
+        Tolerance::Relative(tolerance)
+    } else {
+        Tolerance::Absolute(tolerance)
+    }
+}
+
+/// Runs `repair` on the soup and gives its report (when `out_report` is not NULL).
+///
+/// # Safety
+/// `soup` NULL or live and not used by another thread; `out_report` NULL or writable.
+unsafe fn repair_soup(
+    soup: *mut hw_soup,
+    out_report: *mut *mut hw_repair_report,
+    repair: impl FnOnce(&mut PolygonSoup) -> Result<RepairReport, FfiError>,
+) -> hw_status {
+    guard(|| {
+        let out = Out::optional(out_report);
+        // SAFETY: forwarded from the caller.
+        let soup = &mut unsafe { arg_mut(soup, "soup") }?.soup;
+        let report = repair(soup)?;
+        give_report(out, report);
+        Ok(())
+    })
+}
+
+fn give_report(out: Option<Out<*mut hw_repair_report>>, mut report: RepairReport) {
+    if let Some(out) = out {
+        let maps = hw_index_maps {
+            maps: std::mem::take(&mut report.maps),
+        };
+        // SAFETY: writable per the caller.
+        unsafe { out.write(into_handle(hw_repair_report { report, maps })) };
+    }
+}
+
+/// Makes a soup of an indexed face list (the arrays hw_mesh_from_indexed() takes), copied as
+/// they are (nothing checked until a repair or a build looks at them), for the `hw_soup_*`
+/// repairs; read it back with hw_soup_view(), release it with hw_soup_free().
+///
+/// # Safety
+/// As for hw_mesh_from_indexed(); `out_soup` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_from_indexed(
+    positions: *const f64,
+    n_vertices: usize,
+    face_sizes: *const u32,
+    n_faces: usize,
+    indices: *const u32,
+    n_indices: usize,
+    out_soup: *mut *mut hw_soup,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_soup, "out_soup")?;
+        // SAFETY: forwarded from the caller.
+        let list = unsafe {
+            face_list_arg(
+                positions, n_vertices, face_sizes, n_faces, indices, n_indices,
+            )
+        }?;
+        let crate::soup::FaceSizes::PerFace(sizes) = list.sizes else {
+            unreachable!("face_list_arg gives per-face sizes");
+        };
+        let soup = PolygonSoup {
+            positions: list.positions.to_vec(),
+            face_sizes: sizes.to_vec(),
+            indices: list.indices.to_vec(),
+            corner_normals: None,
+            corner_uvs: None,
+        };
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(into_handle(hw_soup { soup })) };
+        Ok(())
+    })
+}
+
+/// Merges the soup's vertices at one position or within `tolerance` of each other (an absolute
+/// distance, or when `relative` a fraction 0 to 1 of the bounding-box diagonal of the
+/// vertices) into the lowest of each cluster, which keeps its position. Exact duplicates always
+/// merge; near ones greedily, in index order, into the first lower kept vertex within the
+/// tolerance (not transitively). Faces naming a merged vertex drop corners that repeat the one
+/// before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_REMOVED_FACES).
+/// Corner normals and texture coordinates follow their corners. `HW_ERR_INVALID_INPUT`, the
+/// soup unchanged, for a tolerance negative, NaN, infinite, relative above 1 or positive below
+/// 2^-48 of the positions' extent, and for a malformed soup (index out of range, sizes not
+/// adding up). On success `*out_report` (when not NULL) receives the report.
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_merge_vertices(
+    soup: *mut hw_soup,
+    tolerance: f64,
+    relative: bool,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_soup(soup, out_report, |soup| {
+            Ok(merge_vertices(soup, tolerance_arg(tolerance, relative))?)
+        })
+    }
+}
+
+/// Removes every face whose vertex set is that of a lower face (either orientation, any
+/// starting corner), keeping the lowest (::HW_REPAIR_DUPLICATE_FACES pairs each removed face
+/// with the one kept). Vertices are untouched. Refusals and report as for
+/// hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_remove_duplicate_faces(
+    soup: *mut hw_soup,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe { repair_soup(soup, out_report, |soup| Ok(remove_duplicate_faces(soup)?)) }
+}
+
+/// Removes the vertices no face names, renumbering the others in order (the report's vertex
+/// map). Refusals and report as for hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_remove_unreferenced_vertices(
+    soup: *mut hw_soup,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_soup(soup, out_report, |soup| {
+            Ok(remove_unreferenced_vertices(soup)?)
+        })
+    }
+}
+
+/// Removes the faces of the small components (faces joined through shared edges) and the
+/// vertices only they named: by ::HW_SMALL_BY_FACE_COUNT (at most `value` faces, a whole
+/// number) or ::HW_SMALL_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the largest).
+/// `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
+/// hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_remove_small_components(
+    soup: *mut hw_soup,
+    rule: hw_small_components,
+    value: f64,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    let small = match rule {
+        HW_SMALL_BY_FACE_COUNT if value >= 0.0 && value.fract() == 0.0 => {
+            // Saturates above usize::MAX: every component is then small.
+            Ok(SmallComponents::FaceCount(value as usize))
+        }
+        HW_SMALL_BY_FACE_COUNT => Err(FfiError::invalid_input(format!(
+            "face count {value} is not a whole number of 0 or more"
+        ))),
+        HW_SMALL_BY_RELATIVE_DIAMETER => Ok(SmallComponents::RelativeDiameter(value)),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown small-component rule {other}"
+        ))),
+    };
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_soup(soup, out_report, |soup| {
+            Ok(remove_small_components(soup, small?)?)
+        })
+    }
+}
+
+/// Glues the mesh's boundary edges that lie on each other end on end (exactly, or within
+/// `tolerance`, absolute or when `relative` a fraction of the live vertices' bounding-box
+/// diagonal), like CGAL's `stitch_borders`: an edge is stitched when exactly one other boundary
+/// edge joins the same positions the opposite way, and only where the mesh stays manifold with
+/// distinct edges. Faces keep their corners' data; merged vertices go into the lowest, which
+/// keeps its position and attributes. The mesh is then compacted: the report's maps give the
+/// new ids (the identity when nothing was stitched, the mesh then unchanged). Refusals as for
+/// hw_soup_merge_vertices(), the mesh unchanged.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_stitch_borders(
+    mesh: *mut hw_mesh,
+    tolerance: f64,
+    relative: bool,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    guard(|| {
+        let out = Out::optional(out_report);
+        // SAFETY: forwarded from the caller.
+        let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
+        let report = stitch_borders(mesh, tolerance_arg(tolerance, relative))?;
+        give_report(out, report);
+        Ok(())
+    })
+}
+
+/// A read-only view of one list of the report (`*out_ids`, NULL when empty, with `*out_len`
+/// values; pair lists hold 2 values per pair). Lives as long as the report.
+///
+/// # Safety
+/// `report` must be NULL or live; `out_ids` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_report_list(
+    report: *const hw_repair_report,
+    list: hw_repair_list,
+    out_ids: *mut *const u32,
+    out_len: *mut usize,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_ids, "out_ids", out_len, || {
+            let report = arg_ref(report, "report")?;
+            match list {
+                HW_REPAIR_MERGED_VERTICES => Ok(report.report.merged_vertices.as_flattened()),
+                HW_REPAIR_REMOVED_VERTICES => Ok(&report.report.removed_vertices[..]),
+                HW_REPAIR_REMOVED_FACES => Ok(&report.report.removed_faces[..]),
+                HW_REPAIR_DUPLICATE_FACES => Ok(report.report.duplicate_faces.as_flattened()),
+                HW_REPAIR_STITCHED_HALFEDGES => Ok(report.report.stitched_halfedges.as_flattened()),
+                other => Err(FfiError::invalid_input(format!(
+                    "unknown repair list {other}"
+                ))),
+            }
+        })
+    }
+}
+
+/// The report's old-to-new maps, to read with hw_index_maps_view() (a soup's repairs fill the
+/// vertex and face maps; hw_mesh_stitch_borders() all four). Owned by the report: do not free
+/// it; it lives as long as the report. Also `*out_removed_corners` (when not NULL): corners
+/// dropped from kept faces.
+///
+/// # Safety
+/// `report` must be NULL or live; `out_maps` writable; `out_removed_corners` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_report_maps(
+    report: *const hw_repair_report,
+    out_maps: *mut *const hw_index_maps,
+    out_removed_corners: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_maps, "out_maps")?;
+        // SAFETY: forwarded from the caller.
+        let report = unsafe { arg_ref(report, "report") }?;
+        // SAFETY: checked non-NULL and writable per the caller; the other NULL or writable.
+        unsafe {
+            out.write(&report.maps);
+            if let Some(out) = Out::optional(out_removed_corners) {
+                out.write(report.report.removed_corners);
+            }
+        }
+        Ok(())
+    })
+}
+
+/// Releases a repair report. NULL is a no-op; a second free is refused (within the limits the
+/// ownership conventions at the top of the header state).
+///
+/// # Safety
+/// `report` must be NULL or a report from this library, not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_report_free(report: *mut hw_repair_report) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(report, "hw_repair_report") });
+}
