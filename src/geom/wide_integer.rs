@@ -95,6 +95,14 @@ impl WideInteger {
         product
     }
 
+    /// `|self|`.
+    pub(crate) fn abs(&self) -> WideInteger {
+        WideInteger {
+            negative: false,
+            limbs: self.limbs.clone(),
+        }
+    }
+
     fn negated(&self) -> WideInteger {
         WideInteger {
             negative: !self.negative && !self.limbs.is_empty(),

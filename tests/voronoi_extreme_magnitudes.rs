@@ -1,0 +1,81 @@
+//! Sites and clip regions whose magnitudes push products of coordinates out of the range of
+//! doubles: answers stay exact (nearest sites) and cells still tile their region.
+
+mod voronoi_common;
+
+use halfwing::voronoi::{ClipPolygon, Voronoi};
+use voronoi_common::*;
+
+/// Every site's nearest site is itself (or the first site at the same position).
+fn assert_each_site_nearest_to_itself(v: &Voronoi) {
+    let d = v.delaunay();
+    for (i, &p) in d.sites().iter().enumerate() {
+        let nearest = v.nearest_site(p, None).unwrap().unwrap();
+        assert_eq!(
+            nearest,
+            d.representative()[i],
+            "site {i} at {p:?}: nearest is {nearest} at {:?}",
+            d.sites()[nearest as usize]
+        );
+    }
+}
+
+#[test]
+fn one_far_site_among_unit_square_sites() {
+    // Squared distances between the unit-square sites, in the frame that brings 1e154 near 1,
+    // are near 1e-308: they underflowed and the descent stopped at the wrong sites.
+    let mut sites = uniform(98, 154);
+    sites.push([1e154, 0.5]);
+    let v = Voronoi::new(&sites).unwrap();
+    check_delaunay(v.delaunay(), true);
+    assert_each_site_nearest_to_itself(&v);
+    check_clipped(&v, &ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap());
+    check_clipped(&v, &bounding_clip(&sites, 0.1));
+}
+
+#[test]
+fn a_site_at_1e_minus_300_beside_unit_sites() {
+    let sites = [[0.0, 0.0], [1.0, 1.0], [1e-300, 1e-300]];
+    let v = Voronoi::new(&sites).unwrap();
+    assert_eq!(v.nearest_site([1e-300, 1e-300], None).unwrap(), Some(2));
+    assert_eq!(v.nearest_site([0.0, 0.0], None).unwrap(), Some(0));
+    assert_eq!(v.nearest_site([4e-300, -1e-300], None).unwrap(), Some(2));
+    assert_eq!(v.nearest_site([-1e-300, 0.0], None).unwrap(), Some(0));
+    assert_each_site_nearest_to_itself(&v);
+}
+
+#[test]
+fn sites_spread_over_every_magnitude() {
+    let mut sites = Vec::new();
+    for e in (-300..=300).step_by(37) {
+        let s = 10f64.powi(e);
+        sites.extend([[s, 0.0], [0.0, s], [-s, 1.5 * s], [s, -s]]);
+    }
+    let v = Voronoi::new(&sites).unwrap();
+    check_delaunay(v.delaunay(), true);
+    assert_each_site_nearest_to_itself(&v);
+}
+
+#[test]
+fn regions_whose_area_under_or_overflows_are_accepted() {
+    for scale in [1e-300, 1e-170, 1e170, 1e300] {
+        let clip = ClipPolygon::rectangle([-scale, -scale], [40.0 * scale, 40.0 * scale])
+            .unwrap_or_else(|e| panic!("box at {scale:e}: {e}"));
+        let sites: Vec<[f64; 2]> = uniform(60, 7)
+            .into_iter()
+            .map(|p| [p[0] * 39.0 * scale, p[1] * 39.0 * scale])
+            .collect();
+        let v = Voronoi::new(&sites).unwrap();
+        assert_each_site_nearest_to_itself(&v);
+        let cells = v.clip(&clip);
+        assert_eq!(cells.n_cells(), sites.len());
+        for site in 0..sites.len() as u32 {
+            let poly = cells.cell_polygon(site).unwrap();
+            assert!(
+                poly.len() >= 3,
+                "site {site} at {scale:e} has an empty cell"
+            );
+            assert!(poly.iter().flatten().all(|x| x.is_finite()));
+        }
+    }
+}
