@@ -75,7 +75,10 @@ fn regions_whose_area_under_or_overflows_are_accepted() {
                 poly.len() >= 3,
                 "site {site} at {scale:e} has an empty cell"
             );
-            assert!(poly.iter().flatten().all(|x| x.is_finite()));
+            assert!(
+                poly.iter().flatten().all(|x| x.is_finite()),
+                "site {site} at {scale:e}: {poly:?}"
+            );
         }
     }
 }

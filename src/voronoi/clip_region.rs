@@ -1,7 +1,7 @@
 //! Convex clip regions for Voronoi cells.
 
 use super::error::VoronoiError;
-use super::predicates::{normalising_scale_of_box, orient2d};
+use super::predicates::{normalising_scale, normalising_scale_of_box, orient2d};
 
 /// A convex polygon, stored counter-clockwise, that Voronoi cells are clipped to.
 #[derive(Clone, Debug, PartialEq)]
@@ -10,6 +10,11 @@ pub struct ClipPolygon {
     /// `edges[i]` runs from vertex `i` to the next: the edge functions of every Voronoi vertex
     /// read them, so they are computed once here.
     edges: Vec<[f64; 2]>,
+    /// The edges times one power of two that brings the longest near 1, so that edge functions
+    /// (an edge times an offset) neither overflow nor underflow for regions of any size.
+    unit_edges: Vec<[f64; 2]>,
+    /// The power of two of `unit_edges`, applied to half-edges (see [`ClipPolygon::convex`]).
+    edge_unit: f64,
     area: f64,
 }
 
@@ -52,7 +57,10 @@ impl ClipPolygon {
                 "fewer than three distinct vertices",
             ));
         }
-        let signed_area = shoelace(&v);
+        // The sign of the area, from vertices brought near 1 by a power of two: the area itself
+        // may under- or overflow for a valid region.
+        let unit = normalising_scale(&v);
+        let signed_area = shoelace(&v.iter().map(|p| p.map(|x| x * unit)).collect::<Vec<_>>());
         if signed_area == 0.0 || !signed_area.is_finite() {
             return Err(VoronoiError::DegenerateClip("zero area"));
         }
@@ -92,15 +100,21 @@ impl ClipPolygon {
             return Err(VoronoiError::NonConvexClip { vertex: 0 });
         }
         let area = shoelace(&v);
-        let edges = (0..n)
+        let edges: Vec<[f64; 2]> = (0..n)
             .map(|i| {
                 let (a, b) = (v[i], v[(i + 1) % n]);
-                [b[0] - a[0], b[1] - a[1]]
+                // Halves first: a side from -1e308 to 1e308 stays finite.
+                [0.5 * b[0] - 0.5 * a[0], 0.5 * b[1] - 0.5 * a[1]]
             })
             .collect();
+        let edge_unit = normalising_scale(&edges);
+        let unit_edges = edges.iter().map(|e| e.map(|x| x * edge_unit)).collect();
+        let edges = edges.iter().map(|e| e.map(|x| 2.0 * x)).collect();
         Ok(ClipPolygon {
             vertices: v,
             edges,
+            unit_edges,
+            edge_unit,
             area,
         })
     }
@@ -110,7 +124,8 @@ impl ClipPolygon {
         &self.vertices
     }
 
-    /// Area (positive).
+    /// Area (positive; zero or infinite for a region whose area lies beyond the range of
+    /// doubles, which is still clipped to).
     pub fn area(&self) -> f64 {
         self.area
     }
@@ -120,10 +135,11 @@ impl ClipPolygon {
         (0..self.vertices.len()).all(|i| self.edge_function(i, p) >= 0.0)
     }
 
-    /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side.
+    /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side. (One
+    /// power-of-two multiple of it for all edges: see `unit_edges`.)
     #[inline(always)]
     pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
-        half_plane(self.vertices[i], self.edges[i], p)
+        half_plane(self.vertices[i], self.unit_edges[i], p)
     }
 
     /// The smallest edge function of `p` over all edges: `> 0` strictly inside, `0` on the
@@ -132,7 +148,7 @@ impl ClipPolygon {
     pub(crate) fn lowest_edge_function(&self, p: [f64; 2]) -> f64 {
         self.vertices
             .iter()
-            .zip(&self.edges)
+            .zip(&self.unit_edges)
             .map(|(&a, &e)| half_plane(a, e, p))
             .fold(f64::INFINITY, f64::min)
     }
@@ -140,8 +156,18 @@ impl ClipPolygon {
     /// Cross product of edge `i` with direction `d`: how fast `edge_function` grows along `d`.
     #[inline(always)]
     pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
-        let e = self.edges[i];
+        let e = self.unit_edges[i];
         e[0] * d[1] - e[1] * d[0]
+    }
+
+    /// Where the projection of `x` falls along edge `i`: 0 at its start, 1 at its end. (From the
+    /// scaled edge and offset, so that neither the dot product nor the squared length under- or
+    /// overflows.)
+    #[inline]
+    pub(crate) fn edge_parameter(&self, i: usize, x: [f64; 2]) -> f64 {
+        let (a, e) = (self.vertices[i], self.unit_edges[i]);
+        let d = [0, 1].map(|k| (0.5 * x[k] - 0.5 * a[k]) * self.edge_unit);
+        (d[0] * e[0] + d[1] * e[1]) / (e[0] * e[0] + e[1] * e[1])
     }
 
     /// The vector from vertex `i` to the next.

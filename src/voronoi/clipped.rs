@@ -93,8 +93,7 @@ impl Builder<'_> {
         let m = self.clip.vertices().len();
         let a = self.clip.vertices()[edge];
         let e = self.clip.edge_vector(edge);
-        let t = (((x[0] - a[0]) * e[0] + (x[1] - a[1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]))
-            .clamp(0.0, 1.0);
+        let t = self.clip.edge_parameter(edge, x).clamp(0.0, 1.0);
         if t == 0.0 {
             return edge as u32;
         }

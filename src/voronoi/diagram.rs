@@ -8,7 +8,7 @@ use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
-use super::predicates::incircle_in;
+use super::predicates::{incircle_in, normalising_scale_of_box};
 use crate::disjoint_sets;
 use crate::large_arrays;
 
@@ -437,22 +437,38 @@ pub(crate) struct EdgeEnds {
 /// times smaller than those magnitudes the relative error stays below ~1e-10. Flatter triangles
 /// (a small fraction; their centres are far away and sensitive) are computed exactly and
 /// rounded once.
+///
+/// The differences are first brought near 1 by a power of two (exact) when they are small, so
+/// that products of three of them do not underflow: sites of a frame normalised for a far site
+/// (`1e154` beside the unit square) are `1e-154` apart.
 #[inline]
 fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+    let largest = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
+    let unit = if largest < 1.0 {
+        normalising_scale_of_box([[-largest, -largest], [largest, largest]])
+    } else {
+        1.0
+    };
+    let [bx, by, cx, cy] = [bx, by, cx, cy].map(|x| x * unit);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
     let det = bx * cy - by * cx;
     let (ux, uy) = (cy * bl - by * cl, bx * cl - cx * bl);
     let det_size = (bx * cy).abs() + (by * cx).abs();
     let u_size = (cy * bl).abs() + (by * cl).abs() + (bx * cl).abs() + (cx * bl).abs();
-    if det.abs() * CANCELLATION_LIMIT >= det_size
+    let offset = if det.abs() * CANCELLATION_LIMIT >= det_size
         && (ux.abs() + uy.abs()) * CANCELLATION_LIMIT >= u_size
     {
         let inverse = 0.5 / det;
         [ux * inverse, uy * inverse]
     } else {
-        exact_circumcentre_offset(a, b, c)
+        exact_circumcentre_offset(a, b, c, unit)
+    };
+    if unit == 1.0 {
+        offset
+    } else {
+        offset.map(|x| x / unit)
     }
 }
 
@@ -475,12 +491,16 @@ fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
 /// error from a few ulps (2.2e-16 each) amplified by this factor.
 const CANCELLATION_LIMIT: f64 = 1.0e5;
 
-/// [`circumcentre_offset`] in exact arithmetic, each coordinate rounded once at the end (the
-/// division adds half an ulp).
+/// [`circumcentre_offset`] in exact arithmetic on the differences times `unit` (a power of two),
+/// each coordinate rounded once at the end (the division adds half an ulp).
 #[cold]
-fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
-    let (bx, by) = (Exact::difference(b[0], a[0]), Exact::difference(b[1], a[1]));
-    let (cx, cy) = (Exact::difference(c[0], a[0]), Exact::difference(c[1], a[1]));
+fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2], unit: f64) -> [f64; 2] {
+    let difference = |p: f64, q: f64| {
+        let Exact(terms) = Exact::difference(p, q);
+        Exact(terms.into_iter().map(|t| t * unit).collect())
+    };
+    let (bx, by) = (difference(b[0], a[0]), difference(b[1], a[1]));
+    let (cx, cy) = (difference(c[0], a[0]), difference(c[1], a[1]));
     let bl = bx.times(&bx).plus(&by.times(&by)).compressed();
     let cl = cx.times(&cx).plus(&cy.times(&cy)).compressed();
     let det = bx.times(&cy).minus(&by.times(&cx)).value();
