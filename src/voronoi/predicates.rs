@@ -105,14 +105,45 @@ fn orient2d_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], det: f64) -> f64 {
     {
         return det;
     }
-    let mut points = [a, b, c].map(|p| [p[0], p[1], 0.0]);
-    let range = ExponentRange::of(points.iter().flat_map(|p| [p[0], p[1]]));
-    let orientation = ExactOrientation::for_points(&mut points, range);
-    let [a, b, c] = points.map(|p| [p[0], p[1]]);
-    match orientation.orient2d(a, b, c) {
-        Sign::Negative => -1.0,
-        Sign::Zero => 0.0,
-        Sign::Positive => 1.0,
+    let range = ExponentRange::of([a, b, c].iter().flat_map(|p| [p[0], p[1]]));
+    let sign = match ExactOrientation::for_range(range) {
+        (ExactOrientation::Adaptive, None) => {
+            return robust::orient2d(coord(a), coord(b), coord(c));
+        }
+        (ExactOrientation::Adaptive, Some(shift)) => {
+            let [a, b, c] = [a, b, c].map(|p| p.map(|x| times_power_of_two(x, shift)));
+            sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
+        }
+        (ExactOrientation::Wide, _) => match ExactOrientation::Wide.orient2d(a, b, c) {
+            Sign::Negative => -1.0,
+            Sign::Zero => 0.0,
+            Sign::Positive => 1.0,
+        },
+    };
+    with_exact_sign(det, sign)
+}
+
+/// -1, 0 or 1 as `x` is negative, zero or positive (`f64::signum` gives 1 for zero).
+fn sign_of(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+/// The floating-point determinant `approximate` when it has the exact `sign` (-1, 0 or 1),
+/// otherwise the smallest normal number of that sign: callers that weigh by the determinant get
+/// its size where it is meaningful, and every caller gets the exact sign.
+fn with_exact_sign(approximate: f64, sign: f64) -> f64 {
+    if sign == 0.0 {
+        0.0
+    } else if sign_of(approximate) == sign && approximate.is_finite() {
+        approximate
+    } else {
+        sign * f64::MIN_POSITIVE
     }
 }
 
@@ -170,12 +201,15 @@ fn incircle_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], det: f64) -
     }
     let range = ExponentRange::of([a, b, c, d].iter().flat_map(|p| [p[0], p[1]]));
     match ExactOrientation::for_range_within(range, INCIRCLE_EXPONENT_LIMIT) {
-        (ExactOrientation::Adaptive, shift) => {
-            let [a, b, c, d] =
-                [a, b, c, d].map(|p| p.map(|x| shift.map_or(x, |s| times_power_of_two(x, s))));
+        (ExactOrientation::Adaptive, None) => {
             robust::incircle(coord(a), coord(b), coord(c), coord(d))
         }
-        (ExactOrientation::Wide, _) => wide_incircle(a, b, c, d),
+        (ExactOrientation::Adaptive, Some(shift)) => {
+            let [a, b, c, d] = [a, b, c, d].map(|p| p.map(|x| times_power_of_two(x, shift)));
+            let sign = sign_of(robust::incircle(coord(a), coord(b), coord(c), coord(d)));
+            with_exact_sign(det, sign)
+        }
+        (ExactOrientation::Wide, _) => with_exact_sign(det, wide_incircle(a, b, c, d)),
     }
 }
 
