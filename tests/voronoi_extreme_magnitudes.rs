@@ -82,3 +82,30 @@ fn regions_whose_area_under_or_overflows_are_accepted() {
         }
     }
 }
+
+#[test]
+fn boxes_a_few_ulps_wide_along_one_axis_are_accepted() {
+    // Widths of subnormal size beside a height of 1: a shared power of two for both axes lost
+    // the width, and the box was refused as having zero area.
+    for (min, max) in [
+        ([-5e-324, -9.000000000000005], [5e-324, -8.999999999999995]),
+        (
+            [35.99999999999999, -1.5e-323],
+            [36.00000000000003, 1.5e-323],
+        ),
+        ([-5e-324, 0.9999999999999999], [5e-324, 1.0000000000000002]),
+    ] {
+        let clip = ClipPolygon::rectangle(min, max)
+            .unwrap_or_else(|e| panic!("box {min:?} to {max:?}: {e}"));
+        let centre = [0.5 * min[0] + 0.5 * max[0], 0.5 * min[1] + 0.5 * max[1]];
+        let sites = [
+            centre,
+            [centre[0] + 1.0, centre[1]],
+            [centre[0], centre[1] - 1.0],
+        ];
+        let v = Voronoi::new(&sites).unwrap();
+        let cells = v.clip(&clip);
+        assert!(cells.cell(0).unwrap().len() >= 3, "box {min:?}: empty cell");
+        assert!(cells.positions().iter().flatten().all(|x| x.is_finite()));
+    }
+}

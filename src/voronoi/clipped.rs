@@ -366,15 +366,17 @@ impl Voronoi {
         }
         let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
         let start = if enter == usize::MAX {
-            // No entering constraint: the start is the finite end of the edge, inside.
+            // No entering constraint: the start is the finite end of the edge, inside. (A line
+            // or ray whose rates all round to zero has no such end: the edge is dropped rather
+            // than indexed past the vertices.)
             let v = if reversed { t } else { o };
-            vertex_position[v as usize]
+            vertex_position.get(v as usize).copied().unwrap_or(INVALID)
         } else {
             b.crossing(enter, at(lo))
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if exit == usize::MAX {
-            vertex_position[t as usize]
+            vertex_position.get(t as usize).copied().unwrap_or(INVALID)
         } else {
             b.crossing(exit, at(hi))
         };
