@@ -6,6 +6,7 @@ use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
 use super::parallel::{map_each, run_length};
+use super::predicates::normalising_scale_of_box;
 use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
@@ -324,12 +325,17 @@ impl Voronoi {
                     false,
                 )
             }
-            EdgeGeometry::Ray { origin, direction } => {
-                (origin, direction, None, 0.0, f64::INFINITY, o == INVALID)
-            }
+            EdgeGeometry::Ray { origin, direction } => (
+                origin,
+                unit_direction(direction),
+                None,
+                0.0,
+                f64::INFINITY,
+                o == INVALID,
+            ),
             EdgeGeometry::Line { point, direction } => (
                 point,
-                direction,
+                unit_direction(direction),
                 None,
                 f64::NEG_INFINITY,
                 f64::INFINITY,
@@ -534,4 +540,13 @@ impl ClippedCells {
         }
         (soup, face_site)
     }
+}
+
+/// `direction` times the power of two that brings its larger component near 1: the rates of the
+/// edge functions along a ray then neither underflow (a ray between sites `1e-299` apart, in a
+/// region `1e301` wide, got a subnormal rate and an infinite crossing) nor overflow.
+fn unit_direction(direction: [f64; 2]) -> [f64; 2] {
+    let largest = direction[0].abs().max(direction[1].abs());
+    let unit = normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]]);
+    direction.map(|x| x * unit)
 }
