@@ -438,19 +438,16 @@ pub(crate) struct EdgeEnds {
 /// (a small fraction; their centres are far away and sensitive) are computed exactly and
 /// rounded once.
 ///
-/// The differences are first brought near 1 by a power of two (exact) when they are small, so
-/// that products of three of them do not underflow: sites of a frame normalised for a far site
-/// (`1e154` beside the unit square) are `1e-154` apart.
+/// The differences are first brought near 1 by a power of two (exact, short of underflow), so
+/// that products of three of them neither underflow (sites of a frame normalised for a far site,
+/// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
+/// sites near `1e-300` keep their low bits beside one at `1e301`).
 #[inline]
 fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
     let largest = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
-    let unit = if largest < 1.0 {
-        normalising_scale_of_box([[-largest, -largest], [largest, largest]])
-    } else {
-        1.0
-    };
+    let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
     let [bx, by, cx, cy] = [bx, by, cx, cy].map(|x| x * unit);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
     let det = bx * cy - by * cx;
@@ -531,7 +528,7 @@ mod tests {
         }
         // A corner far from the two others: the numerators cancel instead of the determinant.
         let [x, y] = circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
-        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6], 1.0);
         assert!(
             (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
         );
