@@ -11,7 +11,7 @@ mod voronoi_common;
 use halfwing::voronoi::{ClipPolygon, Voronoi};
 use proptest::test_runner::TestRng;
 use stress::{Rng, choose, run, run_long};
-use voronoi_common::{check_clipped, check_delaunay, check_voronoi};
+use voronoi_common::{bounding_clip, check_clipped, check_delaunay, check_voronoi};
 
 /// Sites of one of several shapes, then perhaps some of them moved to other magnitudes.
 fn random_sites(rng: &mut TestRng) -> Vec<[f64; 2]> {
@@ -75,7 +75,7 @@ fn random_sites(rng: &mut TestRng) -> Vec<[f64; 2]> {
 /// wide around one site.
 fn random_clip(rng: &mut TestRng, sites: &[[f64; 2]]) -> ClipPolygon {
     match rng.random_range(0..4) {
-        0 | 1 => box_around(sites),
+        0 | 1 => bounding_clip(sites, 0.1),
         2 => {
             let p = *choose(rng, sites);
             let ulps = |rng: &mut TestRng, c: f64| {
@@ -96,24 +96,9 @@ fn random_clip(rng: &mut TestRng, sites: &[[f64; 2]]) -> ClipPolygon {
             let [a, b] = [*choose(rng, sites), *choose(rng, sites)];
             let min = [a[0].min(b[0]), a[1].min(b[1])];
             let max = [a[0].max(b[0]), a[1].max(b[1])];
-            ClipPolygon::rectangle(min, max).unwrap_or_else(|_| box_around(sites))
+            ClipPolygon::rectangle(min, max).unwrap_or_else(|_| bounding_clip(sites, 0.1))
         }
     }
-}
-
-/// The sites' box widened by a tenth of its size, and by at least one ulp on every side.
-fn box_around(sites: &[[f64; 2]]) -> ClipPolygon {
-    let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in sites {
-        for k in 0..2 {
-            min[k] = min[k].min(p[k]);
-            max[k] = max[k].max(p[k]);
-        }
-    }
-    let size = (max[0] - min[0]).max(max[1] - min[1]);
-    let min = min.map(|c| (c - 0.1 * size).min(c.next_down()));
-    let max = max.map(|c| (c + 0.1 * size).max(c.next_up()));
-    ClipPolygon::rectangle(min, max).unwrap_or_else(|e| panic!("box {min:?} to {max:?}: {e}"))
 }
 
 fn case(rng: &mut TestRng) {

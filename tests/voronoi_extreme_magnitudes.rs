@@ -128,3 +128,18 @@ fn lines_between_tiny_sites_cross_huge_regions_at_finite_points() {
     }
     assert_each_site_nearest_to_itself(&v);
 }
+
+#[test]
+fn circumcentres_of_triangles_spanning_every_magnitude_are_finite() {
+    // Sites near 1e-299 beside one at 1e301: no power of two keeps both in the floating-point
+    // circumcentre, whose products under- and overflowed into a NaN vertex.
+    for sites in [
+        vec![[1e301, 1e301], [2.5e-299, 0.0], [0.0, 0.0]],
+        vec![[1.7e-99, 3.1e-99], [3.1e-99, 3.1e-99], [5e100, 0.0], [8e100, 3e100]],
+    ] {
+        let v = Voronoi::new(&sites).unwrap();
+        check_voronoi(&v);
+        assert!(v.vertices().iter().flatten().all(|x| x.is_finite()), "{:?}", v.vertices());
+        assert_each_site_nearest_to_itself(&v);
+    }
+}
