@@ -135,11 +135,20 @@ fn circumcentres_of_triangles_spanning_every_magnitude_are_finite() {
     // circumcentre, whose products under- and overflowed into a NaN vertex.
     for sites in [
         vec![[1e301, 1e301], [2.5e-299, 0.0], [0.0, 0.0]],
-        vec![[1.7e-99, 3.1e-99], [3.1e-99, 3.1e-99], [5e100, 0.0], [8e100, 3e100]],
+        vec![
+            [1.7e-99, 3.1e-99],
+            [3.1e-99, 3.1e-99],
+            [5e100, 0.0],
+            [8e100, 3e100],
+        ],
     ] {
         let v = Voronoi::new(&sites).unwrap();
         check_voronoi(&v);
-        assert!(v.vertices().iter().flatten().all(|x| x.is_finite()), "{:?}", v.vertices());
+        assert!(
+            v.vertices().iter().flatten().all(|x| x.is_finite()),
+            "{:?}",
+            v.vertices()
+        );
         assert_each_site_nearest_to_itself(&v);
     }
 }
