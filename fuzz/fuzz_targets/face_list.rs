@@ -37,5 +37,9 @@ pub fn decode(bytes: &[u8]) -> Decoded {
             indices.push(u32::from(index));
         }
     }
-    Decoded { positions, sizes, indices }
+    Decoded {
+        positions,
+        sizes,
+        indices,
+    }
 }

@@ -86,7 +86,7 @@ impl ExponentRange {
 }
 
 /// `floor(log2 |x|)` for finite nonzero `x` (subnormals included), `None` for zero.
-fn binary_exponent(x: f64) -> Option<i32> {
+pub(crate) fn binary_exponent(x: f64) -> Option<i32> {
     let magnitude = x.to_bits() & !(1 << 63);
     if magnitude == 0 {
         return None;
@@ -115,7 +115,16 @@ impl ExactOrientation {
     /// [`times_power_of_two`]) to bring them into the adaptive arithmetic's exact range.
     #[inline]
     pub(crate) fn for_range(range: ExponentRange) -> (ExactOrientation, Option<i32>) {
-        let limit = ADAPTIVE_EXPONENT_LIMIT;
+        Self::for_range_within(range, ADAPTIVE_EXPONENT_LIMIT)
+    }
+
+    /// [`ExactOrientation::for_range`] for determinants whose exact range is `[2^-limit,
+    /// 2^limit]` (of higher degree than the orientation's: the in-circle test's is smaller).
+    #[inline]
+    pub(crate) fn for_range_within(
+        range: ExponentRange,
+        limit: i32,
+    ) -> (ExactOrientation, Option<i32>) {
         if range.lowest >= -limit && range.highest <= limit {
             return (ExactOrientation::Adaptive, None);
         }
@@ -180,7 +189,7 @@ pub(crate) fn scale_points(points: &mut [Point], shift: i32) {
 
 /// `x · 2^shift`, exact when the result is a normal number: two factors, as `2^shift` itself
 /// may not be representable.
-fn times_power_of_two(x: f64, shift: i32) -> f64 {
+pub(crate) fn times_power_of_two(x: f64, shift: i32) -> f64 {
     let half = shift / 2;
     x * power_of_two(half) * power_of_two(shift - half)
 }
@@ -215,7 +224,7 @@ fn wide_orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
 
 /// The finite `values` as integers, all multiplied by one power of two (the smallest unit among
 /// them), so that their differences and products keep the signs of the values'.
-fn integers<const N: usize>(values: [f64; N]) -> [WideInteger; N] {
+pub(crate) fn integers<const N: usize>(values: [f64; N]) -> [WideInteger; N] {
     let parts = values.map(dyadic);
     let unit = parts
         .iter()
@@ -231,7 +240,7 @@ fn integers<const N: usize>(values: [f64; N]) -> [WideInteger; N] {
 }
 
 /// A finite `x` as `±mantissa · 2^exponent` with an odd mantissa (or zero).
-fn dyadic(x: f64) -> (bool, u64, i32) {
+pub(crate) fn dyadic(x: f64) -> (bool, u64, i32) {
     let bits = x.to_bits();
     let negative = bits >> 63 == 1;
     let biased = ((bits >> 52) & 0x7ff) as i32;

@@ -10,13 +10,13 @@ pub(crate) use newell::rescued_area_vector;
 pub(crate) use normals::normalized;
 mod box_tree;
 mod embedded_stars;
-mod exact_orientation;
+pub(crate) mod exact_orientation;
 mod parallel;
 mod plane_side;
 mod polygon_triangulation;
 mod self_intersections;
 mod triangle_intersection;
-mod wide_integer;
+pub(crate) mod wide_integer;
 
 pub use newell::{
     face_corners_area_vector, is_degenerate_polygon, is_degenerate_quad, is_degenerate_triangle,

@@ -95,6 +95,28 @@ impl WideInteger {
         product
     }
 
+    /// The number as `(m, e)` with `self ≈ m · 2^e`: `m` holds its top 65 to 96 bits, so the
+    /// relative error is below `2^-52` once rounded to a double; `(0.0, 0)` for zero.
+    pub(crate) fn to_float_parts(&self) -> (f64, i64) {
+        let n = self.limbs.len();
+        let take = n.min(3);
+        let top = self.limbs[n - take..]
+            .iter()
+            .rev()
+            .fold(0u128, |top, &limb| (top << 32) | u128::from(limb));
+        let magnitude = top as f64;
+        let exponent = 32 * (n - take) as i64;
+        (if self.negative { -magnitude } else { magnitude }, exponent)
+    }
+
+    /// `|self|`.
+    pub(crate) fn abs(&self) -> WideInteger {
+        WideInteger {
+            negative: false,
+            limbs: self.limbs.clone(),
+        }
+    }
+
     fn negated(&self) -> WideInteger {
         WideInteger {
             negative: !self.negative && !self.limbs.is_empty(),

@@ -10,6 +10,13 @@ pub struct ClipPolygon {
     /// `edges[i]` runs from vertex `i` to the next: the edge functions of every Voronoi vertex
     /// read them, so they are computed once here.
     edges: Vec<[f64; 2]>,
+    /// Half of every edge with each axis times its own power of two (`axis_units`), which brings
+    /// the longest extent along that axis near 1: edge functions (an edge times an offset)
+    /// neither overflow nor underflow for regions of any size or shape (a box `1e-323` wide and
+    /// `1` tall). Scaling each axis by a positive factor multiplies every edge function by one
+    /// and the same positive number, so their signs and ratios are kept.
+    unit_edges: Vec<[f64; 2]>,
+    axis_units: [f64; 2],
     area: f64,
 }
 
@@ -52,7 +59,14 @@ impl ClipPolygon {
                 "fewer than three distinct vertices",
             ));
         }
-        let signed_area = shoelace(&v);
+        // The sign of the area, from vertices whose axes are brought near 1 by powers of two
+        // (which keeps the sign): the area itself may under- or overflow for a valid region.
+        let units = axis_units(&v);
+        let signed_area = shoelace(
+            &v.iter()
+                .map(|p| [p[0] * units[0], p[1] * units[1]])
+                .collect::<Vec<_>>(),
+        );
         if signed_area == 0.0 || !signed_area.is_finite() {
             return Err(VoronoiError::DegenerateClip("zero area"));
         }
@@ -92,15 +106,24 @@ impl ClipPolygon {
             return Err(VoronoiError::NonConvexClip { vertex: 0 });
         }
         let area = shoelace(&v);
-        let edges = (0..n)
+        let edges: Vec<[f64; 2]> = (0..n)
             .map(|i| {
                 let (a, b) = (v[i], v[(i + 1) % n]);
-                [b[0] - a[0], b[1] - a[1]]
+                // Halves first: a side from -1e308 to 1e308 stays finite.
+                [0.5 * b[0] - 0.5 * a[0], 0.5 * b[1] - 0.5 * a[1]]
             })
             .collect();
+        let units = axis_units(&edges);
+        let unit_edges = edges
+            .iter()
+            .map(|e| [e[0] * units[0], e[1] * units[1]])
+            .collect();
+        let edges = edges.iter().map(|e| e.map(|x| 2.0 * x)).collect();
         Ok(ClipPolygon {
             vertices: v,
             edges,
+            unit_edges,
+            axis_units: units,
             area,
         })
     }
@@ -110,7 +133,8 @@ impl ClipPolygon {
         &self.vertices
     }
 
-    /// Area (positive).
+    /// Area (positive; zero or infinite for a region whose area lies beyond the range of
+    /// doubles, which is still clipped to).
     pub fn area(&self) -> f64 {
         self.area
     }
@@ -120,10 +144,11 @@ impl ClipPolygon {
         (0..self.vertices.len()).all(|i| self.edge_function(i, p) >= 0.0)
     }
 
-    /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side.
+    /// Signed area-like distance of `p` to edge `i`'s line: `≥ 0` on the inner side. (One
+    /// power-of-two multiple of it for all edges: see `unit_edges`.)
     #[inline(always)]
     pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
-        half_plane(self.vertices[i], self.edges[i], p)
+        self.half_plane(self.vertices[i], self.unit_edges[i], p)
     }
 
     /// The smallest edge function of `p` over all edges: `> 0` strictly inside, `0` on the
@@ -132,16 +157,46 @@ impl ClipPolygon {
     pub(crate) fn lowest_edge_function(&self, p: [f64; 2]) -> f64 {
         self.vertices
             .iter()
-            .zip(&self.edges)
-            .map(|(&a, &e)| half_plane(a, e, p))
+            .zip(&self.unit_edges)
+            .map(|(&a, &e)| self.half_plane(a, e, p))
             .fold(f64::INFINITY, f64::min)
     }
 
     /// Cross product of edge `i` with direction `d`: how fast `edge_function` grows along `d`.
     #[inline(always)]
     pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
-        let e = self.edges[i];
-        e[0] * d[1] - e[1] * d[0]
+        let e = self.unit_edges[i];
+        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, 0.5 * d[k]));
+        e[0] * dy - e[1] * dx
+    }
+
+    /// Where `x`, a point on edge `i`'s line, falls along it: 0 at its start, 1 at its end
+    /// (along the axis the edge runs farther on, halved so that nothing overflows, and without
+    /// products that could underflow).
+    #[inline]
+    pub(crate) fn edge_parameter(&self, i: usize, x: [f64; 2]) -> f64 {
+        let (a, e) = (self.vertices[i], self.unit_edges[i]);
+        let k = if (e[0] / self.axis_units[0]).abs() >= (e[1] / self.axis_units[1]).abs() {
+            0
+        } else {
+            1
+        };
+        (0.5 * x[k] - 0.5 * a[k]) / (e[k] / self.axis_units[k])
+    }
+
+    /// Edge function of `p` for the edge from `a` along the scaled half-edge `e`.
+    #[inline(always)]
+    fn half_plane(&self, a: [f64; 2], e: [f64; 2], p: [f64; 2]) -> f64 {
+        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, 0.5 * p[k] - 0.5 * a[k]));
+        e[0] * dy - e[1] * dx
+    }
+
+    /// `d` along axis `k` in the scaled frame of `unit_edges`, kept within `±1e300` so that the
+    /// edge functions of points astronomically far from the region stay finite (their sign is
+    /// all that is read of them).
+    #[inline(always)]
+    fn scaled_offset(&self, k: usize, d: f64) -> f64 {
+        (d * self.axis_units[k]).clamp(-FARTHEST_OFFSET, FARTHEST_OFFSET)
     }
 
     /// The vector from vertex `i` to the next.
@@ -156,10 +211,16 @@ impl ClipPolygon {
     }
 }
 
-/// Edge function of `p` for the edge from `a` along `e`.
-#[inline(always)]
-fn half_plane(a: [f64; 2], e: [f64; 2], p: [f64; 2]) -> f64 {
-    e[0] * (p[1] - a[1]) - e[1] * (p[0] - a[0])
+/// Bound of [`ClipPolygon::scaled_offset`]: times a scaled edge (below 2), twice over, still
+/// finite.
+const FARTHEST_OFFSET: f64 = 1.0e300;
+
+/// Per axis, the power of two that brings the largest magnitude of `points` along it near 1.
+fn axis_units(points: &[[f64; 2]]) -> [f64; 2] {
+    [0, 1].map(|k| {
+        let largest = points.iter().fold(0.0_f64, |m, p| m.max(p[k].abs()));
+        normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]])
+    })
 }
 
 fn shoelace(v: &[[f64; 2]]) -> f64 {

@@ -6,6 +6,7 @@ use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
 use super::parallel::{map_each, run_length};
+use super::predicates::normalising_scale_of_box;
 use crate::large_arrays;
 use crate::soup::PolygonSoup;
 
@@ -93,8 +94,7 @@ impl Builder<'_> {
         let m = self.clip.vertices().len();
         let a = self.clip.vertices()[edge];
         let e = self.clip.edge_vector(edge);
-        let t = (((x[0] - a[0]) * e[0] + (x[1] - a[1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]))
-            .clamp(0.0, 1.0);
+        let t = self.clip.edge_parameter(edge, x).clamp(0.0, 1.0);
         if t == 0.0 {
             return edge as u32;
         }
@@ -325,12 +325,17 @@ impl Voronoi {
                     false,
                 )
             }
-            EdgeGeometry::Ray { origin, direction } => {
-                (origin, direction, None, 0.0, f64::INFINITY, o == INVALID)
-            }
+            EdgeGeometry::Ray { origin, direction } => (
+                origin,
+                unit_direction(direction),
+                None,
+                0.0,
+                f64::INFINITY,
+                o == INVALID,
+            ),
             EdgeGeometry::Line { point, direction } => (
                 point,
-                direction,
+                unit_direction(direction),
                 None,
                 f64::NEG_INFINITY,
                 f64::INFINITY,
@@ -367,15 +372,17 @@ impl Voronoi {
         }
         let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
         let start = if enter == usize::MAX {
-            // No entering constraint: the start is the finite end of the edge, inside.
+            // No entering constraint: the start is the finite end of the edge, inside. (A line
+            // or ray whose rates all round to zero has no such end: the edge is dropped rather
+            // than indexed past the vertices.)
             let v = if reversed { t } else { o };
-            vertex_position[v as usize]
+            vertex_position.get(v as usize).copied().unwrap_or(INVALID)
         } else {
             b.crossing(enter, at(lo))
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if exit == usize::MAX {
-            vertex_position[t as usize]
+            vertex_position.get(t as usize).copied().unwrap_or(INVALID)
         } else {
             b.crossing(exit, at(hi))
         };
@@ -533,4 +540,13 @@ impl ClippedCells {
         }
         (soup, face_site)
     }
+}
+
+/// `direction` times the power of two that brings its larger component near 1: the rates of the
+/// edge functions along a ray then neither underflow (a ray between sites `1e-299` apart, in a
+/// region `1e301` wide, got a subnormal rate and an infinite crossing) nor overflow.
+fn unit_direction(direction: [f64; 2]) -> [f64; 2] {
+    let largest = direction[0].abs().max(direction[1].abs());
+    let unit = normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]]);
+    direction.map(|x| x * unit)
 }

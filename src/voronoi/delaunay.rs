@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 use super::error::VoronoiError;
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
-use super::predicates::{SetBounds, normalising_scale_of_box, orient2d};
+use super::predicates::{SetBounds, exact_normalising_scale, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
 use crate::allocation::ensure_room;
 use crate::id_set::IdSet;
@@ -113,7 +113,7 @@ impl Delaunay {
         // One pass over the sites gives the scale and, scaled (a power of two is monotone, so
         // it maps the box), the scaled sites' box.
         let site_box = bounding_box(sites);
-        let scale = normalising_scale_of_box(site_box);
+        let scale = exact_normalising_scale(sites, site_box);
         let mut representative: Vec<u32> = (0..n as u32).collect();
         let bounds = site_box.map(|corner| corner.map(|x| x * scale));
         let order = brio_hilbert_order(sites, scale, bounds);

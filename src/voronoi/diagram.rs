@@ -8,8 +8,9 @@ use super::error::VoronoiError;
 use super::expansion::Exact;
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
-use super::predicates::incircle_in;
+use super::predicates::{incircle_in, normalising_scale_of_box, pow2};
 use crate::disjoint_sets;
+use crate::geom::exact_orientation::{dyadic, integers};
 use crate::large_arrays;
 
 /// Geometry of an undirected Voronoi edge.
@@ -437,22 +438,37 @@ pub(crate) struct EdgeEnds {
 /// times smaller than those magnitudes the relative error stays below ~1e-10. Flatter triangles
 /// (a small fraction; their centres are far away and sensitive) are computed exactly and
 /// rounded once.
+///
+/// The differences are first brought near 1 by a power of two (exact, short of underflow), so
+/// that products of three of them neither underflow (sites of a frame normalised for a far site,
+/// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
+/// sites near `1e-300` keep their low bits beside one at `1e301`).
 #[inline]
 fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
+    let largest = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
+    let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+    let [bx, by, cx, cy] = [bx, by, cx, cy].map(|x| x * unit);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
     let det = bx * cy - by * cx;
     let (ux, uy) = (cy * bl - by * cl, bx * cl - cx * bl);
     let det_size = (bx * cy).abs() + (by * cx).abs();
     let u_size = (cy * bl).abs() + (by * cl).abs() + (bx * cl).abs() + (cx * bl).abs();
-    if det.abs() * CANCELLATION_LIMIT >= det_size
+    let offset = if det != 0.0
+        && det.abs() * CANCELLATION_LIMIT >= det_size
         && (ux.abs() + uy.abs()) * CANCELLATION_LIMIT >= u_size
+        && (ux.is_finite() && uy.is_finite())
     {
         let inverse = 0.5 / det;
         [ux * inverse, uy * inverse]
     } else {
-        exact_circumcentre_offset(a, b, c)
+        exact_circumcentre_offset(a, b, c, unit)
+    };
+    if unit == 1.0 {
+        offset
+    } else {
+        offset.map(|x| x / unit)
     }
 }
 
@@ -475,19 +491,66 @@ fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
 /// error from a few ulps (2.2e-16 each) amplified by this factor.
 const CANCELLATION_LIMIT: f64 = 1.0e5;
 
-/// [`circumcentre_offset`] in exact arithmetic, each coordinate rounded once at the end (the
-/// division adds half an ulp).
+/// [`circumcentre_offset`] in exact arithmetic on the differences times `unit` (a power of two),
+/// each coordinate rounded once at the end (the division adds half an ulp).
 #[cold]
-fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
-    let (bx, by) = (Exact::difference(b[0], a[0]), Exact::difference(b[1], a[1]));
-    let (cx, cy) = (Exact::difference(c[0], a[0]), Exact::difference(c[1], a[1]));
+fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2], unit: f64) -> [f64; 2] {
+    let difference = |p: f64, q: f64| {
+        let Exact(terms) = Exact::difference(p, q);
+        Exact(terms.into_iter().map(|t| t * unit).collect())
+    };
+    let (bx, by) = (difference(b[0], a[0]), difference(b[1], a[1]));
+    let (cx, cy) = (difference(c[0], a[0]), difference(c[1], a[1]));
     let bl = bx.times(&bx).plus(&by.times(&by)).compressed();
     let cl = cx.times(&cx).plus(&cy.times(&cy)).compressed();
     let det = bx.times(&cy).minus(&by.times(&cx)).value();
     let ux = cy.times(&bl).minus(&by.times(&cl)).value();
     let uy = bx.times(&cl).minus(&cx.times(&bl)).value();
-    // A Delaunay triangle is never flat (exact orientation), so `det` is not zero.
-    [ux / (2.0 * det), uy / (2.0 * det)]
+    // A Delaunay triangle is never flat (exact orientation), so `det` is exactly nonzero; a zero
+    // or non-finite value here is an under- or overflow of the expansions.
+    let offset = [ux / (2.0 * det), uy / (2.0 * det)];
+    if det != 0.0 && offset.iter().all(|x| x.is_finite()) {
+        offset
+    } else {
+        wide_circumcentre_offset(a, b, c).map(|x| x * unit)
+    }
+}
+
+/// [`circumcentre_offset`] in integers of any size, for corners whose coordinates span more
+/// binary orders of magnitude than expansions hold (sites near `1e-300` and `1e300` in one
+/// triangle): numerators and denominator exactly, one division of their leading bits.
+#[cold]
+fn wide_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
+    let values = [a[0], a[1], b[0], b[1], c[0], c[1]];
+    // `integers` multiplies every value by the power of two of the smallest unit among them.
+    let unit = values
+        .iter()
+        .map(|&x| dyadic(x))
+        .filter(|&(_, mantissa, _)| mantissa != 0)
+        .map(|(_, _, exponent)| i64::from(exponent))
+        .min()
+        .unwrap_or(0);
+    let [ax, ay, bx, by, cx, cy] = integers(values);
+    let (bx, by, cx, cy) = (bx.sub(&ax), by.sub(&ay), cx.sub(&ax), cy.sub(&ay));
+    let bl = bx.mul(&bx).add(&by.mul(&by));
+    let cl = cx.mul(&cx).add(&cy.mul(&cy));
+    let det = bx.mul(&cy).sub(&by.mul(&cx));
+    let ux = cy.mul(&bl).sub(&by.mul(&cl));
+    let uy = bx.mul(&cl).sub(&cx.mul(&bl));
+    let (det_mantissa, det_exponent) = det.to_float_parts();
+    // Degree three over degree two, halved: the result is in units of 2^unit.
+    [ux, uy].map(|u| {
+        let (mantissa, exponent) = u.to_float_parts();
+        let mut value = mantissa / det_mantissa;
+        let mut shift = exponent - det_exponent + unit - 1;
+        // Powers of two in steps that stay representable; the last rounds once.
+        while shift != 0 && value != 0.0 && value.is_finite() {
+            let step = shift.clamp(-1000, 1000);
+            value *= pow2(step as i32);
+            shift -= step;
+        }
+        value
+    })
 }
 
 /// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
@@ -511,7 +574,7 @@ mod tests {
         }
         // A corner far from the two others: the numerators cancel instead of the determinant.
         let [x, y] = circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
-        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6]);
+        let expect = exact_circumcentre_offset([0.0, 0.0], [1e6, 1.0], [1e6, 1.0 + 1e-6], 1.0);
         assert!(
             (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
         );

@@ -1,10 +1,13 @@
 //! Exact comparison of distances from a query point to two sites under the L2, L1 and L∞
 //! metrics: a floating-point filter, then exact expansion arithmetic (Shewchuk's two-sum and an
-//! FMA-based two-product) when the filter cannot decide.
+//! FMA-based two-product) when the filter cannot decide, on the points brought into its exact
+//! range by a power of two, or integers of any size when their magnitudes span more than that.
 
 use std::cmp::Ordering;
 
 use super::expansion::{sign_of_sum, two_diff, two_product};
+use crate::geom::exact_orientation::{ExactOrientation, ExponentRange, integers};
+use crate::geom::wide_integer::WideInteger;
 
 /// A distance function on the plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -29,14 +32,30 @@ impl Metric {
         }
     }
 
-    /// Exactly compares the distances from `q` to `a` and to `b`.
+    /// Exactly compares the distances from `q` to `a` and to `b`, for any finite points.
     pub fn compare(self, q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
         let (da, db) = (self.approx(q, a), self.approx(q, b));
-        // Relative error of `approx` is below 4 ulps for all three metrics (when no underflow).
+        // Relative error of `approx` is below 4 ulps for all three metrics while nothing
+        // overflows and the sum is far above underflow (whose absolute error, below 2^-1073,
+        // is then negligible against the bound).
         let bound = 8.0 * f64::EPSILON * (da + db);
-        if (da - db).abs() > bound {
+        if (da - db).abs() > bound && bound.is_finite() && da + db >= FILTER_FLOOR {
             return da.partial_cmp(&db).unwrap_or(Ordering::Equal);
         }
+        let mut points = [q, a, b].map(|p| [p[0], p[1], 0.0]);
+        let range = ExponentRange::of(points.iter().flat_map(|p| [p[0], p[1]]));
+        match ExactOrientation::for_points(&mut points, range) {
+            ExactOrientation::Adaptive => {
+                let [q, a, b] = points.map(|p| [p[0], p[1]]);
+                self.compare_with_expansions(q, a, b)
+            }
+            ExactOrientation::Wide => self.compare_with_integers(q, a, b),
+        }
+    }
+
+    /// [`Metric::compare`] in expansion arithmetic, exact while no product of two coordinate
+    /// differences under- or overflows (coordinates within the adaptive predicates' range).
+    fn compare_with_expansions(self, q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
         let mut terms = Vec::with_capacity(24);
         match self {
             Metric::Euclidean => {
@@ -79,7 +98,29 @@ impl Metric {
             .partial_cmp(&0.0)
             .unwrap_or(Ordering::Equal)
     }
+
+    /// [`Metric::compare`] in integers of any size: for points whose coordinates span more
+    /// binary orders of magnitude than expansion arithmetic holds without underflow.
+    fn compare_with_integers(self, q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> Ordering {
+        let [qx, qy, ax, ay, bx, by] = integers([q[0], q[1], a[0], a[1], b[0], b[1]]);
+        let distance = |x: &WideInteger, y: &WideInteger| {
+            let (dx, dy) = (qx.sub(x), qy.sub(y));
+            match self {
+                Metric::Euclidean => dx.mul(&dx).add(&dy.mul(&dy)),
+                Metric::Manhattan => dx.abs().add(&dy.abs()),
+                Metric::Chebyshev => {
+                    let (dx, dy) = (dx.abs(), dy.abs());
+                    if dx.sub(&dy).signum() >= 0 { dx } else { dy }
+                }
+            }
+        };
+        distance(&ax, &ay).sub(&distance(&bx, &by)).signum().cmp(&0)
+    }
 }
+
+/// Smallest sum of the two floating-point distances that the filter of [`Metric::compare`]
+/// decides: far enough above underflow that its absolute rounding errors do not count.
+const FILTER_FLOOR: f64 = 1.0e-270;
 
 /// Absolute value of the two-term expansion `h + l` (its sign is the sign of `h`).
 fn abs_expansion((h, l): (f64, f64)) -> (f64, f64) {

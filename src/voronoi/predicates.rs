@@ -5,6 +5,10 @@
 use robust::Coord;
 
 use super::spatial_sort::bounding_box;
+use crate::geom::exact_orientation::{
+    ExactOrientation, ExponentRange, Sign, binary_exponent, dyadic, integers, times_power_of_two,
+};
+use crate::geom::wide_integer::WideInteger;
 
 #[inline(always)]
 fn coord(p: [f64; 2]) -> Coord<f64> {
@@ -55,6 +59,9 @@ impl SetBounds {
                 incircle: -1.0,
             };
         }
+        if w < SMALLEST_BOUNDED_SIDE {
+            return Self::NONE;
+        }
         let w = w * (1.0 + 4.0 * f64::EPSILON);
         let rounding = 1.0 + 64.0 * f64::EPSILON;
         SetBounds {
@@ -83,7 +90,9 @@ pub(crate) fn orient2d_in(a: [f64; 2], b: [f64; 2], c: [f64; 2], set: &SetBounds
     let left = acx * bcy;
     let right = acy * bcx;
     let det = left - right;
-    if det.abs() > set.orient || det.abs() > ORIENT_BOUND * (left.abs() + right.abs()) {
+    if det.abs() > set.orient
+        || (det.abs() > ORIENT_BOUND * (left.abs() + right.abs()) && det.abs() > UNDERFLOW_GUARD)
+    {
         return det;
     }
     orient2d_slow(a, b, c, det)
@@ -91,10 +100,51 @@ pub(crate) fn orient2d_in(a: [f64; 2], b: [f64; 2], c: [f64; 2], set: &SetBounds
 
 #[cold]
 fn orient2d_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], det: f64) -> f64 {
-    if on_small_lattice([(a[0], c[0]), (a[1], c[1]), (b[0], c[0]), (b[1], c[1])], 25) {
+    if det.abs() > UNDERFLOW_GUARD
+        && on_small_lattice([(a[0], c[0]), (a[1], c[1]), (b[0], c[0]), (b[1], c[1])], 25)
+    {
         return det;
     }
-    robust::orient2d(coord(a), coord(b), coord(c))
+    let range = ExponentRange::of([a, b, c].iter().flat_map(|p| [p[0], p[1]]));
+    let sign = match ExactOrientation::for_range(range) {
+        (ExactOrientation::Adaptive, None) => {
+            return robust::orient2d(coord(a), coord(b), coord(c));
+        }
+        (ExactOrientation::Adaptive, Some(shift)) => {
+            let [a, b, c] = [a, b, c].map(|p| p.map(|x| times_power_of_two(x, shift)));
+            sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
+        }
+        (ExactOrientation::Wide, _) => match ExactOrientation::Wide.orient2d(a, b, c) {
+            Sign::Negative => -1.0,
+            Sign::Zero => 0.0,
+            Sign::Positive => 1.0,
+        },
+    };
+    with_exact_sign(det, sign)
+}
+
+/// -1, 0 or 1 as `x` is negative, zero or positive (`f64::signum` gives 1 for zero).
+fn sign_of(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+/// The floating-point determinant `approximate` when it has the exact `sign` (-1, 0 or 1),
+/// otherwise the smallest normal number of that sign: callers that weigh by the determinant get
+/// its size where it is meaningful, and every caller gets the exact sign.
+fn with_exact_sign(approximate: f64, sign: f64) -> f64 {
+    if sign == 0.0 {
+        0.0
+    } else if sign_of(approximate) == sign && approximate.is_finite() {
+        approximate
+    } else {
+        sign * f64::MIN_POSITIVE
+    }
 }
 
 /// In-circle test: for a counter-clockwise triangle `a, b, c`, positive when `d` lies strictly
@@ -130,7 +180,7 @@ pub(crate) fn incircle_in(
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
         + (cdxady.abs() + adxcdy.abs()) * blift
         + (adxbdy.abs() + bdxady.abs()) * clift;
-    if det.abs() > INCIRCLE_BOUND * permanent {
+    if det.abs() > INCIRCLE_BOUND * permanent && det.abs() > UNDERFLOW_GUARD {
         return det;
     }
     incircle_slow(a, b, c, d, det)
@@ -146,10 +196,53 @@ fn incircle_slow(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2], det: f64) -
         (c[0], d[0]),
         (c[1], d[1]),
     ];
-    if on_small_lattice(diffs, INCIRCLE_LATTICE_BITS) {
+    if det.abs() > UNDERFLOW_GUARD && on_small_lattice(diffs, INCIRCLE_LATTICE_BITS) {
         return det;
     }
-    robust::incircle(coord(a), coord(b), coord(c), coord(d))
+    let range = ExponentRange::of([a, b, c, d].iter().flat_map(|p| [p[0], p[1]]));
+    match ExactOrientation::for_range_within(range, INCIRCLE_EXPONENT_LIMIT) {
+        (ExactOrientation::Adaptive, None) => {
+            robust::incircle(coord(a), coord(b), coord(c), coord(d))
+        }
+        (ExactOrientation::Adaptive, Some(shift)) => {
+            let [a, b, c, d] = [a, b, c, d].map(|p| p.map(|x| times_power_of_two(x, shift)));
+            let sign = sign_of(robust::incircle(coord(a), coord(b), coord(c), coord(d)));
+            with_exact_sign(det, sign)
+        }
+        (ExactOrientation::Wide, _) => with_exact_sign(det, wide_incircle(a, b, c, d)),
+    }
+}
+
+/// Largest binary exponent (and negated smallest) of the nonzero coordinates that the adaptive
+/// in-circle test takes: every coordinate is then a multiple of `2^-172`, so its degree-four
+/// products (and the pieces the adaptive arithmetic splits them into) stay above `2^-700`, far
+/// from underflow, and below `2^500`, far from overflow.
+const INCIRCLE_EXPONENT_LIMIT: i32 = 120;
+
+/// Smallest side of a set's box for which [`SetBounds`] hold: the in-circle bound, of degree
+/// four in it, stays above [`UNDERFLOW_GUARD`].
+const SMALLEST_BOUNDED_SIDE: f64 = 1.0e-60;
+
+/// Smallest floating-point determinant whose sign the filters take as it is: its products'
+/// underflow errors (below `2^-1074` each) cannot flip it.
+const UNDERFLOW_GUARD: f64 = 1.0e-290;
+
+/// The in-circle determinant's sign (as -1, 0 or 1) in integers of any size, for points whose
+/// coordinates span more binary orders of magnitude than the adaptive test holds.
+fn wide_incircle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    let [ax, ay, bx, by, cx, cy, dx, dy] =
+        integers([a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]]);
+    let (adx, ady, bdx, bdy) = (ax.sub(&dx), ay.sub(&dy), bx.sub(&dx), by.sub(&dy));
+    let (cdx, cdy) = (cx.sub(&dx), cy.sub(&dy));
+    let lift = |x: &WideInteger, y: &WideInteger| x.mul(x).add(&y.mul(y));
+    let cross = |x1: &WideInteger, y1: &WideInteger, x2: &WideInteger, y2: &WideInteger| {
+        x1.mul(y2).sub(&x2.mul(y1))
+    };
+    let determinant = lift(&adx, &ady)
+        .mul(&cross(&bdx, &bdy, &cdx, &cdy))
+        .add(&lift(&bdx, &bdy).mul(&cross(&cdx, &cdy, &adx, &ady)))
+        .add(&lift(&cdx, &cdy).mul(&cross(&adx, &ady, &bdx, &bdy)));
+    f64::from(determinant.signum())
 }
 
 /// Lattice span (in units, as a power of two) that keeps the in-circle determinant exact.
@@ -268,6 +361,34 @@ pub(crate) fn normalising_scale_of_box([min, max]: [[f64; 2]; 2]) -> f64 {
     // Keep the scale itself representable; subnormal inputs are brought as close as possible.
     pow2((-exponent).clamp(f64::MIN_EXP - 1, f64::MAX_EXP - 1))
 }
+
+/// [`normalising_scale_of_box`] for `points` (whose box is `site_box`), raised where needed so
+/// that multiplying any of them by it is exact: no low bit of a tiny coordinate is lost below
+/// the smallest subnormal when the largest one is brought near 1. (The exact predicates take
+/// any finite coordinates; only the scaling itself could merge distinct sites.)
+pub(crate) fn exact_normalising_scale(points: &[[f64; 2]], site_box: [[f64; 2]; 2]) -> f64 {
+    let scale = normalising_scale_of_box(site_box);
+    if scale >= 1.0 {
+        return scale;
+    }
+    let Some(shift) = binary_exponent(scale) else {
+        return scale;
+    };
+    let lowest_bit = points
+        .iter()
+        .flatten()
+        .map(|&x| dyadic(x))
+        .filter(|&(_, mantissa, _)| mantissa != 0)
+        .map(|(_, _, exponent)| exponent)
+        .min();
+    match lowest_bit {
+        Some(lowest) if lowest + shift < SMALLEST_EXPONENT => pow2(SMALLEST_EXPONENT - lowest),
+        _ => scale,
+    }
+}
+
+/// Binary exponent of the smallest positive double (the lowest bit of a subnormal).
+const SMALLEST_EXPONENT: i32 = -1074;
 
 /// `2^e` for any exponent a finite f64 can represent (including subnormal results).
 pub fn pow2(e: i32) -> f64 {

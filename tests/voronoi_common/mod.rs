@@ -224,7 +224,8 @@ pub fn check_cells_hold_their_nearest_points(
     }
 }
 
-/// Bounding box of the points, widened by `margin` of its size.
+/// Bounding box of the points, widened by `margin` of its size, and by at least one ulp on
+/// every side (a margin rounds away beside coordinates far larger than the box).
 pub fn bounding_clip(points: &[[f64; 2]], margin: f64) -> ClipPolygon {
     if points.is_empty() {
         return ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).expect("unit square");
@@ -238,11 +239,9 @@ pub fn bounding_clip(points: &[[f64; 2]], margin: f64) -> ClipPolygon {
     }
     let size = (max[0] - min[0]).max(max[1] - min[1]);
     let size = if size > 0.0 { size } else { 1.0 };
-    ClipPolygon::rectangle(
-        [min[0] - margin * size, min[1] - margin * size],
-        [max[0] + margin * size, max[1] + margin * size],
-    )
-    .expect("non-degenerate box")
+    let min = min.map(|c| (c - margin * size).min(c.next_down()));
+    let max = max.map(|c| (c + margin * size).max(c.next_up()));
+    ClipPolygon::rectangle(min, max).unwrap_or_else(|e| panic!("box {min:?} to {max:?}: {e}"))
 }
 
 /// Deterministic uniform points in the unit square (the benchmarks' generator, from a scrambled
