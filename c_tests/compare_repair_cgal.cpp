@@ -1,4 +1,5 @@
-// The repairs against CGAL 5 Polygon Mesh Processing on every model of the test data (tests/data/meshes),
+// The repairs against CGAL 5 Polygon Mesh Processing on every model of the test data
+// (tests/data/meshes),
 // the same indexed face list fed to both (through hw::soup, so the C++ wrapper is exercised):
 // - merge_duplicate_points_in_polygon_soup: the same number of points left as
 //   hw::soup::merge_vertices() with tolerance 0, and the same polygons once CGAL's polygons with
