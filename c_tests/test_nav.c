@@ -211,7 +211,7 @@ static hw_mesh *read_model(const char *relative) {
 static void real_models(void) {
   /* closed, open with holes, polygonal (quads and larger), and a polygonal one with boundary */
   static const char *const closed[] = {"closed/pmp_fandisk.off", "closed/lapy_torus.off"};
-  static const char *const open[] = {"open/cgal_elephant-with-holes.off", "open/igl_face.obj"};
+  static const char *const open[] = {"open/cgal_elephant-with-holes.off", "open/igl_beetle.off"};
   static const char *const polygonal[] = {"polygonal/igl_horse_quad.obj",
                                           "polygonal/gc_dodecahedron_poly.obj",
                                           "polygonal/igl_cylinder.obj"};

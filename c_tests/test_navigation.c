@@ -388,7 +388,8 @@ static void bad_files(void) {
   hw_mesh *mesh = NULL;
   char path[1024];
   CHECK_STATUS(hw_soup_read(NULL, &soup), HW_ERR_NULL_ARGUMENT, "path");
-  CHECK_STATUS(hw_soup_read("/nonexistent/file.off", &soup), HW_ERR_IO, "I/O");
+  CHECK_STATUS(hw_soup_read("/nonexistent/file.off", &soup), HW_ERR_IO,
+               "cannot open '/nonexistent/file.off'");
   CHECK_STATUS(hw_soup_read("model.xyz", &soup), HW_ERR_INVALID_INPUT, "xyz");
   snprintf(path, sizeof path, "%s/meshes/broken/tobj_invalid_index.obj", HALFWING_DATA_DIR);
   CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_PARSE, "line 12");
