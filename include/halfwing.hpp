@@ -28,6 +28,7 @@ namespace hw {
 /// passed in usable, unlike the std::bad_alloc of the wrapper's own containers.
 class error : public std::runtime_error {
  public:
+  /// An error with its status and message.
   error(hw_status status, const std::string& message)
       : std::runtime_error(message), status_(status) {}
   /// The C status code (never HW_OK).
@@ -126,13 +127,17 @@ struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_
 template <class T>
 class values_view {
  public:
+  /// A view of `size` values at `data`.
   values_view(T* data, std::size_t size) noexcept : data_(data), size_(size) {}
+  ///@{
+  /// The standard container accessors over the viewed values (no bounds checks).
   T* begin() const noexcept { return data_; }
   T* end() const noexcept { return data_ + size_; }
   T& operator[](std::size_t i) const noexcept { return data_[i]; }
   T* data() const noexcept { return data_; }
   std::size_t size() const noexcept { return size_; }
   bool empty() const noexcept { return size_ == 0; }
+  ///@}
   /// Bytes, for glBufferData.
   std::size_t size_bytes() const noexcept { return size_ * sizeof(T); }
 
@@ -148,17 +153,25 @@ class values_view {
 template <class Circulator, class Id, bool (*Next)(Circulator*, Id*)>
 class circulation_of {
  public:
+  /// A range over the walk `start` begins.
   explicit circulation_of(const Circulator& start) : start_(start) {}
 
+  /// The range's input iterator: each increment is one step of the circulator.
   class iterator {
    public:
+    ///@{
+    /// The standard iterator types.
     using value_type = Id;
     using difference_type = std::ptrdiff_t;
     using iterator_category = std::input_iterator_tag;
     using pointer = const Id*;
     using reference = const Id&;
+    ///@}
     iterator() = default;
+    /// An iterator at the next element of circulator `c`.
     explicit iterator(const Circulator& c) : c_(c), live_(true) { ++*this; }
+    ///@{
+    /// The input iterator's operations; two iterators compare equal once both are past the end.
     const Id& operator*() const { return current_; }
     iterator& operator++() {
       live_ = live_ && Next(&c_, &current_);
@@ -167,6 +180,7 @@ class circulation_of {
     void operator++(int) { ++*this; }
     bool operator==(const iterator& other) const { return live_ == other.live_ && !live_; }
     bool operator!=(const iterator& other) const { return !(*this == other); }
+    ///@}
 
    private:
     Circulator c_{};
@@ -174,8 +188,11 @@ class circulation_of {
     bool live_ = false;
   };
 
+  ///@{
+  /// The range's ends, for range-for.
   iterator begin() const { return iterator(start_); }
   iterator end() const { return iterator(); }
+  ///@}
 
  private:
   Circulator start_;
@@ -205,10 +222,15 @@ class nav_view {
 
   /// The C view, for the `hw_nav_*` functions.
   const hw_nav& raw() const noexcept { return raw_; }
+  ///@{
+  /// Slots of each kind, deleted ones included: valid ids are below these.
   std::size_t n_vertex_slots() const noexcept { return raw_.n_vertex_slots; }
   std::size_t n_halfedge_slots() const noexcept { return raw_.n_halfedge_slots; }
   std::size_t n_face_slots() const noexcept { return raw_.n_face_slots; }
+  ///@}
 
+  ///@{
+  /// The step of the same name in halfwing_nav.h (hw_nav_origin(), hw_nav_vertex_halfedge(), hw_nav_vertex_is_deleted(), ...), over trusted ids.
   hw_vertex origin(hw_halfedge h) const noexcept { return hw_nav_origin(&raw_, h); }
   hw_vertex target(hw_halfedge h) const noexcept { return hw_nav_target(&raw_, h); }
   hw_halfedge twin(hw_halfedge h) const noexcept { return hw_nav_twin(&raw_, h); }
@@ -222,7 +244,10 @@ class nav_view {
   bool is_deleted(hw_vertex v) const noexcept { return hw_nav_vertex_is_deleted(&raw_, v); }
   bool is_deleted(hw_edge e) const noexcept { return hw_nav_edge_is_deleted(&raw_, e); }
   bool is_deleted(hw_face f) const noexcept { return hw_nav_face_is_deleted(&raw_, f); }
+  ///@}
 
+  ///@{
+  /// A range-for walk around a vertex (outgoing or incoming half-edges, vertices, edges, faces) or a face (its half-edges, vertices, edges, the faces across its edges), in the orders of halfwing_nav.h.
   halfedge_circulation outgoing(hw_vertex v) const noexcept { return halfedge_circulation(hw_nav_around_vertex(&raw_, v)); }
   incoming_circulation incoming(hw_vertex v) const noexcept { return incoming_circulation(hw_nav_around_vertex(&raw_, v)); }
   vertex_circulation vertices_around(hw_vertex v) const noexcept { return vertex_circulation(hw_nav_around_vertex(&raw_, v)); }
@@ -232,6 +257,7 @@ class nav_view {
   vertex_circulation vertices_of(hw_face f) const noexcept { return vertex_circulation(hw_nav_around_face(&raw_, f)); }
   edge_circulation edges_of(hw_face f) const noexcept { return edge_circulation(hw_nav_around_face(&raw_, f)); }
   face_circulation faces_across(hw_face f) const noexcept { return face_circulation(hw_nav_around_face(&raw_, f)); }
+  ///@}
   /// The loop through `h` by next: a face's sides or a boundary loop.
   halfedge_circulation loop(hw_halfedge h) const noexcept { return halfedge_circulation(hw_nav_along_loop(&raw_, h)); }
   /// The outgoing half-edges around the origin of `h`, counter-clockwise from `h`.
@@ -245,6 +271,7 @@ class nav_view {
 class diagnostic {
  public:
   diagnostic() = default;
+  /// Takes ownership of `raw`.
   explicit diagnostic(hw_diagnostic* raw) : raw_(raw) {}
 
   /// Analyses an indexed face list without building (see hw_diagnose_indexed()).
@@ -274,8 +301,11 @@ class diagnostic {
       return hw_diagnostic_summary(raw_.get(), buf, len, needed);
     });
   }
+  ///@{
+  /// The C object (still owned by this object), and whether there is one.
   hw_diagnostic* get() const noexcept { return raw_.get(); }
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+  ///@}
 
  private:
   detail::owned<hw_diagnostic, hw_diagnostic_free> raw_;
@@ -287,18 +317,25 @@ class doctor_report {
   /// One finding's elements: `n_items` items of `ids_per_item` ids each (see
   /// ::hw_doctor_finding), valid as long as the report.
   struct finding_view {
+    /// The ids, `n_items * ids_per_item` of them.
     const uint32_t* ids = nullptr;
+    /// The number of items.
     std::size_t n_items = 0;
+    /// Ids per item.
     std::size_t ids_per_item = 1;
   };
   /// A boundary loop: its vertices in order, its perimeter, a face along it.
   struct boundary_loop {
+    /// Its vertices in order.
     std::vector<uint32_t> vertices;
+    /// Its length.
     double perimeter = 0;
+    /// A face along it.
     uint32_t face = 0;
   };
 
   doctor_report() = default;
+  /// Takes ownership of `raw`.
   explicit doctor_report(hw_doctor_report* raw) : raw_(raw) {}
 
   /// Examines an indexed face list (see hw_doctor_examine_indexed()).
@@ -315,17 +352,20 @@ class doctor_report {
     return doctor_report(raw);
   }
 
+  /// The verdicts (see hw_doctor_report_verdict()).
   hw_doctor_verdict verdict() const {
     hw_doctor_verdict verdict{};
     check(hw_doctor_report_verdict(raw_.get(), &verdict));
     return verdict;
   }
+  /// One finding's elements (see hw_doctor_report_finding()).
   finding_view finding(hw_doctor_finding kind) const {
     finding_view view;
     check(hw_doctor_report_finding(raw_.get(), kind, &view.ids, &view.n_items,
                                    &view.ids_per_item));
     return view;
   }
+  /// Every connected component.
   std::vector<hw_doctor_component> components() const {
     std::size_t n = 0;
     check(hw_doctor_report_component_count(raw_.get(), &n));
@@ -334,6 +374,7 @@ class doctor_report {
       check(hw_doctor_report_component(raw_.get(), i, &components[i]));
     return components;
   }
+  /// Every boundary loop.
   std::vector<boundary_loop> boundary_loops() const {
     std::size_t n = 0;
     check(hw_doctor_report_boundary_loop_count(raw_.get(), &n));
@@ -349,18 +390,23 @@ class doctor_report {
   }
   /// The input's diagnostic, owned by the report.
   const hw_diagnostic* input_diagnostic() const { return hw_doctor_report_diagnostic(raw_.get()); }
+  /// The report as text.
   std::string text() const {
     return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
       return hw_doctor_report_text(raw_.get(), buf, len, needed);
     });
   }
+  /// The report as JSON.
   std::string json() const {
     return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
       return hw_doctor_report_json(raw_.get(), buf, len, needed);
     });
   }
+  ///@{
+  /// The C object (still owned by this object), and whether there is one.
   hw_doctor_report* get() const noexcept { return raw_.get(); }
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+  ///@}
 
  private:
   detail::owned<hw_doctor_report, hw_doctor_report_free> raw_;
@@ -390,6 +436,7 @@ inline std::vector<std::array<uint32_t, 2>> self_intersections(
 class repair_report {
  public:
   repair_report() = default;
+  /// Takes ownership of `raw`.
   explicit repair_report(hw_repair_report* raw) : raw_(raw) {}
 
   /// One list (pair lists hold 2 ids per pair; see ::hw_repair_list).
@@ -415,8 +462,11 @@ class repair_report {
     check(hw_repair_report_maps(raw_.get(), &maps, &n));
     return n;
   }
+  ///@{
+  /// The C object (still owned by this object), and whether there is one.
   hw_repair_report* get() const noexcept { return raw_.get(); }
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+  ///@}
 
  private:
   detail::owned<hw_repair_report, hw_repair_report_free> raw_;
@@ -445,18 +495,21 @@ class soup {
     return soup(raw);
   }
 
+  /// The positions, x y z per vertex.
   std::vector<double> positions() const {
     const double* xyz = nullptr;
     std::size_t n = 0;
     check(hw_soup_view(get(), &xyz, &n, nullptr, nullptr, nullptr, nullptr));
     return std::vector<double>(xyz, xyz + 3 * n);
   }
+  /// The number of corners of each face.
   std::vector<uint32_t> face_sizes() const {
     const uint32_t* sizes = nullptr;
     std::size_t n = 0;
     check(hw_soup_view(get(), nullptr, nullptr, &sizes, &n, nullptr, nullptr));
     return std::vector<uint32_t>(sizes, sizes + n);
   }
+  /// The corners' vertex indices, face after face.
   std::vector<uint32_t> indices() const {
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
@@ -487,6 +540,7 @@ class soup {
     });
   }
 
+  /// The C object, still owned by this face list.
   hw_soup* get() const noexcept { return raw_.get(); }
 
  private:
@@ -592,12 +646,17 @@ class mesh {
   /// Writes the mesh (format by extension); see hw_mesh_write().
   void write(const std::string& path) const { check(hw_mesh_write(get(), path.c_str())); }
 
+  ///@{
+  /// Element counts, deleted ones not counted.
   std::size_t n_vertices() const { return hw_mesh_n_vertices(get()); }
   std::size_t n_edges() const { return hw_mesh_n_edges(get()); }
   std::size_t n_halfedges() const { return hw_mesh_n_halfedges(get()); }
   std::size_t n_faces() const { return hw_mesh_n_faces(get()); }
+  ///@}
 
   // Navigation (invalid ids give HW_INVALID_INDEX, as in C).
+  ///@{
+  /// The checked navigation of the same name in C (hw_mesh_he_origin(), hw_mesh_vertex_halfedge(), hw_mesh_vertex_valence(), hw_mesh_vertex_position(), ...): an invalid or deleted id gives an invalid id, false or 0, as in C (position() throws hw::error).
   hw_vertex origin(hw_halfedge h) const { return hw_mesh_he_origin(get(), h); }
   hw_vertex target(hw_halfedge h) const { return hw_mesh_he_target(get(), h); }
   hw_halfedge twin(hw_halfedge h) const { return hw_mesh_he_twin(get(), h); }
@@ -618,6 +677,7 @@ class mesh {
     check(hw_mesh_vertex_position(get(), v, p.data()));
     return p;
   }
+  ///@}
 
   /// The inline navigation (see hw::nav_view), valid until the next call that modifies the
   /// mesh: the fastest walks, over trusted ids.
@@ -626,6 +686,8 @@ class mesh {
   // Circulation, in the orders documented in halfwing_nav.h (counter-clockwise from outside).
   // The id is checked once (hw::error for an invalid or deleted one); the steps are inline. A
   // range is valid until the next call that modifies the mesh.
+  ///@{
+  /// A range-for walk around a vertex (outgoing or incoming half-edges, vertices, edges, faces) or a face (its half-edges, vertices, edges, the faces across its edges), in the orders of halfwing_nav.h; the id is checked once (hw::error for an invalid or deleted one).
   halfedge_circulation outgoing(hw_vertex v) const { return checked_nav(v).outgoing(v); }
   incoming_circulation incoming(hw_vertex v) const { return checked_nav(v).incoming(v); }
   vertex_circulation vertices_around(hw_vertex v) const { return checked_nav(v).vertices_around(v); }
@@ -635,6 +697,7 @@ class mesh {
   vertex_circulation vertices_of(hw_face f) const { return checked_nav(f).vertices_of(f); }
   edge_circulation edges_of(hw_face f) const { return checked_nav(f).edges_of(f); }
   face_circulation faces_across(hw_face f) const { return checked_nav(f).faces_across(f); }
+  ///@}
   /// The loop through `h` by next: a face's sides or a boundary loop.
   halfedge_circulation loop(hw_halfedge h) const {
     hw_circulator c;
@@ -656,7 +719,9 @@ class mesh {
   }
 
   // Topology.
+  /// Throws hw::error naming the first broken invariant (see hw_mesh_check()).
   void check_invariants() const { check(hw_mesh_check(get())); }
+  /// One half-edge of every boundary loop (see hw_mesh_boundary_loops()).
   std::vector<hw_halfedge> boundary_loops() const {
     std::size_t n = 0;
     hw_mesh_boundary_loops(get(), nullptr, 0, &n);
@@ -664,6 +729,7 @@ class mesh {
     check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
     return loops;
   }
+  /// The number of connected components.
   std::size_t n_components() const {
     std::size_t n = 0;
     check(hw_mesh_n_components(get(), &n));
@@ -671,16 +737,19 @@ class mesh {
   }
 
   // Normals, x y z per element slot.
+  /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
     std::vector<double> out(3 * slots(HW_ELEMENT_FACE));
     check(hw_mesh_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
+  /// Vertex normals with this weighting, x y z per vertex slot.
   std::vector<double> vertex_normals(hw_normal_weighting weighting = HW_WEIGHT_UNIFORM) const {
     std::vector<double> out(3 * slots(HW_ELEMENT_VERTEX));
     check(hw_mesh_vertex_normals(get(), weighting, out.data(), out.size() / 3, nullptr));
     return out;
   }
+  /// Normals per corner (x y z per half-edge slot), split at edges sharper than `crease_angle` radians (see hw_mesh_corner_normals()).
   std::vector<double> corner_normals(double crease_angle) const {
     std::vector<double> out(3 * slots(HW_ELEMENT_HALFEDGE));
     check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
@@ -688,25 +757,31 @@ class mesh {
   }
 
   // Editing; a refused operation throws hw::error (HW_ERR_REFUSED) and changes nothing.
+  /// Adds an isolated vertex at `p`.
   hw_vertex add_vertex(const std::array<double, 3>& p) {
     hw_vertex v;
     check(hw_mesh_add_vertex(get(), p.data(), &v));
     return v;
   }
+  /// Flips edge `e` (see hw_mesh_flip_edge()).
   void flip(hw_edge e) { check(hw_mesh_flip_edge(get(), e)); }
+  /// Splits edge `e` at `p`; returns the new vertex.
   hw_vertex split(hw_edge e, const std::array<double, 3>& p) {
     hw_vertex v;
     check(hw_mesh_split_edge(get(), e, p.data(), &v));
     return v;
   }
+  /// Collapses half-edge `h`: its origin merges into its target, which is returned (see hw_mesh_collapse_halfedge()).
   hw_vertex collapse(hw_halfedge h) {
     hw_vertex v;
     check(hw_mesh_collapse_halfedge(get(), h, &v));
     return v;
   }
+  /// Deletes face `f`, and the vertices it leaves isolated unless told not to.
   void remove(hw_face f, bool delete_isolated_vertices = true) {
     check(hw_mesh_delete_face(get(), f, delete_isolated_vertices));
   }
+  /// Removes deleted elements for good, renumbering the live ones in their order.
   void garbage_collect() { check(hw_mesh_garbage_collect(get(), nullptr)); }
   /// Glues coincident boundary edges (see hw_mesh_stitch_borders()); the mesh is compacted,
   /// the report's maps giving the new ids.
@@ -809,6 +884,7 @@ class mesh {
 
   /// The C object, for calls the wrapper does not cover. Still owned by this mesh.
   hw_mesh* get() const noexcept { return raw_.get(); }
+  /// Whether this object owns a mesh (false once moved from).
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
 
  private:
@@ -842,9 +918,13 @@ class mesh {
 /// structure unchanged when they refuse.
 class winged {
  public:
+  ///@{
+  /// A range-for walk (of edges, vertices or faces) around a face or a vertex.
   using edge_range = circulation_of<hw_wcirculator, hw_wedge, hw_wcirc_next_edge>;
   using vertex_range = circulation_of<hw_wcirculator, hw_wvertex, hw_wcirc_next_vertex>;
   using face_range = circulation_of<hw_wcirculator, hw_wface, hw_wcirc_next_face>;
+  ///@}
+  /// A position, x y z.
   using point = std::array<double, 3>;
 
   /// An empty structure, to build with the Euler operators (mvfs() first).
@@ -877,12 +957,18 @@ class winged {
     return hw::mesh(raw);
   }
 
+  ///@{
+  /// Element counts, deleted ones not counted.
   std::size_t n_vertices() const { return hw_winged_n_vertices(get()); }
   std::size_t n_edges() const { return hw_winged_n_edges(get()); }
   std::size_t n_faces() const { return hw_winged_n_faces(get()); }
+  ///@}
+  ///@{
+  /// Slots of each kind, deleted ones included: valid ids are below these.
   std::size_t vertex_capacity() const { return hw_winged_vertex_capacity(get()); }
   std::size_t edge_capacity() const { return hw_winged_edge_capacity(get()); }
   std::size_t face_capacity() const { return hw_winged_face_capacity(get()); }
+  ///@}
 
   /// The record of edge `e`: vertices, faces and the four wings.
   hw_wedge_record edge(hw_wedge e) const {
@@ -890,9 +976,12 @@ class winged {
     check(hw_winged_edge(get(), e, &record));
     return record;
   }
+  ///@{
+  /// Whether the id names a live element.
   bool is_vertex(hw_wvertex v) const { return hw_winged_is_vertex(get(), v); }
   bool is_edge(hw_wedge e) const { return hw_winged_is_edge(get(), e); }
   bool is_face(hw_wface f) const { return hw_winged_is_face(get(), f); }
+  ///@}
 
   /// The edge `v` stores (where its ring starts); invalid for an isolated vertex. Throws for a
   /// vertex that does not exist.
@@ -907,8 +996,11 @@ class winged {
     return hw_winged_face_edge(get(), f);
   }
 
+  /// The position of vertex `v`.
   point position(hw_wvertex v) const { return triple(hw_winged_position, v); }
+  /// The unit normal of face `f`.
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
+  /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
   point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
 
   /// The edges of `f`'s loop, counter-clockwise from its stored edge.
@@ -946,9 +1038,13 @@ class winged {
     check(hw_winged_mef(get(), f, v1, v2, &made.first, &made.second));
     return made;
   }
+  /// Euler operator KEV: kills edge `e` and vertex `v` (see hw_winged_kev()).
   void kev(hw_wedge e, hw_wvertex v) { check(hw_winged_kev(get(), e, v)); }
+  /// Euler operator KEF: kills edge `e` and face `kill` (see hw_winged_kef()).
   void kef(hw_wedge e, hw_wface kill) { check(hw_winged_kef(get(), e, kill)); }
+  /// Euler operator KVFS: kills the last vertex, face `f` and the shell (see hw_winged_kvfs()).
   void kvfs(hw_wface f) { check(hw_winged_kvfs(get(), f)); }
+  /// Removes deleted elements for good, renumbering the live ones in their order.
   void garbage_collect() { check(hw_winged_garbage_collect(get(), nullptr)); }
 
   /// Throws hw::error naming the first broken invariant, if any.
@@ -964,6 +1060,7 @@ class winged {
 
   /// The C object, for calls the wrapper does not cover. Still owned by this structure.
   hw_winged* get() const noexcept { return raw_.get(); }
+  /// Whether this object owns a structure (false once moved from).
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
 
  private:
@@ -1076,11 +1173,17 @@ class voronoi {
     raw_ = detail::owned<hw_voronoi, hw_voronoi_free>(raw);
   }
 
+  /// The number of sites given, duplicates included.
   std::size_t n_sites() const { return hw_voronoi_n_sites(get()); }
+  /// The number of distinct sites (duplicates merged).
   std::size_t n_unique_sites() const { return hw_voronoi_n_unique_sites(get()); }
+  /// The number of Delaunay triangles.
   std::size_t n_triangles() const { return hw_voronoi_n_triangles(get()); }
+  /// The number of Voronoi vertices.
   std::size_t n_vertices() const { return hw_voronoi_n_vertices(get()); }
+  /// The number of Voronoi half-edges.
   std::size_t n_halfedges() const { return hw_voronoi_n_halfedges(get()); }
+  /// The dimension the sites span (see ::hw_site_dimension).
   hw_site_dimension dimension() const { return hw_voronoi_dimension(get()); }
 
   /// One index array of the diagram; see hw_voronoi_view() and ::hw_voronoi_array.
@@ -1200,8 +1303,11 @@ class voronoi {
 
 /// The outcome of hw::lloyd().
 struct lloyd_result {
+  /// The relaxed sites.
   std::vector<point2> sites;
+  /// The steps taken.
   uint32_t iterations = 0;
+  /// How far the sites moved in the last step (the largest distance).
   double max_displacement = 0;
 };
 
@@ -1279,6 +1385,7 @@ class render_buffers {
     check(hw_render_buffers_indices(get(), which, &data, &n));
     return values_view<const uint32_t>(data, n);
   }
+  /// The number of vertices in the buffers.
   std::size_t n_vertices() const { return hw_render_buffers_n_vertices(get()); }
   /// Floats per interleaved vertex (0 for separate arrays).
   std::size_t stride() const { return hw_render_buffers_stride(get()); }
@@ -1288,6 +1395,7 @@ class render_buffers {
     check(hw_render_buffers_bounds(get(), lo.data(), hi.data()));
     return {lo, hi};
   }
+  /// The C object, still owned by these buffers.
   hw_render_buffers* get() const noexcept { return raw_.get(); }
 
  private:
@@ -1300,6 +1408,7 @@ class render_buffers {
 /// hw::error.
 namespace surface {
 
+/// A position, x y z.
 using point = std::array<double, 3>;
 
 namespace detail {
@@ -1315,21 +1424,26 @@ inline const double* flat(const std::vector<point>& points) {
 }
 }  // namespace detail
 
+/// The regular tetrahedron (see hw_surface_tetrahedron()).
 inline mesh tetrahedron() {
   return detail::generate([&](hw_mesh** out) { return hw_surface_tetrahedron(out); });
 }
+/// An axis-aligned cube centred at the origin, `side` long (see hw_surface_cube()).
 inline mesh cube(double side = 1.0) {
   return detail::generate([&](hw_mesh** out) { return hw_surface_cube(side, out); });
 }
+/// An icosphere of `radius` after `level` subdivisions (see hw_surface_icosphere()).
 inline mesh icosphere(double radius, uint32_t level) {
   return detail::generate([&](hw_mesh** out) { return hw_surface_icosphere(radius, level, out); });
 }
+/// A closed torus about the z axis (see hw_surface_torus()).
 inline mesh torus(double major_radius, double minor_radius, uint32_t major_steps,
                   uint32_t minor_steps, hw_cell_faces faces = HW_CELLS_QUADS) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, faces, out);
   });
 }
+/// A flat grid in the plane z = 0 (see hw_surface_grid()).
 inline mesh grid(double width, double height, uint32_t cells_x, uint32_t cells_y,
                  hw_cell_faces faces = HW_CELLS_QUADS) {
   return detail::generate([&](hw_mesh** out) {

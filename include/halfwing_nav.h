@@ -68,6 +68,10 @@
 
 #include "halfwing.h"
 
+/** @addtogroup nav
+ * @{
+ */
+
 /** The vertex half-edge `h` leaves. */
 static inline hw_vertex hw_nav_origin(const hw_nav *nav, hw_halfedge h) {
   hw_vertex v;
@@ -159,10 +163,13 @@ static inline bool hw_nav_face_is_deleted(const hw_nav *nav, hw_face f) {
 typedef struct hw_nav_circ {
   /** `prev` around a vertex (then twinned), `next` around a face or along a loop. */
   const uint32_t *step;
+  /** The mesh's origin of each half-edge (::hw_nav's `origin`). */
   const uint32_t *origin;
+  /** The mesh's face of each half-edge (::hw_nav's `face`). */
   const uint32_t *face;
   /** 1 around a vertex (its half-edges leave the centre), 0 around a face or loop. */
   uint32_t flip;
+  /** The half-edge the walk started at; reaching it again ends the walk. */
   uint32_t start;
   /** The half-edge yielded next, or the invalid id once the walk is over. */
   uint32_t current;
@@ -248,5 +255,7 @@ static inline bool hw_nav_circ_next_face(hw_nav_circ *c, hw_face *out) {
   }
   return false;
 }
+
+/** @} */
 
 #endif /* HALFWING_NAV_H */

@@ -2,14 +2,15 @@
 # Makes sure what the demo or the tests need is installed (Debian 12 with a Rust toolchain).
 # As root it installs what is missing; otherwise it prints the exact command and stops.
 #   scripts/setup.sh demo   cmake, a C/C++ compiler, GLFW, OpenGL headers, Xvfb and Mesa (the viewer)
-#   scripts/setup.sh test   also CGAL, OpenMesh, libpng (screenshot checks), pkg-config and cbindgen
+#   scripts/setup.sh test   also CGAL, OpenMesh, libpng (screenshot checks), pkg-config, doxygen
+#                           (the API reference) and cbindgen
 set -euo pipefail
 
 what=${1:-test}
 cbindgen_version="0.29.4"
 packages=(cmake pkg-config g++ make libglfw3-dev libgl-dev xvfb xauth libgl1-mesa-dri)
 if [ "$what" = "test" ]; then
-  packages+=(libcgal-dev libopenmesh-dev libpng-dev)
+  packages+=(libcgal-dev libopenmesh-dev libpng-dev doxygen)
 fi
 
 missing=()

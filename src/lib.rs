@@ -18,6 +18,11 @@ pub mod winged;
 
 pub mod ffi;
 
+// The README's Rust examples run as doctests (its C, C++ and shell blocks are tagged, so not run).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeExamples;
+
 mod allocation;
 mod counted;
 mod cycles;

@@ -4,9 +4,11 @@
 //! The findings come in groups, one file each: the input's own diagnostic (malformed faces,
 //! non-finite coordinates, non-manifold and inconsistently oriented edges, non-manifold,
 //! unreferenced vertices, zero-area faces; see [`Diagnostic`]), the surface's components with
-//! their topology and orientation ([`components`]), its boundary loops and the fans of its
-//! non-manifold vertices ([`boundary`]), degenerate shapes ([`shape`]) and duplicates
-//! ([`duplicates`]). The report is printable as text and as JSON ([`text`]).
+//! their topology and orientation ([`Component`]), its boundary loops and the fans of its
+//! non-manifold vertices ([`BoundaryLoop`], [`VertexFans`]), degenerate shapes ([`FoldedEdge`]
+//! and the needles, caps and long edges of [`DoctorReport`]) and duplicates ([`TVertex`] and the
+//! duplicate vertices and faces). The report is printable as text (its `Display`) and as JSON
+//! ([`DoctorReport::to_json`]).
 //!
 //! Every index is an input index: faces of the face list, vertices of its positions. Faces that
 //! are malformed (fewer than 3 corners, an out-of-range index, a repeated vertex) are listed in
@@ -131,7 +133,8 @@ pub struct DoctorReport {
     /// Pairs `[v, first]`: vertex `v` is at exactly the position of the lower vertex `first`.
     pub duplicate_positions: Vec<[u32; 2]>,
     /// Pairs `[v, first]`: vertex `v` is within the tolerance of the lower vertex `first`, but
-    /// not at its position (see [`duplicates`] for how vertices are grouped).
+    /// not at its position. Vertices are grouped greedily in index order, as a merge would: one
+    /// within the tolerance of a group's first vertex joins that group, else it starts one.
     pub near_duplicate_vertices: Vec<[u32; 2]>,
     /// Pairs `[f, first]`: face `f` has the vertex set of the lower face `first` (in either
     /// orientation).

@@ -24,14 +24,19 @@ use super::mesh::{hw_mesh, mesh_ref};
 use super::status::*;
 
 /// The numeric type of an attribute column.
+/// \ingroup attributes
 pub type hw_scalar_type = u32;
 /// `double`.
+/// \ingroup attributes
 pub const HW_SCALAR_F64: hw_scalar_type = 0;
 /// `float`.
+/// \ingroup attributes
 pub const HW_SCALAR_F32: hw_scalar_type = 1;
 /// `int32_t`.
+/// \ingroup attributes
 pub const HW_SCALAR_I32: hw_scalar_type = 2;
 /// `uint32_t`.
+/// \ingroup attributes
 pub const HW_SCALAR_U32: hw_scalar_type = 3;
 
 fn scalar_type(raw: hw_scalar_type) -> Result<ScalarType, FfiError> {
@@ -121,6 +126,7 @@ fn column_memory_mut(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_add(
     mesh: *mut hw_mesh,
@@ -142,6 +148,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_add(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_remove(
     mesh: *mut hw_mesh,
@@ -161,6 +168,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_remove(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; outputs NULL or writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_info(
     mesh: *const hw_mesh,
@@ -194,6 +202,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_info(
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; `out_data`, `out_len`
 /// writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_view(
     mesh: *const hw_mesh,
@@ -218,6 +227,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_view(
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
 /// `out_data`, `out_len` writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_data(
     mesh: *mut hw_mesh,
@@ -240,6 +250,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_data(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_count(
     mesh: *const hw_mesh,
@@ -265,6 +276,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_count(
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
 /// writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_name(
     mesh: *const hw_mesh,
@@ -351,6 +363,7 @@ unsafe fn corner_set<const N: usize>(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_corner_normals_view(
     mesh: *const hw_mesh,
@@ -377,6 +390,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_view(
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`
 /// doubles.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_corner_normals_set(
     mesh: *mut hw_mesh,
@@ -393,6 +407,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_set(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_corner_uvs_view(
     mesh: *const hw_mesh,
@@ -418,6 +433,7 @@ pub unsafe extern "C" fn hw_mesh_corner_uvs_view(
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `uv` NULL or `2 * n_halfedges`
 /// doubles.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_corner_uvs_set(
     mesh: *mut hw_mesh,

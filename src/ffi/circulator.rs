@@ -21,16 +21,22 @@ use super::mesh::{hw_mesh, mesh_ref};
 use super::status::hw_status;
 
 /// What a circulator yields.
+/// \ingroup navigation
 pub type hw_circulator_kind = u32;
 /// Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
+/// \ingroup navigation
 pub const HW_CIRC_HALFEDGES: hw_circulator_kind = 0;
 /// Around a vertex only: the incoming half-edges (twins of the outgoing ones).
+/// \ingroup navigation
 pub const HW_CIRC_INCOMING: hw_circulator_kind = 1;
 /// Vertices: a vertex's neighbours, a face's corners.
+/// \ingroup navigation
 pub const HW_CIRC_VERTICES: hw_circulator_kind = 2;
 /// Edges: at a vertex, or the sides of a face.
+/// \ingroup navigation
 pub const HW_CIRC_EDGES: hw_circulator_kind = 3;
 /// Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
+/// \ingroup navigation
 pub const HW_CIRC_FACES: hw_circulator_kind = 4;
 
 /// What a walk circles.
@@ -44,14 +50,21 @@ enum Center {
 /// A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
 /// hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
 /// kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
+/// \ingroup navigation
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_circulator {
+    /// The mesh walked.
     pub mesh: *const hw_mesh,
+    /// The half-edge the walk started at; reaching it again ends the walk.
     pub start: u32,
+    /// The half-edge the walk yields next, or `HW_INVALID_INDEX` once it is over.
     pub current: u32,
+    /// Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
     pub remaining: u32,
+    /// What it walks around: a vertex, a face or a boundary loop (internal code).
     pub center: u32,
+    /// What it yields.
     pub kind: hw_circulator_kind,
 }
 
@@ -105,6 +118,7 @@ unsafe fn begin(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_around_vertex(
     mesh: *const hw_mesh,
@@ -124,6 +138,7 @@ pub unsafe extern "C" fn hw_circ_around_vertex(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_around_face(
     mesh: *const hw_mesh,
@@ -144,6 +159,7 @@ pub unsafe extern "C" fn hw_circ_around_face(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_along_loop(
     mesh: *const hw_mesh,
@@ -232,6 +248,7 @@ unsafe fn next_into<T>(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_halfedge(
     circulator: *mut hw_circulator,
@@ -248,6 +265,7 @@ pub unsafe extern "C" fn hw_circ_next_halfedge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_vertex(
     circulator: *mut hw_circulator,
@@ -264,6 +282,7 @@ pub unsafe extern "C" fn hw_circ_next_vertex(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_edge(
     circulator: *mut hw_circulator,
@@ -276,6 +295,7 @@ pub unsafe extern "C" fn hw_circ_next_edge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_face(
     circulator: *mut hw_circulator,

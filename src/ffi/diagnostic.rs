@@ -19,6 +19,7 @@ use super::status::*;
 /// indices refer to the input face list, vertex indices to the input positions. Faces with fewer
 /// than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
 /// the edge, fan and area findings. Every list is sorted ascending.
+/// \ingroup mesh
 pub struct hw_diagnostic {
     pub(crate) diagnostic: Diagnostic,
 }
@@ -72,39 +73,53 @@ pub(crate) unsafe fn give_built<T: 'static>(
 }
 
 /// One list of element ids in a diagnostic (see hw_diagnostic_ids()).
+/// \ingroup mesh
 pub type hw_diagnostic_list = u32;
 /// Faces with fewer than 3 corners.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 0;
 /// Faces with a vertex index beyond the positions.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 1;
 /// Faces naming one vertex more than once.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 2;
 /// Vertices with a NaN or infinite coordinate.
+/// \ingroup mesh
 pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 3;
 /// Vertices whose faces form more than one fan, faces being in one fan when they share an edge
 /// at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
 /// ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
+/// \ingroup mesh
 pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 4;
 /// Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
 /// face, but not listed here).
+/// \ingroup mesh
 pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 5;
 /// Faces with zero area.
+/// \ingroup mesh
 pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 6;
 /// Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
 /// `i`-th input face not listed here.
+/// \ingroup mesh
 pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 7;
 /// Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
 /// copies input vertex `ids[i]` (same position).
+/// \ingroup mesh
 pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 8;
 /// Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
 /// neighbours, or to turn a closed component outward).
+/// \ingroup mesh
 pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 9;
 
 /// One list of edges in a diagnostic (see hw_diagnostic_edge()).
+/// \ingroup mesh
 pub type hw_diagnostic_edges = u32;
 /// Edges used by three or more faces.
+/// \ingroup mesh
 pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 0;
 /// Edges whose two faces traverse them in the same direction.
+/// \ingroup mesh
 pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 1;
 
 fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], FfiError> {
@@ -147,6 +162,7 @@ fn edge_list(
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed().
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnose_indexed(
     positions: *const f64,
@@ -177,6 +193,7 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
     // SAFETY: forwarded from the caller.
@@ -187,6 +204,7 @@ pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic) -> bool {
     // SAFETY: forwarded from the caller.
@@ -202,6 +220,7 @@ pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_ids(
     diagnostic: *const hw_diagnostic,
@@ -221,6 +240,7 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_count` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge_count(
     diagnostic: *const hw_diagnostic,
@@ -247,6 +267,7 @@ pub unsafe extern "C" fn hw_diagnostic_edge_count(
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
 /// `out_faces` and `out_n_faces` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge(
     diagnostic: *const hw_diagnostic,
@@ -289,6 +310,7 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
 /// # Safety
 /// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
 /// writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_summary(
     diagnostic: *const hw_diagnostic,

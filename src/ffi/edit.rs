@@ -42,6 +42,7 @@ unsafe fn edit(
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
 /// writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_add_vertex(
     mesh: *mut hw_mesh,
@@ -69,6 +70,7 @@ pub unsafe extern "C" fn hw_mesh_add_vertex(
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `vertices` NULL (when `n` is 0) or
 /// `n` ids; `out_face` writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_add_face(
     mesh: *mut hw_mesh,
@@ -95,6 +97,7 @@ pub unsafe extern "C" fn hw_mesh_add_face(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_delete_face(
     mesh: *mut hw_mesh,
@@ -112,6 +115,7 @@ pub unsafe extern "C" fn hw_mesh_delete_face(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_delete_edge(
     mesh: *mut hw_mesh,
@@ -129,6 +133,7 @@ pub unsafe extern "C" fn hw_mesh_delete_edge(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_delete_vertex(mesh: *mut hw_mesh, v: hw_vertex) -> hw_status {
     unsafe { edit(mesh, |mesh| Ok(mesh.delete_vertex(v.into())?)) }
@@ -139,6 +144,7 @@ pub unsafe extern "C" fn hw_mesh_delete_vertex(mesh: *mut hw_mesh, v: hw_vertex)
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_flip_edge(mesh: *mut hw_mesh, e: hw_edge) -> hw_status {
     unsafe { edit(mesh, |mesh| Ok(mesh.flip_edge(e.into())?)) }
@@ -150,6 +156,7 @@ pub unsafe extern "C" fn hw_mesh_flip_edge(mesh: *mut hw_mesh, e: hw_edge) -> hw
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
 /// writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_split_edge(
     mesh: *mut hw_mesh,
@@ -174,6 +181,7 @@ pub unsafe extern "C" fn hw_mesh_split_edge(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_split_face(
     mesh: *mut hw_mesh,
@@ -197,6 +205,7 @@ pub unsafe extern "C" fn hw_mesh_split_face(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_collapse_halfedge(
     mesh: *mut hw_mesh,
@@ -221,6 +230,7 @@ pub unsafe extern "C" fn hw_mesh_collapse_halfedge(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_triangulate_face(
     mesh: *mut hw_mesh,
@@ -240,6 +250,7 @@ pub unsafe extern "C" fn hw_mesh_triangulate_face(
 
 /// The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
 /// hw_index_maps_view(), release with hw_index_maps_free().
+/// \ingroup edit
 pub struct hw_index_maps {
     pub(crate) maps: IndexMaps,
 }
@@ -249,6 +260,7 @@ pub struct hw_index_maps {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_maps` NULL or writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_garbage_collect(
     mesh: *mut hw_mesh,
@@ -271,6 +283,7 @@ pub unsafe extern "C" fn hw_mesh_garbage_collect(
 ///
 /// # Safety
 /// `maps` must be NULL or live; `out_map` and `out_len` writable.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_index_maps_view(
     maps: *const hw_index_maps,
@@ -300,6 +313,7 @@ pub unsafe extern "C" fn hw_index_maps_view(
 ///
 /// # Safety
 /// `maps` must be NULL or maps from this library, not in use by another thread.
+/// \ingroup edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_index_maps_free(maps: *mut hw_index_maps) {
     // SAFETY: forwarded from the caller.

@@ -7,45 +7,59 @@ use super::error::FfiError;
 use super::status::HW_ERR_INVALID_HANDLE;
 
 /// The raw value of "no element": an id whose `idx` is this is invalid.
+/// \ingroup ids
 pub const HW_INVALID_INDEX: u32 = u32::MAX;
 
 /// A vertex id.
+/// \ingroup ids
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_vertex {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
+/// \ingroup ids
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_halfedge {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
+/// \ingroup ids
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_edge {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// A face id.
+/// \ingroup ids
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_face {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// An element kind, to pick one of several per-kind arrays.
+/// \ingroup ids
 pub type hw_element_kind = u32;
 /// Vertices.
+/// \ingroup ids
 pub const HW_ELEMENT_VERTEX: hw_element_kind = 0;
 /// Half-edges.
+/// \ingroup ids
 pub const HW_ELEMENT_HALFEDGE: hw_element_kind = 1;
 /// Edges.
+/// \ingroup ids
 pub const HW_ELEMENT_EDGE: hw_element_kind = 2;
 /// Faces.
+/// \ingroup ids
 pub const HW_ELEMENT_FACE: hw_element_kind = 3;
 
 /// The Rust element kind of a C one.

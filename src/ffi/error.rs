@@ -7,6 +7,7 @@ use super::boundary::{copy_text, drop_payload};
 use super::status::*;
 
 /// A failure inside an exported function: the status to return and the message to record.
+/// \ingroup errors
 #[derive(Debug, Clone)]
 pub struct FfiError {
     pub status: hw_status,
@@ -50,6 +51,7 @@ impl From<crate::OutOfMemory> for FfiError {
 /// first few and count the rest, so a message reaches this size only when it quotes a very long
 /// string of the caller's (an attribute name, a path); it is then cut, and ends with
 /// `… (cut)`.
+/// \ingroup errors
 pub const HW_MAX_MESSAGE_SIZE: usize = 8192;
 
 /// What ends a message cut to [`HW_MAX_MESSAGE_SIZE`].
@@ -114,6 +116,7 @@ pub(crate) fn record(error: FfiError) -> hw_status {
 /// # Safety
 /// `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or point to a
 /// writable `size_t`.
+/// \ingroup errors
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_last_error_message(
     buf: *mut c_char,

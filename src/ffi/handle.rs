@@ -22,6 +22,7 @@ use super::error::FfiError;
 /// How many of the most recently freed objects keep their address out of reuse: a second
 /// `_free` of an object is refused as long as fewer objects than this were freed since its first.
 /// Each keeps a few hundred bytes (its large arrays are released at once): 2 MB at most in all.
+/// \ingroup mesh
 pub const HW_FREED_ADDRESSES_KEPT: usize = 4096;
 
 /// A handle's registry key: its scrambled address and its type.

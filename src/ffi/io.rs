@@ -19,6 +19,7 @@ use super::threads::with_threads;
 /// An indexed face list read from a file, exactly as the file numbers its vertices (nothing
 /// welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
 /// release with hw_soup_free().
+/// \ingroup io
 pub struct hw_soup {
     pub(crate) soup: PolygonSoup,
 }
@@ -66,6 +67,7 @@ pub(crate) unsafe fn path_arg(path: *const c_char) -> Result<PathBuf, FfiError> 
 ///
 /// # Safety
 /// `path` must be NULL or NUL-terminated; `out_soup` writable.
+/// \ingroup io
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_read(
     path: *const c_char,
@@ -88,6 +90,7 @@ pub unsafe extern "C" fn hw_soup_read(
 ///
 /// # Safety
 /// `soup` must be NULL or live; each output NULL or writable.
+/// \ingroup io
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_view(
     soup: *const hw_soup,
@@ -133,6 +136,7 @@ pub unsafe extern "C" fn hw_soup_view(
 ///
 /// # Safety
 /// `soup` must be NULL or a soup from this library, not in use by another thread.
+/// \ingroup io
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_free(soup: *mut hw_soup) {
     // SAFETY: forwarded from the caller.
@@ -148,6 +152,7 @@ pub unsafe extern "C" fn hw_soup_free(soup: *mut hw_soup) {
 ///
 /// # Safety
 /// `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
+/// \ingroup io
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_read(
     path: *const c_char,
@@ -171,6 +176,7 @@ pub unsafe extern "C" fn hw_mesh_read(
 ///
 /// # Safety
 /// `mesh` must be NULL or live; `path` NULL or NUL-terminated.
+/// \ingroup io
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_write(mesh: *const hw_mesh, path: *const c_char) -> hw_status {
     guard(|| {

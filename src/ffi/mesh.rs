@@ -14,21 +14,25 @@ use super::threads::with_threads;
 
 /// A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
 /// release it with hw_mesh_free().
+/// \ingroup mesh
 pub struct hw_mesh {
     pub(crate) mesh: Mesh,
 }
 
 /// What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
+/// \ingroup mesh
 #[allow(non_camel_case_types)]
 pub type hw_build_policy = u32;
 /// Build the input exactly as it is, or refuse it whole: `HW_ERR_INVALID_INPUT` for a malformed
 /// face or a NaN/infinite coordinate, `HW_ERR_NON_MANIFOLD` for a non-manifold or inconsistently
 /// oriented edge or a non-manifold vertex. The message names the offending faces, edges and
 /// vertices.
+/// \ingroup mesh
 pub const HW_BUILD_STRICT: hw_build_policy = 0;
 /// Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
 /// faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
 /// direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
+/// \ingroup mesh
 pub const HW_BUILD_SKIP: hw_build_policy = 1;
 /// Keep every face that can be kept, and make it fit: collapse repeated corners, reverse faces so
 /// neighbours agree (::HW_DIAG_REORIENTED_FACES), cut the surface along edges still non-manifold
@@ -36,6 +40,7 @@ pub const HW_BUILD_SKIP: hw_build_policy = 1;
 /// closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
 /// an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
 /// (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
+/// \ingroup mesh
 pub const HW_BUILD_REPAIR: hw_build_policy = 2;
 
 pub(crate) fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
@@ -70,6 +75,7 @@ pub(crate) unsafe fn mesh_ref<'a>(mesh: *const hw_mesh) -> Result<&'a Mesh, FfiE
 }
 
 /// Creates an empty mesh. Returns NULL only if the allocation fails.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
     guard_value(std::ptr::null_mut(), || {
@@ -104,6 +110,7 @@ pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
 /// # Safety
 /// Array arguments must point to at least as many elements as their counts say (they may be NULL
 /// when the count is 0); `out_mesh` must be writable; `out_diagnostic` NULL or writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_from_indexed(
     positions: *const f64,
@@ -134,6 +141,7 @@ pub unsafe extern "C" fn hw_mesh_from_indexed(
 ///
 /// # Safety
 /// `mesh` must be NULL or a mesh from this library not in use by another thread.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_free(mesh: *mut hw_mesh) {
     // SAFETY: forwarded from the caller.
@@ -169,6 +177,7 @@ unsafe fn count(mesh: *const hw_mesh, of: impl FnOnce(&Mesh) -> usize) -> usize 
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_vertices(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_vertices) }
@@ -178,6 +187,7 @@ pub unsafe extern "C" fn hw_mesh_n_vertices(mesh: *const hw_mesh) -> usize {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_faces(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_faces) }
@@ -187,6 +197,7 @@ pub unsafe extern "C" fn hw_mesh_n_faces(mesh: *const hw_mesh) -> usize {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_edges(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_edges) }
@@ -196,6 +207,7 @@ pub unsafe extern "C" fn hw_mesh_n_edges(mesh: *const hw_mesh) -> usize {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_halfedges) }
@@ -207,6 +219,7 @@ pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_slot_count(mesh: *const hw_mesh, kind: hw_element_kind) -> usize {
     unsafe { query(mesh, 0, |mesh| Ok(mesh.capacity_of(element_kind(kind)?))) }

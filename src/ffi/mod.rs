@@ -6,6 +6,9 @@
 //! - outputs (`out_*`) are written only when the call returns `HW_OK`;
 //! - objects are created by `_new`/`_build`/`_from_*` and released by `_free`; `_free(NULL)` is a
 //!   no-op and freeing twice is refused while the freed address is held back (see `handle.rs`).
+//!
+//! Each exported item's documentation ends with `\ingroup <topic>`: the topic of the C reference
+//! (Doxygen, `scripts/docs.sh`) that lists it. The topics are defined in `cbindgen.toml`.
 
 #![allow(non_camel_case_types)]
 

@@ -15,6 +15,7 @@ use super::status::hw_status;
 /// halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
 /// indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
 /// `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
+/// \ingroup nav
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_nav {
@@ -68,6 +69,7 @@ impl hw_nav {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` NULL or writable.
+/// \ingroup nav
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_nav(mesh: *const hw_mesh, out: *mut hw_nav) -> hw_status {
     guard(|| {

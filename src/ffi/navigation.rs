@@ -17,6 +17,7 @@ use super::mesh::{hw_mesh, query};
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_origin(mesh: *const hw_mesh, h: hw_halfedge) -> hw_vertex {
     unsafe {
@@ -30,6 +31,7 @@ pub unsafe extern "C" fn hw_mesh_he_origin(mesh: *const hw_mesh, h: hw_halfedge)
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_target(mesh: *const hw_mesh, h: hw_halfedge) -> hw_vertex {
     unsafe {
@@ -43,6 +45,7 @@ pub unsafe extern "C" fn hw_mesh_he_target(mesh: *const hw_mesh, h: hw_halfedge)
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_twin(mesh: *const hw_mesh, h: hw_halfedge) -> hw_halfedge {
     unsafe {
@@ -57,6 +60,7 @@ pub unsafe extern "C" fn hw_mesh_he_twin(mesh: *const hw_mesh, h: hw_halfedge) -
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_next(mesh: *const hw_mesh, h: hw_halfedge) -> hw_halfedge {
     unsafe {
@@ -70,6 +74,7 @@ pub unsafe extern "C" fn hw_mesh_he_next(mesh: *const hw_mesh, h: hw_halfedge) -
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_prev(mesh: *const hw_mesh, h: hw_halfedge) -> hw_halfedge {
     unsafe {
@@ -83,6 +88,7 @@ pub unsafe extern "C" fn hw_mesh_he_prev(mesh: *const hw_mesh, h: hw_halfedge) -
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_face(mesh: *const hw_mesh, h: hw_halfedge) -> hw_face {
     unsafe { query(mesh, hw_face::INVALID, |m| Ok(m.try_face(h.into())?.into())) }
@@ -92,6 +98,7 @@ pub unsafe extern "C" fn hw_mesh_he_face(mesh: *const hw_mesh, h: hw_halfedge) -
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_edge(mesh: *const hw_mesh, h: hw_halfedge) -> hw_edge {
     unsafe { query(mesh, hw_edge::INVALID, |m| Ok(m.try_edge(h.into())?.into())) }
@@ -101,6 +108,7 @@ pub unsafe extern "C" fn hw_mesh_he_edge(mesh: *const hw_mesh, h: hw_halfedge) -
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_edge_halfedge(
     mesh: *const hw_mesh,
@@ -124,6 +132,7 @@ pub unsafe extern "C" fn hw_mesh_edge_halfedge(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_halfedge(
     mesh: *const hw_mesh,
@@ -140,6 +149,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_halfedge(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_halfedge(mesh: *const hw_mesh, f: hw_face) -> hw_halfedge {
     unsafe {
@@ -153,6 +163,7 @@ pub unsafe extern "C" fn hw_mesh_face_halfedge(mesh: *const hw_mesh, f: hw_face)
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_he_is_boundary(mesh: *const hw_mesh, h: hw_halfedge) -> bool {
     unsafe { query(mesh, false, |m| Ok(m.try_is_boundary_halfedge(h.into())?)) }
@@ -162,6 +173,7 @@ pub unsafe extern "C" fn hw_mesh_he_is_boundary(mesh: *const hw_mesh, h: hw_half
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_edge_is_boundary(mesh: *const hw_mesh, e: hw_edge) -> bool {
     unsafe { query(mesh, false, |m| Ok(m.try_is_boundary_edge(e.into())?)) }
@@ -171,6 +183,7 @@ pub unsafe extern "C" fn hw_mesh_edge_is_boundary(mesh: *const hw_mesh, e: hw_ed
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_is_boundary(mesh: *const hw_mesh, v: hw_vertex) -> bool {
     unsafe { query(mesh, false, |m| Ok(m.try_is_boundary_vertex(v.into())?)) }
@@ -180,6 +193,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_is_boundary(mesh: *const hw_mesh, v: hw_
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_is_boundary(mesh: *const hw_mesh, f: hw_face) -> bool {
     unsafe { query(mesh, false, |m| Ok(m.try_is_boundary_face(f.into())?)) }
@@ -189,6 +203,7 @@ pub unsafe extern "C" fn hw_mesh_face_is_boundary(mesh: *const hw_mesh, f: hw_fa
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_valence(mesh: *const hw_mesh, v: hw_vertex) -> u32 {
     unsafe { query(mesh, 0, |m| Ok(m.try_valence(v.into())? as u32)) }
@@ -198,6 +213,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_valence(mesh: *const hw_mesh, v: hw_vert
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_degree(mesh: *const hw_mesh, f: hw_face) -> u32 {
     unsafe { query(mesh, 0, |m| Ok(m.try_face_degree(f.into())? as u32)) }

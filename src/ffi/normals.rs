@@ -14,12 +14,16 @@ use super::status::*;
 use super::threads::with_threads;
 
 /// How a vertex normal weighs the faces around it.
+/// \ingroup normals
 pub type hw_normal_weighting = u32;
 /// Unit face normals summed: OpenMesh's default, the textbook average.
+/// \ingroup normals
 pub const HW_WEIGHT_UNIFORM: hw_normal_weighting = 0;
 /// Face normals weighted by face area.
+/// \ingroup normals
 pub const HW_WEIGHT_AREA: hw_normal_weighting = 1;
 /// Unit face normals weighted by the face's angle at the vertex: pmp's default.
+/// \ingroup normals
 pub const HW_WEIGHT_ANGLE: hw_normal_weighting = 2;
 
 pub(crate) fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
@@ -54,6 +58,7 @@ unsafe fn normal_buffer<'a>(
 /// # Safety
 /// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
 /// NULL or writable.
+/// \ingroup normals
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_normals(
     mesh: *const hw_mesh,
@@ -85,6 +90,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
 /// # Safety
 /// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
 /// NULL or writable.
+/// \ingroup normals
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_normals(
     mesh: *const hw_mesh,
@@ -122,6 +128,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
 /// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
 /// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
 /// `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
+/// \ingroup normals
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hw_mesh_normals(
@@ -173,6 +180,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
 /// # Safety
 /// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
 /// NULL or writable.
+/// \ingroup normals
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_corner_normals(
     mesh: *const hw_mesh,

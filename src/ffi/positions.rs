@@ -9,6 +9,7 @@ use super::status::hw_status;
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_xyz` must hold 3 writable doubles.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_position(
     mesh: *const hw_mesh,
@@ -29,6 +30,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_position(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh used by no other thread; `xyz` must hold 3 doubles.
+/// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_set_vertex_position(
     mesh: *mut hw_mesh,

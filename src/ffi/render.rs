@@ -21,13 +21,17 @@ use super::threads::with_threads;
 use super::voronoi_cells::{cells_ref, hw_voronoi_cells};
 
 /// Where the normals of hw_render_buffers_build() come from.
+/// \ingroup render
 pub type hw_shading = u32;
 /// Face normals: faceted; every vertex is split per face.
+/// \ingroup render
 pub const HW_SHADING_FLAT: hw_shading = 0;
 /// Vertex normals with the options' weighting: one render vertex per mesh vertex.
+/// \ingroup render
 pub const HW_SHADING_SMOOTH: hw_shading = 1;
 /// Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
 /// split along those edges only.
+/// \ingroup render
 pub const HW_SHADING_CREASE: hw_shading = 2;
 /// The default: the options' `corner_normals`, else the mesh's own corner normals (a file's `vn`,
 /// hw_mesh_corner_normals_set()) when `mesh_corner_normals` is true, scaled to unit length. A
@@ -35,9 +39,11 @@ pub const HW_SHADING_CREASE: hw_shading = 2;
 /// corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
 /// options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
 /// those normals and compute every normal from the positions.
+/// \ingroup render
 pub const HW_SHADING_CORNER_NORMALS: hw_shading = 3;
 
 /// How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
+/// \ingroup render
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_render_options {
@@ -78,6 +84,7 @@ pub struct hw_render_options {
 /// them, smooth angle-weighted normals elsewhere), a crease angle of 30°, separate arrays,
 /// glyphs as long as the mean edge; the mesh's own corner uvs when it has them, no other
 /// per-corner attributes.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_render_options_default() -> hw_render_options {
     hw_render_options {
@@ -104,6 +111,7 @@ enum Contents {
 /// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
 /// hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
 /// views stay valid until it is freed, also after the mesh it came from changes or is freed.
+/// \ingroup render
 pub struct hw_render_buffers {
     contents: Contents,
 }
@@ -119,42 +127,60 @@ impl From<RenderError> for FfiError {
 
 /// The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
 /// floats.
+/// \ingroup render
 pub type hw_render_floats = u32;
 /// x y z per vertex (separate layout; empty when interleaved).
+/// \ingroup render
 pub const HW_RENDER_POSITIONS: hw_render_floats = 0;
 /// Unit nx ny nz per vertex (separate layout; empty when interleaved).
+/// \ingroup render
 pub const HW_RENDER_NORMALS: hw_render_floats = 1;
 /// u v per vertex (separate layout with corner uvs; empty otherwise).
+/// \ingroup render
 pub const HW_RENDER_UVS: hw_render_floats = 2;
 /// hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
+/// \ingroup render
 pub const HW_RENDER_INTERLEAVED: hw_render_floats = 3;
 /// `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
+/// \ingroup render
 pub const HW_RENDER_WIREFRAME: hw_render_floats = 4;
 /// `GL_LINES` points of the boundary edges (edges with a face on one side only).
+/// \ingroup render
 pub const HW_RENDER_BOUNDARY: hw_render_floats = 5;
 /// `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
+/// \ingroup render
 pub const HW_RENDER_NON_MANIFOLD: hw_render_floats = 6;
 /// `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
+/// \ingroup render
 pub const HW_RENDER_VERTEX_NORMALS: hw_render_floats = 7;
 /// `GL_LINES` glyphs of the face normals, from each face's centroid.
+/// \ingroup render
 pub const HW_RENDER_FACE_NORMALS: hw_render_floats = 8;
 /// `GL_POINTS` points, x y z: the vertices a doctor's finding names
 /// (hw_render_buffers_from_finding(); empty otherwise).
+/// \ingroup render
 pub const HW_RENDER_POINTS: hw_render_floats = 9;
 
 /// The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
+/// \ingroup render
 pub type hw_render_indices = u32;
 /// Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
+/// \ingroup render
 pub const HW_RENDER_TRIANGLES: hw_render_indices = 0;
 /// Per triangle, the mesh face (or polygon) it comes from.
+/// \ingroup render
 pub const HW_RENDER_TRIANGLE_FACES: hw_render_indices = 1;
 /// Per vertex, the mesh vertex (or polygon) it shows.
+/// \ingroup render
 pub const HW_RENDER_VERTEX_SOURCES: hw_render_indices = 2;
 /// Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+/// \ingroup render
 pub const HW_RENDER_WIREFRAME_SOURCES: hw_render_indices = 3;
 /// Per ::HW_RENDER_BOUNDARY segment, its edge id.
+/// \ingroup render
 pub const HW_RENDER_BOUNDARY_SOURCES: hw_render_indices = 4;
 /// Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+/// \ingroup render
 pub const HW_RENDER_POINT_SOURCES: hw_render_indices = 5;
 
 fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], FfiError> {
@@ -254,6 +280,7 @@ fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
 /// # Safety
 /// `mesh` must be NULL or live; `diagnostic` NULL or live; `options` NULL or readable, with its
 /// corner arrays NULL or as long as it says; `out_buffers` writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_build(
     mesh: *const hw_mesh,
@@ -348,6 +375,7 @@ unsafe fn corner_array<'a, const N: usize>(
 /// # Safety
 /// `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either
 /// may be NULL when its count is 0); `out_buffers` writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_from_polygons(
     corners: *const f64,
@@ -397,6 +425,7 @@ pub unsafe extern "C" fn hw_render_buffers_from_polygons(
 ///
 /// # Safety
 /// `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
     cells: *const hw_voronoi_cells,
@@ -439,6 +468,7 @@ pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
 /// # Safety
 /// `report` must be NULL or live; the arrays as for hw_mesh_from_indexed(); `out_buffers`
 /// writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_from_finding(
     report: *const hw_doctor_report,
@@ -478,6 +508,7 @@ pub unsafe extern "C" fn hw_render_buffers_from_finding(
 ///
 /// # Safety
 /// `buffers` must be NULL or from this library, not in use by another thread.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_free(buffers: *mut hw_render_buffers) {
     // SAFETY: forwarded from the caller.
@@ -498,6 +529,7 @@ unsafe fn contents_ref<'a>(buffers: *const hw_render_buffers) -> Result<&'a Cont
 ///
 /// # Safety
 /// `buffers` must be NULL or live; `out_data` and `out_len` writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_floats(
     buffers: *const hw_render_buffers,
@@ -518,6 +550,7 @@ pub unsafe extern "C" fn hw_render_buffers_floats(
 ///
 /// # Safety
 /// `buffers` must be NULL or live; `out_data` and `out_len` writable.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_indices(
     buffers: *const hw_render_buffers,
@@ -537,6 +570,7 @@ pub unsafe extern "C" fn hw_render_buffers_indices(
 ///
 /// # Safety
 /// `buffers` must be NULL or live.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_n_vertices(buffers: *const hw_render_buffers) -> usize {
     // SAFETY: forwarded from the caller.
@@ -555,6 +589,7 @@ pub unsafe extern "C" fn hw_render_buffers_n_vertices(buffers: *const hw_render_
 ///
 /// # Safety
 /// `buffers` must be NULL or live.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_stride(buffers: *const hw_render_buffers) -> usize {
     // SAFETY: forwarded from the caller.
@@ -574,6 +609,7 @@ pub unsafe extern "C" fn hw_render_buffers_stride(buffers: *const hw_render_buff
 ///
 /// # Safety
 /// `buffers` must be NULL or live; `out_min` and `out_max` must each point to 3 writable floats.
+/// \ingroup render
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_render_buffers_bounds(
     buffers: *const hw_render_buffers,

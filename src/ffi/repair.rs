@@ -20,29 +20,39 @@ use super::status::*;
 /// What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
 /// read with hw_repair_report_list() and hw_repair_report_maps(), release with
 /// hw_repair_report_free(). Ids are those of the input.
+/// \ingroup repair
 pub struct hw_repair_report {
     report: RepairReport,
     maps: hw_index_maps,
 }
 
 /// One list of a repair report, for hw_repair_report_list().
+/// \ingroup repair
 pub type hw_repair_list = u32;
 /// Pairs `removed, kept` (2 values each) of vertices merged into another.
+/// \ingroup repair
 pub const HW_REPAIR_MERGED_VERTICES: hw_repair_list = 0;
 /// Vertices removed (merged ones included).
+/// \ingroup repair
 pub const HW_REPAIR_REMOVED_VERTICES: hw_repair_list = 1;
 /// Faces removed.
+/// \ingroup repair
 pub const HW_REPAIR_REMOVED_FACES: hw_repair_list = 2;
 /// Pairs `removed, kept` (2 values each) of duplicate faces.
+/// \ingroup repair
 pub const HW_REPAIR_DUPLICATE_FACES: hw_repair_list = 3;
 /// Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
+/// \ingroup repair
 pub const HW_REPAIR_STITCHED_HALFEDGES: hw_repair_list = 4;
 
 /// Which components hw_soup_remove_small_components() removes.
+/// \ingroup repair
 pub type hw_small_components = u32;
 /// Components of at most `value` faces.
+/// \ingroup repair
 pub const HW_SMALL_BY_FACE_COUNT: hw_small_components = 0;
 /// Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
+/// \ingroup repair
 pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
 
 impl From<RepairError> for FfiError {
@@ -94,6 +104,7 @@ fn give_report(out: Option<Out<*mut hw_repair_report>>, mut report: RepairReport
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed(); `out_soup` writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_from_indexed(
     positions: *const f64,
@@ -141,6 +152,7 @@ pub unsafe extern "C" fn hw_soup_from_indexed(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_merge_vertices(
     soup: *mut hw_soup,
@@ -163,6 +175,7 @@ pub unsafe extern "C" fn hw_soup_merge_vertices(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_remove_duplicate_faces(
     soup: *mut hw_soup,
@@ -177,6 +190,7 @@ pub unsafe extern "C" fn hw_soup_remove_duplicate_faces(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_remove_unreferenced_vertices(
     soup: *mut hw_soup,
@@ -198,6 +212,7 @@ pub unsafe extern "C" fn hw_soup_remove_unreferenced_vertices(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_remove_small_components(
     soup: *mut hw_soup,
@@ -237,6 +252,7 @@ pub unsafe extern "C" fn hw_soup_remove_small_components(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_stitch_borders(
     mesh: *mut hw_mesh,
@@ -259,6 +275,7 @@ pub unsafe extern "C" fn hw_mesh_stitch_borders(
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_ids` and `out_len` writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_report_list(
     report: *const hw_repair_report,
@@ -291,6 +308,7 @@ pub unsafe extern "C" fn hw_repair_report_list(
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_maps` writable; `out_removed_corners` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_report_maps(
     report: *const hw_repair_report,
@@ -317,6 +335,7 @@ pub unsafe extern "C" fn hw_repair_report_maps(
 ///
 /// # Safety
 /// `report` must be NULL or a report from this library, not in use by another thread.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_report_free(report: *mut hw_repair_report) {
     // SAFETY: forwarded from the caller.

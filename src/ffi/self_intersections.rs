@@ -12,6 +12,7 @@ use super::threads::with_threads;
 
 /// Pairs of faces. Opaque; from hw_self_intersections_indexed(); read with hw_face_pairs_view();
 /// release with hw_face_pairs_free().
+/// \ingroup doctor
 pub struct hw_face_pairs {
     pairs: Vec<[u32; 2]>,
 }
@@ -34,6 +35,7 @@ pub struct hw_face_pairs {
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed(); `out_pairs` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_self_intersections_indexed(
     positions: *const f64,
@@ -65,6 +67,7 @@ pub unsafe extern "C" fn hw_self_intersections_indexed(
 ///
 /// # Safety
 /// `pairs` must be NULL or live; `out_ids` and `out_n_pairs` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_face_pairs_view(
     pairs: *const hw_face_pairs,
@@ -89,6 +92,7 @@ pub unsafe extern "C" fn hw_face_pairs_view(
 ///
 /// # Safety
 /// `pairs` must be NULL or from this library, not in use by another thread.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_face_pairs_free(pairs: *mut hw_face_pairs) {
     // SAFETY: forwarded from the caller.

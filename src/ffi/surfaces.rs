@@ -18,19 +18,26 @@ use super::mesh::hw_mesh;
 use super::status::*;
 
 /// How the cells of a parametric surface become faces.
+/// \ingroup surfaces
 pub type hw_cell_faces = u32;
 /// One quadrilateral per cell (a triangle where a pole collapses a side).
+/// \ingroup surfaces
 pub const HW_CELLS_QUADS: hw_cell_faces = 0;
 /// Two triangles per cell.
+/// \ingroup surfaces
 pub const HW_CELLS_TRIANGLES: hw_cell_faces = 1;
 
 /// How hw_surface_revolution() closes the profile's ends that are off the axis.
+/// \ingroup surfaces
 pub type hw_caps = u32;
 /// Leave them open.
+/// \ingroup surfaces
 pub const HW_CAPS_NONE: hw_caps = 0;
 /// One planar polygon per end.
+/// \ingroup surfaces
 pub const HW_CAPS_POLYGON: hw_caps = 1;
 /// A fan of triangles from a new vertex on the axis.
+/// \ingroup surfaces
 pub const HW_CAPS_FAN: hw_caps = 2;
 
 impl From<SurfaceError> for FfiError {
@@ -103,6 +110,7 @@ unsafe fn give_mesh(
 ///
 /// # Safety
 /// `out_mesh` must be writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_tetrahedron(out_mesh: *mut *mut hw_mesh) -> hw_status {
     guard(|| {
@@ -116,6 +124,7 @@ pub unsafe extern "C" fn hw_surface_tetrahedron(out_mesh: *mut *mut hw_mesh) -> 
 ///
 /// # Safety
 /// `out_mesh` must be writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_cube(side: f64, out_mesh: *mut *mut hw_mesh) -> hw_status {
     guard(|| {
@@ -130,6 +139,7 @@ pub unsafe extern "C" fn hw_surface_cube(side: f64, out_mesh: *mut *mut hw_mesh)
 ///
 /// # Safety
 /// `out_mesh` must be writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_icosphere(
     radius: f64,
@@ -148,6 +158,7 @@ pub unsafe extern "C" fn hw_surface_icosphere(
 ///
 /// # Safety
 /// `out_mesh` must be writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_torus(
     major_radius: f64,
@@ -176,6 +187,7 @@ pub unsafe extern "C" fn hw_surface_torus(
 ///
 /// # Safety
 /// `out_mesh` must be writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_grid(
     width: f64,
@@ -205,6 +217,7 @@ pub unsafe extern "C" fn hw_surface_grid(
 ///
 /// # Safety
 /// `profile` must hold `3 * n_points` doubles; `direction` 3 doubles; `out_mesh` writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_sweep(
     profile: *const f64,
@@ -245,6 +258,7 @@ pub unsafe extern "C" fn hw_surface_sweep(
 /// # Safety
 /// `profile` must hold `3 * n_points` doubles; `axis_origin` and `axis_direction` 3 doubles
 /// each; `out_mesh` writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_revolution(
     profile: *const f64,
@@ -293,6 +307,7 @@ pub unsafe extern "C" fn hw_surface_revolution(
 ///
 /// # Safety
 /// `first` and `second` must hold `3 * n_points` doubles each; `out_mesh` writable.
+/// \ingroup surfaces
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_surface_ruled(
     first: *const f64,

@@ -63,6 +63,7 @@ pub(crate) use pool::with_threads;
 /// targets, so it limits no real use; it stops a mistaken value (`(size_t)-1`, a byte count)
 /// from trying to start that many threads, each with its own stack, and rayon from silently
 /// capping it.
+/// \ingroup errors
 pub const HW_MAX_THREAD_COUNT: usize = 1024;
 
 /// Sets how many threads bulk construction and normal computation use from now on, for every
@@ -70,6 +71,7 @@ pub const HW_MAX_THREAD_COUNT: usize = 1024;
 /// A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
 /// setting. In a build without the `parallel` feature everything is single-threaded and a valid
 /// count changes nothing.
+/// \ingroup errors
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_set_thread_count(count: usize) -> hw_status {
     guard(|| {

@@ -13,6 +13,7 @@ use super::status::*;
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
+/// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_check(mesh: *const hw_mesh) -> hw_status {
     guard(|| {
@@ -27,6 +28,7 @@ pub unsafe extern "C" fn hw_mesh_check(mesh: *const hw_mesh) -> hw_status {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
+/// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_boundary_loops(
     mesh: *const hw_mesh,
@@ -49,6 +51,7 @@ pub unsafe extern "C" fn hw_mesh_n_boundary_loops(
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_halfedges` NULL or `capacity` writable elements;
 /// `needed` NULL or writable.
+/// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_boundary_loops(
     mesh: *const hw_mesh,
@@ -73,6 +76,7 @@ pub unsafe extern "C" fn hw_mesh_boundary_loops(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
+/// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_n_components(
     mesh: *const hw_mesh,
@@ -95,6 +99,7 @@ pub unsafe extern "C" fn hw_mesh_n_components(
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_components` NULL or `capacity` writable elements;
 /// `needed` NULL or writable.
+/// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_components(
     mesh: *const hw_mesh,

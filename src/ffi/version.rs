@@ -3,17 +3,22 @@
 use std::ffi::c_char;
 
 /// Major version: incompatible API changes.
+/// \ingroup errors
 pub const HW_VERSION_MAJOR: u32 = 0;
 /// Minor version: added functionality.
+/// \ingroup errors
 pub const HW_VERSION_MINOR: u32 = 1;
 /// Patch version: bug fixes.
+/// \ingroup errors
 pub const HW_VERSION_PATCH: u32 = 0;
 /// `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if HW_VERSION_NUMBER >= ...` checks.
+/// \ingroup errors
 pub const HW_VERSION_NUMBER: u32 =
     HW_VERSION_MAJOR * 10000 + HW_VERSION_MINOR * 100 + HW_VERSION_PATCH;
 
 /// The version number of the library actually linked, in the form of `HW_VERSION_NUMBER`.
 /// Compare with `HW_VERSION_NUMBER` to detect a header/library mismatch.
+/// \ingroup errors
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_version_number() -> u32 {
     HW_VERSION_NUMBER
@@ -21,6 +26,7 @@ pub extern "C" fn hw_version_number() -> u32 {
 
 /// The version of the library actually linked, as a static NUL-terminated string such as
 /// `"0.1.0"`. Never NULL; must not be freed.
+/// \ingroup errors
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_version_string() -> *const c_char {
     concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()

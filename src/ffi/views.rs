@@ -17,18 +17,25 @@ use super::mesh::{hw_mesh, mesh_ref};
 use super::status::hw_status;
 
 /// Which internal array hw_mesh_view() shows.
+/// \ingroup navigation
 pub type hw_mesh_array = u32;
 /// Per half-edge: the vertex it leaves.
+/// \ingroup navigation
 pub const HW_ARRAY_HALFEDGE_ORIGIN: hw_mesh_array = 0;
 /// Per half-edge: the next half-edge around its face or boundary loop.
+/// \ingroup navigation
 pub const HW_ARRAY_HALFEDGE_NEXT: hw_mesh_array = 1;
 /// Per half-edge: the previous half-edge around its face or boundary loop.
+/// \ingroup navigation
 pub const HW_ARRAY_HALFEDGE_PREV: hw_mesh_array = 2;
 /// Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+/// \ingroup navigation
 pub const HW_ARRAY_HALFEDGE_FACE: hw_mesh_array = 3;
 /// Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
+/// \ingroup navigation
 pub const HW_ARRAY_VERTEX_HALFEDGE: hw_mesh_array = 4;
 /// Per face: one of its half-edges.
+/// \ingroup navigation
 pub const HW_ARRAY_FACE_HALFEDGE: hw_mesh_array = 5;
 
 fn array(mesh: &Mesh, which: hw_mesh_array) -> Result<&[u32], FfiError> {
@@ -52,6 +59,7 @@ fn array(mesh: &Mesh, which: hw_mesh_array) -> Result<&[u32], FfiError> {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_data` and `out_len` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_view(
     mesh: *const hw_mesh,
@@ -72,6 +80,7 @@ pub unsafe extern "C" fn hw_mesh_view(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_vertices` writable.
+/// \ingroup navigation
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_view_positions(
     mesh: *const hw_mesh,

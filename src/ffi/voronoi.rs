@@ -25,6 +25,7 @@ use super::threads::with_threads;
 /// index of its group (::HW_VORONOI_REPRESENTATIVE); the other copies have no cell, no incident
 /// Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs (`twin = h ^ 1`);
 /// half-edge `h` bounds the cell of `site[h]` (on its left) and separates it from `site[h ^ 1]`.
+/// \ingroup voronoi
 pub struct hw_voronoi {
     pub(crate) voronoi: Voronoi,
 }
@@ -98,6 +99,7 @@ pub(crate) fn checked_site(voronoi: &Voronoi, site: u32) -> Result<u32, FfiError
 /// # Safety
 /// `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_voronoi`
 /// writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_build(
     xy: *const f64,
@@ -121,6 +123,7 @@ pub unsafe extern "C" fn hw_voronoi_build(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a diagram from this library not in use by another thread.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_free(voronoi: *mut hw_voronoi) {
     // SAFETY: forwarded from the caller.
@@ -140,6 +143,7 @@ unsafe fn count(voronoi: *const hw_voronoi, of: impl FnOnce(&Voronoi) -> usize) 
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_n_sites(voronoi: *const hw_voronoi) -> usize {
     unsafe { count(voronoi, |v| v.delaunay().n_sites()) }
@@ -149,6 +153,7 @@ pub unsafe extern "C" fn hw_voronoi_n_sites(voronoi: *const hw_voronoi) -> usize
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_n_unique_sites(voronoi: *const hw_voronoi) -> usize {
     unsafe { count(voronoi, |v| v.delaunay().n_unique_sites()) }
@@ -158,6 +163,7 @@ pub unsafe extern "C" fn hw_voronoi_n_unique_sites(voronoi: *const hw_voronoi) -
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_n_triangles(voronoi: *const hw_voronoi) -> usize {
     unsafe { count(voronoi, |v| v.delaunay().n_triangles()) }
@@ -167,6 +173,7 @@ pub unsafe extern "C" fn hw_voronoi_n_triangles(voronoi: *const hw_voronoi) -> u
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_n_vertices(voronoi: *const hw_voronoi) -> usize {
     unsafe { count(voronoi, Voronoi::n_vertices) }
@@ -176,27 +183,34 @@ pub unsafe extern "C" fn hw_voronoi_n_vertices(voronoi: *const hw_voronoi) -> us
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_n_halfedges(voronoi: *const hw_voronoi) -> usize {
     unsafe { count(voronoi, Voronoi::n_halfedges) }
 }
 
 /// The dimension of the site set, as hw_voronoi_dimension() reports it.
+/// \ingroup voronoi
 pub type hw_site_dimension = u32;
 /// No sites.
+/// \ingroup voronoi
 pub const HW_VORONOI_EMPTY: hw_site_dimension = 0;
 /// One distinct site (possibly repeated): one cell, the whole plane.
+/// \ingroup voronoi
 pub const HW_VORONOI_POINT: hw_site_dimension = 1;
 /// Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
 /// bisectors, and the hull lists the sites in order along their line.
+/// \ingroup voronoi
 pub const HW_VORONOI_LINE: hw_site_dimension = 2;
 /// The sites span the plane: at least one triangle.
+/// \ingroup voronoi
 pub const HW_VORONOI_PLANE: hw_site_dimension = 3;
 
 /// The dimension of the site set (::HW_VORONOI_EMPTY for a NULL diagram, with the error recorded).
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_dimension(voronoi: *const hw_voronoi) -> hw_site_dimension {
     // SAFETY: forwarded from the caller.
@@ -213,32 +227,44 @@ pub unsafe extern "C" fn hw_voronoi_dimension(voronoi: *const hw_voronoi) -> hw_
 }
 
 /// Which index array hw_voronoi_view() shows.
+/// \ingroup voronoi
 pub type hw_voronoi_array = u32;
 /// Per site: the site representing it (itself unless it duplicates a smaller index).
+/// \ingroup voronoi
 pub const HW_VORONOI_REPRESENTATIVE: hw_voronoi_array = 0;
 /// Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
 /// Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
+/// \ingroup voronoi
 pub const HW_VORONOI_TRIANGLES: hw_voronoi_array = 1;
 /// Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
+/// \ingroup voronoi
 pub const HW_VORONOI_TRIANGLE_TWINS: hw_voronoi_array = 2;
 /// The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
 /// line; for one distinct site: that site).
+/// \ingroup voronoi
 pub const HW_VORONOI_HULL: hw_voronoi_array = 3;
 /// Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
+/// \ingroup voronoi
 pub const HW_VORONOI_TRIANGLE_VERTEX: hw_voronoi_array = 4;
 /// Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
+/// \ingroup voronoi
 pub const HW_VORONOI_HALFEDGE_ORIGIN: hw_voronoi_array = 5;
 /// Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
 /// out to infinity is followed by the one coming back).
+/// \ingroup voronoi
 pub const HW_VORONOI_HALFEDGE_NEXT: hw_voronoi_array = 6;
 /// Per Voronoi half-edge: the previous half-edge around its cell.
+/// \ingroup voronoi
 pub const HW_VORONOI_HALFEDGE_PREV: hw_voronoi_array = 7;
 /// Per Voronoi half-edge: the site whose cell it bounds (on its left).
+/// \ingroup voronoi
 pub const HW_VORONOI_HALFEDGE_SITE: hw_voronoi_array = 8;
 /// Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
 /// `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
+/// \ingroup voronoi
 pub const HW_VORONOI_CELL_HALFEDGE: hw_voronoi_array = 9;
 /// Per Voronoi vertex: one outgoing half-edge.
+/// \ingroup voronoi
 pub const HW_VORONOI_VERTEX_HALFEDGE: hw_voronoi_array = 10;
 
 fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError> {
@@ -276,6 +302,7 @@ fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError>
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_data` and `out_len` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_view(
     voronoi: *const hw_voronoi,
@@ -297,6 +324,7 @@ pub unsafe extern "C" fn hw_voronoi_view(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_sites` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_sites(
     voronoi: *const hw_voronoi,
@@ -321,6 +349,7 @@ pub unsafe extern "C" fn hw_voronoi_sites(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_vertices` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_vertices(
     voronoi: *const hw_voronoi,
@@ -341,15 +370,20 @@ pub unsafe extern "C" fn hw_voronoi_vertices(
 }
 
 /// The shape of a Voronoi edge (see ::hw_voronoi_edge).
+/// \ingroup voronoi
 pub type hw_voronoi_edge_kind = u32;
 /// Both ends are Voronoi vertices: from `point` to `end`.
+/// \ingroup voronoi
 pub const HW_VORONOI_SEGMENT: hw_voronoi_edge_kind = 0;
 /// One end at infinity: the points `point + t * direction`, `t >= 0`.
+/// \ingroup voronoi
 pub const HW_VORONOI_RAY: hw_voronoi_edge_kind = 1;
 /// Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
+/// \ingroup voronoi
 pub const HW_VORONOI_LINE_EDGE: hw_voronoi_edge_kind = 2;
 
 /// One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
+/// \ingroup voronoi
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct hw_voronoi_edge {
@@ -379,6 +413,7 @@ pub struct hw_voronoi_edge {
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_edge` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_edge_describe(
     voronoi: *const hw_voronoi,
@@ -430,6 +465,7 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_mesh` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_delaunay_mesh(
     voronoi: *const hw_voronoi,
@@ -456,6 +492,7 @@ pub unsafe extern "C" fn hw_voronoi_delaunay_mesh(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_site` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_nearest_site(
     voronoi: *const hw_voronoi,
@@ -486,6 +523,7 @@ pub unsafe extern "C" fn hw_voronoi_nearest_site(
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
 /// `needed` NULL or writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_neighbours(
     voronoi: *const hw_voronoi,
@@ -509,6 +547,7 @@ pub unsafe extern "C" fn hw_voronoi_neighbours(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_halfedge` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_edge_between(
     voronoi: *const hw_voronoi,

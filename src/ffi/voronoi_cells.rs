@@ -22,6 +22,7 @@ use super::voronoi::{hw_voronoi, points_arg, voronoi_ref};
 /// The cells tile the region without gaps or overlaps; a corner shared by several cells is one
 /// entry of hw_voronoi_cells_positions(). Cells are indexed by site and counter-clockwise; a
 /// duplicate site, or a site whose cell misses the region, has an empty cell.
+/// \ingroup voronoi
 pub struct hw_voronoi_cells {
     pub(crate) cells: ClippedCells,
 }
@@ -64,6 +65,7 @@ unsafe fn clip_to(
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_cells` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_clip_rect(
     voronoi: *const hw_voronoi,
@@ -106,6 +108,7 @@ pub(crate) unsafe fn clip_polygon_arg(
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `clip_xy` must point to `2 * n_vertices` doubles;
 /// `out_cells` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_clip_convex(
     voronoi: *const hw_voronoi,
@@ -122,6 +125,7 @@ pub unsafe extern "C" fn hw_voronoi_clip_convex(
 ///
 /// # Safety
 /// `cells` must be NULL or cells from this library not in use by another thread.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_free(cells: *mut hw_voronoi_cells) {
     // SAFETY: forwarded from the caller.
@@ -132,6 +136,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_free(cells: *mut hw_voronoi_cells) {
 ///
 /// # Safety
 /// `cells` must be NULL or live cells.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_count(cells: *const hw_voronoi_cells) -> usize {
     // SAFETY: forwarded from the caller.
@@ -144,6 +149,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_count(cells: *const hw_voronoi_cells) 
 ///
 /// # Safety
 /// `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_positions(
     cells: *const hw_voronoi_cells,
@@ -169,6 +175,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_positions(
 ///
 /// # Safety
 /// `cells` must be NULL or live cells; `out_indices` and `out_len` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_polygon(
     cells: *const hw_voronoi_cells,
@@ -191,6 +198,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_polygon(
 /// # Safety
 /// `cells` must be NULL or live cells; `out_area` NULL or writable; `out_centroid` NULL or two
 /// writable doubles.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_area_centroid(
     cells: *const hw_voronoi_cells,
@@ -229,6 +237,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_area_centroid(
 ///
 /// # Safety
 /// `cells` must be NULL or live cells; `out_mesh` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_mesh(
     cells: *const hw_voronoi_cells,
@@ -252,6 +261,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_mesh(
 /// # Safety
 /// `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
 /// `needed` NULL or writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
     cells: *const hw_voronoi_cells,

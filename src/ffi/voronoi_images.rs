@@ -14,12 +14,16 @@ use super::voronoi::{hw_voronoi, voronoi_ref};
 use super::voronoi_cells::{cells_ref, hw_voronoi_cells};
 
 /// A distance function for hw_voronoi_label_image().
+/// \ingroup voronoi
 pub type hw_metric = u32;
 /// Euclidean distance (the diagram's own metric).
+/// \ingroup voronoi
 pub const HW_METRIC_EUCLIDEAN: hw_metric = 0;
 /// Manhattan (L1, taxicab) distance `|dx| + |dy|`.
+/// \ingroup voronoi
 pub const HW_METRIC_MANHATTAN: hw_metric = 1;
 /// Chebyshev (L∞) distance `max(|dx|, |dy|)`.
+/// \ingroup voronoi
 pub const HW_METRIC_CHEBYSHEV: hw_metric = 2;
 
 fn metric(raw: hw_metric) -> Result<Metric, FfiError> {
@@ -43,6 +47,7 @@ fn metric(raw: hw_metric) -> Result<Metric, FfiError> {
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
 /// `needed` NULL or writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hw_voronoi_label_image(
@@ -80,6 +85,7 @@ pub unsafe extern "C" fn hw_voronoi_label_image(
 }
 
 /// What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
+/// \ingroup voronoi
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct hw_svg_options {
@@ -105,6 +111,7 @@ impl From<SvgOptions> for hw_svg_options {
 }
 
 /// The default SVG options: 800 pixels wide, filled cells, sites, no Delaunay edges.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_svg_options_default() -> hw_svg_options {
     SvgOptions::default().into()
@@ -155,6 +162,7 @@ unsafe fn svg_document(
 /// # Safety
 /// `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
 /// `len` writable bytes; `needed` NULL or writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_svg(
     voronoi: *const hw_voronoi,
@@ -178,6 +186,7 @@ pub unsafe extern "C" fn hw_voronoi_svg(
 /// # Safety
 /// `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `path` NULL
 /// or NUL-terminated.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_svg_write(
     voronoi: *const hw_voronoi,

@@ -27,6 +27,7 @@ use super::voronoi_cells::clip_polygon_arg;
 /// `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only
 /// when `n_sites` is 0); `clip_xy` to `2 * n_clip_vertices` doubles; the other outputs NULL or
 /// writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hw_voronoi_lloyd(

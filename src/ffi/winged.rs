@@ -27,29 +27,36 @@ use super::threads::with_threads;
 /// A winged-edge (Baumgart) polygon mesh: one record per edge with its two vertices, its two
 /// faces and its four wings. Opaque; create it with hw_winged_new(), hw_winged_from_indexed() or
 /// hw_winged_from_mesh() and release it with hw_winged_free().
+/// \ingroup winged
 pub struct hw_winged {
     pub(crate) winged: Winged,
 }
 
 /// A vertex id of an ::hw_winged.
+/// \ingroup winged
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_wvertex {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// An edge id of an ::hw_winged (one record per undirected edge).
+/// \ingroup winged
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_wedge {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
 /// A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
 /// (a boundary).
+/// \ingroup winged
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_wface {
+    /// The index; `HW_INVALID_INDEX` means none.
     pub idx: u32,
 }
 
@@ -72,16 +79,25 @@ id_conversions!(hw_wvertex <=> VertexId, hw_wedge <=> EdgeId, hw_wface <=> FaceI
 /// | `right_next` | ENCCW               | Ais                | edge_right_ccw       |
 ///
 /// A face id of `HW_INVALID_INDEX` is a hole; its wings still link the boundary loop.
+/// \ingroup winged
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct hw_wedge_record {
+    /// The vertex the edge starts at.
     pub start: hw_wvertex,
+    /// The vertex the edge ends at.
     pub end: hw_wvertex,
+    /// The face on its left (the loop that walks it `start → end`).
     pub left_face: hw_wface,
+    /// The face on its right (the loop that walks it `end → start`).
     pub right_face: hw_wface,
+    /// The edge before it in the left loop.
     pub left_prev: hw_wedge,
+    /// The edge after it in the left loop.
     pub left_next: hw_wedge,
+    /// The edge before it in the right loop.
     pub right_prev: hw_wedge,
+    /// The edge after it in the right loop.
     pub right_next: hw_wedge,
 }
 
@@ -165,6 +181,7 @@ unsafe fn query<T>(
 
 /// Creates an empty structure, to build with the Euler operators (hw_winged_mvfs() first).
 /// Returns NULL only if the allocation fails.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_winged_new() -> *mut hw_winged {
     guard_value(std::ptr::null_mut(), || {
@@ -190,6 +207,7 @@ pub extern "C" fn hw_winged_new() -> *mut hw_winged {
 /// # Safety
 /// Array arguments must point to at least as many elements as their counts say (they may be NULL
 /// when the count is 0); `out_winged` must be writable; `out_diagnostic` NULL or writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_from_indexed(
     positions: *const f64,
@@ -225,6 +243,7 @@ pub unsafe extern "C" fn hw_winged_from_indexed(
 /// # Safety
 /// As for hw_winged_from_indexed(); `edge_order` must point to `2 * n_edges` indices (NULL
 /// when `n_edges` is 0).
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_from_indexed_ordered(
     positions: *const f64,
@@ -266,6 +285,7 @@ pub unsafe extern "C" fn hw_winged_from_indexed_ordered(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_winged` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_from_mesh(
     mesh: *const hw_mesh,
@@ -291,6 +311,7 @@ pub unsafe extern "C" fn hw_winged_from_mesh(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_mesh` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_to_mesh(
     winged: *const hw_winged,
@@ -311,6 +332,7 @@ pub unsafe extern "C" fn hw_winged_to_mesh(
 ///
 /// # Safety
 /// `winged` must be NULL or a structure from this library not in use by another thread.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_free(winged: *mut hw_winged) {
     // SAFETY: forwarded from the caller.
@@ -323,6 +345,7 @@ pub unsafe extern "C" fn hw_winged_free(winged: *mut hw_winged) {
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_n_vertices(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.n_vertices() as usize)) }
@@ -332,6 +355,7 @@ pub unsafe extern "C" fn hw_winged_n_vertices(winged: *const hw_winged) -> usize
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_n_edges(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.n_edges() as usize)) }
@@ -341,6 +365,7 @@ pub unsafe extern "C" fn hw_winged_n_edges(winged: *const hw_winged) -> usize {
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_n_faces(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.n_faces() as usize)) }
@@ -351,6 +376,7 @@ pub unsafe extern "C" fn hw_winged_n_faces(winged: *const hw_winged) -> usize {
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_vertex_capacity(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.vertex_capacity() as usize)) }
@@ -360,6 +386,7 @@ pub unsafe extern "C" fn hw_winged_vertex_capacity(winged: *const hw_winged) -> 
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_edge_capacity(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.edge_capacity() as usize)) }
@@ -369,6 +396,7 @@ pub unsafe extern "C" fn hw_winged_edge_capacity(winged: *const hw_winged) -> us
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_face_capacity(winged: *const hw_winged) -> usize {
     unsafe { query(winged, 0, |w| Ok(w.face_capacity() as usize)) }
@@ -378,6 +406,7 @@ pub unsafe extern "C" fn hw_winged_face_capacity(winged: *const hw_winged) -> us
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_is_vertex(winged: *const hw_winged, v: hw_wvertex) -> bool {
     unsafe { query(winged, false, |w| Ok(w.is_vertex(v.into()))) }
@@ -387,6 +416,7 @@ pub unsafe extern "C" fn hw_winged_is_vertex(winged: *const hw_winged, v: hw_wve
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_is_edge(winged: *const hw_winged, e: hw_wedge) -> bool {
     unsafe { query(winged, false, |w| Ok(w.is_edge(e.into()))) }
@@ -396,6 +426,7 @@ pub unsafe extern "C" fn hw_winged_is_edge(winged: *const hw_winged, e: hw_wedge
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_is_face(winged: *const hw_winged, f: hw_wface) -> bool {
     unsafe { query(winged, false, |w| Ok(w.is_face(f.into()))) }
@@ -406,6 +437,7 @@ pub unsafe extern "C" fn hw_winged_is_face(winged: *const hw_winged, f: hw_wface
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_record` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_edge(
     winged: *const hw_winged,
@@ -428,6 +460,7 @@ pub unsafe extern "C" fn hw_winged_edge(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_records` and `out_len` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_edge_records(
     winged: *const hw_winged,
@@ -455,6 +488,7 @@ pub unsafe extern "C" fn hw_winged_edge_records(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_vertex_edge(
     winged: *const hw_winged,
@@ -472,6 +506,7 @@ pub unsafe extern "C" fn hw_winged_vertex_edge(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_face_edge(winged: *const hw_winged, f: hw_wface) -> hw_wedge {
     unsafe {
@@ -485,6 +520,7 @@ pub unsafe extern "C" fn hw_winged_face_edge(winged: *const hw_winged, f: hw_wfa
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_position(
     winged: *const hw_winged,
@@ -501,6 +537,7 @@ pub unsafe extern "C" fn hw_winged_position(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_face_normal(
     winged: *const hw_winged,
@@ -521,6 +558,7 @@ pub unsafe extern "C" fn hw_winged_face_normal(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_vertex_normal(
     winged: *const hw_winged,
@@ -558,10 +596,13 @@ unsafe fn write_triple(
 }
 
 /// Which elements hw_winged_normals() gives normals of.
+/// \ingroup winged
 pub type hw_wnormals = u32;
 /// Face normals (Newell), indexed by face id.
+/// \ingroup winged
 pub const HW_WNORMALS_FACES: hw_wnormals = 0;
 /// Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
+/// \ingroup winged
 pub const HW_WNORMALS_VERTICES: hw_wnormals = 1;
 
 /// The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
@@ -573,6 +614,7 @@ pub const HW_WNORMALS_VERTICES: hw_wnormals = 1;
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_xyz` NULL or `len` writable doubles; `needed`
 /// NULL or writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_normals(
     winged: *const hw_winged,
@@ -604,6 +646,7 @@ pub unsafe extern "C" fn hw_winged_normals(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_check(winged: *const hw_winged) -> hw_status {
     // SAFETY: forwarded from the caller.
@@ -611,33 +654,46 @@ pub unsafe extern "C" fn hw_winged_check(winged: *const hw_winged) -> hw_status 
 }
 
 /// Which table hw_winged_table() prints.
+/// \ingroup winged
 pub type hw_wtable = u32;
 /// The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
+/// \ingroup winged
 pub const HW_WTABLE_VERTICES: hw_wtable = 0;
 /// The face table: id, stored edge ("Face-Edge").
+/// \ingroup winged
 pub const HW_WTABLE_FACES: hw_wtable = 1;
 /// The edge table: id, vertices, faces and wings ("Edge-Edge relation").
+/// \ingroup winged
 pub const HW_WTABLE_EDGES: hw_wtable = 2;
 /// The three tables, vertex, face and edge, separated by a blank line.
+/// \ingroup winged
 pub const HW_WTABLE_ALL: hw_wtable = 3;
 
 /// Which naming scheme a table's columns use.
+/// \ingroup winged
 pub type hw_wnaming = u32;
 /// Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
 /// from 1 with a letter (V1, E1, F1).
+/// \ingroup winged
 pub const HW_WNAMING_CW_CCW: hw_wnaming = 0;
 /// The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+/// \ingroup winged
 pub const HW_WNAMING_DIRECT_INVERSE: hw_wnaming = 1;
 /// Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
+/// \ingroup winged
 pub const HW_WNAMING_LEFT_RIGHT: hw_wnaming = 2;
 
 /// How a table is written.
+/// \ingroup winged
 pub type hw_table_format = u32;
 /// Columns aligned with spaces; a hole is `∅` (UTF-8).
+/// \ingroup winged
 pub const HW_TABLE_TEXT: hw_table_format = 0;
 /// A Markdown table; a hole is `∅`.
+/// \ingroup winged
 pub const HW_TABLE_MARKDOWN: hw_table_format = 1;
 /// Comma-separated values with a header row; a hole is an empty field.
+/// \ingroup winged
 pub const HW_TABLE_CSV: hw_table_format = 2;
 
 /// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
@@ -650,6 +706,7 @@ pub const HW_TABLE_CSV: hw_table_format = 2;
 /// # Safety
 /// `winged` must be NULL or a live structure; `buf` NULL or `len` writable bytes; `needed` NULL
 /// or writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_table(
     winged: *const hw_winged,

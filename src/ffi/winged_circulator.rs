@@ -23,12 +23,16 @@ use super::status::hw_status;
 use super::winged::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_ref};
 
 /// What a winged circulator yields.
+/// \ingroup winged
 pub type hw_wcirculator_kind = u32;
 /// Edges: the edges of a face's loop, or the edges at a vertex.
+/// \ingroup winged
 pub const HW_WCIRC_EDGES: hw_wcirculator_kind = 0;
 /// Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
+/// \ingroup winged
 pub const HW_WCIRC_VERTICES: hw_wcirculator_kind = 1;
 /// Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
+/// \ingroup winged
 pub const HW_WCIRC_FACES: hw_wcirculator_kind = 2;
 
 /// What a walk circles.
@@ -42,16 +46,25 @@ enum Center {
 /// hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
 /// its kind. Treat the fields as private. It borrows the structure: do not modify the structure
 /// while walking.
+/// \ingroup winged
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_wcirculator {
+    /// The structure walked.
     pub winged: *const hw_winged,
+    /// The edge of the use the walk started from; coming back to that use ends the walk.
     pub start_edge: u32,
+    /// The side of that use: 0 left, 1 right.
     pub start_side: u32,
+    /// The edge of the use the walk yields next, `HW_INVALID_INDEX` once it is over.
     pub current_edge: u32,
+    /// The side of that use: 0 left, 1 right.
     pub current_side: u32,
+    /// Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
     pub remaining: u32,
+    /// What it walks around: a face or a vertex (internal code).
     pub center: u32,
+    /// What it yields.
     pub kind: hw_wcirculator_kind,
 }
 
@@ -102,6 +115,7 @@ fn begin(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_around_face(
     winged: *const hw_winged,
@@ -125,6 +139,7 @@ pub unsafe extern "C" fn hw_wcirc_around_face(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_around_vertex(
     winged: *const hw_winged,
@@ -218,6 +233,7 @@ unsafe fn next_into<T>(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_edge(
     circulator: *mut hw_wcirculator,
@@ -230,6 +246,7 @@ pub unsafe extern "C" fn hw_wcirc_next_edge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_vertex(
     circulator: *mut hw_wcirculator,
@@ -242,6 +259,7 @@ pub unsafe extern "C" fn hw_wcirc_next_vertex(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_face(
     circulator: *mut hw_wcirculator,

@@ -27,6 +27,7 @@ use super::winged::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_mut};
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
 /// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
 /// `out_face` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mvfs(
     winged: *mut hw_winged,
@@ -59,6 +60,7 @@ pub unsafe extern "C" fn hw_winged_mvfs(
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
 /// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
 /// `out_vertex` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mev(
     winged: *mut hw_winged,
@@ -93,6 +95,7 @@ pub unsafe extern "C" fn hw_winged_mev(
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `out_edge`
 /// and `out_face` writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mef(
     winged: *mut hw_winged,
@@ -127,6 +130,7 @@ pub unsafe extern "C" fn hw_winged_mef(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kev(
     winged: *mut hw_winged,
@@ -142,6 +146,7 @@ pub unsafe extern "C" fn hw_winged_kev(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kef(
     winged: *mut hw_winged,
@@ -156,6 +161,7 @@ pub unsafe extern "C" fn hw_winged_kef(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kvfs(winged: *mut hw_winged, face: hw_wface) -> hw_status {
     // SAFETY: forwarded from the caller.
@@ -170,6 +176,7 @@ pub unsafe extern "C" fn hw_winged_kvfs(winged: *mut hw_winged, face: hw_wface) 
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
 /// NULL or writable.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_garbage_collect(
     winged: *mut hw_winged,
@@ -198,6 +205,7 @@ pub unsafe extern "C" fn hw_winged_garbage_collect(
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
 /// doubles.
+/// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_set_position(
     winged: *mut hw_winged,

@@ -1,4 +1,4 @@
-//! Newell's method: the area vector of a polygon, planar or not (seed 000's face-normal loop).
+//! Newell's method: the area vector of a polygon, planar or not (Baumgart's face-normal loop).
 
 /// The Newell vector of the closed polygon `points`: perpendicular to the polygon's best-fit
 /// plane, pointing to the side from which the polygon runs counter-clockwise, with length twice

@@ -1,11 +1,11 @@
 //! Face, vertex and corner normals of a half-edge mesh.
 //!
-//! - Face normals: Newell's method (seed 000's loop), so non-planar polygons get their best-fit
+//! - Face normals: Newell's method (Baumgart's loop), so non-planar polygons get their best-fit
 //!   plane's normal; degenerate faces get the zero vector.
 //! - Vertex normals: the sum over the vertex's faces of a weighted face normal, normalised, in one
-//!   linear pass over the faces (the face-list algorithm seed 004 asks about), so every fan of a
+//!   linear pass over the faces (the face-list algorithm), so every fan of a
 //!   non-manifold vertex counts. Weightings: [`VertexNormalWeighting`].
-//! - Corner normals (per half-edge, the "winged half-edges" of seed 003): angle-weighted like
+//! - Corner normals (per half-edge, the "winged half-edges" of the Granada notes): angle-weighted like
 //!   vertex normals, but only over the faces reachable around the vertex without crossing a
 //!   boundary or an edge sharper than the crease angle.
 //!
@@ -19,7 +19,7 @@ use super::{face_corners_area_vector, quad_area_vector, triangle_area_vector};
 /// How a vertex normal weighs the normals of the faces around the vertex.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum VertexNormalWeighting {
-    /// Unit face normals summed (OpenMesh's default, seed 004's average).
+    /// Unit face normals summed (OpenMesh's default).
     #[default]
     Uniform,
     /// Face normals weighted by face area (the raw Newell vectors summed).

@@ -12,7 +12,7 @@ use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 /// - Each half-edge stores its `origin` vertex, `next` and `prev` half-edge around its face, and
 ///   its `face`. Faces run counter-clockwise seen from outside.
 /// - Boundary half-edges are real half-edges with `face = INVALID`, linked by `next`/`prev` into
-///   loops that run clockwise seen from outside (the rows with face ∅ in seed 000's table).
+///   loops that run clockwise seen from outside (the rows with face ∅ in Baumgart's half-edge table).
 /// - Each vertex stores one outgoing half-edge — the boundary one when the vertex is on a
 ///   boundary, `INVALID` when the vertex is isolated — and its position.
 /// - Each face stores one of its half-edges.

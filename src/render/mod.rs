@@ -1,4 +1,4 @@
-//! Rendering buffers: what `glBufferData` wants (the seed's VBO/EBO slide).
+//! Rendering buffers: what `glBufferData` wants (vertex and index buffers).
 //!
 //! - [`surface_buffer`]: a mesh's triangles (`u32` indices, every polygon triangulated) and
 //!   `f32` vertex attributes, flat, smooth or crease shaded or with given corner normals (a

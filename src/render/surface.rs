@@ -1,5 +1,5 @@
 //! The shaded surface of a mesh as GPU buffers: `f32` vertex attributes and a `u32` triangle index
-//! buffer (the seed's VBO/EBO slide).
+//! buffer (a VBO and an EBO).
 //!
 //! Every polygon is triangulated (non-convex faces included). A triangle corner is a mesh corner
 //! (a half-edge with a face: the corner at its origin), and its attributes — position, normal,

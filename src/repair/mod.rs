@@ -1,7 +1,7 @@
 //! Repairs: operations that fix what the [doctor](crate::doctor) finds, each returning a
 //! [`RepairReport`] of what it changed and leaving its input unchanged when it refuses.
 //!
-//! On indexed face lists ([`PolygonSoup`]): [`merge_vertices`] (exact and near duplicates),
+//! On indexed face lists ([`PolygonSoup`](crate::soup::PolygonSoup)): [`merge_vertices`] (exact and near duplicates),
 //! [`remove_duplicate_faces`], [`remove_unreferenced_vertices`] and
 //! [`remove_small_components`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`].
 //! The doctor's detection serves them: what it lists as duplicates, unreferenced vertices or

@@ -1,5 +1,5 @@
 //! Cylindrical surfaces: a polyline swept linearly along a vector, `S(u, v) = P(u) + v·r`,
-//! `v ∈ [0, 1]` (seed `003_…`, "Superficies cilíndricas").
+//! `v ∈ [0, 1]` ("Superficies cilíndricas" in the Granada notes).
 
 use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};

@@ -1,6 +1,6 @@
-//! Surface generation (seed `003_…`, last slides): cylindrical (swept), revolved and ruled
-//! surfaces from polylines, and the primitives examples and tests need — the seed's tetrahedron,
-//! cube, icosphere, torus and grid.
+//! Surface generation: cylindrical (swept), revolved and ruled surfaces from polylines, and the
+//! primitives examples and tests need — the winged-edge worked example's tetrahedron, cube,
+//! icosphere, torus and grid.
 //!
 //! Every generator returns a [`PolygonSoup`](crate::soup::PolygonSoup) whose faces are CCW seen
 //! from outside, whose shared vertices are shared indices (poles and full-turn seams are welded),

@@ -1,4 +1,4 @@
-//! Surfaces of revolution: a profile polyline rotated about an axis (seed `003_…`,
+//! Surfaces of revolution: a profile polyline rotated about an axis (the Granada notes,
 //! "Superficies de revolución": `S(u, v) = (x(u)·cos v, x(u)·sin v, z(u))` for the z axis).
 
 use std::f64::consts::TAU;

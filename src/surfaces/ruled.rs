@@ -1,5 +1,5 @@
 //! Ruled surfaces between two polylines with the same number of points:
-//! `S(u, v) = (1 − v)·C₁(u) + v·C₂(u)`, `v ∈ [0, 1]` (seed `003_…`, "Superficies regladas").
+//! `S(u, v) = (1 − v)·C₁(u) + v·C₂(u)`, `v ∈ [0, 1]` ("Superficies regladas" in the Granada notes).
 
 use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};

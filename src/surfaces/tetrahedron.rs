@@ -1,9 +1,9 @@
-//! The regular tetrahedron of seed `000_…` (the winged-edge slides), with its exact coordinates
+//! The regular tetrahedron of the winged-edge literature's worked example, with its exact coordinates
 //! and face numbering.
 
 use crate::soup::PolygonSoup;
 
-/// The seed's tetrahedron: unit edges, base in the plane z = 0 centred on the z axis,
+/// The worked example's tetrahedron: unit edges, base in the plane z = 0 centred on the z axis,
 /// `V0 = (√3/3, 0, 0)`, `V1 = (−√3/6, 1/2, 0)`, `V2 = (−√3/6, −1/2, 0)`, `V3 = (0, 0, √6/3)`,
 /// faces `F0 = {0, 1, 3}`, `F1 = {1, 2, 3}`, `F2 = {0, 3, 2}`, `F3 = {0, 2, 1}` (CCW from outside).
 pub fn tetrahedron() -> PolygonSoup {

@@ -1,13 +1,13 @@
-//! Construction from an indexed face list: the "Creación a partir de malla indexada" algorithm
-//! of seed `003_52f8c4a27ca793d7.txt`, on the shared face-list analysis of [`crate::soup`].
+//! Construction from an indexed face list: the classic construction ("Creación a partir de malla
+//! indexada" in the Granada notes), on the shared face-list analysis of [`crate::soup`].
 //!
-//! The slide reads the faces in order and, for every consecutive corner pair `(a, b)`, either
+//! The construction reads the faces in order and, for every consecutive corner pair `(a, b)`, either
 //! finds the edge `(b, a)` already made (the face becomes its inverse face, `Ci`) or appends a
 //! new edge `a → b` (the face becomes its direct face, `Cd`); then it fills the wings. The
 //! "does `(b, a)` exist" lookup is the expensive part; here every corner meets its edge in the
 //! edge buckets of [`crate::soup`] (shared with the half-edge builder, with the same
-//! [`BuildPolicy`] handling), so the slide's loop runs in one linear pass. Edges are numbered in
-//! the order the slide would create them, so the result is exactly the slide's table.
+//! [`BuildPolicy`] handling), so the construction runs in one linear pass. Edges are numbered in
+//! the order the construction creates them, so the result is exactly its table.
 
 use std::collections::HashMap;
 
@@ -31,7 +31,7 @@ impl Winged {
     /// [`Diagnostic::vertex_copies`]); face `f` is input face `f` unless faces were skipped.
     /// Edges are numbered in order of first appearance walking the faces in order (face 0's
     /// corners first); an edge points the way its first face walks it, so that face is its left
-    /// face (seed 003's `Cd`) and the second face its right face (`Ci`). A face stores the edge
+    /// face (Granada's `Cd`) and the second face its right face (`Ci`). A face stores the edge
     /// leaving its first corner, so its loop starts where the input's face started. A vertex
     /// stores, by preference: the lowest-numbered edge whose side leaving it is a hole (boundary
     /// vertices, so that the ring starts at the gap), else the lowest-numbered edge starting at
@@ -75,7 +75,7 @@ impl Winged {
     /// Builds the structure from an indexed face list, numbering and directing the edges as
     /// `edge_order` lists them (`edge_order[i] = [start, end]` of edge `i`).
     ///
-    /// This reproduces tables whose edge numbering was made by hand (as the course notes'
+    /// This reproduces tables whose edge numbering was made by hand (as textbook
     /// tables are). `edge_order` must list every edge of the faces exactly once, in either
     /// direction; the face that walks an edge `start → end` becomes its left face. The faces
     /// are built under [`BuildPolicy::Strict`] (a hand-made numbering names the input's own
@@ -255,7 +255,7 @@ impl Unreached for WingedFaces {
     }
 }
 
-/// The edge records and face edges of the slide's loop, before holes and vertices are linked.
+/// The edge records and face edges of the construction's loop, before holes and vertices are linked.
 struct WingedFaces {
     edges: Vec<EdgeRecord>,
     face_edge: Vec<EdgeId>,
@@ -265,7 +265,7 @@ struct WingedFaces {
 }
 
 impl WingedFaces {
-    /// The slide's loop: creates the edge records in its order and fills faces and wings of the
+    /// The construction's loop: creates the edge records in its order and fills faces and wings of the
     /// face sides, in one pass over the faces, each corner meeting its edge in `buckets`, each
     /// face's area checked into `degenerate` when given. `None` on an edge defect (see
     /// [`EdgeVisit::Defective`]).

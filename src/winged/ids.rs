@@ -74,9 +74,9 @@ define_id!(
 /// left face lies on the left of the edge seen from outside looking from `start` to `end`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Side {
-    /// The side traversed `start → end` (seed 000: CW, seed 003: "derecho", seed 001: left).
+    /// The side traversed `start → end` (Baumgart: CW, Granada: "derecho", Wikipedia: left).
     Left,
-    /// The side traversed `end → start` (seed 000: CCW, seed 003: "invertido", seed 001: right).
+    /// The side traversed `end → start` (Baumgart: CCW, Granada: "invertido", Wikipedia: right).
     Right,
 }
 

@@ -6,14 +6,14 @@
 //! with no face (`FaceId::INVALID`) is a hole: its wings still link the boundary loop, so a
 //! boundary walks like a face.
 //!
-//! # Field names and the three conventions of the course notes
+//! # Field names and the three conventions of the literature
 //!
 //! An edge runs `start → end`. Its **left** side is the loop that walks it `start → end`; its
 //! **right** side is the loop that walks it `end → start` (see [`Side`]). Each side has a
 //! previous and a next wing *in that side's own loop order*. This is one structure under three
 //! names:
 //!
-//! | halfwing     | seed `000_…` (Baumgart cube) | seed `003_…` (Granada) | seed `001_…` (Wikipedia) |
+//! | halfwing     | Baumgart (his cube)          | Granada                | Wikipedia                |
 //! |--------------|------------------------------|------------------------|--------------------------|
 //! | `start`      | VSTART                       | Vi                     | `vert_origin`            |
 //! | `end`        | VEND                         | Vf                     | `vert_destination`       |
@@ -24,9 +24,9 @@
 //! | `right_prev` | EPCCW                        | Aia                    | `edge_right_cw`          |
 //! | `right_next` | ENCCW                        | Ais                    | `edge_right_ccw`         |
 //!
-//! Seed 000 names the sides after Baumgart's clockwise faces: its FCW face walks the edge
+//! Baumgart names the sides after Baumgart's clockwise faces: its FCW face walks the edge
 //! forward, and EPCW/ENCW are the previous/next edges of that walk (checked against its whole
-//! cube table in the golden tests). In seed 001's terms, walking the left face counter-clockwise
+//! cube table in the golden tests). In Wikipedia's terms, walking the left face counter-clockwise
 //! goes from this edge to `edge_left_ccw` (our `left_next`), and clockwise to `edge_left_cw`
 //! (`left_prev`); likewise on the right.
 //!
@@ -43,17 +43,17 @@
 //! - [`Winged::face_loop`]: counter-clockwise about the face (its loop order), from its stored
 //!   edge.
 //! - [`Winged::vertex_ring`]: counter-clockwise about the vertex seen from outside, stepping
-//!   `e = e->prev->sym` as seed 000 does; holes are crossed like faces.
+//!   `e = e->prev->sym` as Baumgart does; holes are crossed like faces.
 //!
 //! # Building and converting
 //!
-//! [`Winged::from_face_list`] follows the slide "Creación a partir de malla indexada" (seed
-//! 003) on the shared face-list analysis of [`crate::soup`]: the same [`BuildPolicy`]
+//! [`Winged::from_face_list`] follows the classic construction ("Creación a partir de malla indexada" in
+//! the Granada notes) on the shared face-list analysis of [`crate::soup`]: the same [`BuildPolicy`]
 //! (strict, skip, repair), the same [`Diagnostic`] and the same [`BuildError`] as the
 //! half-edge kernel's [`Mesh::from_face_list`](crate::mesh::Mesh::from_face_list), so both
 //! kernels refuse, skip or repair the same input the same way. [`Winged::to_soup`] converts
 //! back losslessly (same faces, same first corner, same order).
-//! [`Winged::from_face_list_with_edge_order`] takes a hand-made edge numbering, as the course
+//! [`Winged::from_face_list_with_edge_order`] takes a hand-made edge numbering, as textbook
 //! tables use.
 //!
 //! [`Winged::from_mesh`] and [`Winged::to_mesh`] convert record for record, without a face

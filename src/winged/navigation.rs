@@ -11,7 +11,7 @@ use crate::cycles::for_each_cycle_length;
 pub enum Step {
     /// Along a loop: `use_next`.
     Loop,
-    /// Counter-clockwise about the tail vertex: `twin(use_prev(u))` (seed 000's
+    /// Counter-clockwise about the tail vertex: `twin(use_prev(u))` (Baumgart's
     /// `e = e->prev->sym`).
     Ring,
 }

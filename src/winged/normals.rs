@@ -1,4 +1,4 @@
-//! Face normals (Newell's method) and vertex normals, as seed `000_…` computes them.
+//! Face normals (Newell's method) and vertex normals, as Baumgart's structure computes them.
 
 use super::error::WingedError;
 use super::ids::{FaceId, VertexId};

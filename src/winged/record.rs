@@ -5,7 +5,7 @@ use super::ids::{EdgeId, FaceId, Side, VertexId};
 /// One record per undirected edge: its two vertices, the face on each side, and the four wings.
 ///
 /// See the [module documentation](super) for how the fields map onto the naming conventions of
-/// the course notes. A deleted edge has `start == VertexId::INVALID`.
+/// the literature. A deleted edge has `start == VertexId::INVALID`.
 ///
 /// `repr(C)` (eight `u32`s in field order) so the C API can hand out a read-only view of the
 /// record array without copying.

@@ -7,7 +7,7 @@ impl Winged {
     /// Builds from an owned face list under `policy` (see [`Winged::from_face_list`]).
     ///
     /// Per-corner normals and texture coordinates are not kept: the winged-edge structure has
-    /// one record per edge and no place for per-corner data (the limitation seed 003 names).
+    /// one record per edge and no place for per-corner data (the limitation the Granada notes name).
     pub fn from_soup(
         soup: &PolygonSoup,
         policy: BuildPolicy,

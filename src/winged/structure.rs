@@ -160,7 +160,7 @@ impl Winged {
     }
 
     /// The four wings of `e` as `[left_prev, left_next, right_prev, right_next]`
-    /// (seed 000: EPCW, ENCW, EPCCW, ENCCW; seed 003: Ada, Ads, Aia, Ais).
+    /// (Baumgart: EPCW, ENCW, EPCCW, ENCCW; Granada: Ada, Ads, Aia, Ais).
     pub fn edge_wings(&self, e: EdgeId) -> Result<[EdgeId; 4], WingedError> {
         let r = self.edge(e)?;
         Ok([r.left_prev, r.left_next, r.right_prev, r.right_next])

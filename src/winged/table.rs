@@ -1,16 +1,16 @@
-//! The vertex, face and edge tables in the slides' layout (plain text, Markdown or CSV).
+//! The vertex, face and edge tables in the textbook layout (plain text, Markdown or CSV).
 
 use super::structure::Winged;
 
-/// Which course notes' column names (and element labels) a table uses.
+/// Which convention's column names (and element labels) a table uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Naming {
-    /// Seed `000_…` (Baumgart's cube): `VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW`, elements
+    /// Baumgart's (his cube): `VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW`, elements
     /// labelled from 1 with a letter (`V1`, `E1`, `F1`).
     ClockwiseCounterclockwise,
-    /// Seed `003_…` (Granada): `Vi Vf Cd Ci Ada Ads Aia Ais`, elements numbered from 0.
+    /// Granada's: `Vi Vf Cd Ci Ada Ads Aia Ais`, elements numbered from 0.
     DirectInverse,
-    /// Seed `001_…` (Wikipedia): `vert_origin … edge_right_ccw`, elements numbered from 0.
+    /// Wikipedia's: `vert_origin … edge_right_ccw`, elements numbered from 0.
     LeftRight,
 }
 
@@ -97,7 +97,7 @@ impl Labeller {
 }
 
 impl Winged {
-    /// The vertex table: id, coordinates, stored edge (seed 000's "Vertex-Edge table").
+    /// The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge table").
     pub fn vertex_table(&self, naming: Naming, format: TableFormat) -> String {
         let headers = naming.headers();
         let l = labeller(&headers, format);
@@ -114,7 +114,7 @@ impl Winged {
         render(&headers.vertex, rows, format)
     }
 
-    /// The face table: id and stored edge (seed 000's "Face-Edge table").
+    /// The face table: id and stored edge (Baumgart's "Face-Edge table").
     pub fn face_table(&self, naming: Naming, format: TableFormat) -> String {
         let headers = naming.headers();
         let l = labeller(&headers, format);
@@ -127,7 +127,7 @@ impl Winged {
         render(&headers.face, rows, format)
     }
 
-    /// The edge table (seed 000's "Edge-Edge relation"), columns in the convention's order.
+    /// The edge table (Baumgart's "Edge-Edge relation"), columns in the convention's order.
     pub fn edge_table(&self, naming: Naming, format: TableFormat) -> String {
         let headers = naming.headers();
         let l = labeller(&headers, format);

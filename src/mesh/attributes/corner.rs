@@ -1,6 +1,6 @@
 //! Per-corner normals and texture coordinates: halfwing's own half-edge attributes.
 //!
-//! The corner of vertex `v` in face `f` is the half-edge of `f` leaving `v` (seed 003's
+//! The corner of vertex `v` in face `f` is the half-edge of `f` leaving `v` (the Granada notes'
 //! "semiaristas aladas"), so a vertex on a crease or a texture seam holds one normal or texture
 //! coordinate per face around it. Boundary half-edges have slots too; their values mean nothing
 //! and are zero unless written.
