@@ -262,12 +262,17 @@ typedef struct {
 } hw_edge;
 
 /**
- * One list of element ids in a diagnostic (see hw_diagnostic_ids()).
+ * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
+ * ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
+ * lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
+ * one family passed where another is expected is refused, never read as a different list.
  */
 typedef uint32_t hw_diagnostic_list;
 
 /**
- * One list of edges in a diagnostic (see hw_diagnostic_edge()).
+ * One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
+ * ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
+ * lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
  */
 typedef uint32_t hw_diagnostic_edges;
 
@@ -306,7 +311,10 @@ typedef struct {
 } hw_doctor_options;
 
 /**
- * One kind of finding that is a list of elements (see hw_doctor_report_finding()).
+ * One kind of finding that is a list of elements (see hw_doctor_report_finding()). The values
+ * run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
+ * apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
+ * one family passed where another is expected is refused, never read as a different list.
  */
 typedef uint32_t hw_doctor_finding;
 
@@ -774,141 +782,166 @@ typedef struct {
 #define HW_CIRC_FACES 4
 
 /**
+ * The first id list.
+ */
+#define HW_DIAG_LIST_FIRST 16
+
+/**
  * Faces with fewer than 3 corners.
  */
-#define HW_DIAG_FACES_TOO_SMALL 0
+#define HW_DIAG_FACES_TOO_SMALL 16
 
 /**
  * Faces with a vertex index beyond the positions.
  */
-#define HW_DIAG_FACES_OUT_OF_RANGE 1
+#define HW_DIAG_FACES_OUT_OF_RANGE 17
 
 /**
  * Faces naming one vertex more than once.
  */
-#define HW_DIAG_FACES_REPEATED_VERTEX 2
+#define HW_DIAG_FACES_REPEATED_VERTEX 18
 
 /**
  * Vertices with a NaN or infinite coordinate.
  */
-#define HW_DIAG_NON_FINITE_VERTICES 3
+#define HW_DIAG_NON_FINITE_VERTICES 19
 
 /**
  * Vertices whose faces form more than one fan, faces being in one fan when they share an edge
  * at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
  * ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
  */
-#define HW_DIAG_NON_MANIFOLD_VERTICES 4
+#define HW_DIAG_NON_MANIFOLD_VERTICES 20
 
 /**
  * Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
  * face, but not listed here).
  */
-#define HW_DIAG_ISOLATED_VERTICES 5
+#define HW_DIAG_ISOLATED_VERTICES 21
 
 /**
  * Faces with zero area.
  */
-#define HW_DIAG_DEGENERATE_FACES 6
+#define HW_DIAG_DEGENERATE_FACES 22
 
 /**
  * Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
  * `i`-th input face not listed here.
  */
-#define HW_DIAG_SKIPPED_FACES 7
+#define HW_DIAG_SKIPPED_FACES 23
 
 /**
  * Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
  * copies input vertex `ids[i]` (same position).
  */
-#define HW_DIAG_VERTEX_COPIES 8
+#define HW_DIAG_VERTEX_COPIES 24
 
 /**
  * Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
  * neighbours, or to turn a closed component outward).
  */
-#define HW_DIAG_REORIENTED_FACES 9
+#define HW_DIAG_REORIENTED_FACES 25
+
+/**
+ * The number of id lists.
+ */
+#define HW_DIAG_LIST_COUNT 10
+
+/**
+ * The first edge list.
+ */
+#define HW_DIAG_EDGES_FIRST 32
 
 /**
  * Edges used by three or more faces.
  */
-#define HW_DIAG_NON_MANIFOLD_EDGES 0
+#define HW_DIAG_NON_MANIFOLD_EDGES 32
 
 /**
  * Edges whose two faces traverse them in the same direction.
  */
-#define HW_DIAG_INCONSISTENT_EDGES 1
+#define HW_DIAG_INCONSISTENT_EDGES 33
+
+/**
+ * The number of edge lists.
+ */
+#define HW_DIAG_EDGES_COUNT 2
+
+/**
+ * The first finding kind.
+ */
+#define HW_DOCTOR_FINDING_FIRST 64
 
 /**
  * Indices of small components (into hw_doctor_report_component()); one id per item.
  */
-#define HW_DOCTOR_SMALL_COMPONENTS 0
+#define HW_DOCTOR_SMALL_COMPONENTS 64
 
 /**
  * Faces of a closed path along which the orientation flips (the surface is not orientable),
  * each sharing an edge with the next and the last with the first; one id per item.
  */
-#define HW_DOCTOR_NON_ORIENTABLE_WITNESS 1
+#define HW_DOCTOR_NON_ORIENTABLE_WITNESS 65
 
 /**
  * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
  */
-#define HW_DOCTOR_ZERO_LENGTH_EDGES 2
+#define HW_DOCTOR_ZERO_LENGTH_EDGES 66
 
 /**
  * Triangles with an angle below the needle threshold; one id per item.
  */
-#define HW_DOCTOR_NEEDLES 3
+#define HW_DOCTOR_NEEDLES 67
 
 /**
  * Triangles with an angle above the cap threshold; one id per item.
  */
-#define HW_DOCTOR_CAPS 4
+#define HW_DOCTOR_CAPS 68
 
 /**
  * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
  * first, then the two faces, ascending).
  */
-#define HW_DOCTOR_FOLDED_EDGES 5
+#define HW_DOCTOR_FOLDED_EDGES 69
 
 /**
  * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
  */
-#define HW_DOCTOR_LONG_EDGES 6
+#define HW_DOCTOR_LONG_EDGES 70
 
 /**
  * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
  * lowest vertex at that position).
  */
-#define HW_DOCTOR_DUPLICATE_POSITIONS 7
+#define HW_DOCTOR_DUPLICATE_POSITIONS 71
 
 /**
  * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
  * vertex, then the first vertex of its group).
  */
-#define HW_DOCTOR_NEAR_DUPLICATE_VERTICES 8
+#define HW_DOCTOR_NEAR_DUPLICATE_VERTICES 72
 
 /**
  * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
  * then the lowest such face).
  */
-#define HW_DOCTOR_DUPLICATE_FACES 9
+#define HW_DOCTOR_DUPLICATE_FACES 73
 
 /**
  * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
  * the edge's two ends, smaller first, and the edge's face).
  */
-#define HW_DOCTOR_T_VERTICES 10
+#define HW_DOCTOR_T_VERTICES 74
 
 /**
  * Pairs of faces that intersect other than along the vertices and edges they share, decided
  * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
  * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
  */
-#define HW_DOCTOR_SELF_INTERSECTIONS 11
+#define HW_DOCTOR_SELF_INTERSECTIONS 75
 
 /**
- * The number of finding kinds (one past the last).
+ * The number of finding kinds.
  */
 #define HW_DOCTOR_FINDING_COUNT 12
 
@@ -1626,6 +1659,17 @@ bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
  */
 bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
+
+/**
+ * The name of an id list ("isolated vertices", …) as static text; NULL for an unknown list.
+ */
+const char *hw_diagnostic_list_name(hw_diagnostic_list list);
+
+/**
+ * The name of an edge list ("non-manifold edges (3+ faces)", …) as static text; NULL for an
+ * unknown list.
+ */
+const char *hw_diagnostic_edges_name(hw_diagnostic_edges edges);
 
 /**
  * Analyses an indexed face list without building anything (same arguments as

@@ -181,46 +181,56 @@ pub unsafe extern "C" fn hw_doctor_report_diagnostic(
     })
 }
 
-/// One kind of finding that is a list of elements (see hw_doctor_report_finding()).
+/// One kind of finding that is a list of elements (see hw_doctor_report_finding()). The values
+/// run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
+/// apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
+/// one family passed where another is expected is refused, never read as a different list.
 pub type hw_doctor_finding = u32;
+/// The first finding kind.
+pub const HW_DOCTOR_FINDING_FIRST: hw_doctor_finding = 64;
 /// Indices of small components (into hw_doctor_report_component()); one id per item.
-pub const HW_DOCTOR_SMALL_COMPONENTS: hw_doctor_finding = 0;
+pub const HW_DOCTOR_SMALL_COMPONENTS: hw_doctor_finding = 64;
 /// Faces of a closed path along which the orientation flips (the surface is not orientable),
 /// each sharing an edge with the next and the last with the first; one id per item.
-pub const HW_DOCTOR_NON_ORIENTABLE_WITNESS: hw_doctor_finding = 1;
+pub const HW_DOCTOR_NON_ORIENTABLE_WITNESS: hw_doctor_finding = 65;
 /// Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
-pub const HW_DOCTOR_ZERO_LENGTH_EDGES: hw_doctor_finding = 2;
+pub const HW_DOCTOR_ZERO_LENGTH_EDGES: hw_doctor_finding = 66;
 /// Triangles with an angle below the needle threshold; one id per item.
-pub const HW_DOCTOR_NEEDLES: hw_doctor_finding = 3;
+pub const HW_DOCTOR_NEEDLES: hw_doctor_finding = 67;
 /// Triangles with an angle above the cap threshold; one id per item.
-pub const HW_DOCTOR_CAPS: hw_doctor_finding = 4;
+pub const HW_DOCTOR_CAPS: hw_doctor_finding = 68;
 /// Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
 /// first, then the two faces, ascending).
-pub const HW_DOCTOR_FOLDED_EDGES: hw_doctor_finding = 5;
+pub const HW_DOCTOR_FOLDED_EDGES: hw_doctor_finding = 69;
 /// Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
-pub const HW_DOCTOR_LONG_EDGES: hw_doctor_finding = 6;
+pub const HW_DOCTOR_LONG_EDGES: hw_doctor_finding = 70;
 /// Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
 /// lowest vertex at that position).
-pub const HW_DOCTOR_DUPLICATE_POSITIONS: hw_doctor_finding = 7;
+pub const HW_DOCTOR_DUPLICATE_POSITIONS: hw_doctor_finding = 71;
 /// Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
 /// vertex, then the first vertex of its group).
-pub const HW_DOCTOR_NEAR_DUPLICATE_VERTICES: hw_doctor_finding = 8;
+pub const HW_DOCTOR_NEAR_DUPLICATE_VERTICES: hw_doctor_finding = 72;
 /// Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
 /// then the lowest such face).
-pub const HW_DOCTOR_DUPLICATE_FACES: hw_doctor_finding = 9;
+pub const HW_DOCTOR_DUPLICATE_FACES: hw_doctor_finding = 73;
 /// Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
 /// the edge's two ends, smaller first, and the edge's face).
-pub const HW_DOCTOR_T_VERTICES: hw_doctor_finding = 10;
+pub const HW_DOCTOR_T_VERTICES: hw_doctor_finding = 74;
 /// Pairs of faces that intersect other than along the vertices and edges they share, decided
 /// exactly (polygons as their triangles; touching counts; triangles with exactly collinear
 /// corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
-pub const HW_DOCTOR_SELF_INTERSECTIONS: hw_doctor_finding = 11;
-/// The number of finding kinds (one past the last).
+pub const HW_DOCTOR_SELF_INTERSECTIONS: hw_doctor_finding = 75;
+/// The number of finding kinds.
 pub const HW_DOCTOR_FINDING_COUNT: hw_doctor_finding = 12;
+
+/// The kind whose value is `kind`, if any.
+fn finding_at(kind: hw_doctor_finding) -> Option<Finding> {
+    Finding::from_index(kind.checked_sub(HW_DOCTOR_FINDING_FIRST)?)
+}
 
 /// The kind numbered `kind`.
 pub(super) fn finding_kind(kind: hw_doctor_finding) -> Result<Finding, FfiError> {
-    Finding::from_index(kind)
+    finding_at(kind)
         .ok_or_else(|| FfiError::invalid_input(format!("unknown doctor finding {kind}")))
 }
 
@@ -228,7 +238,7 @@ pub(super) fn finding_kind(kind: hw_doctor_finding) -> Result<Finding, FfiError>
 /// kind.
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_doctor_finding_name(kind: hw_doctor_finding) -> *const std::ffi::c_char {
-    Finding::from_index(kind).map_or(std::ptr::null(), |kind| kind.c_name().as_ptr())
+    finding_at(kind).map_or(std::ptr::null(), |kind| kind.c_name().as_ptr())
 }
 
 /// A zero-copy view of one finding: `*out_ids` holds `*out_n_items` items of
@@ -612,7 +622,10 @@ mod tests {
             let c_name = unsafe { std::ffi::CStr::from_ptr(hw_doctor_finding_name(c)) };
             assert_eq!(c_name.to_str(), Ok(kind.name()));
         }
-        assert!(finding_kind(HW_DOCTOR_FINDING_COUNT).is_err());
-        assert!(hw_doctor_finding_name(HW_DOCTOR_FINDING_COUNT).is_null());
+        let past_the_last = HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT;
+        for unknown in [0, HW_DOCTOR_FINDING_FIRST - 1, past_the_last] {
+            assert!(finding_kind(unknown).is_err());
+            assert!(hw_doctor_finding_name(unknown).is_null());
+        }
     }
 }
