@@ -340,8 +340,8 @@ class diagnostic {
   /// An edge of an edge list: its two input vertices (smaller first) and the input faces using
   /// it (ascending).
   struct edge_report {
-    std::array<uint32_t, 2> vertices{};
-    std::vector<uint32_t> faces;
+    std::array<uint32_t, 2> vertices{};  ///< The two input vertices, smaller first.
+    std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
   };
   /// The number of edges in one edge list; 0 for an empty diagnostic.
   std::size_t edge_count(hw_diagnostic_edges edges) const {
@@ -441,9 +441,9 @@ class doctor_report {
   }
   /// One fan of a non-manifold vertex: the vertex, its number of fans and the fan's faces.
   struct vertex_fan_view {
-    uint32_t vertex = 0;
-    std::size_t n_fans = 0;
-    std::vector<uint32_t> faces;
+    uint32_t vertex = 0;          ///< The non-manifold vertex.
+    std::size_t n_fans = 0;       ///< Its number of fans.
+    std::vector<uint32_t> faces;  ///< The faces of this fan, ascending.
   };
   /// The number of non-manifold vertices whose fans the report lists.
   std::size_t vertex_fans_count() const {
@@ -504,7 +504,9 @@ inline std::vector<std::array<uint32_t, 2>> self_intersections(
 /// hw_mesh_garbage_collect()).
 class index_maps {
  public:
+  /// No maps.
   index_maps() = default;
+  /// Takes ownership of maps a C call gave.
   explicit index_maps(hw_index_maps* raw) : raw_(raw) {}
   /// The old-to-new map of one element kind (HW_INVALID_INDEX for removed elements), valid as
   /// long as the maps.
@@ -514,6 +516,7 @@ class index_maps {
     check(hw_index_maps_view(raw_.get(), kind, &ids, &n));
     return values_view<const uint32_t>(ids, n);
   }
+  /// The C object, still owned by these maps.
   hw_index_maps* get() const noexcept { return raw_.get(); }
 
  private:
@@ -798,6 +801,7 @@ class mesh {
     check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
     return loops;
   }
+  /// The number of boundary loops (see hw_mesh_n_boundary_loops()).
   std::size_t n_boundary_loops() const {
     std::size_t n = 0;
     check(hw_mesh_n_boundary_loops(get(), &n));
@@ -878,7 +882,9 @@ class mesh {
   void set_vertex_position(hw_vertex v, const std::array<double, 3>& p) {
     check(hw_mesh_set_vertex_position(get(), v, p.data()));
   }
+  /// Flips interior edge `e` between two triangles (see hw_mesh_flip_edge()).
   void flip_edge(hw_edge e) { check(hw_mesh_flip_edge(get(), e)); }
+  /// Splits edge `e` at `p`; returns the new vertex (see hw_mesh_split_edge()).
   hw_vertex split_edge(hw_edge e, const std::array<double, 3>& p) {
     hw_vertex v;
     check(hw_mesh_split_edge(get(), e, p.data(), &v));
@@ -898,14 +904,19 @@ class mesh {
     check(hw_mesh_triangulate_face(get(), f, &n));
     return n;
   }
+  /// Collapses `h`, moving its origin onto its target; returns the vertex kept (see
+  /// hw_mesh_collapse_halfedge()).
   hw_vertex collapse_halfedge(hw_halfedge h) {
     hw_vertex v;
     check(hw_mesh_collapse_halfedge(get(), h, &v));
     return v;
   }
+  /// Deletes face `f`, and the vertices it leaves isolated when asked (see
+  /// hw_mesh_delete_face()).
   void delete_face(hw_face f, bool delete_isolated_vertices) {
     check(hw_mesh_delete_face(get(), f, delete_isolated_vertices));
   }
+  /// Deletes edge `e` with the faces beside it (see hw_mesh_delete_edge()).
   void delete_edge(hw_edge e, bool delete_isolated_vertices) {
     check(hw_mesh_delete_edge(get(), e, delete_isolated_vertices));
   }
