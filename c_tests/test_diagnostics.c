@@ -2,6 +2,7 @@
  * the analysis without a build, the views and summary with their bad arguments; plus the calls
  * no other test reaches (edge circulation, face components, deleting an edge, writing a file). */
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 
@@ -38,7 +39,7 @@ static void diagnose_without_building(void) {
   text = (char *)malloc(needed);
   CHECK(text != NULL && hw_diagnostic_summary(d, text, needed, NULL) == HW_OK);
   if (text) {
-    CHECK(strstr(text, "1 non-manifold edge ") != NULL);
+    CHECK(strstr(text, "non-manifold edge (3+ faces)") != NULL);
     CHECK(strstr(text, "(v0-v1 in faces f0 f1 f2)") != NULL);
     CHECK(strstr(text, "repeated vertex: f3") != NULL);
     free(text);
@@ -211,8 +212,7 @@ static void remaining_calls(void) {
   CHECK(again != NULL && hw_mesh_n_faces(again) == 2 && hw_mesh_n_vertices(again) == 6);
   hw_mesh_free(again);
   CHECK_STATUS(hw_mesh_write(mesh, NULL), HW_ERR_NULL_ARGUMENT, "path");
-  CHECK_STATUS(hw_mesh_write(mesh, "/nonexistent/dir/x.off"), HW_ERR_IO,
-               "cannot create '/nonexistent/dir/x.off'");
+  CHECK_STATUS(hw_mesh_write(mesh, "/nonexistent/dir/x.off"), HW_ERR_IO, "cannot create");
 
   /* Deleting the shared edge takes both faces with it. */
   CHECK(hw_mesh_delete_edge(mesh, middle, true) == HW_OK);
@@ -284,7 +284,43 @@ static void huge_counts_are_refused_before_allocating(void) {
   hw_diagnostic_free(diagnostic);
 }
 
+/* Every list kind has a name; the id lists, the edge lists and the doctor's findings are three
+ * separate ranges of values, so a value of the wrong family is refused, never read as another
+ * list. */
+static void list_kinds_are_named_and_kept_apart(void) {
+  hw_diagnostic *d = NULL;
+  const uint32_t *ids = NULL;
+  size_t n = 0;
+  uint32_t list, other;
+  CHECK(hw_diagnose_indexed(positions, 7, sizes, 4, indices, 12, &d) == HW_OK);
+  for (list = HW_DIAG_LIST_FIRST; list < HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT; ++list) {
+    CHECK(hw_diagnostic_list_name(list) != NULL);
+    CHECK(hw_diagnostic_edges_name(list) == NULL && hw_doctor_finding_name(list) == NULL);
+    CHECK(hw_diagnostic_ids(d, list, &ids, &n) == HW_OK);
+    for (other = list + 1; other < HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT; ++other)
+      CHECK(strcmp(hw_diagnostic_list_name(list), hw_diagnostic_list_name(other)) != 0);
+  }
+  for (list = HW_DIAG_EDGES_FIRST; list < HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT; ++list) {
+    CHECK(hw_diagnostic_edges_name(list) != NULL);
+    CHECK(hw_diagnostic_list_name(list) == NULL && hw_doctor_finding_name(list) == NULL);
+    CHECK(hw_diagnostic_edge_count(d, list, &n) == HW_OK);
+  }
+  CHECK(strcmp(hw_diagnostic_list_name(HW_DIAG_ISOLATED_VERTICES), "isolated vertices") == 0);
+  CHECK(strcmp(hw_diagnostic_edges_name(HW_DIAG_NON_MANIFOLD_EDGES),
+               "non-manifold edges (3+ faces)") == 0);
+  CHECK(hw_diagnostic_list_name(HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT) == NULL);
+  CHECK(hw_diagnostic_edges_name(HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT) == NULL);
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAG_NON_MANIFOLD_EDGES, &ids, &n), HW_ERR_INVALID_INPUT,
+               "unknown diagnostic list");
+  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAG_FACES_TOO_SMALL, &n), HW_ERR_INVALID_INPUT,
+               "unknown diagnostic edge list");
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DOCTOR_NEEDLES, &ids, &n), HW_ERR_INVALID_INPUT,
+               "unknown diagnostic list");
+  hw_diagnostic_free(d);
+}
+
 int main(void) {
+  list_kinds_are_named_and_kept_apart();
   huge_counts_are_refused_before_allocating();
   diagnose_without_building();
   policies_report_what_they_did();

@@ -90,11 +90,16 @@ static void defects_are_named(void) {
         0);
   CHECK(hw_doctor_report_finding(report, HW_DOCTOR_NEEDLES, &ids, &n, &per_item) == HW_OK);
   CHECK(n == 0 && ids == NULL && per_item == 1);
-  for (hw_doctor_finding kind = 0; kind < HW_DOCTOR_FINDING_COUNT; ++kind) {
+  for (hw_doctor_finding kind = HW_DOCTOR_FINDING_FIRST;
+       kind < HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT; ++kind) {
     CHECK(hw_doctor_finding_name(kind) != NULL);
     CHECK(hw_doctor_report_finding(report, kind, &ids, &n, &per_item) == HW_OK && per_item >= 1);
   }
-  CHECK(hw_doctor_finding_name(HW_DOCTOR_FINDING_COUNT) == NULL);
+  CHECK(hw_doctor_finding_name(HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT) == NULL);
+  CHECK(hw_doctor_finding_name(HW_DOCTOR_FINDING_FIRST - 1) == NULL);
+  /* A diagnostic list is not a finding: refused, not read as another kind. */
+  CHECK_STATUS(hw_doctor_report_finding(report, HW_DIAG_FACES_TOO_SMALL, &ids, &n, &per_item),
+               HW_ERR_INVALID_INPUT, "unknown doctor finding");
 
   /* Vertex 0, where the triangles touch the left square, has two fans; so have vertices 1 and 2,
    * where the right square's triangles meet the left square at a corner only (the crack). */
@@ -268,7 +273,7 @@ static void findings_are_drawable(void) {
                                               cube_positions, 8, cube_sizes, 1, cube_indices, 4,
                                               &buffers),
                HW_ERR_INVALID_INPUT, "names face 1, but the face list has 1");
-  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_COUNT, broken_positions,
+  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DIAG_ISOLATED_VERTICES, broken_positions,
                                               11, broken_sizes, 6, broken_indices, 19, &buffers),
                HW_ERR_INVALID_INPUT, "unknown doctor finding");
   CHECK_STATUS(hw_render_buffers_from_finding(NULL, HW_DOCTOR_NEEDLES, broken_positions, 11,

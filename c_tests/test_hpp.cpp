@@ -123,18 +123,18 @@ static void editing() {
   hw_edge diagonal{};
   for (uint32_t e = 0; e < m.n_edges(); ++e)
     if (!m.is_boundary(hw_edge{e})) diagonal = hw_edge{e};
-  m.flip(diagonal);
+  m.flip_edge(diagonal);
   m.check_invariants();
   bool refused = false;
   try {
-    m.flip(hw_edge{0});  // a boundary edge
+    m.flip_edge(hw_edge{0});  // a boundary edge
   } catch (const hw::error& e) {
     refused = e.status() == HW_ERR_REFUSED;
   }
   CHECK(refused);
-  const hw_vertex middle = m.split(diagonal, {0.5, 0.5, 0});
+  const hw_vertex middle = m.split_edge(diagonal, {0.5, 0.5, 0});
   CHECK(m.n_vertices() == 5 && m.valence(middle) == 2);
-  m.remove(hw_face{0});
+  m.delete_face(hw_face{0}, true);
   m.garbage_collect();
   CHECK(m.n_faces() == 1);
   m.check_invariants();
@@ -452,7 +452,7 @@ static void ranges_on_real_models() {
   hw::mesh m =
       hw::mesh::read(std::string(HALFWING_DATA_DIR) + "/meshes/open/cgal_elephant-with-holes.off");
   const std::size_t n_faces = m.n_faces();
-  for (uint32_t f = 0; f < n_faces; f += 23) m.remove(hw_face{f});
+  for (uint32_t f = 0; f < n_faces; f += 23) m.delete_face(hw_face{f}, true);
   CHECK(m.nav().raw().face_deleted != nullptr);
   std::size_t deleted_vertices = 0;
   const hw::nav_view nav = m.nav();

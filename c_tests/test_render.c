@@ -2,6 +2,7 @@
  * shading and layout, polygon lists, Voronoi cells, and the refusal of every bad argument. */
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "check.h"
 
@@ -154,6 +155,45 @@ static void mesh_corner_attributes_are_honoured(void) {
   CHECK(hw_render_buffers_n_vertices(buffers) == 24);
   CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
   hw_render_buffers_free(buffers);
+  hw_mesh_free(mesh);
+}
+
+/* The normals of a build as a malloc'd copy (*n floats). */
+static float *normals_of(const hw_mesh *mesh, hw_shading shading, size_t *n) {
+  hw_render_options options = hw_render_options_default();
+  hw_render_buffers *buffers;
+  const float *data = NULL;
+  float *copy = NULL;
+  options.shading = shading;
+  buffers = build(mesh, &options);
+  *n = 0;
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, n) == HW_OK && *n > 0);
+  copy = (float *)malloc(*n * sizeof *copy);
+  if (copy != NULL && data != NULL) memcpy(copy, data, *n * sizeof *copy);
+  hw_render_buffers_free(buffers);
+  return copy;
+}
+
+/* A real OBJ with its own normals (vn): the default shading shows the file's normals, and each
+ * explicit shading wins over them, so the four give four different normal buffers. */
+static void explicit_shadings_win_over_a_files_normals(void) {
+  static const hw_shading shadings[] = {HW_SHADING_CORNER_NORMALS, HW_SHADING_FLAT,
+                                        HW_SHADING_SMOOTH, HW_SHADING_CREASE};
+  hw_mesh *mesh = NULL;
+  float *normals[4];
+  size_t n[4], i, j;
+  const double *file_normals = NULL;
+  size_t n_file_normals = 0;
+  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/polygonal/pmp_suzanne.obj", HW_BUILD_REPAIR, &mesh,
+                     NULL) == HW_OK);
+  CHECK(hw_mesh_corner_normals_view(mesh, &file_normals, &n_file_normals) == HW_OK);
+  CHECK(file_normals != NULL && n_file_normals == hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE));
+  for (i = 0; i < 4; ++i) normals[i] = normals_of(mesh, shadings[i], &n[i]);
+  for (i = 0; i < 4; ++i)
+    for (j = i + 1; j < 4; ++j)
+      CHECK(normals[i] != NULL && normals[j] != NULL &&
+            (n[i] != n[j] || memcmp(normals[i], normals[j], n[i] * sizeof(float)) != 0));
+  for (i = 0; i < 4; ++i) free(normals[i]);
   hw_mesh_free(mesh);
 }
 
@@ -481,6 +521,7 @@ int main(void) {
   shading_modes_split_vertices();
   interleaved_layout_with_corner_attributes();
   mesh_corner_attributes_are_honoured();
+  explicit_shadings_win_over_a_files_normals();
   boundary_bounds_and_non_manifold_edges();
   polygon_lists();
   polygon_lists_refuse_bad_polygons();

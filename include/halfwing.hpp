@@ -1,9 +1,25 @@
 // halfwing.hpp — header-only C++17 wrapper over the halfwing C API (include/halfwing.h).
 //
 // Owning classes are move-only and free their object in the destructor; failures throw
-// hw::error, which carries the hw_status and the library's message. Element ids stay the C
-// structs (hw_vertex, hw_halfedge, hw_edge, hw_face; hw_wvertex, hw_wedge, hw_wface for the
-// winged-edge kernel).
+// hw::error, which carries the hw_status and the library's message.
+//
+// One vocabulary with C: every function of halfwing.h has a counterpart here with the C name
+// minus the `hw_` and kernel prefix the class gives (hw_mesh_split_face() is
+// hw::mesh::split_face(), hw_winged_set_position() is hw::winged::set_position()), the same
+// argument order and the same defaults (C's `*_default()` option structs); outputs become return
+// values. c_tests/every_function_wrapped.cmake checks it and lists the few exceptions.
+//
+// Element ids stay the C structs (hw_vertex, hw_halfedge, hw_edge, hw_face; hw_wvertex, hw_wedge,
+// hw_wface for the winged-edge kernel), with `==`, `!=`, `<` and std::hash defined below so they
+// work as keys of std::map, std::set and the unordered containers. Voronoi sites, triangles and
+// half-edges are plain `uint32_t` indices, as in C.
+//
+// Enumerations: the wrapper takes the C types and constants as they are (hw_element_kind with
+// HW_ELEMENT_FACE, hw_doctor_finding with HW_DOCTOR_NEEDLES...), not enum class copies, so C and
+// C++ code spell each value the same way. The C types are integers, not C enums, so a value
+// coming back from C is never an invalid enumerator; a value of the wrong family (an
+// HW_DIAG_* list passed as an hw_doctor_finding) is refused with HW_ERR_INVALID_INPUT, the
+// families having disjoint values.
 #ifndef HALFWING_HPP
 #define HALFWING_HPP
 
@@ -13,12 +29,40 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+/// Defines `==`, `!=`, `<` (by index) and std::hash for a C element id. In the global namespace,
+/// the ids' own, so that argument-dependent lookup finds them.
+#define HALFWING_ID_OPERATORS(Id)                                                              \
+  /** Same element: same index. */                                                              \
+  inline bool operator==(Id a, Id b) noexcept { return a.idx == b.idx; }                      \
+  /** Different elements. */                                                                    \
+  inline bool operator!=(Id a, Id b) noexcept { return a.idx != b.idx; }                      \
+  /** Index order (the order of hw_mesh_visit()). */                                            \
+  inline bool operator<(Id a, Id b) noexcept { return a.idx < b.idx; }                        \
+  namespace std {                                                                               \
+  /** Hashes the index. */                                                                      \
+  template <>                                                                                   \
+  struct hash<Id> {                                                                             \
+    /** The hash of the index. */                                                               \
+    std::size_t operator()(Id id) const noexcept { return std::hash<uint32_t>()(id.idx); }      \
+  };                                                                                            \
+  }
+
+HALFWING_ID_OPERATORS(hw_vertex)
+HALFWING_ID_OPERATORS(hw_halfedge)
+HALFWING_ID_OPERATORS(hw_edge)
+HALFWING_ID_OPERATORS(hw_face)
+HALFWING_ID_OPERATORS(hw_wvertex)
+HALFWING_ID_OPERATORS(hw_wedge)
+HALFWING_ID_OPERATORS(hw_wface)
+#undef HALFWING_ID_OPERATORS
 
 namespace hw {
 
@@ -59,6 +103,32 @@ inline void check(hw_status status) {
 
 /// The version of the linked library, e.g. "0.1.0".
 inline std::string version() { return hw_version_string(); }
+/// The version of the linked library as one number (see hw_version_number()).
+inline uint32_t version_number() { return hw_version_number(); }
+
+/// Sets the number of threads the parallel operations use; 0 restores the default (see
+/// hw_set_thread_count()).
+inline void set_thread_count(std::size_t count) { check(hw_set_thread_count(count)); }
+
+/// The name of a diagnostic id list ("isolated vertices", ...); see hw_diagnostic_list_name().
+inline std::string diagnostic_list_name(hw_diagnostic_list list) {
+  const char* name = hw_diagnostic_list_name(list);
+  if (!name) throw error(HW_ERR_INVALID_INPUT, "unknown diagnostic list " + std::to_string(list));
+  return name;
+}
+/// The name of a diagnostic edge list; see hw_diagnostic_edges_name().
+inline std::string diagnostic_edges_name(hw_diagnostic_edges edges) {
+  const char* name = hw_diagnostic_edges_name(edges);
+  if (!name)
+    throw error(HW_ERR_INVALID_INPUT, "unknown diagnostic edge list " + std::to_string(edges));
+  return name;
+}
+/// The name of a doctor finding kind ("needles", ...); see hw_doctor_finding_name().
+inline std::string doctor_finding_name(hw_doctor_finding kind) {
+  const char* name = hw_doctor_finding_name(kind);
+  if (!name) throw error(HW_ERR_INVALID_INPUT, "unknown doctor finding " + std::to_string(kind));
+  return name;
+}
 
 namespace detail {
 
@@ -294,6 +364,28 @@ class diagnostic {
     check(hw_diagnostic_ids(raw_.get(), list, &data, &n));
     return std::vector<uint32_t>(data, data + n);
   }
+  /// An edge of an edge list: its two input vertices (smaller first) and the input faces using
+  /// it (ascending).
+  struct edge_report {
+    std::array<uint32_t, 2> vertices{};  ///< The two input vertices, smaller first.
+    std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
+  };
+  /// The number of edges in one edge list; 0 for an empty diagnostic.
+  std::size_t edge_count(hw_diagnostic_edges edges) const {
+    if (!raw_) return 0;
+    std::size_t n = 0;
+    check(hw_diagnostic_edge_count(raw_.get(), edges, &n));
+    return n;
+  }
+  /// Edge `index` of an edge list (see hw_diagnostic_edge()).
+  edge_report edge(hw_diagnostic_edges edges, std::size_t index) const {
+    edge_report report;
+    const uint32_t* faces = nullptr;
+    std::size_t n_faces = 0;
+    check(hw_diagnostic_edge(raw_.get(), edges, index, report.vertices.data(), &faces, &n_faces));
+    report.faces.assign(faces, faces + n_faces);
+    return report;
+  }
   /// The human-readable account; empty for an empty diagnostic.
   std::string summary() const {
     if (!raw_) return std::string();
@@ -388,6 +480,28 @@ class doctor_report {
     }
     return loops;
   }
+  /// One fan of a non-manifold vertex: the vertex, its number of fans and the fan's faces.
+  struct vertex_fan_view {
+    uint32_t vertex = 0;          ///< The non-manifold vertex.
+    std::size_t n_fans = 0;       ///< Its number of fans.
+    std::vector<uint32_t> faces;  ///< The faces of this fan, ascending.
+  };
+  /// The number of non-manifold vertices whose fans the report lists.
+  std::size_t vertex_fans_count() const {
+    std::size_t n = 0;
+    check(hw_doctor_report_vertex_fans_count(raw_.get(), &n));
+    return n;
+  }
+  /// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fan()).
+  vertex_fan_view vertex_fan(std::size_t index, std::size_t fan) const {
+    vertex_fan_view view;
+    const uint32_t* faces = nullptr;
+    std::size_t n_faces = 0;
+    check(hw_doctor_report_vertex_fan(raw_.get(), index, fan, &view.vertex, &view.n_fans, &faces,
+                                      &n_faces));
+    view.faces.assign(faces, faces + n_faces);
+    return view;
+  }
   /// The input's diagnostic, owned by the report.
   const hw_diagnostic* input_diagnostic() const { return hw_doctor_report_diagnostic(raw_.get()); }
   /// The report as text.
@@ -431,6 +545,29 @@ inline std::vector<std::array<uint32_t, 2>> self_intersections(
   for (std::size_t i = 0; i < n; ++i) found[i] = {ids[2 * i], ids[2 * i + 1]};
   return found;
 }
+
+/// The old-to-new id maps of a compaction (owns an hw_index_maps; see
+/// hw_mesh_garbage_collect()).
+class index_maps {
+ public:
+  /// No maps.
+  index_maps() = default;
+  /// Takes ownership of maps a C call gave.
+  explicit index_maps(hw_index_maps* raw) : raw_(raw) {}
+  /// The old-to-new map of one element kind (HW_INVALID_INDEX for removed elements), valid as
+  /// long as the maps.
+  values_view<const uint32_t> view(hw_element_kind kind) const {
+    const uint32_t* ids = nullptr;
+    std::size_t n = 0;
+    check(hw_index_maps_view(raw_.get(), kind, &ids, &n));
+    return values_view<const uint32_t>(ids, n);
+  }
+  /// The C object, still owned by these maps.
+  hw_index_maps* get() const noexcept { return raw_.get(); }
+
+ private:
+  detail::owned<hw_index_maps, hw_index_maps_free> raw_;
+};
 
 /// What a repair changed (owns an hw_repair_report; see hw_soup_merge_vertices()).
 class repair_report {
@@ -729,11 +866,45 @@ class mesh {
     check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
     return loops;
   }
+  /// The number of boundary loops (see hw_mesh_n_boundary_loops()).
+  std::size_t n_boundary_loops() const {
+    std::size_t n = 0;
+    check(hw_mesh_n_boundary_loops(get(), &n));
+    return n;
+  }
   /// The number of connected components.
   std::size_t n_components() const {
     std::size_t n = 0;
     check(hw_mesh_n_components(get(), &n));
     return n;
+  }
+  /// The component of every face slot (see hw_mesh_face_components()).
+  std::vector<uint32_t> face_components() const {
+    std::vector<uint32_t> out(slots(HW_ELEMENT_FACE));
+    std::size_t n = 0;
+    check(hw_mesh_face_components(get(), out.data(), out.size(), &n));
+    out.resize(n);
+    return out;
+  }
+  /// Half-edge `side` (0 or 1) of edge `e`.
+  hw_halfedge edge_halfedge(hw_edge e, uint32_t side) const {
+    return hw_mesh_edge_halfedge(get(), e, side);
+  }
+
+  /// A zero-copy view of one connectivity array (see hw_mesh_view()), valid until the next call
+  /// that modifies the mesh.
+  values_view<const uint32_t> view(hw_mesh_array which) const {
+    const uint32_t* data = nullptr;
+    std::size_t n = 0;
+    check(hw_mesh_view(get(), which, &data, &n));
+    return values_view<const uint32_t>(data, n);
+  }
+  /// A zero-copy view of the positions, x y z per vertex slot (see hw_mesh_view_positions()).
+  values_view<const double> view_positions() const {
+    const double* xyz = nullptr;
+    std::size_t n = 0;
+    check(hw_mesh_view_positions(get(), &xyz, &n));
+    return values_view<const double>(xyz, 3 * n);
   }
 
   // Normals, x y z per element slot.
@@ -755,6 +926,20 @@ class mesh {
     check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
     return out;
   }
+  /// Face and vertex normals in one pass (see hw_mesh_normals()).
+  struct face_and_vertex_normals {
+    std::vector<double> faces;     ///< x y z per face slot
+    std::vector<double> vertices;  ///< x y z per vertex slot
+  };
+  /// Face and vertex normals in one pass (see hw_mesh_normals()).
+  face_and_vertex_normals normals(hw_normal_weighting weighting_kind) const {
+    face_and_vertex_normals out;
+    out.faces.resize(3 * slots(HW_ELEMENT_FACE));
+    out.vertices.resize(3 * slots(HW_ELEMENT_VERTEX));
+    check(hw_mesh_normals(get(), weighting_kind, out.faces.data(), out.faces.size() / 3, nullptr,
+                          out.vertices.data(), out.vertices.size() / 3, nullptr));
+    return out;
+  }
 
   // Editing; a refused operation throws hw::error (HW_ERR_REFUSED) and changes nothing.
   /// Adds an isolated vertex at `p`.
@@ -763,26 +948,56 @@ class mesh {
     check(hw_mesh_add_vertex(get(), p.data(), &v));
     return v;
   }
-  /// Flips edge `e` (see hw_mesh_flip_edge()).
-  void flip(hw_edge e) { check(hw_mesh_flip_edge(get(), e)); }
-  /// Splits edge `e` at `p`; returns the new vertex.
-  hw_vertex split(hw_edge e, const std::array<double, 3>& p) {
+  /// Moves vertex `v` to `p` (finite).
+  void set_vertex_position(hw_vertex v, const std::array<double, 3>& p) {
+    check(hw_mesh_set_vertex_position(get(), v, p.data()));
+  }
+  /// Flips interior edge `e` between two triangles (see hw_mesh_flip_edge()).
+  void flip_edge(hw_edge e) { check(hw_mesh_flip_edge(get(), e)); }
+  /// Splits edge `e` at `p`; returns the new vertex (see hw_mesh_split_edge()).
+  hw_vertex split_edge(hw_edge e, const std::array<double, 3>& p) {
     hw_vertex v;
     check(hw_mesh_split_edge(get(), e, p.data(), &v));
     return v;
   }
-  /// Collapses half-edge `h`: its origin merges into its target, which is returned (see hw_mesh_collapse_halfedge()).
-  hw_vertex collapse(hw_halfedge h) {
+  /// Splits the face of `h0` and `h1` with a new edge from `h0`'s target to `h1`'s target;
+  /// returns the new half-edge (see hw_mesh_split_face()).
+  hw_halfedge split_face(hw_halfedge h0, hw_halfedge h1) {
+    hw_halfedge h;
+    check(hw_mesh_split_face(get(), h0, h1, &h));
+    return h;
+  }
+  /// Triangulates face `f`; returns the number of faces it became (see
+  /// hw_mesh_triangulate_face()).
+  std::size_t triangulate_face(hw_face f) {
+    std::size_t n = 0;
+    check(hw_mesh_triangulate_face(get(), f, &n));
+    return n;
+  }
+  /// Collapses `h`, moving its origin onto its target; returns the vertex kept (see
+  /// hw_mesh_collapse_halfedge()).
+  hw_vertex collapse_halfedge(hw_halfedge h) {
     hw_vertex v;
     check(hw_mesh_collapse_halfedge(get(), h, &v));
     return v;
   }
-  /// Deletes face `f`, and the vertices it leaves isolated unless told not to.
-  void remove(hw_face f, bool delete_isolated_vertices = true) {
+  /// Deletes face `f`, and the vertices it leaves isolated when asked (see
+  /// hw_mesh_delete_face()).
+  void delete_face(hw_face f, bool delete_isolated_vertices) {
     check(hw_mesh_delete_face(get(), f, delete_isolated_vertices));
   }
-  /// Removes deleted elements for good, renumbering the live ones in their order.
-  void garbage_collect() { check(hw_mesh_garbage_collect(get(), nullptr)); }
+  /// Deletes edge `e` with the faces beside it (see hw_mesh_delete_edge()).
+  void delete_edge(hw_edge e, bool delete_isolated_vertices) {
+    check(hw_mesh_delete_edge(get(), e, delete_isolated_vertices));
+  }
+  /// Deletes vertex `v` with every face around it.
+  void delete_vertex(hw_vertex v) { check(hw_mesh_delete_vertex(get(), v)); }
+  /// Removes deleted elements for good; returns the old-to-new maps.
+  index_maps garbage_collect() {
+    hw_index_maps* maps = nullptr;
+    check(hw_mesh_garbage_collect(get(), &maps));
+    return index_maps(maps);
+  }
   /// Glues coincident boundary edges (see hw_mesh_stitch_borders()); the mesh is compacted,
   /// the report's maps giving the new ids.
   repair_report stitch_borders(double tolerance = 0, bool relative = false) {
@@ -829,6 +1044,15 @@ class mesh {
     check(hw_mesh_attribute_data(get(), kind, name.c_str(), detail::scalar_type<T>::value, &data,
                                  &size));
     return values_view<T>(static_cast<T*>(data), size);
+  }
+
+  /// The scalar type and the components per element of attribute `name` (see
+  /// hw_mesh_attribute_info()).
+  std::pair<hw_scalar_type, std::size_t> attribute_info(hw_element_kind kind,
+                                                         const std::string& name) const {
+    std::pair<hw_scalar_type, std::size_t> info{};
+    check(hw_mesh_attribute_info(get(), kind, name.c_str(), &info.first, &info.second));
+    return info;
   }
 
   /// Removes attribute `name` of `kind`.
@@ -943,6 +1167,24 @@ class winged {
                                                    indices, policy, report));
   }
 
+  /// Builds like from_indexed() (strict policy), numbering and directing the edges as
+  /// `edge_order` lists them (two vertex indices per edge); see hw_winged_from_indexed_ordered().
+  static winged from_indexed_ordered(const std::vector<double>& positions,
+                                     const std::vector<uint32_t>& face_sizes,
+                                     const std::vector<uint32_t>& indices,
+                                     const std::vector<uint32_t>& edge_order) {
+    if (positions.size() % 3 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    if (edge_order.size() % 2 != 0)
+      throw error(HW_ERR_INVALID_INPUT, "edge_order: size is not a multiple of 2 (from, to)");
+    hw_winged* raw = nullptr;
+    check(hw_winged_from_indexed_ordered(positions.data(), positions.size() / 3,
+                                         face_sizes.data(), face_sizes.size(), indices.data(),
+                                         indices.size(), edge_order.data(),
+                                         edge_order.size() / 2, &raw));
+    return winged(raw);
+  }
+
   /// The winged-edge structure of a half-edge mesh (same ids); see hw_winged_from_mesh().
   static winged from_mesh(const hw::mesh& m) {
     hw_winged* raw = nullptr;
@@ -976,6 +1218,14 @@ class winged {
     check(hw_winged_edge(get(), e, &record));
     return record;
   }
+  /// A zero-copy view of every edge record, indexed by edge id (see hw_winged_edge_records()),
+  /// valid until the next call that modifies the structure.
+  values_view<const hw_wedge_record> edge_records() const {
+    const hw_wedge_record* records = nullptr;
+    std::size_t n = 0;
+    check(hw_winged_edge_records(get(), &records, &n));
+    return values_view<const hw_wedge_record>(records, n);
+  }
   ///@{
   /// Whether the id names a live element.
   bool is_vertex(hw_wvertex v) const { return hw_winged_is_vertex(get(), v); }
@@ -1002,6 +1252,23 @@ class winged {
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
   /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
   point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
+  /// The unit normals of all faces or all vertices (HW_WNORMALS_FACES, HW_WNORMALS_VERTICES), x
+  /// y z per id (see hw_winged_normals()).
+  std::vector<double> normals(hw_wnormals which) const {
+    std::size_t needed = 0;
+    const hw_status sized = hw_winged_normals(get(), which, nullptr, 0, &needed);
+    if (needed == 0) {
+      check(sized);
+      return {};
+    }
+    std::vector<double> xyz(needed);
+    check(hw_winged_normals(get(), which, xyz.data(), xyz.size(), &needed));
+    return xyz;
+  }
+  /// Moves vertex `v` to `p` (finite).
+  void set_position(hw_wvertex v, const point& p) {
+    check(hw_winged_set_position(get(), v, p.data()));
+  }
 
   /// The edges of `f`'s loop, counter-clockwise from its stored edge.
   edge_range face_edges(hw_wface f) const { return edge_range(around(f, HW_WCIRC_EDGES)); }
@@ -1044,8 +1311,12 @@ class winged {
   void kef(hw_wedge e, hw_wface kill) { check(hw_winged_kef(get(), e, kill)); }
   /// Euler operator KVFS: kills the last vertex, face `f` and the shell (see hw_winged_kvfs()).
   void kvfs(hw_wface f) { check(hw_winged_kvfs(get(), f)); }
-  /// Removes deleted elements for good, renumbering the live ones in their order.
-  void garbage_collect() { check(hw_winged_garbage_collect(get(), nullptr)); }
+  /// Drops the elements the kill operators deleted; returns the old-to-new maps.
+  index_maps garbage_collect() {
+    hw_index_maps* maps = nullptr;
+    check(hw_winged_garbage_collect(get(), &maps));
+    return index_maps(maps);
+  }
 
   /// Throws hw::error naming the first broken invariant, if any.
   void check_invariants() const { check(hw_winged_check(get())); }

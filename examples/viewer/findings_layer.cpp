@@ -90,7 +90,8 @@ findings_layer::findings_layer(const std::string& path) {
     }
     if (high > low) size = std::fmax(size, static_cast<float>(high - low) / 100);
   }
-  for (hw_doctor_finding kind = 0; kind < HW_DOCTOR_FINDING_COUNT; ++kind) {
+  for (hw_doctor_finding kind = HW_DOCTOR_FINDING_FIRST;
+       kind < HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT; ++kind) {
     kind_layer layer;
     layer.kind = kind;
     layer.n_items = report_.finding(kind).n_items;
@@ -109,7 +110,7 @@ findings_layer::findings_layer(const std::string& path) {
 void findings_layer::draw(GLuint line_program) const {
   for (const kind_layer& layer : kinds_) {
     if (!layer.shown) continue;
-    const line_style& style = kind_styles[layer.kind].style;
+    const line_style& style = kind_styles[layer.kind - HW_DOCTOR_FINDING_FIRST].style;
     draw_lines(line_program, style, layer.outlines.get());
     draw_lines(line_program, style, layer.lines.get());
     draw_lines(line_program, style, layer.crosses.get());
@@ -118,7 +119,7 @@ void findings_layer::draw(GLuint line_program) const {
 
 bool findings_layer::on_key(int key) {
   for (kind_layer& layer : kinds_) {
-    if (kind_styles[layer.kind].key == key) {
+    if (kind_styles[layer.kind - HW_DOCTOR_FINDING_FIRST].key == key) {
       layer.shown = !layer.shown;
       return true;
     }
@@ -129,7 +130,7 @@ bool findings_layer::on_key(int key) {
 std::string findings_layer::help() const {
   std::ostringstream out;
   for (const kind_layer& layer : kinds_) {
-    const kind_style& style = kind_styles[layer.kind];
+    const kind_style& style = kind_styles[layer.kind - HW_DOCTOR_FINDING_FIRST];
     out << "  " << style.key_name << "          " << hw_doctor_finding_name(layer.kind) << " ("
         << style.color_name << "; " << layer.n_items << (layer.shown ? ", shown" : ", hidden")
         << ")\n";

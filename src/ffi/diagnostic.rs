@@ -19,7 +19,6 @@ use super::status::*;
 /// indices refer to the input face list, vertex indices to the input positions. Faces with fewer
 /// than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
 /// the edge, fan and area findings. Every list is sorted ascending.
-/// \ingroup mesh
 pub struct hw_diagnostic {
     pub(crate) diagnostic: Diagnostic,
 }
@@ -72,87 +71,120 @@ pub(crate) unsafe fn give_built<T: 'static>(
     })
 }
 
-/// One list of element ids in a diagnostic (see hw_diagnostic_ids()).
-/// \ingroup mesh
+/// One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
+/// ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
+/// lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
+/// one family passed where another is expected is refused, never read as a different list.
 pub type hw_diagnostic_list = u32;
+/// The first id list.
+pub const HW_DIAG_LIST_FIRST: hw_diagnostic_list = 16;
 /// Faces with fewer than 3 corners.
-/// \ingroup mesh
-pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 0;
+pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 16;
 /// Faces with a vertex index beyond the positions.
-/// \ingroup mesh
-pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 1;
+pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 17;
 /// Faces naming one vertex more than once.
-/// \ingroup mesh
-pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 2;
+pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 18;
 /// Vertices with a NaN or infinite coordinate.
-/// \ingroup mesh
-pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 3;
+pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 19;
 /// Vertices whose faces form more than one fan, faces being in one fan when they share an edge
 /// at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
 /// ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
-/// \ingroup mesh
-pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 4;
+pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 20;
 /// Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
 /// face, but not listed here).
-/// \ingroup mesh
-pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 5;
+pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 21;
 /// Faces with zero area.
-/// \ingroup mesh
-pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 6;
+pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 22;
 /// Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
 /// `i`-th input face not listed here.
-/// \ingroup mesh
-pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 7;
+pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 23;
 /// Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
 /// copies input vertex `ids[i]` (same position).
-/// \ingroup mesh
-pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 8;
+pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 24;
 /// Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
 /// neighbours, or to turn a closed component outward).
-/// \ingroup mesh
-pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 9;
+pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 25;
+/// The number of id lists.
+pub const HW_DIAG_LIST_COUNT: hw_diagnostic_list = 10;
 
-/// One list of edges in a diagnostic (see hw_diagnostic_edge()).
-/// \ingroup mesh
+/// One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
+/// ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
+/// lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
 pub type hw_diagnostic_edges = u32;
+/// The first edge list.
+pub const HW_DIAG_EDGES_FIRST: hw_diagnostic_edges = 32;
 /// Edges used by three or more faces.
-/// \ingroup mesh
-pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 0;
+pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 32;
 /// Edges whose two faces traverse them in the same direction.
-/// \ingroup mesh
-pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 1;
+pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 33;
+/// The number of edge lists.
+pub const HW_DIAG_EDGES_COUNT: hw_diagnostic_edges = 2;
+
+/// A list of a diagnostic: where it lives in one, and its name.
+type NamedList<T> = (fn(&Diagnostic) -> &[T], &'static std::ffi::CStr);
+
+/// Each id list in the order of its values.
+const ID_LISTS: [NamedList<u32>; HW_DIAG_LIST_COUNT as usize] = [
+    (|d| &d.faces_too_small, c"faces with fewer than 3 corners"),
+    (
+        |d| &d.faces_out_of_range,
+        c"faces with out-of-range vertex indices",
+    ),
+    (
+        |d| &d.faces_repeated_vertex,
+        c"faces with a repeated vertex",
+    ),
+    (
+        |d| &d.non_finite_vertices,
+        c"vertices with NaN/infinite coordinates",
+    ),
+    (|d| &d.non_manifold_vertices, c"non-manifold vertices"),
+    (|d| &d.isolated_vertices, c"isolated vertices"),
+    (|d| &d.degenerate_faces, c"degenerate faces"),
+    (|d| &d.skipped_faces, c"skipped faces"),
+    (|d| &d.vertex_copies, c"vertex copies"),
+    (|d| &d.reoriented_faces, c"reoriented faces"),
+];
+
+/// Each edge list in the order of its values.
+const EDGE_LISTS: [NamedList<EdgeReport>; HW_DIAG_EDGES_COUNT as usize] = [
+    (|d| &d.non_manifold_edges, c"non-manifold edges (3+ faces)"),
+    (|d| &d.inconsistent_edges, c"inconsistently oriented edges"),
+];
+
+/// The entry of `table` for `value`, the table's values starting at `first`.
+fn entry<T: Copy>(table: &[T], first: u32, value: u32) -> Option<T> {
+    let offset = value.checked_sub(first)?;
+    table.get(offset as usize).copied()
+}
 
 fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], FfiError> {
-    Ok(match list {
-        HW_DIAG_FACES_TOO_SMALL => &diagnostic.faces_too_small,
-        HW_DIAG_FACES_OUT_OF_RANGE => &diagnostic.faces_out_of_range,
-        HW_DIAG_FACES_REPEATED_VERTEX => &diagnostic.faces_repeated_vertex,
-        HW_DIAG_NON_FINITE_VERTICES => &diagnostic.non_finite_vertices,
-        HW_DIAG_NON_MANIFOLD_VERTICES => &diagnostic.non_manifold_vertices,
-        HW_DIAG_ISOLATED_VERTICES => &diagnostic.isolated_vertices,
-        HW_DIAG_DEGENERATE_FACES => &diagnostic.degenerate_faces,
-        HW_DIAG_SKIPPED_FACES => &diagnostic.skipped_faces,
-        HW_DIAG_VERTEX_COPIES => &diagnostic.vertex_copies,
-        HW_DIAG_REORIENTED_FACES => &diagnostic.reoriented_faces,
-        other => {
-            return Err(FfiError::invalid_input(format!(
-                "unknown diagnostic list {other}"
-            )));
-        }
-    })
+    let (ids, _) = entry(&ID_LISTS, HW_DIAG_LIST_FIRST, list)
+        .ok_or_else(|| FfiError::invalid_input(format!("unknown diagnostic list {list}")))?;
+    Ok(ids(diagnostic))
 }
 
 fn edge_list(
     diagnostic: &Diagnostic,
     edges: hw_diagnostic_edges,
 ) -> Result<&[EdgeReport], FfiError> {
-    match edges {
-        HW_DIAG_NON_MANIFOLD_EDGES => Ok(&diagnostic.non_manifold_edges),
-        HW_DIAG_INCONSISTENT_EDGES => Ok(&diagnostic.inconsistent_edges),
-        other => Err(FfiError::invalid_input(format!(
-            "unknown diagnostic edge list {other}"
-        ))),
-    }
+    let (list, _) = entry(&EDGE_LISTS, HW_DIAG_EDGES_FIRST, edges)
+        .ok_or_else(|| FfiError::invalid_input(format!("unknown diagnostic edge list {edges}")))?;
+    Ok(list(diagnostic))
+}
+
+/// The name of an id list ("isolated vertices", …) as static text; NULL for an unknown list.
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_diagnostic_list_name(list: hw_diagnostic_list) -> *const std::ffi::c_char {
+    entry(&ID_LISTS, HW_DIAG_LIST_FIRST, list).map_or(std::ptr::null(), |(_, name)| name.as_ptr())
+}
+
+/// The name of an edge list ("non-manifold edges (3+ faces)", …) as static text; NULL for an
+/// unknown list.
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_diagnostic_edges_name(edges: hw_diagnostic_edges) -> *const std::ffi::c_char {
+    entry(&EDGE_LISTS, HW_DIAG_EDGES_FIRST, edges)
+        .map_or(std::ptr::null(), |(_, name)| name.as_ptr())
 }
 
 /// Analyses an indexed face list without building anything (same arguments as
@@ -162,7 +194,6 @@ fn edge_list(
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed().
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnose_indexed(
     positions: *const f64,
@@ -193,7 +224,6 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
     // SAFETY: forwarded from the caller.
@@ -204,7 +234,6 @@ pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic) -> bool {
     // SAFETY: forwarded from the caller.
@@ -220,7 +249,6 @@ pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_ids(
     diagnostic: *const hw_diagnostic,
@@ -240,7 +268,6 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_count` writable.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge_count(
     diagnostic: *const hw_diagnostic,
@@ -267,7 +294,6 @@ pub unsafe extern "C" fn hw_diagnostic_edge_count(
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
 /// `out_faces` and `out_n_faces` writable.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge(
     diagnostic: *const hw_diagnostic,
@@ -310,7 +336,6 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
 /// # Safety
 /// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
 /// writable.
-/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_summary(
     diagnostic: *const hw_diagnostic,
@@ -354,6 +379,40 @@ mod tests {
         };
         assert_eq!(status, HW_OK);
         assert_eq!((vertices, faces, n_faces), ([1, 2], std::ptr::null(), 0));
+        unsafe { hw_diagnostic_free(handle) };
+    }
+
+    #[test]
+    fn every_list_has_a_name_and_the_families_never_share_a_value() {
+        use super::super::doctor::{HW_DOCTOR_FINDING_COUNT, HW_DOCTOR_FINDING_FIRST};
+        let lists = HW_DIAG_LIST_FIRST..HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT;
+        let edges = HW_DIAG_EDGES_FIRST..HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT;
+        let findings = HW_DOCTOR_FINDING_FIRST..HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT;
+        assert_eq!(lists.clone().last(), Some(HW_DIAG_REORIENTED_FACES));
+        assert_eq!(edges.clone().last(), Some(HW_DIAG_INCONSISTENT_EDGES));
+        for value in 0..=findings.end {
+            let families = [&lists, &edges, &findings];
+            assert!(families.iter().filter(|f| f.contains(&value)).count() <= 1);
+            assert_eq!(
+                hw_diagnostic_list_name(value).is_null(),
+                !lists.contains(&value)
+            );
+            assert_eq!(
+                hw_diagnostic_edges_name(value).is_null(),
+                !edges.contains(&value)
+            );
+        }
+        // A value of the wrong family is refused, not read as another list.
+        let handle = hw_diagnostic::into_handle(Diagnostic::default());
+        let (mut ids, mut len, mut count) = (std::ptr::null(), 0usize, 0usize);
+        let wrong_list =
+            unsafe { hw_diagnostic_ids(handle, HW_DIAG_NON_MANIFOLD_EDGES, &mut ids, &mut len) };
+        let wrong_edges =
+            unsafe { hw_diagnostic_edge_count(handle, HW_DIAG_FACES_TOO_SMALL, &mut count) };
+        assert_eq!(
+            (wrong_list, wrong_edges),
+            (HW_ERR_INVALID_INPUT, HW_ERR_INVALID_INPUT)
+        );
         unsafe { hw_diagnostic_free(handle) };
     }
 }

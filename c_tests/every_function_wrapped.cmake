@@ -1,0 +1,67 @@
+# Fails when a function declared in halfwing.h (or defined inline in halfwing_nav.h) has no C++
+# counterpart in halfwing.hpp and is not listed below as an exception with its reason.
+#
+# A counterpart is recognised by the C function's name appearing in halfwing.hpp's code, comments
+# left out, as a whole identifier: the wrapper calls the function (hw_mesh_split_face(...)) or
+# hands it over (hw_mesh_free as an owner's release function, hw_nav_circ_next_vertex as a
+# range's step). The wrapper's naming rule (the C name minus its prefix, same argument order and
+# defaults) is stated at the top of halfwing.hpp. HEADERS lists the C headers, HPP the wrapper.
+set(exceptions
+  # The checked circulator steps and their callback walk: C++ walks with the ranges
+  # (hw::mesh::outgoing(), vertices_of(), ...), whose start checks the id with hw_circ_around_*
+  # and whose steps are the inline hw_nav_circ_next_* of halfwing_nav.h, in the same order.
+  hw_circ_next_halfedge "the ranges step with hw_nav_circ_next_halfedge"
+  hw_circ_next_vertex "the ranges step with hw_nav_circ_next_vertex"
+  hw_circ_next_edge "the ranges step with hw_nav_circ_next_edge"
+  hw_circ_next_face "the ranges step with hw_nav_circ_next_face"
+  hw_circ_visit "C's callback form of a circulation; C++ iterates a range with a for loop"
+)
+
+set(header "")
+foreach(path IN LISTS HEADERS)
+  file(READ "${path}" text)
+  string(APPEND header "${text}")
+endforeach()
+# Declarations only: the comments name functions too.
+string(REGEX REPLACE "/\\*([^*]|\\*+[^*/])*\\*+/" "" header "${header}")
+string(REGEX REPLACE "//[^\n]*" "" header "${header}")
+# Every function the code of the headers names: the declarations, and in halfwing_nav.h the
+# inline definitions (which call each other).
+string(REGEX MATCHALL "hw_[a-z_0-9]+\\(" declarations "${header}")
+list(REMOVE_DUPLICATES declarations)
+
+file(READ "${HPP}" wrapper)
+string(REGEX REPLACE "//[^\n]*" "" wrapper "${wrapper}")
+string(REGEX REPLACE "/\\*([^*]|\\*+[^*/])*\\*+/" "" wrapper "${wrapper}")
+
+set(excepted "")
+list(LENGTH exceptions n_entries)
+math(EXPR last "${n_entries} - 1")
+foreach(i RANGE 0 ${last} 2)
+  list(GET exceptions ${i} name)
+  list(APPEND excepted "${name}")
+endforeach()
+
+set(missing "")
+set(stale "")
+set(count 0)
+foreach(declaration IN LISTS declarations)
+  string(REGEX REPLACE "\\($" "" name "${declaration}")
+  math(EXPR count "${count} + 1")
+  # A whole identifier: not followed by another identifier character.
+  string(REGEX MATCH "${name}([^a-z_0-9]|$)" used "${wrapper}")
+  list(FIND excepted "${name}" at)
+  if(NOT used AND at EQUAL -1)
+    list(APPEND missing "${name}")
+  elseif(used AND NOT at EQUAL -1)
+    list(APPEND stale "${name}")
+  endif()
+endforeach()
+if(stale)
+  message(FATAL_ERROR "listed as exceptions but wrapped: ${stale}; remove them from the list")
+endif()
+if(missing)
+  list(LENGTH missing n_missing)
+  message(FATAL_ERROR "${n_missing} C functions have no C++ counterpart in halfwing.hpp: ${missing}")
+endif()
+message(STATUS "all ${count} functions of the headers have a C++ counterpart or a listed reason")
