@@ -83,6 +83,24 @@ pub(crate) fn try_reserve<T>(
         .map_err(|_| OutOfMemory::of::<T>(array.len().saturating_add(additional), what))
 }
 
+/// Appends `item` to an array that grows one item at a time, as records of a file without
+/// declared counts come (items of `what`): growth doubles as `push`'s does, but a refusal comes
+/// back instead of aborting.
+#[inline]
+pub(crate) fn try_push<T>(
+    array: &mut Vec<T>,
+    item: T,
+    what: &'static str,
+) -> Result<(), OutOfMemory> {
+    if array.len() == array.capacity() {
+        array
+            .try_reserve(1)
+            .map_err(|_| OutOfMemory::of::<T>(array.len().saturating_mul(2).max(1), what))?;
+    }
+    array.push(item);
+    Ok(())
+}
+
 /// Working memory smaller than this is not worth asking for ahead (see [`ensure_room`]).
 const ROOM_CHECK_THRESHOLD_BYTES: u64 = 64 << 20;
 

@@ -216,6 +216,24 @@ fn a_lying_header_is_refused_without_reserving_what_it_declares() {
     );
 }
 
+/// An OBJ file declares no counts: its arrays grow as its records come, and a file whose
+/// vertices take more memory than there is (12 million, 288 MB of positions from 96 MB of text)
+/// is refused with `OutOfMemory` instead of aborting in the growth.
+#[test]
+fn an_obj_file_larger_than_memory_is_refused_as_it_grows() {
+    under_memory_limit(
+        "an_obj_file_larger_than_memory_is_refused_as_it_grows",
+        || b"v 0 0 0\n".repeat(12_000_000),
+        |obj| {
+            let refused = read_bytes(MeshFormat::Obj, &obj).unwrap_err();
+            assert!(
+                matches!(refused, IoError::OutOfMemory(ref o) if o.what == "vertices"),
+                "{refused:?}"
+            );
+        },
+    );
+}
+
 /// The peak memory of reading a file whose header lies stays that of the file, not of its
 /// declared counts (measured in the child, whose peak is its own).
 #[test]

@@ -102,7 +102,7 @@ fn case(rng: &mut TestRng) {
 
 #[test]
 fn random_edit_sequences_keep_the_mesh_valid() {
-    run("mesh_edits", 10_000, case);
+    run("mesh_edits", 100_000, case);
 }
 
 #[test]

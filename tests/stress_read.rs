@@ -99,7 +99,7 @@ fn case(rng: &mut TestRng) {
 
 #[test]
 fn readers_take_random_and_mutated_files() {
-    run("read", 20_000, case);
+    run("read", 500_000, case);
 }
 
 #[test]

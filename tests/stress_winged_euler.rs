@@ -82,7 +82,7 @@ fn case(rng: &mut TestRng) {
 
 #[test]
 fn random_euler_sequences_keep_the_structure_valid() {
-    run("winged_euler", 10_000, case);
+    run("winged_euler", 100_000, case);
 }
 
 #[test]

@@ -243,7 +243,7 @@ fn rings_and_loops_agree_with_the_half_edge_circulators() {
 }
 
 #[test]
-fn point_faces_do_not_convert_and_deleted_elements_are_compacted() {
+fn point_faces_do_not_convert_and_deleted_elements_are_left_out_of_the_round_trip() {
     let mut w = Winged::new();
     let (v0, f0) = w.mvfs([0.0; 3]).unwrap();
     assert!(matches!(w.to_mesh(), Err(WingedError::NotConvertible(_))));
@@ -287,6 +287,52 @@ fn repaired_broken_models_convert_both_ways() {
             );
         }
     }
+}
+
+/// A vertex with a non-finite coordinate is held deleted by both builders (its faces left out):
+/// the winged structure converts to the builder's mesh with that vertex deleted at its own id,
+/// not to a compacted mesh whose later vertices moved down by one.
+#[test]
+fn non_finite_vertices_keep_their_ids_through_the_conversion() {
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [f64::NAN, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ];
+    let list = halfwing::soup::FaceList::polygons(&positions, &[3, 4], &[0, 1, 2, 0, 2, 3, 4]);
+    for policy in [BuildPolicy::Skip, BuildPolicy::Repair] {
+        let (mesh, _) = Mesh::from_face_list(&list, policy).unwrap();
+        let (w, _) = Winged::from_face_list(&list, policy).unwrap();
+        assert!(mesh.is_vertex_deleted(mesh::VertexId(1)), "{policy:?}");
+        let converted = w.to_mesh().unwrap();
+        assert_eq!(converted.halfedge_origins(), mesh.halfedge_origins());
+        assert_eq!(converted, mesh, "{policy:?}");
+        assert_eq!(converted.n_vertices(), 4);
+        assert_eq!(converted.vertex_capacity(), 5);
+    }
+}
+
+/// Elements an Euler operator deleted stay in the converted mesh, deleted at their ids, until
+/// either structure is compacted; compacting before or after the conversion agrees.
+#[test]
+fn deleted_elements_stay_deleted_through_the_conversion() {
+    let mut w = Winged::new();
+    let (v0, f0) = w.mvfs([0.0; 3]).unwrap();
+    let (_, v1) = w.mev(f0, v0, [1.0, 0.0, 0.0]).unwrap();
+    let (_, v2) = w.mev(f0, v1, [0.0, 1.0, 0.0]).unwrap();
+    w.mef(f0, v2, v0).unwrap();
+    let (spare, tip) = w.mev(f0, v1, [2.0, 2.0, 0.0]).unwrap();
+    w.kev(spare, tip).unwrap();
+    let mut mesh = w.to_mesh().unwrap();
+    mesh.check().unwrap();
+    assert!(mesh.is_vertex_deleted(mesh::VertexId(tip.0)));
+    assert!(mesh.is_edge_deleted(mesh::EdgeId(spare.0)));
+    mesh.garbage_collect();
+    let mut compacted = w.clone();
+    compacted.garbage_collect();
+    assert_eq!(mesh, compacted.to_mesh().unwrap());
 }
 
 mod random {

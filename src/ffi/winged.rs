@@ -302,9 +302,10 @@ pub unsafe extern "C" fn hw_winged_from_mesh(
 }
 
 /// Converts to a half-edge mesh (the inverse of hw_winged_from_mesh()): edge `e`'s left side
-/// becomes half-edge `2e`, its right side `2e + 1`; ids are kept (deleted elements compacted
-/// away first). Converting a structure built by hw_winged_from_indexed() gives the mesh
-/// hw_mesh_from_indexed() builds from the same input.
+/// becomes half-edge `2e`, its right side `2e + 1`; ids are kept, deleted elements included
+/// (they stay deleted in the mesh until hw_mesh_garbage_collect()). Converting a structure built
+/// by hw_winged_from_indexed() gives the mesh hw_mesh_from_indexed() builds from the same input,
+/// under every policy (input vertices with a non-finite coordinate are deleted in both).
 ///
 /// Returns `HW_ERR_REFUSED` when a face has no edges (a point face made by hw_winged_mvfs():
 /// a half-edge face needs a half-edge).

@@ -33,6 +33,7 @@
 
 use std::io::Read;
 
+use crate::allocation::{OutOfMemory, try_push, try_vec_with_capacity};
 use crate::soup::PolygonSoup;
 
 use super::error::IoError;
@@ -151,15 +152,15 @@ impl ObjReader {
                 if self.positions.len() >= u32::MAX as usize {
                     return Err(self.error("more than 4294967295 vertices"));
                 }
-                self.positions.push(position);
+                try_push(&mut self.positions, position, "vertices")?;
             }
             Some(b"vn") => {
                 let normal = self.floats::<3>(&mut tokens, 3, "normal")?;
-                self.normals.push(normal);
+                try_push(&mut self.normals, normal, "normals")?;
             }
             Some(b"vt") => {
                 let uv = self.floats::<2>(&mut tokens, 1, "texture coordinate")?;
-                self.uvs.push(uv);
+                try_push(&mut self.uvs, uv, "texture coordinates")?;
             }
             Some(b"f" | b"fo") => self.face(tokens)?,
             _ => {}
@@ -218,19 +219,19 @@ impl ObjReader {
                 return Err(self.error(format!("corner {} has no vertex index", quote(corner))));
             }
             let vertex = self.resolve(vertex, Kind::Position)?;
-            self.indices.push(vertex);
+            try_push(&mut self.indices, vertex, "corners")?;
             let uv = if uv.is_empty() {
                 ABSENT
             } else {
                 self.resolve(uv, Kind::TexCoord)?
             };
-            self.corner_uv_refs.push(uv);
+            try_push(&mut self.corner_uv_refs, uv, "corners")?;
             let normal = if normal.is_empty() {
                 ABSENT
             } else {
                 self.resolve(normal, Kind::Normal)?
             };
-            self.corner_normal_refs.push(normal);
+            try_push(&mut self.corner_normal_refs, normal, "corners")?;
             size = size
                 .checked_add(1)
                 .ok_or_else(|| self.error("face has more than 2^32 - 1 corners"))?;
@@ -238,7 +239,7 @@ impl ObjReader {
         if size == 0 {
             return Err(self.error("face record without vertices"));
         }
-        self.face_sizes.push(size);
+        try_push(&mut self.face_sizes, size, "faces")?;
         Ok(())
     }
 
@@ -284,11 +285,16 @@ impl ObjReader {
             .filter(|&index| index != u32::MAX)
             .ok_or_else(|| self.error(format!("{} index {value} is too large", kind.name())))?;
         if resolved as usize >= defined {
-            self.forward_references.push(ForwardReference {
+            let reference = ForwardReference {
                 line: self.line,
                 kind,
                 index: resolved,
-            });
+            };
+            try_push(
+                &mut self.forward_references,
+                reference,
+                "forward references",
+            )?;
         }
         Ok(resolved)
     }
@@ -310,8 +316,12 @@ impl ObjReader {
                 ),
             ));
         }
-        let corner_normals = gather(&self.corner_normal_refs, &self.normals);
-        let corner_uvs = gather(&self.corner_uv_refs, &self.uvs);
+        let corner_normals = gather(&self.corner_normal_refs, &self.normals, "corner normals")?;
+        let corner_uvs = gather(
+            &self.corner_uv_refs,
+            &self.uvs,
+            "corner texture coordinates",
+        )?;
         Ok(PolygonSoup {
             positions: self.positions,
             face_sizes: self.face_sizes,
@@ -324,13 +334,21 @@ impl ObjReader {
 
 /// Per-corner values from per-corner references, zero where a corner has none (see the module
 /// docs); `None` when no corner has one.
-fn gather<const N: usize>(references: &[u32], values: &[[f64; N]]) -> Option<Vec<[f64; N]>> {
-    references.iter().any(|&r| r != ABSENT).then(|| {
+fn gather<const N: usize>(
+    references: &[u32],
+    values: &[[f64; N]],
+    what: &'static str,
+) -> Result<Option<Vec<[f64; N]>>, OutOfMemory> {
+    if references.iter().all(|&r| r == ABSENT) {
+        return Ok(None);
+    }
+    let mut gathered = try_vec_with_capacity(references.len(), what)?;
+    gathered.extend(
         references
             .iter()
-            .map(|&r| values.get(r as usize).copied().unwrap_or([0.0; N]))
-            .collect()
-    })
+            .map(|&r| values.get(r as usize).copied().unwrap_or([0.0; N])),
+    );
+    Ok(Some(gathered))
 }
 
 #[cfg(test)]

@@ -15,12 +15,27 @@ pub(crate) struct MeshArrays {
     pub(crate) vertex_halfedge: Vec<u32>,
     pub(crate) positions: Vec<[f64; 3]>,
     pub(crate) face_halfedge: Vec<u32>,
+    /// Deletion marks per vertex, edge and face (each empty, or as long as its element array).
+    pub(crate) deleted_vertices: Vec<bool>,
+    pub(crate) deleted_edges: Vec<bool>,
+    pub(crate) deleted_faces: Vec<bool>,
+}
+
+/// Deletion marks as the mesh keeps them: an empty vector when nothing is deleted.
+fn marks(flags: Vec<bool>) -> (Vec<bool>, usize) {
+    match flags.iter().filter(|&&deleted| deleted).count() {
+        0 => (Vec::new(), 0),
+        n => (flags, n),
+    }
 }
 
 impl Mesh {
     /// The mesh of `arrays`, after [`Mesh::check`] accepted it: arrays from a converter can
     /// never yield a mesh that breaks the kernel's invariants.
     pub(crate) fn from_arrays(arrays: MeshArrays) -> Result<Mesh, InvariantError> {
+        let (vertices, n_vertices) = marks(arrays.deleted_vertices);
+        let (edges, n_edges) = marks(arrays.deleted_edges);
+        let (faces, n_faces) = marks(arrays.deleted_faces);
         let mut mesh = Mesh {
             origin: arrays.origin,
             next: arrays.next,
@@ -29,7 +44,14 @@ impl Mesh {
             vertex_halfedge: arrays.vertex_halfedge,
             positions: arrays.positions,
             face_halfedge: arrays.face_halfedge,
-            deleted: Deletions::default(),
+            deleted: Deletions {
+                vertices,
+                edges,
+                faces,
+                n_vertices,
+                n_edges,
+                n_faces,
+            },
             // Until the vertices are looked at below, operators must not assume single fans.
             may_have_pinched_vertices: true,
             attributes: Default::default(),

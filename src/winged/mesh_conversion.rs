@@ -151,8 +151,11 @@ impl Winged {
 
     /// The half-edge mesh of this structure (the inverse of [`Winged::from_mesh`]): edge `e`
     /// becomes half-edges `2e` (its left use) and `2e + 1` (its right use); vertices, faces and
-    /// their stored elements keep their ids. Deleted elements are compacted away first, as
-    /// [`Winged::garbage_collect`] would number them.
+    /// their stored elements keep their ids. Deleted elements stay in place, deleted in the mesh
+    /// too (as the builders hold input vertices with a non-finite coordinate), so ids agree
+    /// across the two structures; [`Mesh::garbage_collect`] or [`Winged::garbage_collect`]
+    /// compacts them. So [`Winged::from_face_list`]'s structure converts to the very mesh
+    /// [`Mesh::from_face_list`] builds from the same list, under every policy.
     ///
     /// Refused with [`WingedError::NotConvertible`] when a face has no edges (a point face made
     /// by MVFS: a half-edge face needs a half-edge) or when the result would break a half-edge
@@ -164,15 +167,6 @@ impl Winged {
                 "{f} has no edges (a point face)"
             )));
         }
-        let has_deleted = self.n_live_vertices as usize != self.positions.len()
-            || self.n_live_edges as usize != self.edges.len()
-            || self.n_live_faces as usize != self.face_edge.len();
-        if has_deleted {
-            let mut compact = self.clone();
-            compact.garbage_collect();
-            return compact.to_mesh();
-        }
-
         let corrupted = || WingedError::NotConvertible("a wing does not meet its edge".into());
         let n_halfedges = 2 * self.edges.len();
         let mut origin = Vec::with_capacity(n_halfedges);
@@ -180,6 +174,13 @@ impl Winged {
         let mut prev = Vec::with_capacity(n_halfedges);
         let mut face = Vec::with_capacity(n_halfedges);
         for (e, r) in self.edges.iter().enumerate() {
+            if r.is_deleted() {
+                // Both half-edges of a deleted edge are deleted; their links are never read.
+                for array in [&mut origin, &mut next, &mut prev, &mut face] {
+                    array.extend([INVALID_INDEX; 2]);
+                }
+                continue;
+            }
             for side in [Side::Left, Side::Right] {
                 let u = EdgeUse::new(EdgeId(e as u32), side);
                 origin.push(r.tail(side).0);
@@ -192,7 +193,7 @@ impl Winged {
             .map(|v| {
                 let v = VertexId(v as u32);
                 match self.vertex_edge[v.index()] {
-                    e if !e.is_valid() => Ok(INVALID_INDEX),
+                    e if !e.is_valid() || !self.vertex_alive[v.index()] => Ok(INVALID_INDEX),
                     _ => self
                         .vertex_first_use(v)
                         .map(halfedge_of)
@@ -201,10 +202,12 @@ impl Winged {
             })
             .collect::<Result<Vec<u32>, WingedError>>()?;
         let face_halfedge = (0..self.face_edge.len())
-            .map(|f| {
-                self.face_first_use(FaceId(f as u32))
+            .map(|f| match self.face_alive[f] {
+                false => Ok(INVALID_INDEX),
+                true => self
+                    .face_first_use(FaceId(f as u32))
                     .map(halfedge_of)
-                    .ok_or_else(corrupted)
+                    .ok_or_else(corrupted),
             })
             .collect::<Result<Vec<u32>, WingedError>>()?;
         Mesh::from_arrays(MeshArrays {
@@ -215,6 +218,9 @@ impl Winged {
             vertex_halfedge,
             positions: self.positions.clone(),
             face_halfedge,
+            deleted_vertices: self.vertex_alive.iter().map(|&alive| !alive).collect(),
+            deleted_edges: self.edges.iter().map(EdgeRecord::is_deleted).collect(),
+            deleted_faces: self.face_alive.iter().map(|&alive| !alive).collect(),
         })
         .map_err(|broken| WingedError::NotConvertible(broken.to_string()))
     }
