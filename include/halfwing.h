@@ -103,6 +103,17 @@
 #define HW_VERSION_NUMBER (((HW_VERSION_MAJOR * 10000) + (HW_VERSION_MINOR * 100)) + HW_VERSION_PATCH)
 
 /**
+ * A 2D Delaunay triangulation, without its Voronoi diagram. Opaque; build it with
+ * hw_delaunay_build() and release it with hw_delaunay_free(). It never changes after
+ * construction, so every function taking a `const hw_delaunay *` may run concurrently.
+ *
+ * Numbering as for ::hw_voronoi: sites keep their input index, a duplicated site is represented
+ * by the smallest index of its group, and the arrays are those of the same names in
+ * ::hw_voronoi_view() (the triangulation is the same one).
+ */
+typedef struct hw_delaunay hw_delaunay;
+
+/**
  * The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
  * hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
  *
@@ -260,6 +271,16 @@ typedef struct {
 typedef struct {
   uint32_t idx;
 } hw_edge;
+
+/**
+ * The dimension of the site set, as hw_voronoi_dimension() reports it.
+ */
+typedef uint32_t hw_site_dimension;
+
+/**
+ * Which index array hw_voronoi_view() shows.
+ */
+typedef uint32_t hw_voronoi_array;
 
 /**
  * One list of element ids in a diagnostic (see hw_diagnostic_ids()).
@@ -548,16 +569,6 @@ typedef uint32_t hw_mesh_array;
  * them. Returns `true` to go on, `false` to stop the visit there.
  */
 typedef bool (*hw_visit_fn)(uint32_t idx, void *userdata);
-
-/**
- * The dimension of the site set, as hw_voronoi_dimension() reports it.
- */
-typedef uint32_t hw_site_dimension;
-
-/**
- * Which index array hw_voronoi_view() shows.
- */
-typedef uint32_t hw_voronoi_array;
 
 /**
  * The shape of a Voronoi edge (see ::hw_voronoi_edge).
@@ -1626,6 +1637,64 @@ bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
  */
 bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
+
+/**
+ * Builds the Delaunay triangulation of `n_sites` sites given as `2 * n_sites` doubles (x, y per
+ * site), without the Voronoi diagram (hw_voronoi_build() builds both): for callers that need
+ * only the triangles, it takes less time and memory.
+ *
+ * Input as for hw_voronoi_build(): any finite sites, duplicates merged (see
+ * ::HW_VORONOI_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite coordinate
+ * gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+ *
+ * On success `*out_delaunay` receives a new triangulation to release with hw_delaunay_free().
+ *
+ * # Safety
+ * `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_delaunay`
+ * writable.
+ */
+hw_status hw_delaunay_build(const double *xy, size_t n_sites, hw_delaunay **out_delaunay);
+
+/**
+ * Releases a triangulation. NULL is a no-op; a triangulation freed already is refused, the last
+ * error saying so (within the limits the ownership conventions at the top of the header state).
+ *
+ * # Safety
+ * `delaunay` must be NULL or a triangulation from this library not in use by another thread.
+ */
+void hw_delaunay_free(hw_delaunay *delaunay);
+
+/**
+ * Number of triangles (0 when all sites are collinear); 0 for a NULL triangulation.
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation.
+ */
+size_t hw_delaunay_n_triangles(const hw_delaunay *delaunay);
+
+/**
+ * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL triangulation, with the error
+ * recorded).
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation.
+ */
+hw_site_dimension hw_delaunay_dimension(const hw_delaunay *delaunay);
+
+/**
+ * A read-only view of one index array of the triangulation: `which` is one of
+ * ::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES, ::HW_VORONOI_TRIANGLE_TWINS and
+ * ::HW_VORONOI_HULL (the other arrays belong to the Voronoi diagram: `HW_ERR_INVALID_INPUT`).
+ * `*out_data` (NULL when empty) and its length `*out_len` are valid as long as the
+ * triangulation.
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation; `out_data` and `out_len` writable.
+ */
+hw_status hw_delaunay_view(const hw_delaunay *delaunay,
+                           hw_voronoi_array which,
+                           const uint32_t **out_data,
+                           size_t *out_len);
 
 /**
  * Analyses an indexed face list without building anything (same arguments as
