@@ -1,5 +1,6 @@
 // The C++ wrapper: RAII ownership and moves, exceptions carrying status and message, range-for
 // circulation, reading files, normals and editing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -247,6 +248,12 @@ static void voronoi_classes() {
   const uint32_t h = diagram.edge_between(0, 4);
   CHECK(diagram.edge(h).site == 0 && diagram.edge(h).opposite_site == 4);
   CHECK(diagram.delaunay_mesh().n_faces() == 4);
+  const hw::delaunay triangulation(sites);
+  CHECK(triangulation.dimension() == HW_VORONOI_PLANE && triangulation.n_triangles() == 4);
+  const auto triangles = triangulation.view(HW_VORONOI_TRIANGLES);
+  const auto dual_triangles = diagram.view(HW_VORONOI_TRIANGLES);
+  CHECK(std::equal(triangles.begin(), triangles.end(), dual_triangles.begin(), dual_triangles.end()));
+  CHECK(triangulation.view(HW_VORONOI_HULL).size() == 4);
 
   const hw::voronoi_cells cells = diagram.clip({-1, -1}, {5, 5});
   double total = 0;

@@ -2,6 +2,7 @@
  * SVG, on small inputs whose answers are known, plus every bad argument of each call. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 
@@ -364,6 +365,73 @@ static void bad_construction(void) {
   hw_voronoi_free(NULL);
 }
 
+/* The triangulation alone: the same triangles, twins, hull and representatives as the diagram's,
+ * on the square with a centre and a copy, on collinear sites, and on a random cloud. */
+static void delaunay_alone(void) {
+  static const double collinear[] = {0, 0, 2, 2, 1, 1, 2, 2};
+  const hw_voronoi_array arrays[] = {HW_VORONOI_REPRESENTATIVE, HW_VORONOI_TRIANGLES,
+                                     HW_VORONOI_TRIANGLE_TWINS, HW_VORONOI_HULL};
+  double cloud[2 * 500];
+  const struct {
+    const double *xy;
+    size_t n;
+    hw_site_dimension dimension;
+  } inputs[] = {{five_and_a_copy, N_SITES, HW_VORONOI_PLANE},
+                {collinear, 4, HW_VORONOI_LINE},
+                {cloud, 500, HW_VORONOI_PLANE},
+                {NULL, 0, HW_VORONOI_EMPTY}};
+  const uint32_t *data = NULL, *expected = NULL;
+  size_t i, k, n = 0, n_expected = 0;
+  uint32_t state = 12345;
+  hw_delaunay *d = NULL;
+
+  for (i = 0; i < 2 * 500; ++i) {
+    state = state * 1664525u + 1013904223u;
+    cloud[i] = (double)(state >> 8) / (double)(1u << 24);
+  }
+  for (i = 0; i < sizeof inputs / sizeof inputs[0]; ++i) {
+    hw_voronoi *v = build(inputs[i].xy, inputs[i].n);
+    CHECK(hw_delaunay_build(inputs[i].xy, inputs[i].n, &d) == HW_OK && d != NULL);
+    CHECK(hw_delaunay_dimension(d) == inputs[i].dimension);
+    CHECK(hw_delaunay_n_triangles(d) == hw_voronoi_n_triangles(v));
+    for (k = 0; k < sizeof arrays / sizeof arrays[0]; ++k) {
+      CHECK(hw_delaunay_view(d, arrays[k], &data, &n) == HW_OK);
+      CHECK(hw_voronoi_view(v, arrays[k], &expected, &n_expected) == HW_OK && n == n_expected);
+      CHECK(n == 0 || memcmp(data, expected, n * sizeof *data) == 0);
+    }
+    hw_delaunay_free(d);
+    hw_voronoi_free(v);
+  }
+  /* The square: four triangles, the hull's four edges without a twin. */
+  CHECK(hw_delaunay_build(five_and_a_copy, N_SITES, &d) == HW_OK);
+  CHECK(hw_delaunay_n_triangles(d) == 4);
+  CHECK(hw_delaunay_view(d, HW_VORONOI_TRIANGLE_TWINS, &data, &n) == HW_OK && n == 12);
+  for (n = 0, i = 0; i < 12; ++i) n += data[i] == HW_INVALID_INDEX;
+  CHECK(n == 4);
+  /* The Voronoi diagram's arrays are not the triangulation's. */
+  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_HALFEDGE_NEXT, &data, &n), HW_ERR_INVALID_INPUT,
+               "not an array of the Delaunay triangulation");
+  CHECK_STATUS(hw_delaunay_view(NULL, HW_VORONOI_TRIANGLES, &data, &n), HW_ERR_NULL_ARGUMENT,
+               "delaunay");
+  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_TRIANGLES, NULL, &n), HW_ERR_NULL_ARGUMENT,
+               "out_data");
+  hw_delaunay_free(d);
+  hw_delaunay_free(d);
+  CHECK(last_error_contains("already freed"));
+  hw_delaunay_free(NULL);
+  CHECK(hw_delaunay_n_triangles(NULL) == 0 && last_error_contains("delaunay"));
+  CHECK(hw_delaunay_dimension(NULL) == HW_VORONOI_EMPTY);
+  d = NULL;
+  CHECK_STATUS(hw_delaunay_build(five_and_a_copy + 1, 3, NULL), HW_ERR_NULL_ARGUMENT,
+               "out_delaunay");
+  {
+    const double with_nan[] = {0, 0, 1, 0, 0, NAN};
+    CHECK_STATUS(hw_delaunay_build(with_nan, 3, &d), HW_ERR_INVALID_INPUT, "site 2");
+    CHECK_STATUS(hw_delaunay_build(NULL, 3, &d), HW_ERR_NULL_ARGUMENT, "xy");
+  }
+  CHECK(d == NULL);
+}
+
 static void lloyd(void) {
   const double rect[] = {0, 0, 4, 0, 4, 4, 0, 4};
   const double not_convex[] = {0, 0, 4, 0, 1, 1, 0, 4};
@@ -514,6 +582,7 @@ int main(void) {
   clipping();
   degenerate_inputs();
   bad_construction();
+  delaunay_alone();
   lloyd();
   label_images();
   svg();

@@ -1433,6 +1433,35 @@ class voronoi_cells {
   detail::owned<hw_voronoi_cells, hw_voronoi_cells_free> raw_;
 };
 
+/// A Delaunay triangulation without its Voronoi diagram (owns an hw_delaunay); immutable, so
+/// every method may run concurrently. Failures throw hw::error.
+class delaunay {
+ public:
+  /// Triangulates `sites`; see hw_delaunay_build().
+  explicit delaunay(const std::vector<point2>& sites) {
+    hw_delaunay* raw = nullptr;
+    check(hw_delaunay_build(sites.empty() ? nullptr : sites.front().data(), sites.size(), &raw));
+    raw_ = detail::owned<hw_delaunay, hw_delaunay_free>(raw);
+  }
+
+  std::size_t n_triangles() const { return hw_delaunay_n_triangles(get()); }
+  hw_site_dimension dimension() const { return hw_delaunay_dimension(get()); }
+
+  /// One index array of the triangulation (::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES,
+  /// ::HW_VORONOI_TRIANGLE_TWINS, ::HW_VORONOI_HULL); see hw_delaunay_view().
+  values_view<const uint32_t> view(hw_voronoi_array which) const {
+    const uint32_t* data = nullptr;
+    std::size_t n = 0;
+    check(hw_delaunay_view(get(), which, &data, &n));
+    return {data, n};
+  }
+
+  hw_delaunay* get() const noexcept { return raw_.get(); }
+
+ private:
+  detail::owned<hw_delaunay, hw_delaunay_free> raw_;
+};
+
 /// A Voronoi diagram with its Delaunay triangulation (owns an hw_voronoi); immutable, so every
 /// method may run concurrently. Failures throw hw::error.
 class voronoi {

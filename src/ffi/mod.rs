@@ -15,6 +15,7 @@
 pub mod attributes;
 pub(crate) mod boundary;
 pub mod circulator;
+pub mod delaunay;
 pub mod diagnostic;
 pub mod doctor;
 pub mod edit;
@@ -49,6 +50,7 @@ pub mod winged_euler;
 
 pub use attributes::*;
 pub use circulator::*;
+pub use delaunay::*;
 pub use diagnostic::*;
 pub use doctor::*;
 pub use edit::*;

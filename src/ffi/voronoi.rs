@@ -5,12 +5,13 @@
 
 use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
-use crate::voronoi::{Dimension, EdgeGeometry, INVALID, Voronoi, VoronoiError};
+use crate::voronoi::{EdgeGeometry, INVALID, Voronoi, VoronoiError};
 
 use super::boundary::{
     Out, arg_ref, arg_slice, copy_items, give_view, guard, guard_value, guard_void,
     write_tuple_view,
 };
+use super::delaunay::{delaunay_array, site_dimension};
 use super::error::FfiError;
 use super::handle::{free_handle, into_handle};
 use super::mesh::hw_mesh;
@@ -215,14 +216,9 @@ pub const HW_VORONOI_PLANE: hw_site_dimension = 3;
 pub unsafe extern "C" fn hw_voronoi_dimension(voronoi: *const hw_voronoi) -> hw_site_dimension {
     // SAFETY: forwarded from the caller.
     guard_value(HW_VORONOI_EMPTY, || {
-        Ok(
-            match unsafe { voronoi_ref(voronoi) }?.delaunay().dimension() {
-                Dimension::Empty => HW_VORONOI_EMPTY,
-                Dimension::Point => HW_VORONOI_POINT,
-                Dimension::Line => HW_VORONOI_LINE,
-                Dimension::Plane => HW_VORONOI_PLANE,
-            },
-        )
+        Ok(site_dimension(
+            unsafe { voronoi_ref(voronoi) }?.delaunay().dimension(),
+        ))
     })
 }
 
@@ -268,12 +264,10 @@ pub const HW_VORONOI_CELL_HALFEDGE: hw_voronoi_array = 9;
 pub const HW_VORONOI_VERTEX_HALFEDGE: hw_voronoi_array = 10;
 
 fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError> {
-    let d = voronoi.delaunay();
+    if let Some(triangulation) = delaunay_array(voronoi.delaunay(), which) {
+        return Ok(triangulation);
+    }
     Ok(match which {
-        HW_VORONOI_REPRESENTATIVE => d.representative(),
-        HW_VORONOI_TRIANGLES => d.triangles(),
-        HW_VORONOI_TRIANGLE_TWINS => d.twins(),
-        HW_VORONOI_HULL => d.hull(),
         HW_VORONOI_TRIANGLE_VERTEX => &voronoi.triangle_vertex,
         HW_VORONOI_HALFEDGE_ORIGIN => &voronoi.half_edges().origin,
         HW_VORONOI_HALFEDGE_NEXT => &voronoi.half_edges().next,
