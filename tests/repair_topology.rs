@@ -6,14 +6,14 @@
 
 mod mesh_support;
 
-use halfwing::io::read_path;
 use halfwing::mesh::{BuildPolicy, Mesh};
 use halfwing::repair::{
     NonManifoldEdges, RepairError, RepairReport, orient_faces, repair_non_manifold_edges,
     split_non_manifold_vertices,
 };
 use halfwing::soup::{PolygonSoup, diagnose};
-use mesh_support::{data_dir, grid};
+use mesh_support::grid;
+use mesh_support::soups::{lattice_soup, test_models};
 use proptest::prelude::*;
 
 /// The faces of a tetrahedron on `v` (4 vertices), facing outward when `v` is laid out as
@@ -404,83 +404,45 @@ fn assert_clean_closed_model_only_turns_outward(model: &PolygonSoup, name: &str)
 /// are left as they are.
 #[test]
 fn every_test_model_settles_and_clean_ones_are_untouched() {
-    let mut seen = 0;
-    for group in ["broken", "closed", "open", "polygonal"] {
-        let mut entries: Vec<_> = std::fs::read_dir(data_dir().join(group))
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .collect();
-        entries.sort();
-        for path in entries {
-            let Ok(original) = read_path(&path) else {
+    for (group, name, original) in test_models() {
+        for how in [NonManifoldEdges::Cut, NonManifoldEdges::RemoveFaces] {
+            let mut soup = original.clone();
+            let Ok(changed) = topology_repairs(&mut soup, how) else {
+                // Out-of-range indices: refused, as documented.
                 continue;
             };
-            let name = path.display().to_string();
-            for how in [NonManifoldEdges::Cut, NonManifoldEdges::RemoveFaces] {
-                let mut soup = original.clone();
-                let Ok(changed) = topology_repairs(&mut soup, how) else {
-                    // Out-of-range indices: refused, as documented.
-                    continue;
-                };
-                let clean = diagnose(&original.as_face_list());
-                if group == "closed"
-                    && !clean.has_invalid_input()
-                    && !clean.has_edge_defects()
-                    && clean.non_manifold_vertices.is_empty()
-                {
-                    assert_clean_closed_model_only_turns_outward(&original, &name);
-                } else if !changed {
-                    assert_eq!(soup, original);
-                }
-                let found = diagnose(&soup.as_face_list());
-                assert!(found.non_manifold_edges.is_empty(), "{name}");
-                assert!(found.non_manifold_vertices.is_empty(), "{name}");
-                assert_each_settled(&soup, how);
-                let settled = soup.clone();
-                assert!(
-                    !topology_repairs(&mut soup, how).unwrap(),
-                    "{name}: second run"
-                );
-                assert_eq!(soup, settled);
-                if let Ok((mesh, _)) = Mesh::from_soup(&soup, BuildPolicy::Repair) {
-                    mesh.check().unwrap_or_else(|e| panic!("{name}: {e}"));
-                }
+            let clean = diagnose(&original.as_face_list());
+            if group == "closed"
+                && !clean.has_invalid_input()
+                && !clean.has_edge_defects()
+                && clean.non_manifold_vertices.is_empty()
+            {
+                assert_clean_closed_model_only_turns_outward(&original, &name);
+            } else if !changed {
+                assert_eq!(soup, original);
             }
-            seen += 1;
+            let found = diagnose(&soup.as_face_list());
+            assert!(found.non_manifold_edges.is_empty(), "{name}");
+            assert!(found.non_manifold_vertices.is_empty(), "{name}");
+            assert_each_settled(&soup, how);
+            let settled = soup.clone();
+            assert!(
+                !topology_repairs(&mut soup, how).unwrap(),
+                "{name}: second run"
+            );
+            assert_eq!(soup, settled);
+            if let Ok((mesh, _)) = Mesh::from_soup(&soup, BuildPolicy::Repair) {
+                mesh.check().unwrap_or_else(|e| panic!("{name}: {e}"));
+            }
         }
     }
-    assert!(seen > 50, "only {seen} models read");
-}
-
-/// Soups on a small lattice of positions (so non-manifold edges and vertices are frequent).
-fn lattice_soup() -> impl Strategy<Value = PolygonSoup> {
-    (3usize..14, 1usize..25).prop_flat_map(|(n_vertices, n_faces)| {
-        (
-            prop::collection::vec((0..3i32, 0..3i32, 0..2i32), n_vertices),
-            prop::collection::vec(prop::collection::vec(0..n_vertices as u32, 3..5), n_faces),
-        )
-            .prop_map(|(points, faces)| PolygonSoup {
-                positions: points
-                    .into_iter()
-                    .map(|(x, y, z)| [f64::from(x), f64::from(y), f64::from(z)])
-                    .collect(),
-                face_sizes: faces.iter().map(|f| f.len() as u32).collect(),
-                corner_uvs: Some(
-                    (0..faces.iter().map(Vec::len).sum::<usize>())
-                        .map(|c| [c as f64, 0.0])
-                        .collect(),
-                ),
-                indices: faces.into_iter().flatten().collect(),
-                corner_normals: None,
-            })
-    })
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
-    fn topology_repairs_settle_and_keep_corner_data(soup in lattice_soup(), remove in any::<bool>()) {
+    fn topology_repairs_settle_and_keep_corner_data(soup in lattice_soup(14), remove in any::<bool>()) {
         let how = if remove { NonManifoldEdges::RemoveFaces } else { NonManifoldEdges::Cut };
         let mut repaired = soup.clone();
 
