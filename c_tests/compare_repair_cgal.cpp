@@ -19,13 +19,15 @@
 //   non-manifold vertices as they are (built from the soup split by halfwing, the copies then
 //   merged back into their originals, which CGAL's halfedge structure can hold): the same number
 //   of new vertices as split_non_manifold_vertices(), where the split soup is one CGAL builds.
-// - orient_to_bound_a_volume: on every closed model both build, as it is and with every face
-//   reversed: the same faces reversed as orient_faces(), except where a closed component lies
-//   inside another (CGAL turns such a component inward, to bound the volume between; halfwing
-//   turns every closed component outward, as its builds do): those are listed, not compared.
+// - orient_to_bound_a_volume: on every closed triangle model both build, as it is and with
+//   every face reversed: the same faces reversed as orient_faces(). Where they differ the model
+//   is listed with both counts (CGAL turns a closed component nested in another inward, to bound
+//   the volume between; halfwing turns every closed component outward, as its builds do). In the
+//   test data that is only broken/cgal_spheres_intersecting.off: two spheres that cross, which
+//   CGAL takes as one inside the other and turns inward (its input should not self-intersect).
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Simple_cartesian.h>
@@ -168,7 +170,8 @@ void compare_orientation(const indexed::Mesh& m) {
     if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
     SurfaceMesh theirs;
     PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, theirs);
-    if (!CGAL::is_closed(theirs)) return;
+    // CGAL orients closed triangle meshes only.
+    if (!CGAL::is_closed(theirs) || !CGAL::is_triangle_mesh(theirs)) return;
     PMP::orient_to_bound_a_volume(theirs);
     std::vector<uint32_t> cgal_turned;
     // Faces keep their order in the builder (face f is polygon f), vertices theirs; a face is
