@@ -14,7 +14,20 @@
 //   faces, or collapses a face, CGAL still pairs the half-edges (two edges between the same
 //   vertices, edges from a vertex to itself) and halfwing leaves them open (its meshes have
 //   neither): those models are listed with both counts, not compared.
+// - duplicate_non_manifold_vertices: on every model once oriented and cut along its non-manifold
+//   edges (hw::soup::orient_faces(), repair_non_manifold_edges()), as a surface mesh with its
+//   non-manifold vertices as they are (built from the soup split by halfwing, the copies then
+//   merged back into their originals, which CGAL's halfedge structure can hold): the same number
+//   of new vertices as split_non_manifold_vertices(), where the split soup is one CGAL builds.
+// - orient_to_bound_a_volume: on every closed triangle model both build, as it is and with
+//   every face reversed: the same faces reversed as orient_faces(). Where they differ the model
+//   is listed with both counts (CGAL turns a closed component nested in another inward, to bound
+//   the volume between; halfwing turns every closed component outward, as its builds do). In the
+//   test data that is only broken/cgal_spheres_intersecting.off: two spheres that cross, which
+//   CGAL takes as one inside the other and turns inward (its input should not self-intersect).
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Simple_cartesian.h>
@@ -36,6 +49,7 @@ using SurfaceMesh = CGAL::Surface_mesh<cgal_soup::Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 std::size_t compared_soups = 0, compared_stitches = 0, models_stitched = 0;
+std::size_t compared_splits = 0, models_split = 0, compared_orientations = 0, models_turned = 0;
 
 std::size_t distinct_corners(std::vector<std::size_t> polygon) {
   std::sort(polygon.begin(), polygon.end());
@@ -100,6 +114,87 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
                  m.name.c_str(), after, cgal_after);
   ++compared_stitches;
   models_stitched += after < before;
+}
+
+/// The soup's faces as CGAL polygons.
+Soup cgal_of(const hw::soup& soup) {
+  return cgal_soup::of(indexed::Mesh{"", soup.positions(), soup.face_sizes(), soup.indices()});
+}
+
+/// Splits the non-manifold vertices of the model, oriented and cut, with both libraries.
+void compare_split(const indexed::Mesh& m) {
+  hw::soup ours = hw::soup::from_indexed(m.positions, m.face_sizes, m.indices);
+  ours.orient_faces();
+  ours.repair_non_manifold_edges(HW_NON_MANIFOLD_EDGES_CUT);
+  const std::size_t n_before = ours.positions().size() / 3;
+  const hw::repair_report split = ours.split_non_manifold_vertices();
+  const std::vector<uint32_t> copies = split.list(HW_REPAIR_VERTEX_COPIES);
+  CHECK(ours.positions().size() / 3 == n_before + copies.size());
+  Soup soup = cgal_of(ours);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
+  SurfaceMesh theirs;
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, theirs);
+  // The builder keeps the points' order: vertex i is point i. Merge every copy back.
+  for (auto h : theirs.halfedges()) {
+    const std::size_t v = theirs.target(h).idx();
+    if (v >= n_before) theirs.set_target(h, SurfaceMesh::Vertex_index(copies[v - n_before]));
+  }
+  for (std::size_t copy = 0; copy < copies.size(); ++copy) {
+    const SurfaceMesh::Vertex_index v(copies[copy]), c(static_cast<uint32_t>(n_before + copy));
+    // The original keeps one of its fans' half-edges (any: each names one fan).
+    if (theirs.is_isolated(v)) theirs.set_halfedge(v, theirs.halfedge(c));
+    theirs.remove_vertex(c);
+  }
+  const std::size_t cgal_new = PMP::duplicate_non_manifold_vertices(theirs);
+  CHECK(cgal_new == copies.size());
+  if (cgal_new != copies.size())
+    std::fprintf(stderr, "  %s: %zu vertex copies, CGAL %zu\n", m.name.c_str(), copies.size(),
+                 cgal_new);
+  ++compared_splits;
+  models_split += !copies.empty();
+}
+
+/// Orients the closed model with both libraries, as it is and inside out.
+void compare_orientation(const indexed::Mesh& m) {
+  for (bool inside_out : {false, true}) {
+    indexed::Mesh turned = m;
+    turned.name = m.name + (inside_out ? " (inside out)" : "");
+    if (inside_out) {
+      std::size_t corner = 0;
+      for (uint32_t size : turned.face_sizes) {
+        std::reverse(turned.indices.begin() + corner, turned.indices.begin() + corner + size);
+        corner += size;
+      }
+    }
+    Soup soup = cgal_soup::of(turned);
+    if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
+    SurfaceMesh theirs;
+    PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, theirs);
+    // CGAL orients closed triangle meshes only.
+    if (!CGAL::is_closed(theirs) || !CGAL::is_triangle_mesh(theirs)) return;
+    PMP::orient_to_bound_a_volume(theirs);
+    std::vector<uint32_t> cgal_turned;
+    // Faces keep their order in the builder (face f is polygon f), vertices theirs; a face is
+    // reversed when the corner after its first polygon corner is another.
+    for (auto f : theirs.faces()) {
+      std::vector<uint32_t> cycle;
+      for (auto h : CGAL::halfedges_around_face(theirs.halfedge(f), theirs))
+        cycle.push_back(theirs.target(h).idx());
+      std::vector<std::size_t> before = soup.polygons[f.idx()];
+      const auto at = std::find(cycle.begin(), cycle.end(), static_cast<uint32_t>(before[0]));
+      const uint32_t after_first = at + 1 == cycle.end() ? cycle[0] : *(at + 1);
+      if (after_first != before[1]) cgal_turned.push_back(f.idx());
+    }
+    hw::soup ours = hw::soup::from_indexed(turned.positions, turned.face_sizes, turned.indices);
+    const std::vector<uint32_t> our_turned = ours.orient_faces().list(HW_REPAIR_REORIENTED_FACES);
+    if (our_turned != cgal_turned) {
+      std::printf("  %-42s differs: %zu faces reversed, CGAL %zu\n",
+                  turned.name.c_str(), our_turned.size(), cgal_turned.size());
+      continue;
+    }
+    ++compared_orientations;
+    models_turned += !our_turned.empty();
+  }
 }
 
 void compare(const std::filesystem::path& path) {
@@ -169,6 +264,8 @@ void compare(const std::filesystem::path& path) {
                           proper == after.n_faces() && non_manifold_edges == 0;
   compare_stitch(m, comparable);
   if (m.n_faces() <= 20000) compare_stitch(unwelded(m), comparable);
+  compare_split(m);
+  compare_orientation(m);
 }
 
 }  // namespace
@@ -185,6 +282,11 @@ int main() {
     }
   std::printf("compared: %zu soups, %zu stitches (%zu stitched something)\n", compared_soups,
               compared_stitches, models_stitched);
+  std::printf("compared: %zu vertex splits (%zu split something), %zu orientations (%zu turned "
+              "faces)\n",
+              compared_splits, models_split, compared_orientations, models_turned);
   CHECK(compared_soups > 50 && compared_stitches > 50 && models_stitched > 20);
+  CHECK(compared_splits > 50 && models_split > 0 && compared_orientations > 20 &&
+        models_turned > 10);
   return check_summary("compare_repair_cgal");
 }

@@ -149,10 +149,105 @@ static void stitch_borders(void) {
   hw_mesh_free(mesh);
 }
 
+/* Two outward tetrahedra sharing the edge 0-1 (four faces on it). */
+static const double tetrahedra[] = {0,   0,   0, 1,   0,    0, 0.5, 1,    0,
+                                    0.5, 0.3, 1, 0.5, -1.0, 0, 0.5, -0.3, -1};
+static const uint32_t tetrahedra_sizes[] = {3, 3, 3, 3, 3, 3, 3, 3};
+static const uint32_t tetrahedra_indices[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3,
+                                              0, 4, 1, 0, 1, 5, 1, 4, 5, 4, 0, 5};
+
+static hw_soup *make_tetrahedra(void) {
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(tetrahedra, 6, tetrahedra_sizes, 8, tetrahedra_indices, 24, &soup) ==
+        HW_OK);
+  return soup;
+}
+
+static void topology(void) {
+  /* Cutting: the second tetrahedron gets copies of 0 and 1; both stay closed. */
+  hw_soup *soup = make_tetrahedra();
+  hw_repair_report *report = NULL;
+  CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, &report) == HW_OK);
+  const uint32_t *ids = NULL;
+  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  hw_repair_report_free(report);
+  const double *xyz = NULL;
+  const uint32_t *corners = NULL;
+  size_t n_vertices = 0, n_corners = 0;
+  CHECK(hw_soup_view(soup, &xyz, &n_vertices, NULL, NULL, &corners, &n_corners) == HW_OK);
+  CHECK(n_vertices == 8 && n_corners == 24 && xyz[3 * 7] == 1.0);
+  CHECK(corners[12] == 6 && corners[13] == 4 && corners[14] == 7);
+  /* Nothing non-manifold is left: a second run and splitting vertices change nothing. */
+  CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 0);
+  hw_repair_report_free(report);
+  CHECK(hw_soup_split_non_manifold_vertices(soup, NULL) == HW_OK);
+  CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, NULL, NULL) == HW_OK && n_vertices == 8);
+  hw_soup_free(soup);
+
+  /* Removing faces: the first face each way on the edge stays. */
+  soup = make_tetrahedra();
+  CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_REMOVE_FACES, &report) ==
+        HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 2 && ids[0] == 4 && ids[1] == 5);
+  hw_repair_report_free(report);
+  /* The two tetrahedra still touch at vertices 0 and 1: one fan each for the second. */
+  CHECK(hw_soup_split_non_manifold_vertices(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  hw_repair_report_free(report);
+  CHECK_STATUS(hw_soup_repair_non_manifold_edges(soup, 9, &report), HW_ERR_INVALID_INPUT,
+               "unknown non-manifold edge repair 9");
+  hw_soup_free(soup);
+
+  /* Orienting: one face reversed turns back. The tetrahedron inside out is not closed while
+   * four faces share its edge 0-1; once cut, it is, and turns outward. */
+  uint32_t turned[24];
+  for (size_t c = 0; c < 24; c++) {
+    turned[c] = tetrahedra_indices[c];
+  }
+  turned[3] = 3;
+  turned[5] = 0;
+  for (size_t f = 4; f < 8; f++) {
+    uint32_t first = turned[3 * f];
+    turned[3 * f] = turned[3 * f + 2];
+    turned[3 * f + 2] = first;
+  }
+  CHECK(hw_soup_from_indexed(tetrahedra, 6, tetrahedra_sizes, 8, turned, 24, &soup) == HW_OK);
+  CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 1 && ids[0] == 1);
+  hw_repair_report_free(report);
+  CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, NULL) == HW_OK);
+  CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 4);
+  CHECK(ids[0] == 4 && ids[3] == 7);
+  hw_repair_report_free(report);
+  CHECK(hw_soup_view(soup, NULL, NULL, NULL, NULL, &corners, &n_corners) == HW_OK);
+  for (size_t c = 0; c < 12; c++) {
+    CHECK(corners[c] == tetrahedra_indices[c]);
+  }
+  CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 0);
+  hw_repair_report_free(report);
+  CHECK_STATUS(hw_soup_orient_faces(NULL, NULL), HW_ERR_NULL_ARGUMENT, "soup");
+  hw_soup_free(soup);
+
+  /* A malformed soup is refused by every one. */
+  const uint32_t bad[] = {0, 1, 9};
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 1, bad, 3, &soup) == HW_OK);
+  CHECK_STATUS(hw_soup_orient_faces(soup, NULL), HW_ERR_INVALID_INPUT, "face 0 names vertex 9");
+  CHECK_STATUS(hw_soup_split_non_manifold_vertices(soup, NULL), HW_ERR_INVALID_INPUT,
+               "face 0 names vertex 9");
+  CHECK_STATUS(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, NULL),
+               HW_ERR_INVALID_INPUT, "face 0 names vertex 9");
+  hw_soup_free(soup);
+}
+
 int main(void) {
   merge_vertices();
   refusals_change_nothing();
   small_components();
   stitch_borders();
+  topology();
   return check_summary("test_repair");
 }

@@ -532,6 +532,11 @@ typedef uint32_t hw_render_indices;
 typedef uint32_t hw_small_components;
 
 /**
+ * What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
+ */
+typedef uint32_t hw_non_manifold_edges;
+
+/**
  * One list of a repair report, for hw_repair_report_list().
  */
 typedef uint32_t hw_repair_list;
@@ -1138,6 +1143,17 @@ typedef struct {
 #define HW_REPAIR_STITCHED_HALFEDGES 4
 
 /**
+ * The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
+ * count before the repair) copies vertex `ids[i]`.
+ */
+#define HW_REPAIR_VERTEX_COPIES 5
+
+/**
+ * Faces whose corner order was reversed.
+ */
+#define HW_REPAIR_REORIENTED_FACES 6
+
+/**
  * Components of at most `value` faces.
  */
 #define HW_SMALL_BY_FACE_COUNT 0
@@ -1146,6 +1162,16 @@ typedef struct {
  * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
  */
 #define HW_SMALL_BY_RELATIVE_DIAMETER 1
+
+/**
+ * Keep every face and cut the surface along the edge (copies of its ends).
+ */
+#define HW_NON_MANIFOLD_EDGES_CUT 0
+
+/**
+ * Keep faces in order while the edge has at most one face each way; remove the others.
+ */
+#define HW_NON_MANIFOLD_EDGES_REMOVE_FACES 1
 
 /**
  * Success.
@@ -2696,6 +2722,43 @@ hw_status hw_soup_remove_small_components(hw_soup *soup,
                                           hw_small_components rule,
                                           double value,
                                           hw_repair_report **out_report);
+
+/**
+ * Reverses faces so that neighbours agree in orientation (in each connected part the smaller
+ * side turns) and every closed component faces outward, as a build's `HW_POLICY_REPAIR` does;
+ * a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their corners'
+ * normals and texture coordinates, in reverse order (::HW_REPAIR_REORIENTED_FACES); vertices
+ * are untouched. Refusals and report as for hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_orient_faces(hw_soup *soup, hw_repair_report **out_report);
+
+/**
+ * Makes every edge shared by at most two faces: ::HW_NON_MANIFOLD_EDGES_CUT keeps every face
+ * and gives the groups of faces around the edge's ends copies of them (appended,
+ * ::HW_REPAIR_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
+ * the edge has at most one face running each way and removes the others
+ * (::HW_REPAIR_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
+ * soup unchanged, for an unknown `how`; otherwise as hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_repair_non_manifold_edges(hw_soup *soup,
+                                            hw_non_manifold_edges how,
+                                            hw_repair_report **out_report);
+
+/**
+ * Gives every fan of faces around a non-manifold vertex but the first a copy of the vertex
+ * (appended, ::HW_REPAIR_VERTEX_COPIES), as builds do; corners keep their normals and texture
+ * coordinates. Refusals and report as for hw_soup_merge_vertices().
+ *
+ * # Safety
+ * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ */
+hw_status hw_soup_split_non_manifold_vertices(hw_soup *soup, hw_repair_report **out_report);
 
 /**
  * Glues the mesh's boundary edges that lie on each other end on end (exactly, or within

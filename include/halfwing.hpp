@@ -676,6 +676,21 @@ class soup {
       return hw_soup_remove_small_components(get(), rule, value, out);
     });
   }
+  /// See hw_soup_orient_faces().
+  repair_report orient_faces() {
+    return run([&](hw_repair_report** out) { return hw_soup_orient_faces(get(), out); });
+  }
+  /// See hw_soup_repair_non_manifold_edges().
+  repair_report repair_non_manifold_edges(hw_non_manifold_edges how = HW_NON_MANIFOLD_EDGES_CUT) {
+    return run([&](hw_repair_report** out) {
+      return hw_soup_repair_non_manifold_edges(get(), how, out);
+    });
+  }
+  /// See hw_soup_split_non_manifold_vertices().
+  repair_report split_non_manifold_vertices() {
+    return run(
+        [&](hw_repair_report** out) { return hw_soup_split_non_manifold_vertices(get(), out); });
+  }
 
   /// The C object, still owned by this face list.
   hw_soup* get() const noexcept { return raw_.get(); }

@@ -12,6 +12,7 @@ use halfwing::repair::{
     remove_small_components, remove_unreferenced_vertices, stitch_borders,
 };
 use halfwing::soup::PolygonSoup;
+use mesh_support::soups::{lattice_soup, test_models};
 use mesh_support::{data_dir, grid};
 use proptest::prelude::*;
 
@@ -520,77 +521,39 @@ fn the_capsule_closes_after_welding_and_stitching() {
 /// twice they change nothing, and stitching keeps the mesh valid.
 #[test]
 fn every_test_model_repairs_to_a_valid_mesh() {
-    let mut seen = 0;
-    for group in ["broken", "closed", "open", "polygonal"] {
-        let mut entries: Vec<_> = std::fs::read_dir(data_dir().join(group))
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .collect();
-        entries.sort();
-        for path in entries {
-            let Ok(mut soup) = read_path(&path) else {
-                continue;
-            };
-            let name = path.display().to_string();
-            let steps = |soup: &mut PolygonSoup| -> Result<bool, RepairError> {
-                let mut changed = !merge_vertices(soup, Tolerance::EXACT)?.is_empty();
-                changed |= !remove_duplicate_faces(soup)?.is_empty();
-                changed |= !remove_unreferenced_vertices(soup)?.is_empty();
-                Ok(changed)
-            };
-            if steps(&mut soup).is_err() {
-                // Out-of-range indices: refused, as documented.
-                continue;
-            }
-            let settled = soup.clone();
-            assert!(!steps(&mut soup).unwrap(), "{name}: second run changed it");
-            assert_eq!(soup, settled);
-            if let Ok((mut mesh, _)) = Mesh::from_soup(&soup, BuildPolicy::Repair) {
-                stitch_borders(&mut mesh, Tolerance::EXACT).unwrap();
-                mesh.check().unwrap_or_else(|e| panic!("{name}: {e}"));
-                let settled = mesh.clone();
-                assert!(
-                    stitch_borders(&mut mesh, Tolerance::EXACT)
-                        .unwrap()
-                        .is_empty()
-                );
-                assert_eq!(mesh, settled);
-            }
-            seen += 1;
+    for (_, name, mut soup) in test_models() {
+        let steps = |soup: &mut PolygonSoup| -> Result<bool, RepairError> {
+            let mut changed = !merge_vertices(soup, Tolerance::EXACT)?.is_empty();
+            changed |= !remove_duplicate_faces(soup)?.is_empty();
+            changed |= !remove_unreferenced_vertices(soup)?.is_empty();
+            Ok(changed)
+        };
+        if steps(&mut soup).is_err() {
+            // Out-of-range indices: refused, as documented.
+            continue;
+        }
+        let settled = soup.clone();
+        assert!(!steps(&mut soup).unwrap(), "{name}: second run changed it");
+        assert_eq!(soup, settled);
+        if let Ok((mut mesh, _)) = Mesh::from_soup(&soup, BuildPolicy::Repair) {
+            stitch_borders(&mut mesh, Tolerance::EXACT).unwrap();
+            mesh.check().unwrap_or_else(|e| panic!("{name}: {e}"));
+            let settled = mesh.clone();
+            assert!(
+                stitch_borders(&mut mesh, Tolerance::EXACT)
+                    .unwrap()
+                    .is_empty()
+            );
+            assert_eq!(mesh, settled);
         }
     }
-    assert!(seen > 50, "only {seen} models read");
-}
-
-/// Soups on a small lattice of positions (so duplicates and collapses are frequent).
-fn lattice_soup() -> impl Strategy<Value = PolygonSoup> {
-    (3usize..30, 1usize..25).prop_flat_map(|(n_vertices, n_faces)| {
-        (
-            prop::collection::vec((0..3i32, 0..3i32, 0..2i32), n_vertices),
-            prop::collection::vec(prop::collection::vec(0..n_vertices as u32, 3..5), n_faces),
-        )
-            .prop_map(|(points, faces)| PolygonSoup {
-                positions: points
-                    .into_iter()
-                    .map(|(x, y, z)| [f64::from(x), f64::from(y), f64::from(z)])
-                    .collect(),
-                face_sizes: faces.iter().map(|f| f.len() as u32).collect(),
-                corner_uvs: Some(
-                    (0..faces.iter().map(Vec::len).sum::<usize>())
-                        .map(|c| [c as f64, 0.0])
-                        .collect(),
-                ),
-                indices: faces.into_iter().flatten().collect(),
-                corner_normals: None,
-            })
-    })
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
-    fn repairs_are_idempotent_and_keep_corner_data(soup in lattice_soup(), relative in 0.0..0.6f64) {
+    fn repairs_are_idempotent_and_keep_corner_data(soup in lattice_soup(30), relative in 0.0..0.6f64) {
         let mut repaired = soup.clone();
         let report = merge_vertices(&mut repaired, Tolerance::Relative(relative)).unwrap();
         // Kept corners keep their uvs; the maps agree with what is left.
@@ -621,7 +584,7 @@ proptest! {
     }
 
     #[test]
-    fn stitching_keeps_every_invariant(soup in lattice_soup(), cut in 0usize..3) {
+    fn stitching_keeps_every_invariant(soup in lattice_soup(30), cut in 0usize..3) {
         // Build with vertex copies so that there are borders to stitch, cut some more by
         // unwelding every `cut`-th face.
         let mut unwelded_soup = soup.clone();

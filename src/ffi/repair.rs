@@ -1,10 +1,12 @@
-//! Repairs: merging vertices and removing duplicate faces, unreferenced vertices and small
-//! components of a soup (`hw_soup_*`), stitching a mesh's borders (`hw_mesh_stitch_borders`),
+//! Repairs: merging vertices, removing duplicate faces, unreferenced vertices and small
+//! components, orienting faces, repairing non-manifold edges and splitting non-manifold vertices
+//! of a soup (`hw_soup_*`), stitching a mesh's borders (`hw_mesh_stitch_borders`),
 //! each with a report of what changed (`hw_repair_report`).
 
 use crate::repair::{
-    RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices, remove_duplicate_faces,
-    remove_small_components, remove_unreferenced_vertices, stitch_borders,
+    NonManifoldEdges, RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices,
+    orient_faces, remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices,
+    repair_non_manifold_edges, split_non_manifold_vertices, stitch_borders,
 };
 use crate::soup::PolygonSoup;
 
@@ -44,6 +46,11 @@ pub const HW_REPAIR_DUPLICATE_FACES: hw_repair_list = 3;
 /// Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
 /// \ingroup repair
 pub const HW_REPAIR_STITCHED_HALFEDGES: hw_repair_list = 4;
+/// The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
+/// count before the repair) copies vertex `ids[i]`.
+pub const HW_REPAIR_VERTEX_COPIES: hw_repair_list = 5;
+/// Faces whose corner order was reversed.
+pub const HW_REPAIR_REORIENTED_FACES: hw_repair_list = 6;
 
 /// Which components hw_soup_remove_small_components() removes.
 /// \ingroup repair
@@ -54,6 +61,13 @@ pub const HW_SMALL_BY_FACE_COUNT: hw_small_components = 0;
 /// Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
 /// \ingroup repair
 pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
+
+/// What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
+pub type hw_non_manifold_edges = u32;
+/// Keep every face and cut the surface along the edge (copies of its ends).
+pub const HW_NON_MANIFOLD_EDGES_CUT: hw_non_manifold_edges = 0;
+/// Keep faces in order while the edge has at most one face each way; remove the others.
+pub const HW_NON_MANIFOLD_EDGES_REMOVE_FACES: hw_non_manifold_edges = 1;
 
 impl From<RepairError> for FfiError {
     fn from(error: RepairError) -> Self {
@@ -241,6 +255,72 @@ pub unsafe extern "C" fn hw_soup_remove_small_components(
     }
 }
 
+/// Reverses faces so that neighbours agree in orientation (in each connected part the smaller
+/// side turns) and every closed component faces outward, as a build's `HW_POLICY_REPAIR` does;
+/// a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their corners'
+/// normals and texture coordinates, in reverse order (::HW_REPAIR_REORIENTED_FACES); vertices
+/// are untouched. Refusals and report as for hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_orient_faces(
+    soup: *mut hw_soup,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe { repair_soup(soup, out_report, |soup| Ok(orient_faces(soup)?)) }
+}
+
+/// Makes every edge shared by at most two faces: ::HW_NON_MANIFOLD_EDGES_CUT keeps every face
+/// and gives the groups of faces around the edge's ends copies of them (appended,
+/// ::HW_REPAIR_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
+/// the edge has at most one face running each way and removes the others
+/// (::HW_REPAIR_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
+/// soup unchanged, for an unknown `how`; otherwise as hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_repair_non_manifold_edges(
+    soup: *mut hw_soup,
+    how: hw_non_manifold_edges,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    let how = match how {
+        HW_NON_MANIFOLD_EDGES_CUT => Ok(NonManifoldEdges::Cut),
+        HW_NON_MANIFOLD_EDGES_REMOVE_FACES => Ok(NonManifoldEdges::RemoveFaces),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown non-manifold edge repair {other}"
+        ))),
+    };
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_soup(soup, out_report, |soup| {
+            Ok(repair_non_manifold_edges(soup, how?)?)
+        })
+    }
+}
+
+/// Gives every fan of faces around a non-manifold vertex but the first a copy of the vertex
+/// (appended, ::HW_REPAIR_VERTEX_COPIES), as builds do; corners keep their normals and texture
+/// coordinates. Refusals and report as for hw_soup_merge_vertices().
+///
+/// # Safety
+/// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_soup_split_non_manifold_vertices(
+    soup: *mut hw_soup,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_soup(soup, out_report, |soup| {
+            Ok(split_non_manifold_vertices(soup)?)
+        })
+    }
+}
+
 /// Glues the mesh's boundary edges that lie on each other end on end (exactly, or within
 /// `tolerance`, absolute or when `relative` a fraction of the live vertices' bounding-box
 /// diagonal), like CGAL's `stitch_borders`: an edge is stitched when exactly one other boundary
@@ -293,6 +373,8 @@ pub unsafe extern "C" fn hw_repair_report_list(
                 HW_REPAIR_REMOVED_FACES => Ok(&report.report.removed_faces[..]),
                 HW_REPAIR_DUPLICATE_FACES => Ok(report.report.duplicate_faces.as_flattened()),
                 HW_REPAIR_STITCHED_HALFEDGES => Ok(report.report.stitched_halfedges.as_flattened()),
+                HW_REPAIR_VERTEX_COPIES => Ok(&report.report.vertex_copies[..]),
+                HW_REPAIR_REORIENTED_FACES => Ok(&report.report.reoriented_faces[..]),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown repair list {other}"
                 ))),

@@ -3,27 +3,35 @@
 //!
 //! On indexed face lists ([`PolygonSoup`](crate::soup::PolygonSoup)): [`merge_vertices`] (exact and near duplicates),
 //! [`remove_duplicate_faces`], [`remove_unreferenced_vertices`] and
-//! [`remove_small_components`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`].
+//! [`remove_small_components`], [`orient_faces`], [`repair_non_manifold_edges`] and
+//! [`split_non_manifold_vertices`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`].
 //! The doctor's detection serves them: what it lists as duplicates, unreferenced vertices or
 //! small components is what the repairs remove.
 //!
 //! Kept data follows its element: a kept corner keeps its normal and texture coordinate, a kept
 //! vertex its position (and, on a mesh, its attributes), and removed elements' data goes with
-//! them; what merged elements keep is said by each operation. Vertices and faces are renumbered
+//! them; what merged elements keep is said by each operation, and so is what added elements
+//! (vertex copies) get. Vertices and faces are renumbered
 //! in their order; [`RepairReport::maps`] gives the old-to-new ids.
 
 mod merge_vertices;
+mod orient_faces;
 mod remove_duplicate_faces;
 mod remove_small_components;
 mod remove_unreferenced_vertices;
+mod repair_non_manifold_edges;
 mod soup_edit;
+mod split_non_manifold_vertices;
 mod stitch_borders;
 mod tolerance;
 
 pub use merge_vertices::merge_vertices;
+pub use orient_faces::orient_faces;
 pub use remove_duplicate_faces::remove_duplicate_faces;
 pub use remove_small_components::{SmallComponents, remove_small_components};
 pub use remove_unreferenced_vertices::remove_unreferenced_vertices;
+pub use repair_non_manifold_edges::{NonManifoldEdges, repair_non_manifold_edges};
+pub use split_non_manifold_vertices::split_non_manifold_vertices;
 pub use stitch_borders::stitch_borders;
 pub use tolerance::Tolerance;
 
@@ -48,6 +56,11 @@ pub struct RepairReport {
     /// Pairs `[a, b]` of boundary half-edges glued by [`stitch_borders`]: `a`'s edge is the
     /// stitched edge, `b`'s was removed.
     pub stitched_halfedges: Vec<[u32; 2]>,
+    /// Vertices added, each a copy of an input vertex: the `i`-th added vertex (id `n + i`, `n`
+    /// the vertex count before) copies vertex `vertex_copies[i]` and has its position.
+    pub vertex_copies: Vec<u32>,
+    /// Faces whose corner order was reversed.
+    pub reoriented_faces: Vec<u32>,
     /// Corners dropped from faces that were kept (a corner repeating its predecessor's vertex
     /// after a merge).
     pub removed_corners: usize,
@@ -60,6 +73,8 @@ impl RepairReport {
             && self.removed_vertices.is_empty()
             && self.removed_faces.is_empty()
             && self.stitched_halfedges.is_empty()
+            && self.vertex_copies.is_empty()
+            && self.reoriented_faces.is_empty()
             && self.removed_corners == 0
     }
 }

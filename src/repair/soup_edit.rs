@@ -3,7 +3,7 @@
 
 use super::RepairError;
 use crate::mesh::{IndexMaps, compaction_map};
-use crate::soup::{FaceTable, ListProblem, MAX_VERTICES, PolygonSoup};
+use crate::soup::{FaceTable, ListProblem, MAX_VERTICES, PolygonSoup, VertexCopies};
 
 /// The soup laid out as a table, refused when a repair cannot work on it: list-level problems,
 /// corner attributes that are not one per corner, an index naming no vertex.
@@ -39,6 +39,63 @@ pub(super) fn checked_table(soup: &PolygonSoup) -> Result<FaceTable<'_>, RepairE
         });
     }
     Ok(table)
+}
+
+/// The soup's well-formed faces (3 corners or more, no vertex named twice), in order, with
+/// their soup face ids ([`FaceTable::input_face`]): what the edge-pairing repairs work on.
+/// Refused as [`checked_table`] refuses.
+pub(super) fn well_formed_faces(soup: &PolygonSoup) -> Result<FaceTable<'static>, RepairError> {
+    let table = checked_table(soup)?;
+    let defects = table.face_defects(soup.positions.len());
+    let mut keep = vec![true; table.n_faces()];
+    for &f in defects.too_small.iter().chain(&defects.repeated_vertex) {
+        keep[f as usize] = false;
+    }
+    Ok(table.retain(&keep))
+}
+
+/// The first corner of every soup face, and one past the last as the last entry.
+pub(super) fn face_offsets(soup: &PolygonSoup) -> Vec<usize> {
+    let mut offsets = Vec::with_capacity(soup.n_faces() + 1);
+    offsets.push(0);
+    for &size in &soup.face_sizes {
+        offsets.push(offsets[offsets.len() - 1] + size as usize);
+    }
+    offsets
+}
+
+/// Writes the corners of `table` (the soup's well-formed faces, edited in place: same sizes, some
+/// corners moved to copies) back into the soup, and appends the copies at their originals'
+/// positions. Corner data stays with its corner.
+pub(super) fn apply_vertex_copies(
+    soup: &mut PolygonSoup,
+    table: &FaceTable<'_>,
+    copies: &VertexCopies,
+) {
+    let offsets = face_offsets(soup);
+    for f in 0..table.n_faces() {
+        let first = offsets[table.input_face(f) as usize];
+        let face = table.face(f);
+        soup.indices[first..first + face.len()].copy_from_slice(face);
+    }
+    let n_vertices = soup.positions.len();
+    soup.positions.reserve(copies.copied_from().len());
+    for &v in copies.copied_from() {
+        let position = soup.positions[v as usize];
+        soup.positions.push(position);
+    }
+    debug_assert_eq!(
+        soup.positions.len(),
+        n_vertices + copies.copied_from().len()
+    );
+}
+
+/// The refusal of a repair whose vertex copies would go beyond 32-bit ids.
+pub(super) fn too_many_vertices(copies: &VertexCopies) -> RepairError {
+    RepairError::MalformedList(ListProblem::TooManyElements {
+        what: "vertices",
+        count: copies.n_vertices() as u64 + 1,
+    })
 }
 
 /// Identity maps of the soup's vertices and faces: what a repair that changed nothing reports.

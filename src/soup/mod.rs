@@ -28,10 +28,13 @@ pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Pinched, Unreached, Walked, build_splitting_pinched, walk_faces};
 pub use inspect::diagnose;
 pub(crate) use inspect::{Inspection, inspect, unnamed_vertices};
-pub(crate) use orient::{component_volumes, search_orientations};
+pub(crate) use orient::{
+    component_volumes, faces_facing_inward, faces_to_flip, flip_faces, search_orientations,
+};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
 pub use resolve::{Resolved, resolve};
+pub(crate) use resolve::{VertexCopies, first_come_refusals, repair_edges, symmetric_difference};
 pub(crate) use table::face_edges;
 pub use table::{FaceDefects, FaceTable, Faces, MAX_CORNERS, MAX_VERTICES, non_finite_vertices};
-pub(crate) use umbrellas::Fans;
+pub(crate) use umbrellas::{Fans, split_non_manifold_vertices, split_umbrellas};

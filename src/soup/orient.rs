@@ -7,7 +7,9 @@ use super::pairing::{BOUNDARY, EdgeDefect, EdgePairing, UNPAIRED};
 use crate::disjoint_sets;
 
 /// Orientations given to the faces of a table breadth-first through their two-face edges: the
-/// same across an edge walked both ways, opposite across an edge walked one way twice. Each
+/// same across an edge walked both ways, opposite across an edge walked one way twice; each
+/// face's neighbours are visited in face order, so the search tree does not depend on the
+/// faces' orientations. Each
 /// connected component is walked from its first face; a face reached again with the other
 /// orientation (a Möbius band) keeps its first one, and the pair is a conflict.
 pub(crate) struct OrientationSearch {
@@ -57,6 +59,7 @@ pub(crate) fn search_orientations(
         conflicts: Vec::new(),
     };
     let mut queue = Vec::new();
+    let mut neighbours = Vec::new();
     for seed in 0..n_faces {
         if search.reached_from[seed] != UNSEEN {
             continue;
@@ -69,10 +72,16 @@ pub(crate) fn search_orientations(
         while head < queue.len() {
             let f = queue[head];
             head += 1;
-            for &(neighbour, differ) in &across[table.face_range(f)] {
-                if neighbour == u32::MAX {
-                    continue;
-                }
+            // Neighbours in face order, not corner order: reversing faces then leaves the
+            // search tree as it was, so orienting a second time changes nothing.
+            neighbours.clear();
+            neighbours.extend(
+                across[table.face_range(f)]
+                    .iter()
+                    .filter(|&&(neighbour, _)| neighbour != u32::MAX),
+            );
+            neighbours.sort_unstable();
+            for &(neighbour, differ) in &neighbours {
                 let g = neighbour as usize;
                 let wanted = search.flipped[f] ^ differ;
                 if search.reached_from[g] == UNSEEN {
@@ -120,9 +129,9 @@ pub(crate) fn flip_faces(table: &mut FaceTable<'_>, faces: &[usize]) {
 }
 
 /// The faces of the closed components of `table` that enclose a negative volume, ascending:
-/// flipped, every closed component faces outward. `pairing` is `table`'s, with no problem edge;
-/// components are joined through paired edges, and a component is closed when none of its
-/// corners is on the boundary. Vertex `v` is at `position(v)`. A component enclosing no volume
+/// flipped, every closed component faces outward. `pairing` is `table`'s; components are joined
+/// through paired edges, and a component is closed when none of its corners is on the boundary
+/// or on a problem edge. Vertex `v` is at `position(v)`. A component enclosing no volume
 /// (flat) is left as it is.
 pub(crate) fn faces_facing_inward(
     table: &FaceTable<'_>,

@@ -110,7 +110,7 @@ pub fn resolve<'a>(list: &FaceList<'a>, policy: BuildPolicy) -> Result<Resolved<
                 if split_umbrellas(&mut table, &pairing, &mut copies)? {
                     pairing = pair_edges(&table, copies.n_vertices());
                 }
-                repair_edges(&mut table, pairing, &mut copies)?;
+                repair_edges(&mut table, pairing, &mut copies, |_| true)?;
             }
         }
     }
@@ -169,7 +169,10 @@ fn without_faces<'a>(table: FaceTable<'a>, faces: &[u32]) -> FaceTable<'a> {
 }
 
 /// The elements of exactly one of two ascending lists, ascending.
-fn symmetric_difference<'l>(a: &'l [usize], b: &'l [usize]) -> impl Iterator<Item = usize> + 'l {
+pub(crate) fn symmetric_difference<'l>(
+    a: &'l [usize],
+    b: &'l [usize],
+) -> impl Iterator<Item = usize> + 'l {
     let (mut i, mut j) = (0, 0);
     std::iter::from_fn(move || {
         loop {
@@ -194,21 +197,26 @@ fn symmetric_difference<'l>(a: &'l [usize], b: &'l [usize]) -> impl Iterator<Ite
 }
 
 /// Vertices added by repair, each remembering the input vertex it copies.
-pub(super) struct VertexCopies {
+pub(crate) struct VertexCopies {
     n_input: usize,
     copied_from: Vec<u32>,
 }
 
 impl VertexCopies {
-    fn new(n_input: usize) -> Self {
+    pub(crate) fn new(n_input: usize) -> Self {
         VertexCopies {
             n_input,
             copied_from: Vec::new(),
         }
     }
 
-    pub(super) fn n_vertices(&self) -> usize {
+    pub(crate) fn n_vertices(&self) -> usize {
         self.n_input + self.copied_from.len()
+    }
+
+    /// The input vertex each copy copies, in the order the copies were made.
+    pub(crate) fn copied_from(&self) -> &[u32] {
+        &self.copied_from
     }
 
     /// The input vertex `vertex` is (or copies).
@@ -240,7 +248,7 @@ impl VertexCopies {
     /// Drops the copies no corner uses any more and renumbers the others, in order: a later
     /// repair round moves refused corners off the copies an earlier step gave them, and a copy
     /// left behind would be a vertex repair added to the mesh with nothing on it.
-    fn drop_unused(&mut self, table: &mut FaceTable<'_>) {
+    pub(crate) fn drop_unused(&mut self, table: &mut FaceTable<'_>) {
         let copy_index = |v: u32| (v as usize).checked_sub(self.n_input);
         let mut used = vec![false; self.copied_from.len()];
         for &v in table.corners() {
@@ -319,7 +327,7 @@ fn repair_repeated_vertices<'a>(
 
 /// Takes faces in table order and refuses a face when one of its problem edges is already used in
 /// its direction by an accepted face. Returns the refused faces with their problem corners.
-fn first_come_refusals(
+pub(crate) fn first_come_refusals(
     table: &FaceTable<'_>,
     problems: &[ProblemEdge],
 ) -> Vec<(usize, Vec<usize>)> {
@@ -357,15 +365,17 @@ fn first_come_refusals(
     refused
 }
 
-/// Gives the faces that cannot share their problem edges copies of those edges' endpoints, round
+/// Gives the faces that cannot share their problem edges (those `wanted` selects) copies of those edges' endpoints, round
 /// after round, until everything pairs; after [`REPAIR_ROUNDS`] rounds the faces still refused
 /// get vertices of their own.
-fn repair_edges(
+pub(crate) fn repair_edges(
     table: &mut FaceTable<'_>,
     mut pairing: EdgePairing,
     copies: &mut VertexCopies,
+    wanted: impl Fn(&ProblemEdge) -> bool,
 ) -> Result<EdgePairing, BuildError> {
     for round in 0..=REPAIR_ROUNDS {
+        pairing.problems.retain(&wanted);
         if pairing.problems.is_empty() {
             break;
         }

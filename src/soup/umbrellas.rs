@@ -151,7 +151,7 @@ impl Fans {
 /// Gives every fan of each non-manifold vertex of `table` but the first a vertex of its own
 /// (`pairing` is `table`'s, with no problem edge left). Returns the split input vertices,
 /// ascending (their copies are in `copies`).
-pub(super) fn split_non_manifold_vertices(
+pub(crate) fn split_non_manifold_vertices(
     table: &mut FaceTable<'_>,
     pairing: &EdgePairing,
     copies: &mut VertexCopies,
@@ -169,7 +169,7 @@ pub(super) fn split_non_manifold_vertices(
 /// so that a lone pair keeps its edge (a "book" of three triangles keeps two joined). The umbrella
 /// holding a vertex's first corner keeps the vertex, every other umbrella gets a copy. Returns
 /// whether any corner changed vertex (then pair again).
-pub(super) fn split_umbrellas(
+pub(crate) fn split_umbrellas(
     table: &mut FaceTable<'_>,
     pairing: &EdgePairing,
     copies: &mut VertexCopies,

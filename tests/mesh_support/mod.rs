@@ -9,6 +9,7 @@ use halfwing::soup::PolygonSoup;
 
 #[path = "../shared_data/mod.rs"]
 mod shared_data;
+pub mod soups;
 
 /// Root of the test meshes.
 pub fn data_dir() -> PathBuf {
