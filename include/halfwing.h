@@ -103,6 +103,11 @@
 #define HW_VERSION_NUMBER (((HW_VERSION_MAJOR * 10000) + (HW_VERSION_MINOR * 100)) + HW_VERSION_PATCH)
 
 /**
+ * The steps of [`repair_mesh`], in the order they run.
+ */
+typedef struct RepairStep RepairStep;
+
+/**
  * The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
  * hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
  *
@@ -150,6 +155,12 @@ typedef struct hw_mesh hw_mesh;
  * views stay valid until it is freed, also after the mesh it came from changes or is freed.
  */
 typedef struct hw_render_buffers hw_render_buffers;
+
+/**
+ * What hw_repair_mesh() did to every input element. Opaque; read with hw_repair_fates_list()
+ * and hw_repair_fates_counts(), release with hw_repair_fates_free().
+ */
+typedef struct hw_repair_fates hw_repair_fates;
 
 /**
  * What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
@@ -529,6 +540,86 @@ typedef uint32_t hw_small_components;
 typedef uint32_t hw_repair_list;
 
 /**
+ * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
+ * duplicates only and keeps every component.
+ */
+typedef struct {
+  /**
+   * Vertices this close merge (absolute, or when `merge_relative` a fraction 0 to 1 of the
+   * bounding-box diagonal). Default 0: identical positions.
+   */
+  double merge_tolerance;
+  /**
+   * Whether `merge_tolerance` is relative. Default false.
+   */
+  bool merge_relative;
+  /**
+   * Boundary edges whose ends are this close stitch (as `merge_tolerance`). Default 0.
+   */
+  double stitch_tolerance;
+  /**
+   * Whether `stitch_tolerance` is relative. Default false.
+   */
+  bool stitch_relative;
+  /**
+   * Whether small components are removed (by `small_rule` and `small_value`, as
+   * hw_soup_remove_small_components() takes them). Default false.
+   */
+  bool remove_small_components;
+  /**
+   * ::HW_SMALL_BY_FACE_COUNT or ::HW_SMALL_BY_RELATIVE_DIAMETER.
+   */
+  hw_small_components small_rule;
+  /**
+   * The face count or the diameter ratio.
+   */
+  double small_value;
+} hw_repair_options;
+
+/**
+ * One list of hw_repair_fates_list().
+ */
+typedef uint32_t hw_fates_list;
+
+/**
+ * The counts of hw_repair_fates_counts().
+ */
+typedef struct {
+  /**
+   * Input vertices in the output.
+   */
+  size_t kept_vertices;
+  /**
+   * Input vertices merged into another.
+   */
+  size_t merged_vertices;
+  /**
+   * Input vertices removed.
+   */
+  size_t removed_vertices;
+  /**
+   * Output vertices that copy an input vertex (kept + added = output vertices).
+   */
+  size_t added_vertices;
+  /**
+   * Input faces in the output (= output faces).
+   */
+  size_t kept_faces;
+  /**
+   * Kept faces that run the other way round.
+   */
+  size_t reversed_faces;
+  /**
+   * Input faces removed.
+   */
+  size_t removed_faces;
+  /**
+   * Pairs of boundary edges stitched into one.
+   */
+  size_t stitched_edges;
+} hw_repair_fate_counts;
+
+/**
  * How the cells of a parametric surface become faces.
  */
 typedef uint32_t hw_cell_faces;
@@ -725,6 +816,13 @@ typedef struct {
   uint32_t center;
   hw_wcirculator_kind kind;
 } hw_wcirculator;
+
+/**
+ * The fate of an element, in the kinds lists of hw_repair_fates_list().
+ */
+typedef uint32_t hw_fate;
+
+
 
 
 
@@ -1113,6 +1211,73 @@ typedef struct {
  * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
  */
 #define HW_SMALL_BY_RELATIVE_DIAMETER 1
+
+/**
+ * Kept: its id is the output element.
+ */
+#define HW_FATE_KEPT 0
+
+/**
+ * A vertex merged into another: its id is the output vertex it went into.
+ */
+#define HW_FATE_MERGED 1
+
+/**
+ * A face kept, reversed: its id is the output face.
+ */
+#define HW_FATE_REVERSED 2
+
+/**
+ * A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
+ */
+#define HW_FATE_COLLAPSED 3
+
+/**
+ * A face removed as a duplicate: its id is the input face kept in its place.
+ */
+#define HW_FATE_DUPLICATE 4
+
+/**
+ * Removed: a face the repairing build could not keep, or a vertex with a non-finite
+ * coordinate (id `UINT32_MAX`).
+ */
+#define HW_FATE_UNBUILDABLE 5
+
+/**
+ * Removed with a small component (id `UINT32_MAX`).
+ */
+#define HW_FATE_SMALL_COMPONENT 6
+
+/**
+ * A vertex removed because no kept face names it (id `UINT32_MAX`).
+ */
+#define HW_FATE_UNREFERENCED 7
+
+/**
+ * The ::hw_fate of every input vertex.
+ */
+#define HW_FATES_VERTEX_KINDS 0
+
+/**
+ * The id that goes with every input vertex's fate.
+ */
+#define HW_FATES_VERTEX_IDS 1
+
+/**
+ * The ::hw_fate of every input face.
+ */
+#define HW_FATES_FACE_KINDS 2
+
+/**
+ * The id that goes with every input face's fate.
+ */
+#define HW_FATES_FACE_IDS 3
+
+/**
+ * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
+ * vertex, by output id.
+ */
+#define HW_FATES_ADDED_VERTICES 4
 
 /**
  * Success.
@@ -2704,6 +2869,59 @@ hw_status hw_repair_report_maps(const hw_repair_report *report,
  * `report` must be NULL or a report from this library, not in use by another thread.
  */
 void hw_repair_report_free(hw_repair_report *report);
+
+/**
+ * The default options of hw_repair_mesh().
+ */
+hw_repair_options hw_repair_options_default(void);
+
+/**
+ * Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
+ * tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
+ * split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
+ * that cannot be kept left out), stitches borders, removes small components (when asked) and
+ * unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
+ * faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
+ * every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
+ * malformed soup; `HW_ERR_OUT_OF_MEMORY` when memory ran out.
+ *
+ * # Safety
+ * `soup` NULL or live; `options` NULL or readable; `out_mesh` writable; `out_fates` NULL or
+ * writable.
+ */
+hw_status hw_repair_mesh(const hw_soup *soup,
+                         const hw_repair_options *options,
+                         hw_mesh **out_mesh,
+                         hw_repair_fates **out_fates);
+
+/**
+ * A read-only view of one list of the fates (`*out_ids`, NULL when empty, with `*out_len`
+ * values). Lives as long as the fates.
+ *
+ * # Safety
+ * `fates` NULL or live; `out_ids` and `out_len` writable.
+ */
+hw_status hw_repair_fates_list(const hw_repair_fates *fates,
+                               hw_fates_list list,
+                               const uint32_t **out_ids,
+                               size_t *out_len);
+
+/**
+ * The number of elements of every fate, written to `*out_counts`.
+ *
+ * # Safety
+ * `fates` NULL or live; `out_counts` writable.
+ */
+hw_status hw_repair_fates_counts(const hw_repair_fates *fates, hw_repair_fate_counts *out_counts);
+
+/**
+ * Releases the fates. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
+ *
+ * # Safety
+ * `fates` NULL or fates from this library, not in use by another thread.
+ */
+void hw_repair_fates_free(hw_repair_fates *fates);
 
 /**
  * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that

@@ -47,11 +47,14 @@ pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
 
 impl From<RepairError> for FfiError {
     fn from(error: RepairError) -> Self {
-        FfiError::invalid_input(error.to_string())
+        match error {
+            RepairError::Build(build) => build.into(),
+            other => FfiError::invalid_input(other.to_string()),
+        }
     }
 }
 
-fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
+pub(super) fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
     if relative {
         Tolerance::Relative(tolerance)
     } else {
