@@ -333,6 +333,29 @@ static void doctor() {
   CHECK(broken.boundary_loops().size() == 1 && !broken.verdict().closed);
 }
 
+static void repair_pipeline() {
+  const hw::soup input =
+      hw::soup::read(std::string(HALFWING_DATA_DIR) + "/meshes/broken/cgaltest_nm_edges_simple.off");
+  auto repaired = hw::repair_mesh(input);
+  const hw::mesh& m = repaired.first;
+  CHECK(hw_mesh_check(m.get()) == HW_OK);
+  const hw_repair_fate_counts c = repaired.second.counts();
+  const std::size_t n_input = input.positions().size() / 3;
+  CHECK(c.kept_vertices + c.merged_vertices + c.removed_vertices == n_input);
+  CHECK(c.kept_vertices + c.added_vertices == m.n_vertices());
+  CHECK(c.kept_faces + c.removed_faces == input.face_sizes().size());
+  CHECK(repaired.second.list(HW_FATES_VERTEX_KINDS).size() == n_input);
+  hw_repair_options bad = hw_repair_options_default();
+  bad.merge_tolerance = -1;
+  bool threw = false;
+  try {
+    hw::repair_mesh(input, bad);
+  } catch (const hw::error& e) {
+    threw = e.status() == HW_ERR_INVALID_INPUT;
+  }
+  CHECK(threw);
+}
+
 static void version_string() { CHECK(hw::version() == EXPECTED_VERSION_STRING); }
 
 // ---- range-for over the inline navigation -----------------------------------------------------
@@ -482,6 +505,7 @@ int main() {
   winged_kernel();
   voronoi_classes();
   doctor();
+  repair_pipeline();
   version_string();
   return check_summary("test_hpp");
 }

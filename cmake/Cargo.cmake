@@ -1,6 +1,7 @@
 # Builds the Rust crate with cargo and exposes it as the imported targets Halfwing::shared and
 # Halfwing::static (and Halfwing::halfwing, following BUILD_SHARED_LIBS), the same names the
-# installed HalfwingConfig.cmake gives consumers.
+# installed HalfwingConfig.cmake gives consumers. The same cargo step builds the `halfwing`
+# command-line tool (HALFWING_CLI), a binary of the crate.
 #
 # Cargo does its own dependency tracking, so the cargo step always runs and is a no-op when
 # nothing changed. No network beyond the crates.io registry is used.
@@ -19,6 +20,7 @@ set(HALFWING_CARGO_TARGET_DIR "${CMAKE_BINARY_DIR}/cargo")
 set(HALFWING_LIB_DIR "${HALFWING_CARGO_TARGET_DIR}/${HALFWING_CARGO_PROFILE_DIR}")
 set(HALFWING_SHARED_LIB "${HALFWING_LIB_DIR}/libhalfwing.so")
 set(HALFWING_STATIC_LIB "${HALFWING_LIB_DIR}/libhalfwing.a")
+set(HALFWING_CLI "${HALFWING_LIB_DIR}/halfwing")
 # Same rule as build.rs: one ABI per major version, per minor version while at 0.x.
 if(PROJECT_VERSION_MAJOR EQUAL 0)
   set(HALFWING_SOVERSION "0.${PROJECT_VERSION_MINOR}")
@@ -33,11 +35,11 @@ set(HALFWING_STATIC_DEPS pthread dl m rt util gcc_s)
 
 add_custom_target(halfwing_cargo ALL
   COMMAND "${CMAKE_COMMAND}" -E env CARGO_TARGET_DIR=${HALFWING_CARGO_TARGET_DIR}
-          "${CARGO_EXECUTABLE}" build --lib ${HALFWING_CARGO_PROFILE_FLAG}
+          "${CARGO_EXECUTABLE}" build --lib --bin halfwing ${HALFWING_CARGO_PROFILE_FLAG}
           --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
   # The loader looks the library up by its soname.
   COMMAND "${CMAKE_COMMAND}" -E create_symlink libhalfwing.so "${HALFWING_LIB_DIR}/${HALFWING_SONAME}"
-  BYPRODUCTS "${HALFWING_SHARED_LIB}" "${HALFWING_STATIC_LIB}"
+  BYPRODUCTS "${HALFWING_SHARED_LIB}" "${HALFWING_STATIC_LIB}" "${HALFWING_CLI}"
   WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
   COMMENT "cargo build halfwing (${HALFWING_CARGO_PROFILE_DIR})"
   USES_TERMINAL

@@ -1,6 +1,7 @@
 # Installs the libraries (stripped unless HALFWING_INSTALL_DEBUG_INFO is ON), headers, CMake
 # package (HalfwingConfig.cmake, HalfwingConfigVersion.cmake), pkg-config file (halfwing.pc),
-# licenses and changelog. The viewer is installed by examples/CMakeLists.txt.
+# licenses, changelog and the `halfwing` command-line tool. The viewer is installed by
+# examples/CMakeLists.txt.
 
 include(CMakePackageConfigHelpers)
 
@@ -22,6 +23,7 @@ install(FILES "${_links}/${HALFWING_SONAME}" "${_links}/libhalfwing.so"
 install(FILES "${HALFWING_STATIC_LIB}" DESTINATION "${CMAKE_INSTALL_LIBDIR}")
 install(FILES include/halfwing.h include/halfwing_nav.h include/halfwing.hpp
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}")
+install(PROGRAMS "${HALFWING_CLI}" DESTINATION "${CMAKE_INSTALL_BINDIR}")
 install(FILES LICENSE-MIT LICENSE-APACHE CHANGELOG.md DESTINATION "${CMAKE_INSTALL_DOCDIR}")
 
 # The release profile keeps line tables for the tests' backtraces (a ~20 MB shared library);
@@ -39,14 +41,22 @@ if(NOT HALFWING_INSTALL_DEBUG_INFO)
     set(_installed_libdir "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}")
   endif()
   # The shared library keeps the symbols it exports; the archive keeps every symbol a link needs.
-  foreach(_strip IN ITEMS "--strip-unneeded;${HALFWING_SHARED_FILE}" "--strip-debug;libhalfwing.a")
+  if(IS_ABSOLUTE "${CMAKE_INSTALL_BINDIR}")
+    set(_installed_bindir "\$ENV{DESTDIR}${CMAKE_INSTALL_BINDIR}")
+  else()
+    set(_installed_bindir "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}")
+  endif()
+  # The tool is linked statically against the crate: it needs no symbol table at all.
+  foreach(_strip IN ITEMS "--strip-unneeded;${_installed_libdir}/${HALFWING_SHARED_FILE}"
+                          "--strip-debug;${_installed_libdir}/libhalfwing.a"
+                          "--strip-all;${_installed_bindir}/halfwing")
     list(GET _strip 0 _how)
     list(GET _strip 1 _file)
     install(CODE "
-      execute_process(COMMAND \"${CMAKE_STRIP}\" ${_how} \"${_installed_libdir}/${_file}\"
+      execute_process(COMMAND \"${CMAKE_STRIP}\" ${_how} \"${_file}\"
                       RESULT_VARIABLE _halfwing_strip_status)
       if(NOT _halfwing_strip_status EQUAL 0)
-        message(FATAL_ERROR \"${CMAKE_STRIP} ${_how} ${_installed_libdir}/${_file} failed\")
+        message(FATAL_ERROR \"${CMAKE_STRIP} ${_how} ${_file} failed\")
       endif()")
   endforeach()
 endif()

@@ -609,6 +609,40 @@ class repair_report {
   detail::owned<hw_repair_report, hw_repair_report_free> raw_;
 };
 
+/// What hw::repair_mesh() did to every input element (owns an hw_repair_fates).
+class repair_fates {
+ public:
+  repair_fates() = default;
+  explicit repair_fates(hw_repair_fates* raw) : raw_(raw) {}
+
+  /// One list (see ::hw_fates_list): fates (::hw_fate) and ids of the input vertices and
+  /// faces, or the added vertices' pairs.
+  std::vector<uint32_t> list(hw_fates_list which) const {
+    const uint32_t* ids = nullptr;
+    std::size_t n = 0;
+    check(hw_repair_fates_list(raw_.get(), which, &ids, &n));
+    return std::vector<uint32_t>(ids, ids + n);
+  }
+  /// How many elements met each fate.
+  hw_repair_fate_counts counts() const {
+    hw_repair_fate_counts c{};
+    check(hw_repair_fates_counts(raw_.get(), &c));
+    return c;
+  }
+  hw_repair_fates* get() const noexcept { return raw_.get(); }
+  explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
+
+ private:
+  detail::owned<hw_repair_fates, hw_repair_fates_free> raw_;
+};
+
+class soup;
+class mesh;
+/// The repair pipeline (see hw_repair_mesh()): a new mesh from `input` and the fate of every
+/// input element; `input` is unchanged.
+std::pair<mesh, repair_fates> repair_mesh(const soup& input,
+                                          const hw_repair_options& options = hw_repair_options_default());
+
 /// An indexed face list, read from a file or copied from arrays, that the repairs change in
 /// place (owns an hw_soup).
 class soup {
@@ -1131,6 +1165,7 @@ class mesh {
   // The Voronoi classes hand out meshes they build.
   friend class voronoi;
   friend class voronoi_cells;
+  friend std::pair<mesh, repair_fates> repair_mesh(const soup&, const hw_repair_options&);
   explicit mesh(hw_mesh* raw) : raw_(raw) {}
   // The navigation view once `v` (or `f`) is known to be live: the checked circulator start
   // throws hw::error with the library's message otherwise.
@@ -1147,6 +1182,14 @@ class mesh {
   std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
 };
+
+inline std::pair<mesh, repair_fates> repair_mesh(const soup& input,
+                                                 const hw_repair_options& options) {
+  hw_mesh* raw_mesh = nullptr;
+  hw_repair_fates* raw_fates = nullptr;
+  check(hw_repair_mesh(input.get(), &options, &raw_mesh, &raw_fates));
+  return {mesh(raw_mesh), repair_fates(raw_fates)};
+}
 
 // ---------------------------------------------------------------------------------------------
 // Winged-edge kernel

@@ -32,6 +32,7 @@ pub mod positions;
 mod quiet_panics;
 pub mod render;
 pub mod repair;
+pub mod repair_mesh;
 pub mod self_intersections;
 pub mod status;
 pub mod surfaces;

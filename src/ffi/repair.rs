@@ -71,11 +71,14 @@ pub const HW_NON_MANIFOLD_EDGES_REMOVE_FACES: hw_non_manifold_edges = 1;
 
 impl From<RepairError> for FfiError {
     fn from(error: RepairError) -> Self {
-        FfiError::invalid_input(error.to_string())
+        match error {
+            RepairError::Build(build) => build.into(),
+            other => FfiError::invalid_input(other.to_string()),
+        }
     }
 }
 
-fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
+pub(super) fn tolerance_arg(tolerance: f64, relative: bool) -> Tolerance {
     if relative {
         Tolerance::Relative(tolerance)
     } else {

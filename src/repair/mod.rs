@@ -13,23 +13,31 @@
 //! them; what merged elements keep is said by each operation, and so is what added elements
 //! (vertex copies) get. Vertices and faces are renumbered
 //! in their order; [`RepairReport::maps`] gives the old-to-new ids.
+//!
+//! [`repair_mesh`] runs them all in turn, with a repairing build between the face-list and the
+//! mesh repairs, and says what became of every input vertex and face ([`RepairFates`]). A new
+//! repair joins it as one [`RepairStep`].
 
+mod fates;
 mod merge_vertices;
 mod orient_faces;
 mod remove_duplicate_faces;
 mod remove_small_components;
 mod remove_unreferenced_vertices;
+mod repair_mesh;
 mod repair_non_manifold_edges;
 mod soup_edit;
 mod split_non_manifold_vertices;
 mod stitch_borders;
 mod tolerance;
 
+pub use fates::{FaceFate, Removal, VertexFate};
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;
 pub use remove_duplicate_faces::remove_duplicate_faces;
 pub use remove_small_components::{SmallComponents, remove_small_components};
 pub use remove_unreferenced_vertices::remove_unreferenced_vertices;
+pub use repair_mesh::{FateCounts, RepairFates, RepairOptions, RepairStep, repair_mesh};
 pub use repair_non_manifold_edges::{NonManifoldEdges, repair_non_manifold_edges};
 pub use split_non_manifold_vertices::split_non_manifold_vertices;
 pub use stitch_borders::stitch_borders;
@@ -104,6 +112,10 @@ pub enum RepairError {
     /// one per corner, counts beyond 32-bit ids).
     #[error("malformed face list: {0}")]
     MalformedList(ListProblem),
+    /// The repairing build refused the face list (out of memory, or a defect of the list as a
+    /// whole).
+    #[error("build failed: {0}")]
+    Build(crate::soup::BuildError),
     /// A face names a vertex that does not exist.
     #[error("face {face} names vertex {vertex}, but there are {n_vertices} vertices")]
     IndexOutOfRange {

@@ -1,0 +1,146 @@
+/* The repair pipeline through the C API: hw_repair_mesh() on a constructed soup with every fate
+ * checked, on a model of the test data with the fates summing to the input, and its refusals
+ * (nothing written). */
+#include <math.h>
+#include <stdio.h>
+
+#include "check.h"
+
+/* Two triangles sharing an edge whose ends are given twice (vertices 3 and 4 repeat 1 and 2), an
+ * unreferenced vertex 5 and a duplicate of the first triangle, rotated. */
+static const double positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1, 0, 9, 9, 9, 1, 1, 0};
+static const uint32_t sizes[] = {3, 3, 3};
+static const uint32_t indices[] = {0, 1, 2, 3, 6, 4, 1, 2, 0};
+
+static size_t fates_list(const hw_repair_fates *fates, hw_fates_list list, const uint32_t **ids) {
+  size_t n = 0;
+  CHECK(hw_repair_fates_list(fates, list, ids, &n) == HW_OK);
+  return n;
+}
+
+static void every_fate_of_a_small_soup(void) {
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 3, indices, 9, &soup) == HW_OK);
+  hw_repair_options options = hw_repair_options_default();
+  hw_mesh *mesh = NULL;
+  hw_repair_fates *fates = NULL;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 4 && hw_mesh_n_faces(mesh) == 2);
+
+  const uint32_t *kinds = NULL, *ids = NULL;
+  CHECK(fates_list(fates, HW_FATES_VERTEX_KINDS, &kinds) == 7);
+  CHECK(fates_list(fates, HW_FATES_VERTEX_IDS, &ids) == 7);
+  const uint32_t want_vertex_kinds[] = {HW_FATE_KEPT,   HW_FATE_KEPT,         HW_FATE_KEPT,
+                                        HW_FATE_MERGED, HW_FATE_MERGED,       HW_FATE_UNREFERENCED,
+                                        HW_FATE_KEPT};
+  const uint32_t want_vertex_ids[] = {0, 1, 2, 1, 2, HW_INVALID_INDEX, 3};
+  for (int v = 0; v < 7; v++) {
+    CHECK(kinds[v] == want_vertex_kinds[v] && ids[v] == want_vertex_ids[v]);
+  }
+  CHECK(fates_list(fates, HW_FATES_FACE_KINDS, &kinds) == 3);
+  CHECK(fates_list(fates, HW_FATES_FACE_IDS, &ids) == 3);
+  CHECK(kinds[0] == HW_FATE_KEPT && ids[0] == 0 && kinds[1] == HW_FATE_KEPT && ids[1] == 1);
+  CHECK(kinds[2] == HW_FATE_DUPLICATE && ids[2] == 0);
+  CHECK(fates_list(fates, HW_FATES_ADDED_VERTICES, &ids) == 0 && ids == NULL);
+
+  hw_repair_fate_counts counts;
+  CHECK(hw_repair_fates_counts(fates, &counts) == HW_OK);
+  CHECK(counts.kept_vertices == 4 && counts.merged_vertices == 2 && counts.removed_vertices == 1);
+  CHECK(counts.added_vertices == 0 && counts.kept_faces == 2 && counts.removed_faces == 1);
+  CHECK(counts.reversed_faces == 0 && counts.stitched_edges == 0);
+  hw_repair_fates_free(fates);
+  hw_mesh_free(mesh);
+
+  /* The fates are optional; the soup is unchanged, so a second run gives the same mesh. */
+  CHECK(hw_repair_mesh(soup, &options, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 4 && hw_mesh_n_faces(mesh) == 2);
+  hw_mesh_free(mesh);
+  hw_soup_free(soup);
+}
+
+static void a_model_accounts_for_every_element(void) {
+  char path[1024];
+  snprintf(path, sizeof path, "%s/meshes/broken/cgal_cubes.off", HALFWING_DATA_DIR);
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_read(path, &soup) == HW_OK);
+  size_t n_vertices = 0, n_corners = 0;
+  const uint32_t *corners = NULL;
+  CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, &corners, &n_corners) == HW_OK);
+  hw_repair_options options = hw_repair_options_default();
+  options.remove_small_components = true;
+  options.small_rule = HW_SMALL_BY_RELATIVE_DIAMETER;
+  options.small_value = 0.01;
+  hw_mesh *mesh = NULL;
+  hw_repair_fates *fates = NULL;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  CHECK(hw_mesh_check(mesh) == HW_OK);
+  hw_repair_fate_counts c;
+  CHECK(hw_repair_fates_counts(fates, &c) == HW_OK);
+  CHECK(c.kept_vertices + c.merged_vertices + c.removed_vertices == n_vertices);
+  CHECK(c.kept_vertices + c.added_vertices == hw_mesh_n_vertices(mesh));
+  CHECK(c.kept_faces + c.removed_faces == n_corners / 3);
+  CHECK(c.kept_faces == hw_mesh_n_faces(mesh));
+  /* Two cubes sharing an edge: cutting the edge gives each its own copies of its two ends. */
+  CHECK(c.added_vertices == 2);
+  const uint32_t *pairs = NULL;
+  CHECK(fates_list(fates, HW_FATES_ADDED_VERTICES, &pairs) == 4);
+  CHECK(pairs[0] == 14 && pairs[2] == 15 && pairs[1] < 14 && pairs[3] < 14);
+  hw_repair_fates_free(fates);
+  hw_mesh_free(mesh);
+  hw_soup_free(soup);
+}
+
+static void refusals_write_nothing(void) {
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 3, indices, 9, &soup) == HW_OK);
+  hw_mesh *mesh = (hw_mesh *)&mesh; /* must stay as it is */
+  hw_mesh *const untouched = mesh;
+  hw_repair_options options = hw_repair_options_default();
+  options.merge_tolerance = NAN;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "NaN");
+  options = hw_repair_options_default();
+  options.stitch_tolerance = 2.0;
+  options.stitch_relative = true;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT,
+               "between 0 and 1");
+  options = hw_repair_options_default();
+  options.remove_small_components = true;
+  options.small_rule = 9;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "rule");
+  options.small_rule = HW_SMALL_BY_FACE_COUNT;
+  options.small_value = 0.5;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "whole number");
+  CHECK(mesh == untouched);
+  options = hw_repair_options_default();
+  CHECK_STATUS(hw_repair_mesh(NULL, &options, &mesh, NULL), HW_ERR_NULL_ARGUMENT, "soup");
+  CHECK_STATUS(hw_repair_mesh(soup, NULL, &mesh, NULL), HW_ERR_NULL_ARGUMENT, "options");
+  CHECK_STATUS(hw_repair_mesh(soup, &options, NULL, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
+  CHECK(mesh == untouched);
+
+  /* An index naming no vertex. */
+  static const uint32_t bad[] = {0, 1, 7};
+  hw_soup *broken = NULL;
+  CHECK(hw_soup_from_indexed(positions, 7, sizes, 1, bad, 3, &broken) == HW_OK);
+  CHECK_STATUS(hw_repair_mesh(broken, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "vertex 7");
+  CHECK(mesh == untouched);
+  hw_soup_free(broken);
+
+  hw_repair_fates *fates = NULL;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  const uint32_t *ids = NULL;
+  size_t n = 0;
+  CHECK_STATUS(hw_repair_fates_list(fates, 99, &ids, &n), HW_ERR_INVALID_INPUT, "fates list");
+  CHECK_STATUS(hw_repair_fates_counts(fates, NULL), HW_ERR_NULL_ARGUMENT, "out_counts");
+  hw_repair_fates_free(fates);
+  hw_repair_fates_free(NULL);
+  hw_mesh_free(mesh);
+  hw_soup_free(soup);
+}
+
+int main(void) {
+  every_fate_of_a_small_soup();
+  a_model_accounts_for_every_element();
+  refusals_write_nothing();
+  return check_summary("test_repair_mesh");
+}

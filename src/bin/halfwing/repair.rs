@@ -1,0 +1,120 @@
+//! `halfwing repair IN OUT [options]`: the repair pipeline on a mesh file, with its report.
+
+use crate::args::Args;
+use crate::convert::ply_binary;
+use crate::failure::{Failure, Outcome};
+use crate::files::{read_mesh, write_mesh};
+use crate::progress::Progress;
+use halfwing::repair::{RepairOptions, SmallComponents, Tolerance, repair_mesh};
+
+const HELP: &str = "\
+usage: halfwing repair IN OUT [options]
+
+Repairs IN and writes the result to OUT (format by extension, as for convert): merges duplicate
+vertices, removes duplicate faces, builds a manifold (splitting non-manifold vertices, cutting
+non-manifold edges, orienting faces consistently and closed parts outward, leaving out faces that
+cannot be kept), stitches borders, optionally removes small components, removes unreferenced
+vertices. Prints what became of the input's vertices and faces.
+
+options:
+  --merge-tolerance T     merge vertices at most T apart (default 0: identical positions)
+  --merge-relative R      ... at most R (0 to 1) times the bounding-box diagonal apart
+  --stitch-tolerance T    stitch boundary edges whose ends are at most T apart (default 0)
+  --stitch-relative R     ... at most R times the diagonal apart
+  --small-faces N         remove components of at most N faces
+  --small-diameter R      remove components at most R (0 to 1) times the largest one's size
+  --binary | --ascii      PLY encoding of OUT (default binary)
+Exit codes: 0 success, 2 usage error or an option out of range, 3 IN cannot be read or is
+malformed as a whole, 4 OUT cannot be written.
+";
+
+pub fn run(args: &[String]) -> Outcome {
+    let Some(args) = Args::parse(
+        args,
+        &["--binary", "--ascii"],
+        &[
+            "--merge-tolerance",
+            "--merge-relative",
+            "--stitch-tolerance",
+            "--stitch-relative",
+            "--small-faces",
+            "--small-diameter",
+        ],
+    )?
+    else {
+        print!("{HELP}");
+        return Ok(0);
+    };
+    let [input, output] = args.positional(&["IN", "OUT"])? else {
+        unreachable!("two positional arguments")
+    };
+    let binary = ply_binary(&args, output)?;
+    let options = RepairOptions {
+        merge_tolerance: tolerance(&args, "--merge-tolerance", "--merge-relative")?,
+        stitch_tolerance: tolerance(&args, "--stitch-tolerance", "--stitch-relative")?,
+        small_components: match (
+            args.parsed::<usize>("--small-faces")?,
+            args.parsed::<f64>("--small-diameter")?,
+        ) {
+            (Some(_), Some(_)) => {
+                return Err(Failure::usage(
+                    "--small-faces and --small-diameter exclude each other".into(),
+                ));
+            }
+            (Some(n), None) => Some(SmallComponents::FaceCount(n)),
+            (None, Some(r)) => Some(SmallComponents::RelativeDiameter(r)),
+            (None, None) => None,
+        },
+    };
+    let soup = read_mesh(input)?;
+    let (mesh, fates) = {
+        let _progress = Progress::start(format!("repairing {input}"));
+        repair_mesh(&soup, &options).map_err(|e| match e {
+            halfwing::repair::RepairError::BadTolerance { .. }
+            | halfwing::repair::RepairError::BadOption { .. } => Failure::usage(e.to_string()),
+            _ => Failure::input(format!("{input}: {e}")),
+        })?
+    };
+    write_mesh(output, &mesh.to_soup(), binary)?;
+    let counts = fates.counts();
+    println!("{input} -> {output}");
+    println!(
+        "vertices: {} in, {} out: {} kept, {} merged, {} removed, {} added",
+        soup.positions.len(),
+        mesh.n_vertices(),
+        counts.kept_vertices,
+        counts.merged_vertices,
+        counts.removed_vertices,
+        counts.added_vertices
+    );
+    println!(
+        "faces:    {} in, {} out: {} kept ({} reversed), {} removed",
+        soup.n_faces(),
+        mesh.n_faces(),
+        counts.kept_faces,
+        counts.reversed_faces,
+        counts.removed_faces
+    );
+    for (what, reasons) in [
+        ("vertices", fates.removed_vertices_by_reason()),
+        ("faces", fates.removed_faces_by_reason()),
+    ] {
+        for (reason, count) in reasons {
+            println!("  removed {what} ({reason}): {count}");
+        }
+    }
+    println!("stitched edges: {}", fates.stitched_edges);
+    Ok(0)
+}
+
+/// The tolerance given by the absolute or the relative option (exact when neither).
+fn tolerance(args: &Args, absolute: &str, relative: &str) -> Result<Tolerance, Failure> {
+    match (args.parsed::<f64>(absolute)?, args.parsed::<f64>(relative)?) {
+        (Some(_), Some(_)) => Err(Failure::usage(format!(
+            "{absolute} and {relative} exclude each other"
+        ))),
+        (Some(t), None) => Ok(Tolerance::Absolute(t)),
+        (None, Some(r)) => Ok(Tolerance::Relative(r)),
+        (None, None) => Ok(Tolerance::EXACT),
+    }
+}

@@ -1,0 +1,317 @@
+//! The repair pipeline (`hw_repair_mesh`): every repair in turn, from a soup to a clean mesh,
+//! with the fate of every input vertex and face (`hw_repair_fates`).
+
+use crate::mesh::INVALID_INDEX;
+use crate::repair::{
+    FaceFate, FateCounts, Removal, RepairFates, RepairOptions, SmallComponents, VertexFate,
+    repair_mesh,
+};
+
+use super::boundary::{Out, arg_ref, give_view, guard, guard_void};
+use super::error::FfiError;
+use super::handle::{free_handle, into_handle};
+use super::io::hw_soup;
+use super::mesh::hw_mesh;
+use super::repair::{
+    HW_SMALL_BY_FACE_COUNT, HW_SMALL_BY_RELATIVE_DIAMETER, hw_small_components, tolerance_arg,
+};
+use super::status::*;
+
+/// Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
+/// duplicates only and keeps every component.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct hw_repair_options {
+    /// Vertices this close merge (absolute, or when `merge_relative` a fraction 0 to 1 of the
+    /// bounding-box diagonal). Default 0: identical positions.
+    pub merge_tolerance: f64,
+    /// Whether `merge_tolerance` is relative. Default false.
+    pub merge_relative: bool,
+    /// Boundary edges whose ends are this close stitch (as `merge_tolerance`). Default 0.
+    pub stitch_tolerance: f64,
+    /// Whether `stitch_tolerance` is relative. Default false.
+    pub stitch_relative: bool,
+    /// Whether small components are removed (by `small_rule` and `small_value`, as
+    /// hw_soup_remove_small_components() takes them). Default false.
+    pub remove_small_components: bool,
+    /// ::HW_SMALL_BY_FACE_COUNT or ::HW_SMALL_BY_RELATIVE_DIAMETER.
+    pub small_rule: hw_small_components,
+    /// The face count or the diameter ratio.
+    pub small_value: f64,
+}
+
+/// The default options of hw_repair_mesh().
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_repair_options_default() -> hw_repair_options {
+    hw_repair_options {
+        merge_tolerance: 0.0,
+        merge_relative: false,
+        stitch_tolerance: 0.0,
+        stitch_relative: false,
+        remove_small_components: false,
+        small_rule: HW_SMALL_BY_FACE_COUNT,
+        small_value: 0.0,
+    }
+}
+
+impl TryFrom<&hw_repair_options> for RepairOptions {
+    type Error = FfiError;
+
+    fn try_from(o: &hw_repair_options) -> Result<Self, FfiError> {
+        let small_components = if !o.remove_small_components {
+            None
+        } else {
+            Some(match o.small_rule {
+                HW_SMALL_BY_FACE_COUNT if o.small_value >= 0.0 && o.small_value.fract() == 0.0 => {
+                    SmallComponents::FaceCount(o.small_value as usize)
+                }
+                HW_SMALL_BY_FACE_COUNT => {
+                    return Err(FfiError::invalid_input(format!(
+                        "face count {} is not a whole number of 0 or more",
+                        o.small_value
+                    )));
+                }
+                HW_SMALL_BY_RELATIVE_DIAMETER => SmallComponents::RelativeDiameter(o.small_value),
+                other => {
+                    return Err(FfiError::invalid_input(format!(
+                        "unknown small-component rule {other}"
+                    )));
+                }
+            })
+        };
+        Ok(RepairOptions {
+            merge_tolerance: tolerance_arg(o.merge_tolerance, o.merge_relative),
+            stitch_tolerance: tolerance_arg(o.stitch_tolerance, o.stitch_relative),
+            small_components,
+        })
+    }
+}
+
+/// What hw_repair_mesh() did to every input element. Opaque; read with hw_repair_fates_list()
+/// and hw_repair_fates_counts(), release with hw_repair_fates_free().
+pub struct hw_repair_fates {
+    fates: RepairFates,
+    vertex_kinds: Vec<u32>,
+    vertex_ids: Vec<u32>,
+    face_kinds: Vec<u32>,
+    face_ids: Vec<u32>,
+}
+
+/// The fate of an element, in the kinds lists of hw_repair_fates_list().
+pub type hw_fate = u32;
+/// Kept: its id is the output element.
+pub const HW_FATE_KEPT: hw_fate = 0;
+/// A vertex merged into another: its id is the output vertex it went into.
+pub const HW_FATE_MERGED: hw_fate = 1;
+/// A face kept, reversed: its id is the output face.
+pub const HW_FATE_REVERSED: hw_fate = 2;
+/// A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
+pub const HW_FATE_COLLAPSED: hw_fate = 3;
+/// A face removed as a duplicate: its id is the input face kept in its place.
+pub const HW_FATE_DUPLICATE: hw_fate = 4;
+/// Removed: a face the repairing build could not keep, or a vertex with a non-finite
+/// coordinate (id `UINT32_MAX`).
+pub const HW_FATE_UNBUILDABLE: hw_fate = 5;
+/// Removed with a small component (id `UINT32_MAX`).
+pub const HW_FATE_SMALL_COMPONENT: hw_fate = 6;
+/// A vertex removed because no kept face names it (id `UINT32_MAX`).
+pub const HW_FATE_UNREFERENCED: hw_fate = 7;
+
+/// One list of hw_repair_fates_list().
+pub type hw_fates_list = u32;
+/// The ::hw_fate of every input vertex.
+pub const HW_FATES_VERTEX_KINDS: hw_fates_list = 0;
+/// The id that goes with every input vertex's fate.
+pub const HW_FATES_VERTEX_IDS: hw_fates_list = 1;
+/// The ::hw_fate of every input face.
+pub const HW_FATES_FACE_KINDS: hw_fates_list = 2;
+/// The id that goes with every input face's fate.
+pub const HW_FATES_FACE_IDS: hw_fates_list = 3;
+/// Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
+/// vertex, by output id.
+pub const HW_FATES_ADDED_VERTICES: hw_fates_list = 4;
+
+/// The counts of hw_repair_fates_counts().
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct hw_repair_fate_counts {
+    /// Input vertices in the output.
+    pub kept_vertices: usize,
+    /// Input vertices merged into another.
+    pub merged_vertices: usize,
+    /// Input vertices removed.
+    pub removed_vertices: usize,
+    /// Output vertices that copy an input vertex (kept + added = output vertices).
+    pub added_vertices: usize,
+    /// Input faces in the output (= output faces).
+    pub kept_faces: usize,
+    /// Kept faces that run the other way round.
+    pub reversed_faces: usize,
+    /// Input faces removed.
+    pub removed_faces: usize,
+    /// Pairs of boundary edges stitched into one.
+    pub stitched_edges: usize,
+}
+
+fn removal_kind(why: Removal) -> (hw_fate, u32) {
+    match why {
+        Removal::Collapsed => (HW_FATE_COLLAPSED, INVALID_INDEX),
+        Removal::Duplicate { of } => (HW_FATE_DUPLICATE, of),
+        Removal::Unbuildable => (HW_FATE_UNBUILDABLE, INVALID_INDEX),
+        Removal::SmallComponent => (HW_FATE_SMALL_COMPONENT, INVALID_INDEX),
+        Removal::Unreferenced => (HW_FATE_UNREFERENCED, INVALID_INDEX),
+    }
+}
+
+impl hw_repair_fates {
+    fn new(fates: RepairFates) -> Self {
+        let (vertex_kinds, vertex_ids) = fates
+            .vertices
+            .iter()
+            .map(|f| match *f {
+                VertexFate::Kept(v) => (HW_FATE_KEPT, v),
+                VertexFate::Merged { into } => (HW_FATE_MERGED, into),
+                VertexFate::Removed(why) => removal_kind(why),
+            })
+            .unzip();
+        let (face_kinds, face_ids) = fates
+            .faces
+            .iter()
+            .map(|f| match *f {
+                FaceFate::Kept {
+                    face,
+                    reversed: false,
+                } => (HW_FATE_KEPT, face),
+                FaceFate::Kept {
+                    face,
+                    reversed: true,
+                } => (HW_FATE_REVERSED, face),
+                FaceFate::Removed(why) => removal_kind(why),
+            })
+            .unzip();
+        hw_repair_fates {
+            fates,
+            vertex_kinds,
+            vertex_ids,
+            face_kinds,
+            face_ids,
+        }
+    }
+}
+
+/// Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
+/// tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
+/// split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
+/// that cannot be kept left out), stitches borders, removes small components (when asked) and
+/// unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
+/// faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
+/// every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
+/// malformed soup; `HW_ERR_OUT_OF_MEMORY` when memory ran out.
+///
+/// # Safety
+/// `soup` NULL or live; `options` NULL or readable; `out_mesh` writable; `out_fates` NULL or
+/// writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_mesh(
+    soup: *const hw_soup,
+    options: *const hw_repair_options,
+    out_mesh: *mut *mut hw_mesh,
+    out_fates: *mut *mut hw_repair_fates,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_mesh, "out_mesh")?;
+        let out_fates = Out::optional(out_fates);
+        // SAFETY: forwarded from the caller.
+        let soup = &unsafe { arg_ref(soup, "soup") }?.soup;
+        // SAFETY: forwarded from the caller.
+        let options = RepairOptions::try_from(unsafe { arg_ref(options, "options") }?)?;
+        let (mesh, fates) = repair_mesh(soup, &options)?;
+        // SAFETY: checked non-NULL and writable per the caller; the other NULL or writable.
+        unsafe {
+            out.write(into_handle(hw_mesh { mesh }));
+            if let Some(out_fates) = out_fates {
+                out_fates.write(into_handle(hw_repair_fates::new(fates)));
+            }
+        }
+        Ok(())
+    })
+}
+
+/// A read-only view of one list of the fates (`*out_ids`, NULL when empty, with `*out_len`
+/// values). Lives as long as the fates.
+///
+/// # Safety
+/// `fates` NULL or live; `out_ids` and `out_len` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_fates_list(
+    fates: *const hw_repair_fates,
+    list: hw_fates_list,
+    out_ids: *mut *const u32,
+    out_len: *mut usize,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        give_view(out_ids, "out_ids", out_len, || {
+            let fates = arg_ref(fates, "fates")?;
+            match list {
+                HW_FATES_VERTEX_KINDS => Ok(&fates.vertex_kinds[..]),
+                HW_FATES_VERTEX_IDS => Ok(&fates.vertex_ids[..]),
+                HW_FATES_FACE_KINDS => Ok(&fates.face_kinds[..]),
+                HW_FATES_FACE_IDS => Ok(&fates.face_ids[..]),
+                HW_FATES_ADDED_VERTICES => Ok(fates.fates.added_vertices.as_flattened()),
+                other => Err(FfiError::invalid_input(format!(
+                    "unknown fates list {other}"
+                ))),
+            }
+        })
+    }
+}
+
+/// The number of elements of every fate, written to `*out_counts`.
+///
+/// # Safety
+/// `fates` NULL or live; `out_counts` writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_fates_counts(
+    fates: *const hw_repair_fates,
+    out_counts: *mut hw_repair_fate_counts,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_counts, "out_counts")?;
+        // SAFETY: forwarded from the caller.
+        let fates = &unsafe { arg_ref(fates, "fates") }?.fates;
+        let FateCounts {
+            kept_vertices,
+            merged_vertices,
+            removed_vertices,
+            added_vertices,
+            kept_faces,
+            reversed_faces,
+            removed_faces,
+        } = fates.counts();
+        let counts = hw_repair_fate_counts {
+            kept_vertices,
+            merged_vertices,
+            removed_vertices,
+            added_vertices,
+            kept_faces,
+            reversed_faces,
+            removed_faces,
+            stitched_edges: fates.stitched_edges,
+        };
+        // SAFETY: checked non-NULL, writable per the caller.
+        unsafe { out.write(counts) };
+        Ok(())
+    })
+}
+
+/// Releases the fates. NULL is a no-op; a second free is refused (within the limits the
+/// ownership conventions at the top of the header state).
+///
+/// # Safety
+/// `fates` NULL or fates from this library, not in use by another thread.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_repair_fates_free(fates: *mut hw_repair_fates) {
+    // SAFETY: forwarded from the caller.
+    guard_void(|| unsafe { free_handle(fates, "hw_repair_fates") });
+}

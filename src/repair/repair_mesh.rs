@@ -1,0 +1,316 @@
+//! The repair pipeline: every repair in turn, from a face list to a clean mesh.
+
+use super::fates::Ledger;
+use super::{
+    FaceFate, Removal, RepairError, SmallComponents, Tolerance, VertexFate, merge_vertices,
+    remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices, stitch_borders,
+};
+use crate::mesh::{INVALID_INDEX, Mesh, VertexId, compaction_map};
+use crate::soup::{BuildPolicy, PolygonSoup};
+
+/// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only and keeps
+/// every component.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RepairOptions {
+    /// Vertices this close merge (first step).
+    pub merge_tolerance: Tolerance,
+    /// Boundary edges this close stitch (after the build).
+    pub stitch_tolerance: Tolerance,
+    /// Components removed as small, if any.
+    pub small_components: Option<SmallComponents>,
+}
+
+impl Default for RepairOptions {
+    fn default() -> Self {
+        RepairOptions {
+            merge_tolerance: Tolerance::EXACT,
+            stitch_tolerance: Tolerance::EXACT,
+            small_components: None,
+        }
+    }
+}
+
+/// The steps of [`repair_mesh`], in the order they run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RepairStep {
+    /// [`merge_vertices`] with [`RepairOptions::merge_tolerance`].
+    MergeVertices,
+    /// [`remove_duplicate_faces`].
+    RemoveDuplicateFaces,
+    /// The build under [`BuildPolicy::Repair`]: non-manifold vertices split, non-manifold edges
+    /// cut, faces reoriented to agree, closed components turned outward.
+    Build,
+    /// [`stitch_borders`] with [`RepairOptions::stitch_tolerance`].
+    StitchBorders,
+    /// [`remove_small_components`], when [`RepairOptions::small_components`] is set.
+    RemoveSmallComponents,
+    /// [`remove_unreferenced_vertices`].
+    RemoveUnreferencedVertices,
+}
+
+impl RepairStep {
+    /// Every step, in the order [`repair_mesh`] runs them.
+    pub const ALL: [RepairStep; 6] = [
+        RepairStep::MergeVertices,
+        RepairStep::RemoveDuplicateFaces,
+        RepairStep::Build,
+        RepairStep::StitchBorders,
+        RepairStep::RemoveSmallComponents,
+        RepairStep::RemoveUnreferencedVertices,
+    ];
+}
+
+/// What [`repair_mesh`] did to every input element. Every input vertex is kept, merged or
+/// removed, every input face kept or removed; the output's vertices are the kept input vertices
+/// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct RepairFates {
+    /// The fate of every input vertex.
+    pub vertices: Vec<VertexFate>,
+    /// The fate of every input face.
+    pub faces: Vec<FaceFate>,
+    /// Pairs `[output vertex, input vertex]` of output vertices that copy an input vertex (made
+    /// by splitting non-manifold vertices and cutting non-manifold edges), by output id.
+    pub added_vertices: Vec<[u32; 2]>,
+    /// Pairs of boundary edges stitched into one.
+    pub stitched_edges: usize,
+}
+
+/// Counts of a [`RepairFates`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FateCounts {
+    /// Input vertices in the output.
+    pub kept_vertices: usize,
+    /// Input vertices merged into another.
+    pub merged_vertices: usize,
+    /// Input vertices removed.
+    pub removed_vertices: usize,
+    /// Output vertices that copy an input vertex.
+    pub added_vertices: usize,
+    /// Input faces in the output.
+    pub kept_faces: usize,
+    /// Kept faces that run the other way round.
+    pub reversed_faces: usize,
+    /// Input faces removed.
+    pub removed_faces: usize,
+}
+
+impl RepairFates {
+    /// The number of elements of every fate: kept, merged and removed vertices sum to the input
+    /// vertices, kept and added ones to the output's; kept and removed faces sum to the input
+    /// faces.
+    pub fn counts(&self) -> FateCounts {
+        let mut counts = FateCounts {
+            added_vertices: self.added_vertices.len(),
+            ..FateCounts::default()
+        };
+        for fate in &self.vertices {
+            match fate {
+                VertexFate::Kept(_) => counts.kept_vertices += 1,
+                VertexFate::Merged { .. } => counts.merged_vertices += 1,
+                VertexFate::Removed(_) => counts.removed_vertices += 1,
+            }
+        }
+        for fate in &self.faces {
+            match fate {
+                FaceFate::Kept { reversed, .. } => {
+                    counts.kept_faces += 1;
+                    counts.reversed_faces += usize::from(*reversed);
+                }
+                FaceFate::Removed(_) => counts.removed_faces += 1,
+            }
+        }
+        counts
+    }
+
+    /// How many input faces were removed for each reason, in the order of [`Removal`]
+    /// (duplicates counted together).
+    pub fn removed_faces_by_reason(&self) -> Vec<(&'static str, usize)> {
+        reasons(self.faces.iter().filter_map(|f| match f {
+            FaceFate::Removed(why) => Some(*why),
+            FaceFate::Kept { .. } => None,
+        }))
+    }
+
+    /// How many input vertices were removed for each reason.
+    pub fn removed_vertices_by_reason(&self) -> Vec<(&'static str, usize)> {
+        reasons(self.vertices.iter().filter_map(|v| match v {
+            VertexFate::Removed(why) => Some(*why),
+            _ => None,
+        }))
+    }
+}
+
+fn reasons(removals: impl Iterator<Item = Removal>) -> Vec<(&'static str, usize)> {
+    let mut counts: Vec<(&'static str, usize)> = Vec::new();
+    for why in removals {
+        let name = why.name();
+        match counts.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, count)) => *count += 1,
+            None => counts.push((name, 1)),
+        }
+    }
+    counts
+}
+
+impl Removal {
+    /// A short name of the reason, for reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Removal::Collapsed => "collapsed",
+            Removal::Duplicate { .. } => "duplicate",
+            Removal::Unbuildable => "unbuildable",
+            Removal::SmallComponent => "small component",
+            Removal::Unreferenced => "unreferenced",
+        }
+    }
+}
+
+/// The structure between two steps: the face-list repairs work on a soup, the others on a mesh.
+enum Work {
+    Soup(PolygonSoup),
+    Mesh(Box<Mesh>),
+}
+
+/// Runs the repairs on `soup`, in the order of [`RepairStep::ALL`], and builds the result:
+/// merge duplicate vertices, remove duplicate faces, build under [`BuildPolicy::Repair`]
+/// (split non-manifold vertices, cut non-manifold edges, reorient, turn closed components
+/// outward, leave out faces it cannot keep), stitch borders, remove small components (when
+/// asked), remove unreferenced vertices. The mesh comes from a last build under
+/// [`BuildPolicy::Repair`], which only turns closed components that stitching closed outward.
+///
+/// The returned mesh passes [`Mesh::check`] and builds again under [`BuildPolicy::Strict`]
+/// from [`Mesh::to_soup`]; vertex positions and corner data follow their elements as each
+/// repair says. The fates ([`RepairFates`]) say what became of every input vertex and face.
+///
+/// O(n log n). Refused, with nothing built, for bad options (as each repair refuses them) and
+/// for a malformed face list (sizes and indices disagree, an index naming no vertex, corner
+/// data not one per corner).
+pub fn repair_mesh(
+    soup: &PolygonSoup,
+    options: &RepairOptions,
+) -> Result<(Mesh, RepairFates), RepairError> {
+    let mut ledger = Ledger::new(soup.positions.len(), soup.n_faces());
+    let mut work = Work::Soup(soup.clone());
+    let mut stitched_edges = 0;
+    for step in RepairStep::ALL {
+        stitched_edges += run(step, &mut work, options, &mut ledger)?;
+    }
+    let mesh = match work {
+        Work::Mesh(mesh) => *mesh,
+        Work::Soup(soup) => build(&soup, &mut ledger)?,
+    };
+    Ok((
+        mesh,
+        RepairFates {
+            vertices: ledger.vertex_fates(),
+            faces: ledger.face_fates(),
+            added_vertices: ledger.added_vertices(),
+            stitched_edges,
+        },
+    ))
+}
+
+/// Runs one step, giving the number of edges it stitched.
+fn run(
+    step: RepairStep,
+    work: &mut Work,
+    options: &RepairOptions,
+    ledger: &mut Ledger,
+) -> Result<usize, RepairError> {
+    match step {
+        RepairStep::MergeVertices => {
+            let report = merge_vertices(soup(work, ledger), options.merge_tolerance)?;
+            ledger.map_vertices(
+                &report.maps.vertices,
+                &report.merged_vertices,
+                Removal::Unreferenced,
+            );
+            ledger.map_faces(&report.maps.faces, |_| Removal::Collapsed);
+        }
+        RepairStep::RemoveDuplicateFaces => {
+            let soup = soup(work, ledger);
+            let input = ledger.input_faces(soup.n_faces());
+            let report = remove_duplicate_faces(soup)?;
+            let mut kept_for = vec![INVALID_INDEX; input.len()];
+            for &[gone, kept] in &report.duplicate_faces {
+                kept_for[gone as usize] = input[kept as usize];
+            }
+            ledger.map_vertices(&report.maps.vertices, &[], Removal::Unreferenced);
+            ledger.map_faces(&report.maps.faces, |f| Removal::Duplicate {
+                of: kept_for[f as usize],
+            });
+        }
+        RepairStep::Build => {
+            if let Work::Soup(soup) = work {
+                *work = Work::Mesh(Box::new(build(soup, ledger)?));
+            }
+        }
+        RepairStep::StitchBorders => {
+            let report = stitch_borders(mesh(work, ledger)?, options.stitch_tolerance)?;
+            ledger.map_vertices(
+                &report.maps.vertices,
+                &report.merged_vertices,
+                Removal::Unbuildable,
+            );
+            ledger.map_faces(&report.maps.faces, |_| Removal::Unbuildable);
+            return Ok(report.stitched_halfedges.len());
+        }
+        RepairStep::RemoveSmallComponents => {
+            if let Some(small) = options.small_components {
+                let report = remove_small_components(soup(work, ledger), small)?;
+                ledger.map_vertices(&report.maps.vertices, &[], Removal::SmallComponent);
+                ledger.map_faces(&report.maps.faces, |_| Removal::SmallComponent);
+            }
+        }
+        RepairStep::RemoveUnreferencedVertices => {
+            let report = remove_unreferenced_vertices(soup(work, ledger))?;
+            ledger.map_vertices(&report.maps.vertices, &[], Removal::Unreferenced);
+        }
+    }
+    Ok(0)
+}
+
+/// The work as a soup, a mesh being turned into its face list (deleted elements compacted).
+fn soup<'a>(work: &'a mut Work, ledger: &mut Ledger) -> &'a mut PolygonSoup {
+    if let Work::Mesh(mesh) = work {
+        let deleted: Vec<bool> = (0..mesh.vertex_capacity() as u32)
+            .map(|v| mesh.is_vertex_deleted(VertexId(v)))
+            .collect();
+        let map = compaction_map(deleted.len(), &deleted);
+        ledger.map_vertices(&map, &[], Removal::Unbuildable);
+        // Faces of a built mesh are never deleted by the steps: face ids carry over.
+        *work = Work::Soup(mesh.to_soup());
+    }
+    match work {
+        Work::Soup(soup) => soup,
+        Work::Mesh(_) => unreachable!("turned into a soup above"),
+    }
+}
+
+/// The work as a mesh, a soup being built first.
+fn mesh<'a>(work: &'a mut Work, ledger: &mut Ledger) -> Result<&'a mut Mesh, RepairError> {
+    if let Work::Soup(soup) = work {
+        *work = Work::Mesh(Box::new(build(soup, ledger)?));
+    }
+    match work {
+        Work::Mesh(mesh) => Ok(mesh.as_mut()),
+        Work::Soup(_) => unreachable!("built above"),
+    }
+}
+
+/// Builds under [`BuildPolicy::Repair`] and records what the build changed.
+fn build(soup: &PolygonSoup, ledger: &mut Ledger) -> Result<Mesh, RepairError> {
+    let (mesh, diagnostic) =
+        Mesh::from_soup(soup, BuildPolicy::Repair).map_err(RepairError::Build)?;
+    ledger.reverse_faces(&diagnostic.reoriented_faces);
+    let mut skipped = vec![false; soup.n_faces()];
+    for &f in &diagnostic.skipped_faces {
+        skipped[f as usize] = true;
+    }
+    let faces = compaction_map(skipped.len(), &skipped);
+    ledger.map_faces(&faces, |_| Removal::Unbuildable);
+    ledger.add_vertices(soup.positions.len() as u32, &diagnostic.vertex_copies);
+    ledger.remove_vertices(&diagnostic.non_finite_vertices, Removal::Unbuildable);
+    Ok(mesh)
+}
