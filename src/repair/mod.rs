@@ -3,7 +3,8 @@
 //!
 //! On indexed face lists ([`PolygonSoup`]): [`merge_vertices`] (exact and near duplicates),
 //! [`remove_duplicate_faces`], [`remove_unreferenced_vertices`] and
-//! [`remove_small_components`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`].
+//! [`remove_small_components`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`], and
+//! [`fill_hole`] / [`fill_holes`], which close boundary loops with triangles.
 //! The doctor's detection serves them: what it lists as duplicates, unreferenced vertices or
 //! small components is what the repairs remove.
 //!
@@ -12,6 +13,7 @@
 //! them; what merged elements keep is said by each operation. Vertices and faces are renumbered
 //! in their order; [`RepairReport::maps`] gives the old-to-new ids.
 
+mod fill_hole;
 mod merge_vertices;
 mod remove_duplicate_faces;
 mod remove_small_components;
@@ -20,6 +22,10 @@ mod soup_edit;
 mod stitch_borders;
 mod tolerance;
 
+pub use fill_hole::{
+    DEGENERATE_RATIO, EXACT_CORNERS_MAX, FOLD_ANGLE_DEGREES, FillError, FilledHole,
+    HoleFillOptions, HoleFillReport, fill_hole, fill_holes,
+};
 pub use merge_vertices::merge_vertices;
 pub use remove_duplicate_faces::remove_duplicate_faces;
 pub use remove_small_components::{SmallComponents, remove_small_components};
