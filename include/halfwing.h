@@ -529,6 +529,20 @@ typedef uint32_t hw_small_components;
 typedef uint32_t hw_repair_list;
 
 /**
+ * Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+ */
+typedef struct {
+  /**
+   * Holes with more boundary edges than this are left open.
+   */
+  size_t max_edges;
+  /**
+   * Holes whose perimeter exceeds this are left open; infinity for no bound.
+   */
+  double max_perimeter;
+} hw_fill_hole_options;
+
+/**
  * How the cells of a parametric surface become faces.
  */
 typedef uint32_t hw_cell_faces;
@@ -2704,6 +2718,43 @@ hw_status hw_repair_report_maps(const hw_repair_report *report,
  * `report` must be NULL or a report from this library, not in use by another thread.
  */
 void hw_repair_report_free(hw_repair_report *report);
+
+/**
+ * Options that fill every hole: no bound on edges or perimeter.
+ */
+hw_fill_hole_options hw_fill_hole_options_default(void);
+
+/**
+ * Fills the hole whose boundary loop holds half-edge `h` with triangles on its corners (no new
+ * vertex): Liepa's minimum-weight triangulation up to 100 edges, beyond that a triangulation
+ * on the hole's best-fit plane improved by edge flips. `*out_faces_added` (when not NULL)
+ * receives the number of new triangles (edges − 2). New faces, edges and corners get zero
+ * attributes. `HW_ERR_INVALID_HANDLE` for a bad `h`; `HW_ERR_REFUSED`, the mesh unchanged,
+ * when `h` has a face, the loop passes twice through a vertex, every triangulation needs an
+ * edge that exists already, a hole of more than 100 edges does not project onto a simple
+ * polygon, or the fill would fold (a new triangle degenerate, or turned more than 150° from a
+ * face beside it).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_faces_added` NULL or writable.
+ */
+hw_status hw_mesh_fill_hole(hw_mesh *mesh, hw_halfedge h, size_t *out_faces_added);
+
+/**
+ * Fills every hole within `options`' bounds (NULL: every hole) as hw_mesh_fill_hole() does;
+ * holes it refuses are left open. `*out_filled`, `*out_refused` and `*out_faces_added` (each
+ * when not NULL) receive the holes filled, the holes refused and the triangles added.
+ * `HW_ERR_INVALID_INPUT`, the mesh unchanged, for a NaN or negative `max_perimeter`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `options` NULL or readable; the
+ * outputs NULL or writable.
+ */
+hw_status hw_mesh_fill_holes(hw_mesh *mesh,
+                             const hw_fill_hole_options *options,
+                             size_t *out_filled,
+                             size_t *out_refused,
+                             size_t *out_faces_added);
 
 /**
  * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that

@@ -715,6 +715,26 @@ class mesh {
     check(hw_mesh_stitch_borders(get(), tolerance, relative, &raw));
     return repair_report(raw);
   }
+  /// Fills the hole whose boundary loop holds `h` (see hw_mesh_fill_hole()); returns the
+  /// triangles added. Throws hw::error (HW_ERR_REFUSED, mesh unchanged) when it cannot.
+  size_t fill_hole(hw_halfedge h) {
+    size_t faces = 0;
+    check(hw_mesh_fill_hole(get(), h, &faces));
+    return faces;
+  }
+  /// What fill_holes() did: holes filled and refused (left open), triangles added.
+  struct fill_holes_result {
+    size_t filled = 0;
+    size_t refused = 0;
+    size_t faces_added = 0;
+  };
+  /// Fills every hole within `options`' bounds (see hw_mesh_fill_holes()).
+  fill_holes_result fill_holes(const hw_fill_hole_options& options = hw_fill_hole_options_default()) {
+    fill_holes_result result;
+    check(hw_mesh_fill_holes(get(), &options, &result.filled, &result.refused,
+                             &result.faces_added));
+    return result;
+  }
 
   /// Adds an isolated vertex.
   hw_vertex add_vertex(double x, double y, double z) { return add_vertex({x, y, z}); }
