@@ -494,6 +494,33 @@ static void ranges_on_real_models() {
   CHECK(ranges_match_checked(m) > 1000);
 }
 
+static void hole_filling() {
+  // An open box (a unit cube without its top): one 4-edge hole, closed by two triangles.
+  const std::vector<double> p = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  const std::vector<uint32_t> sizes(10, 3);
+  const std::vector<uint32_t> ix = {0, 2, 1, 0, 3, 2, 0, 1, 5, 0, 5, 4, 1, 2, 6,
+                                    1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+  hw::mesh box = hw::mesh::from_indexed(p, sizes, ix);
+  const hw::mesh::fill_holes_result result = box.fill_holes();
+  CHECK(result.filled == 1 && result.refused == 0 && result.faces_added == 2);
+  CHECK(box.n_faces() == 12);
+  box.check_invariants();
+  // The box is closed now: no half-edge is on a hole.
+  bool refused = false;
+  try {
+    box.fill_hole(hw_halfedge{0});
+  } catch (const hw::error& e) {
+    refused = e.status() == HW_ERR_REFUSED;
+  }
+  CHECK(refused && box.n_faces() == 12);
+  // A flat square: its cap would lie on it facing the other way, a fold, so it is refused.
+  hw::mesh square = hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {3, 3},
+                                           {0, 1, 2, 0, 2, 3});
+  const hw::mesh::fill_holes_result flat = square.fill_holes();
+  CHECK(flat.filled == 0 && flat.refused == 1 && square.n_faces() == 2);
+}
+
 int main() {
   exceptions_carry_status_and_message();
   ownership_moves();
@@ -501,6 +528,7 @@ int main() {
   ranges_on_real_models();
   visits();
   editing();
+  hole_filling();
   faces_and_attributes();
   winged_kernel();
   voronoi_classes();

@@ -241,6 +241,40 @@ static void topology(void) {
   CHECK_STATUS(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, NULL),
                HW_ERR_INVALID_INPUT, "face 0 names vertex 9");
   hw_soup_free(soup);
+static void fill_holes(void) {
+  /* An open box: a unit cube without its top, two triangles a side; the top is a 4-edge hole. */
+  const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  const uint32_t s[] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
+  const uint32_t ix[] = {0, 2, 1, 0, 3, 2, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
+                         2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+  hw_mesh *mesh = NULL;
+  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  hw_halfedge hole;
+  size_t n = 0;
+  CHECK(hw_mesh_boundary_loops(mesh, &hole, 1, &n) == HW_OK && n == 1);
+  size_t faces = 0;
+  /* The half-edge across the rim has a face: refused, nothing changed. */
+  CHECK_STATUS(hw_mesh_fill_hole(mesh, hw_mesh_he_twin(mesh, hole), &faces), HW_ERR_REFUSED,
+               "boundary");
+  CHECK(faces == 0 && hw_mesh_n_faces(mesh) == 10);
+  CHECK(hw_mesh_fill_hole(mesh, hole, &faces) == HW_OK && faces == 2);
+  CHECK(hw_mesh_n_faces(mesh) == 12 && hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_n_boundary_loops(mesh, &n) == HW_OK && n == 0);
+  hw_mesh_free(mesh);
+
+  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  hw_fill_hole_options options = hw_fill_hole_options_default();
+  options.max_perimeter = -1.0;
+  CHECK_STATUS(hw_mesh_fill_holes(mesh, &options, NULL, NULL, NULL), HW_ERR_INVALID_INPUT,
+               "max_perimeter");
+  options = hw_fill_hole_options_default();
+  options.max_edges = 3;
+  size_t filled = 9, refused = 9;
+  CHECK(hw_mesh_fill_holes(mesh, &options, &filled, &refused, &faces) == HW_OK);
+  CHECK(filled == 0 && refused == 0 && faces == 0 && hw_mesh_n_faces(mesh) == 10);
+  CHECK(hw_mesh_fill_holes(mesh, NULL, &filled, &refused, &faces) == HW_OK);
+  CHECK(filled == 1 && refused == 0 && faces == 2 && hw_mesh_check(mesh) == HW_OK);
+  hw_mesh_free(mesh);
 }
 
 int main(void) {
@@ -249,5 +283,6 @@ int main(void) {
   small_components();
   stitch_borders();
   topology();
+  fill_holes();
   return check_summary("test_repair");
 }

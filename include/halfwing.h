@@ -43,6 +43,59 @@
  * visit by returning false and must not throw or `longjmp` through the call).
  */
 
+/**
+ * @defgroup errors Status, errors, version and threads
+ * Status codes, the last error's message, the library's version and the threads heavy calls use.
+ *
+ * @defgroup ids Element ids
+ * Vertex, half-edge, edge and face ids: small structs passed by value.
+ *
+ * @defgroup mesh Half-edge meshes
+ * Creating, building (with a policy for bad input) and freeing meshes; the build diagnostic.
+ *
+ * @defgroup io Files
+ * Reading and writing OBJ, OFF and PLY.
+ *
+ * @defgroup navigation Navigation
+ * Checked navigation, stack circulators, callbacks and zero-copy views of a mesh.
+ *
+ * @defgroup nav Inline navigation
+ * halfwing_nav.h: `static inline` steps and circulators over trusted ids, at the speed of array
+ * code.
+ *
+ * @defgroup topology Topology
+ * Validation, boundary loops and connected components.
+ *
+ * @defgroup edit Editing
+ * Adding and deleting elements, flip, split, collapse, triangulation and garbage collection.
+ *
+ * @defgroup attributes Positions and attributes
+ * Vertex positions, corner normals and uvs, and typed user attributes.
+ *
+ * @defgroup normals Normals
+ * Face, vertex and crease-angle corner normals.
+ *
+ * @defgroup doctor Mesh doctor
+ * Every defect of a face list or a mesh, named with its elements; self-intersections.
+ *
+ * @defgroup repair Repairs
+ * Merging vertices, removing duplicate faces, unreferenced vertices and small components,
+ * stitching borders.
+ *
+ * @defgroup surfaces Surfaces
+ * Swept, revolved and ruled surfaces and primitives as meshes.
+ *
+ * @defgroup render Rendering buffers
+ * Triangles, normals and line buffers ready for `glBufferData`.
+ *
+ * @defgroup winged Winged-edge meshes
+ * Baumgart's winged-edge kernel: construction, conversions, walks, Euler operators and tables.
+ *
+ * @defgroup voronoi Voronoi diagrams
+ * Delaunay triangulation, Voronoi diagram, clipped cells, queries, Lloyd relaxation, rasters
+ * and SVG.
+ */
+
 #ifndef HALFWING_H
 #define HALFWING_H
 
@@ -54,6 +107,7 @@
 
 /**
  * The raw value of "no element": an id whose `idx` is this is invalid.
+ * \ingroup ids
  */
 #define HW_INVALID_INDEX UINT32_MAX
 
@@ -64,6 +118,7 @@
  * first few and count the rest, so a message reaches this size only when it quotes a very long
  * string of the caller's (an attribute name, a path); it is then cut, and ends with
  * `… (cut)`.
+ * \ingroup errors
  */
 #define HW_MAX_MESSAGE_SIZE 8192
 
@@ -71,6 +126,7 @@
  * How many of the most recently freed objects keep their address out of reuse: a second
  * `_free` of an object is refused as long as fewer objects than this were freed since its first.
  * Each keeps a few hundred bytes (its large arrays are released at once): 2 MB at most in all.
+ * \ingroup mesh
  */
 #define HW_FREED_ADDRESSES_KEPT 4096
 
@@ -79,28 +135,50 @@
  * targets, so it limits no real use; it stops a mistaken value (`(size_t)-1`, a byte count)
  * from trying to start that many threads, each with its own stack, and rayon from silently
  * capping it.
+ * \ingroup errors
  */
 #define HW_MAX_THREAD_COUNT 1024
 
 /**
  * Major version: incompatible API changes.
+ * \ingroup errors
  */
 #define HW_VERSION_MAJOR 0
 
 /**
  * Minor version: added functionality.
+ * \ingroup errors
  */
 #define HW_VERSION_MINOR 1
 
 /**
  * Patch version: bug fixes.
+ * \ingroup errors
  */
 #define HW_VERSION_PATCH 0
 
 /**
  * `MAJOR * 10000 + MINOR * 100 + PATCH`, for `#if HW_VERSION_NUMBER >= ...` checks.
+ * \ingroup errors
  */
 #define HW_VERSION_NUMBER (((HW_VERSION_MAJOR * 10000) + (HW_VERSION_MINOR * 100)) + HW_VERSION_PATCH)
+
+/**
+ * The steps of [`repair_mesh`], in the order they run.
+ */
+typedef struct RepairStep RepairStep;
+
+/**
+ * A 2D Delaunay triangulation, without its Voronoi diagram. Opaque; build it with
+ * hw_delaunay_build() and release it with hw_delaunay_free(). It never changes after
+ * construction, so every function taking a `const hw_delaunay *` may run concurrently.
+ *
+ * Numbering as for ::hw_voronoi: sites keep their input index, a duplicated site is represented
+ * by the smallest index of its group, and the arrays are those of the same names in
+ * ::hw_voronoi_view() (the triangulation is the same one).
+ * \ingroup voronoi
+ */
+typedef struct hw_delaunay hw_delaunay;
 
 /**
  * The defects of an indexed face list, by index. Opaque; from hw_mesh_from_indexed(),
@@ -112,6 +190,7 @@
  * indices refer to the input face list, vertex indices to the input positions. Faces with fewer
  * than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
  * the edge, fan and area findings. Every list is sorted ascending.
+ * \ingroup mesh
  */
 typedef struct hw_diagnostic hw_diagnostic;
 
@@ -123,24 +202,28 @@ typedef struct hw_diagnostic hw_diagnostic;
  * those of the face list hw_mesh_write() would write: the mesh's own ids when nothing is
  * deleted). Malformed faces are listed in the report's diagnostic and left out of every other
  * finding. The report's size follows the findings, not the mesh.
+ * \ingroup doctor
  */
 typedef struct hw_doctor_report hw_doctor_report;
 
 /**
  * Pairs of faces. Opaque; from hw_self_intersections_indexed(); read with hw_face_pairs_view();
  * release with hw_face_pairs_free().
+ * \ingroup doctor
  */
 typedef struct hw_face_pairs hw_face_pairs;
 
 /**
  * The old-to-new id maps of a compaction (see hw_mesh_garbage_collect()). Opaque; read with
  * hw_index_maps_view(), release with hw_index_maps_free().
+ * \ingroup edit
  */
 typedef struct hw_index_maps hw_index_maps;
 
 /**
  * A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
  * release it with hw_mesh_free().
+ * \ingroup mesh
  */
 typedef struct hw_mesh hw_mesh;
 
@@ -148,13 +231,22 @@ typedef struct hw_mesh hw_mesh;
  * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
  * hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
  * views stay valid until it is freed, also after the mesh it came from changes or is freed.
+ * \ingroup render
  */
 typedef struct hw_render_buffers hw_render_buffers;
+
+/**
+ * What hw_repair_mesh() did to every input element. Opaque; read with hw_repair_fates_list()
+ * and hw_repair_fates_counts(), release with hw_repair_fates_free().
+ * \ingroup repair
+ */
+typedef struct hw_repair_fates hw_repair_fates;
 
 /**
  * What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
  * read with hw_repair_report_list() and hw_repair_report_maps(), release with
  * hw_repair_report_free(). Ids are those of the input.
+ * \ingroup repair
  */
 typedef struct hw_repair_report hw_repair_report;
 
@@ -162,6 +254,7 @@ typedef struct hw_repair_report hw_repair_report;
  * An indexed face list read from a file, exactly as the file numbers its vertices (nothing
  * welded, reordered or dropped). Opaque; read with hw_soup_read(), look at with hw_soup_view(),
  * release with hw_soup_free().
+ * \ingroup io
  */
 typedef struct hw_soup hw_soup;
 
@@ -174,6 +267,7 @@ typedef struct hw_soup hw_soup;
  * index of its group (::HW_VORONOI_REPRESENTATIVE); the other copies have no cell, no incident
  * Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs (`twin = h ^ 1`);
  * half-edge `h` bounds the cell of `site[h]` (on its left) and separates it from `site[h ^ 1]`.
+ * \ingroup voronoi
  */
 typedef struct hw_voronoi hw_voronoi;
 
@@ -185,6 +279,7 @@ typedef struct hw_voronoi hw_voronoi;
  * The cells tile the region without gaps or overlaps; a corner shared by several cells is one
  * entry of hw_voronoi_cells_positions(). Cells are indexed by site and counter-clockwise; a
  * duplicate site, or a site whose cell misses the region, has an empty cell.
+ * \ingroup voronoi
  */
 typedef struct hw_voronoi_cells hw_voronoi_cells;
 
@@ -192,6 +287,7 @@ typedef struct hw_voronoi_cells hw_voronoi_cells;
  * A winged-edge (Baumgart) polygon mesh: one record per edge with its two vertices, its two
  * faces and its four wings. Opaque; create it with hw_winged_new(), hw_winged_from_indexed() or
  * hw_winged_from_mesh() and release it with hw_winged_free().
+ * \ingroup winged
  */
 typedef struct hw_winged hw_winged;
 
@@ -201,28 +297,36 @@ typedef struct hw_winged hw_winged;
  *
  * A plain integer type with named constants, not a Rust enum, so that a value coming back from C
  * (as in `hw_status_str`) can never be an invalid enum discriminant.
+ * \ingroup errors
  */
 typedef uint32_t hw_status;
 
 /**
  * An element kind, to pick one of several per-kind arrays.
+ * \ingroup ids
  */
 typedef uint32_t hw_element_kind;
 
 /**
  * The numeric type of an attribute column.
+ * \ingroup attributes
  */
 typedef uint32_t hw_scalar_type;
 
 /**
  * A vertex id.
+ * \ingroup ids
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_vertex;
 
 /**
  * What a circulator yields.
+ * \ingroup navigation
  */
 typedef uint32_t hw_circulator_kind;
 
@@ -230,42 +334,86 @@ typedef uint32_t hw_circulator_kind;
  * A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
  * hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
  * kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
+ * \ingroup navigation
  */
 typedef struct {
+  /**
+   * The mesh walked.
+   */
   const hw_mesh *mesh;
+  /**
+   * The half-edge the walk started at; reaching it again ends the walk.
+   */
   uint32_t start;
+  /**
+   * The half-edge the walk yields next, or `HW_INVALID_INDEX` once it is over.
+   */
   uint32_t current;
+  /**
+   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
+   */
   uint32_t remaining;
+  /**
+   * What it walks around: a vertex, a face or a boundary loop (internal code).
+   */
   uint32_t center;
+  /**
+   * What it yields.
+   */
   hw_circulator_kind kind;
 } hw_circulator;
 
 /**
  * A face id.
+ * \ingroup ids
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_face;
 
 /**
  * A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
+ * \ingroup ids
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_halfedge;
 
 /**
  * An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
+ * \ingroup ids
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_edge;
+
+/**
+ * The dimension of the site set, as hw_voronoi_dimension() reports it.
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_site_dimension;
+
+/**
+ * Which index array hw_voronoi_view() shows.
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_voronoi_array;
 
 /**
  * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
  * ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
  * lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
  * one family passed where another is expected is refused, never read as a different list.
+ * \ingroup mesh
  */
 typedef uint32_t hw_diagnostic_list;
 
@@ -273,11 +421,13 @@ typedef uint32_t hw_diagnostic_list;
  * One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
  * ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
  * lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
+ * \ingroup mesh
  */
 typedef uint32_t hw_diagnostic_edges;
 
 /**
  * The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
+ * \ingroup doctor
  */
 typedef struct {
   /**
@@ -315,6 +465,7 @@ typedef struct {
  * run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
  * apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
  * one family passed where another is expected is refused, never read as a different list.
+ * \ingroup doctor
  */
 typedef uint32_t hw_doctor_finding;
 
@@ -323,11 +474,25 @@ typedef uint32_t hw_doctor_finding;
  * `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
  * `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
  * volume, no self-intersection and no zero-area face.
+ * \ingroup doctor
  */
 typedef struct {
+  /**
+   * No non-manifold edge or vertex and no malformed face.
+   */
   bool manifold;
+  /**
+   * No boundary.
+   */
   bool closed;
+  /**
+   * Every component orientable and consistently oriented.
+   */
   bool oriented;
+  /**
+   * All three, finite coordinates, every component enclosing a positive volume, no
+   * self-intersection and no zero-area face.
+   */
   bool closed_polyhedron;
   /**
    * Why it is not a closed polyhedron (the first reason, static text), NULL when it is one.
@@ -337,19 +502,29 @@ typedef struct {
 
 /**
  * One connected component (faces joined through shared edges).
+ * \ingroup doctor
  */
 typedef struct {
   /**
    * Its lowest face.
    */
   uint32_t first_face;
+  /**
+   * Its faces.
+   */
   size_t n_faces;
+  /**
+   * Its distinct edges.
+   */
   size_t n_edges;
   /**
    * Distinct vertices (one shared with another component through a non-manifold vertex
    * counts in both).
    */
   size_t n_vertices;
+  /**
+   * Its boundary loops (0 when it is closed).
+   */
   size_t n_boundary_loops;
   /**
    * V − E + F.
@@ -359,9 +534,21 @@ typedef struct {
    * The genus of an orientable 2-manifold component; -1 for any other.
    */
   int64_t genus;
+  /**
+   * No boundary edge (every edge has two or more faces).
+   */
   bool closed;
+  /**
+   * No non-manifold edge or vertex.
+   */
   bool manifold;
+  /**
+   * Its faces can be oriented so that every two-face edge is walked both ways.
+   */
   bool orientable;
+  /**
+   * Every two-face edge is walked both ways as given.
+   */
   bool consistently_oriented;
   /**
    * 1 when a closed, manifold, consistently oriented component faces outward (encloses a
@@ -386,6 +573,7 @@ typedef struct {
 
 /**
  * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
+ * \ingroup mesh
  */
 typedef uint32_t hw_build_policy;
 
@@ -395,6 +583,7 @@ typedef uint32_t hw_build_policy;
  * halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
  * indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
  * `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
+ * \ingroup nav
  */
 typedef struct {
   /**
@@ -450,16 +639,19 @@ typedef struct {
 
 /**
  * How a vertex normal weighs the faces around it.
+ * \ingroup normals
  */
 typedef uint32_t hw_normal_weighting;
 
 /**
  * Where the normals of hw_render_buffers_build() come from.
+ * \ingroup render
  */
 typedef uint32_t hw_shading;
 
 /**
  * How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
+ * \ingroup render
  */
 typedef struct {
   /**
@@ -518,67 +710,166 @@ typedef struct {
 /**
  * The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
  * floats.
+ * \ingroup render
  */
 typedef uint32_t hw_render_floats;
 
 /**
  * The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
+ * \ingroup render
  */
 typedef uint32_t hw_render_indices;
 
 /**
  * Which components hw_soup_remove_small_components() removes.
+ * \ingroup repair
  */
 typedef uint32_t hw_small_components;
 
 /**
  * What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
+ * \ingroup repair
  */
 typedef uint32_t hw_non_manifold_edges;
 
 /**
  * One list of a repair report, for hw_repair_report_list().
+ * \ingroup repair
  */
 typedef uint32_t hw_repair_list;
 
 /**
+ * Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Holes with more boundary edges than this are left open.
+   */
+  size_t max_edges;
+  /**
+   * Holes whose perimeter exceeds this are left open; infinity for no bound.
+   */
+  double max_perimeter;
+} hw_fill_hole_options;
+
+/**
+ * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
+ * duplicates only and keeps every component.
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Vertices this close merge (absolute, or when `merge_relative` a fraction 0 to 1 of the
+   * bounding-box diagonal). Default 0: identical positions.
+   */
+  double merge_tolerance;
+  /**
+   * Whether `merge_tolerance` is relative. Default false.
+   */
+  bool merge_relative;
+  /**
+   * Boundary edges whose ends are this close stitch (as `merge_tolerance`). Default 0.
+   */
+  double stitch_tolerance;
+  /**
+   * Whether `stitch_tolerance` is relative. Default false.
+   */
+  bool stitch_relative;
+  /**
+   * Whether small components are removed (by `small_rule` and `small_value`, as
+   * hw_soup_remove_small_components() takes them). Default false.
+   */
+  bool remove_small_components;
+  /**
+   * ::HW_SMALL_BY_FACE_COUNT or ::HW_SMALL_BY_RELATIVE_DIAMETER.
+   */
+  hw_small_components small_rule;
+  /**
+   * The face count or the diameter ratio.
+   */
+  double small_value;
+} hw_repair_options;
+
+/**
+ * One list of hw_repair_fates_list().
+ * \ingroup repair
+ */
+typedef uint32_t hw_fates_list;
+
+/**
+ * The counts of hw_repair_fates_counts().
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Input vertices in the output.
+   */
+  size_t kept_vertices;
+  /**
+   * Input vertices merged into another.
+   */
+  size_t merged_vertices;
+  /**
+   * Input vertices removed.
+   */
+  size_t removed_vertices;
+  /**
+   * Output vertices that copy an input vertex (kept + added = output vertices).
+   */
+  size_t added_vertices;
+  /**
+   * Input faces in the output (= output faces).
+   */
+  size_t kept_faces;
+  /**
+   * Kept faces that run the other way round.
+   */
+  size_t reversed_faces;
+  /**
+   * Input faces removed.
+   */
+  size_t removed_faces;
+  /**
+   * Pairs of boundary edges stitched into one.
+   */
+  size_t stitched_edges;
+} hw_repair_fate_counts;
+
+/**
  * How the cells of a parametric surface become faces.
+ * \ingroup surfaces
  */
 typedef uint32_t hw_cell_faces;
 
 /**
  * How hw_surface_revolution() closes the profile's ends that are off the axis.
+ * \ingroup surfaces
  */
 typedef uint32_t hw_caps;
 
 /**
  * Which internal array hw_mesh_view() shows.
+ * \ingroup navigation
  */
 typedef uint32_t hw_mesh_array;
 
 /**
  * A caller's function called once per id by the `_visit` calls, with the `userdata` given to
  * them. Returns `true` to go on, `false` to stop the visit there.
+ * \ingroup navigation
  */
 typedef bool (*hw_visit_fn)(uint32_t idx, void *userdata);
 
 /**
- * The dimension of the site set, as hw_voronoi_dimension() reports it.
- */
-typedef uint32_t hw_site_dimension;
-
-/**
- * Which index array hw_voronoi_view() shows.
- */
-typedef uint32_t hw_voronoi_array;
-
-/**
  * The shape of a Voronoi edge (see ::hw_voronoi_edge).
+ * \ingroup voronoi
  */
 typedef uint32_t hw_voronoi_edge_kind;
 
 /**
  * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
+ * \ingroup voronoi
  */
 typedef struct {
   /**
@@ -620,11 +911,13 @@ typedef struct {
 
 /**
  * A distance function for hw_voronoi_label_image().
+ * \ingroup voronoi
  */
 typedef uint32_t hw_metric;
 
 /**
  * What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
+ * \ingroup voronoi
  */
 typedef struct {
   /**
@@ -647,23 +940,35 @@ typedef struct {
 
 /**
  * A vertex id of an ::hw_winged.
+ * \ingroup winged
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_wvertex;
 
 /**
  * An edge id of an ::hw_winged (one record per undirected edge).
+ * \ingroup winged
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_wedge;
 
 /**
  * A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
  * (a boundary).
+ * \ingroup winged
  */
 typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
   uint32_t idx;
 } hw_wface;
 
@@ -685,40 +990,70 @@ typedef struct {
  * | `right_next` | ENCCW               | Ais                | edge_right_ccw       |
  *
  * A face id of `HW_INVALID_INDEX` is a hole; its wings still link the boundary loop.
+ * \ingroup winged
  */
 typedef struct {
+  /**
+   * The vertex the edge starts at.
+   */
   hw_wvertex start;
+  /**
+   * The vertex the edge ends at.
+   */
   hw_wvertex end;
+  /**
+   * The face on its left (the loop that walks it `start → end`).
+   */
   hw_wface left_face;
+  /**
+   * The face on its right (the loop that walks it `end → start`).
+   */
   hw_wface right_face;
+  /**
+   * The edge before it in the left loop.
+   */
   hw_wedge left_prev;
+  /**
+   * The edge after it in the left loop.
+   */
   hw_wedge left_next;
+  /**
+   * The edge before it in the right loop.
+   */
   hw_wedge right_prev;
+  /**
+   * The edge after it in the right loop.
+   */
   hw_wedge right_next;
 } hw_wedge_record;
 
 /**
  * Which elements hw_winged_normals() gives normals of.
+ * \ingroup winged
  */
 typedef uint32_t hw_wnormals;
 
 /**
  * Which table hw_winged_table() prints.
+ * \ingroup winged
  */
 typedef uint32_t hw_wtable;
 
 /**
  * Which naming scheme a table's columns use.
+ * \ingroup winged
  */
 typedef uint32_t hw_wnaming;
 
 /**
  * How a table is written.
+ * \ingroup winged
  */
 typedef uint32_t hw_table_format;
 
 /**
  * What a winged circulator yields.
+ * \ingroup winged
  */
 typedef uint32_t hw_wcirculator_kind;
 
@@ -727,87 +1062,134 @@ typedef uint32_t hw_wcirculator_kind;
  * hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
  * its kind. Treat the fields as private. It borrows the structure: do not modify the structure
  * while walking.
+ * \ingroup winged
  */
 typedef struct {
+  /**
+   * The structure walked.
+   */
   const hw_winged *winged;
+  /**
+   * The edge of the use the walk started from; coming back to that use ends the walk.
+   */
   uint32_t start_edge;
+  /**
+   * The side of that use: 0 left, 1 right.
+   */
   uint32_t start_side;
+  /**
+   * The edge of the use the walk yields next, `HW_INVALID_INDEX` once it is over.
+   */
   uint32_t current_edge;
+  /**
+   * The side of that use: 0 left, 1 right.
+   */
   uint32_t current_side;
+  /**
+   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
+   */
   uint32_t remaining;
+  /**
+   * What it walks around: a face or a vertex (internal code).
+   */
   uint32_t center;
+  /**
+   * What it yields.
+   */
   hw_wcirculator_kind kind;
 } hw_wcirculator;
+
+/**
+ * The fate of an element, in the kinds lists of hw_repair_fates_list().
+ * \ingroup repair
+ */
+typedef uint32_t hw_fate;
+
+
 
 
 
 /**
  * `double`.
+ * \ingroup attributes
  */
 #define HW_SCALAR_F64 0
 
 /**
  * `float`.
+ * \ingroup attributes
  */
 #define HW_SCALAR_F32 1
 
 /**
  * `int32_t`.
+ * \ingroup attributes
  */
 #define HW_SCALAR_I32 2
 
 /**
  * `uint32_t`.
+ * \ingroup attributes
  */
 #define HW_SCALAR_U32 3
 
 /**
  * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
+ * \ingroup navigation
  */
 #define HW_CIRC_HALFEDGES 0
 
 /**
  * Around a vertex only: the incoming half-edges (twins of the outgoing ones).
+ * \ingroup navigation
  */
 #define HW_CIRC_INCOMING 1
 
 /**
  * Vertices: a vertex's neighbours, a face's corners.
+ * \ingroup navigation
  */
 #define HW_CIRC_VERTICES 2
 
 /**
  * Edges: at a vertex, or the sides of a face.
+ * \ingroup navigation
  */
 #define HW_CIRC_EDGES 3
 
 /**
  * Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
+ * \ingroup navigation
  */
 #define HW_CIRC_FACES 4
 
 /**
  * The first id list.
+ * \ingroup mesh
  */
 #define HW_DIAG_LIST_FIRST 16
 
 /**
  * Faces with fewer than 3 corners.
+ * \ingroup mesh
  */
 #define HW_DIAG_FACES_TOO_SMALL 16
 
 /**
  * Faces with a vertex index beyond the positions.
+ * \ingroup mesh
  */
 #define HW_DIAG_FACES_OUT_OF_RANGE 17
 
 /**
  * Faces naming one vertex more than once.
+ * \ingroup mesh
  */
 #define HW_DIAG_FACES_REPEATED_VERTEX 18
 
 /**
  * Vertices with a NaN or infinite coordinate.
+ * \ingroup mesh
  */
 #define HW_DIAG_NON_FINITE_VERTICES 19
 
@@ -815,126 +1197,149 @@ typedef struct {
  * Vertices whose faces form more than one fan, faces being in one fan when they share an edge
  * at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
  * ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
+ * \ingroup mesh
  */
 #define HW_DIAG_NON_MANIFOLD_VERTICES 20
 
 /**
  * Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
  * face, but not listed here).
+ * \ingroup mesh
  */
 #define HW_DIAG_ISOLATED_VERTICES 21
 
 /**
  * Faces with zero area.
+ * \ingroup mesh
  */
 #define HW_DIAG_DEGENERATE_FACES 22
 
 /**
  * Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
  * `i`-th input face not listed here.
+ * \ingroup mesh
  */
 #define HW_DIAG_SKIPPED_FACES 23
 
 /**
  * Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
  * copies input vertex `ids[i]` (same position).
+ * \ingroup mesh
  */
 #define HW_DIAG_VERTEX_COPIES 24
 
 /**
  * Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
  * neighbours, or to turn a closed component outward).
+ * \ingroup mesh
  */
 #define HW_DIAG_REORIENTED_FACES 25
 
 /**
  * The number of id lists.
+ * \ingroup mesh
  */
 #define HW_DIAG_LIST_COUNT 10
 
 /**
  * The first edge list.
+ * \ingroup mesh
  */
 #define HW_DIAG_EDGES_FIRST 32
 
 /**
  * Edges used by three or more faces.
+ * \ingroup mesh
  */
 #define HW_DIAG_NON_MANIFOLD_EDGES 32
 
 /**
  * Edges whose two faces traverse them in the same direction.
+ * \ingroup mesh
  */
 #define HW_DIAG_INCONSISTENT_EDGES 33
 
 /**
  * The number of edge lists.
+ * \ingroup mesh
  */
 #define HW_DIAG_EDGES_COUNT 2
 
 /**
  * The first finding kind.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_FINDING_FIRST 64
 
 /**
  * Indices of small components (into hw_doctor_report_component()); one id per item.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_SMALL_COMPONENTS 64
 
 /**
  * Faces of a closed path along which the orientation flips (the surface is not orientable),
  * each sharing an edge with the next and the last with the first; one id per item.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_NON_ORIENTABLE_WITNESS 65
 
 /**
  * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_ZERO_LENGTH_EDGES 66
 
 /**
  * Triangles with an angle below the needle threshold; one id per item.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_NEEDLES 67
 
 /**
  * Triangles with an angle above the cap threshold; one id per item.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_CAPS 68
 
 /**
  * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
  * first, then the two faces, ascending).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_FOLDED_EDGES 69
 
 /**
  * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_LONG_EDGES 70
 
 /**
  * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
  * lowest vertex at that position).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_DUPLICATE_POSITIONS 71
 
 /**
  * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
  * vertex, then the first vertex of its group).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_NEAR_DUPLICATE_VERTICES 72
 
 /**
  * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
  * then the lowest such face).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_DUPLICATE_FACES 73
 
 /**
  * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
  * the edge's two ends, smaller first, and the edge's face).
+ * \ingroup doctor
  */
 #define HW_DOCTOR_T_VERTICES 74
 
@@ -942,31 +1347,37 @@ typedef struct {
  * Pairs of faces that intersect other than along the vertices and edges they share, decided
  * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
  * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_SELF_INTERSECTIONS 75
 
 /**
  * The number of finding kinds.
+ * \ingroup doctor
  */
 #define HW_DOCTOR_FINDING_COUNT 12
 
 /**
  * Vertices.
+ * \ingroup ids
  */
 #define HW_ELEMENT_VERTEX 0
 
 /**
  * Half-edges.
+ * \ingroup ids
  */
 #define HW_ELEMENT_HALFEDGE 1
 
 /**
  * Edges.
+ * \ingroup ids
  */
 #define HW_ELEMENT_EDGE 2
 
 /**
  * Faces.
+ * \ingroup ids
  */
 #define HW_ELEMENT_FACE 3
 
@@ -975,6 +1386,7 @@ typedef struct {
  * face or a NaN/infinite coordinate, `HW_ERR_NON_MANIFOLD` for a non-manifold or inconsistently
  * oriented edge or a non-manifold vertex. The message names the offending faces, edges and
  * vertices.
+ * \ingroup mesh
  */
 #define HW_BUILD_STRICT 0
 
@@ -982,6 +1394,7 @@ typedef struct {
  * Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
  * faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
  * direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
+ * \ingroup mesh
  */
 #define HW_BUILD_SKIP 1
 
@@ -992,37 +1405,44 @@ typedef struct {
  * closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
  * an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
  * (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
+ * \ingroup mesh
  */
 #define HW_BUILD_REPAIR 2
 
 /**
  * Unit face normals summed: OpenMesh's default, the textbook average.
+ * \ingroup normals
  */
 #define HW_WEIGHT_UNIFORM 0
 
 /**
  * Face normals weighted by face area.
+ * \ingroup normals
  */
 #define HW_WEIGHT_AREA 1
 
 /**
  * Unit face normals weighted by the face's angle at the vertex: pmp's default.
+ * \ingroup normals
  */
 #define HW_WEIGHT_ANGLE 2
 
 /**
  * Face normals: faceted; every vertex is split per face.
+ * \ingroup render
  */
 #define HW_SHADING_FLAT 0
 
 /**
  * Vertex normals with the options' weighting: one render vertex per mesh vertex.
+ * \ingroup render
  */
 #define HW_SHADING_SMOOTH 1
 
 /**
  * Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
  * split along those edges only.
+ * \ingroup render
  */
 #define HW_SHADING_CREASE 2
 
@@ -1033,201 +1453,320 @@ typedef struct {
  * corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
  * options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
  * those normals and compute every normal from the positions.
+ * \ingroup render
  */
 #define HW_SHADING_CORNER_NORMALS 3
 
 /**
  * x y z per vertex (separate layout; empty when interleaved).
+ * \ingroup render
  */
 #define HW_RENDER_POSITIONS 0
 
 /**
  * Unit nx ny nz per vertex (separate layout; empty when interleaved).
+ * \ingroup render
  */
 #define HW_RENDER_NORMALS 1
 
 /**
  * u v per vertex (separate layout with corner uvs; empty otherwise).
+ * \ingroup render
  */
 #define HW_RENDER_UVS 2
 
 /**
  * hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
+ * \ingroup render
  */
 #define HW_RENDER_INTERLEAVED 3
 
 /**
  * `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
+ * \ingroup render
  */
 #define HW_RENDER_WIREFRAME 4
 
 /**
  * `GL_LINES` points of the boundary edges (edges with a face on one side only).
+ * \ingroup render
  */
 #define HW_RENDER_BOUNDARY 5
 
 /**
  * `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
+ * \ingroup render
  */
 #define HW_RENDER_NON_MANIFOLD 6
 
 /**
  * `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
+ * \ingroup render
  */
 #define HW_RENDER_VERTEX_NORMALS 7
 
 /**
  * `GL_LINES` glyphs of the face normals, from each face's centroid.
+ * \ingroup render
  */
 #define HW_RENDER_FACE_NORMALS 8
 
 /**
  * `GL_POINTS` points, x y z: the vertices a doctor's finding names
  * (hw_render_buffers_from_finding(); empty otherwise).
+ * \ingroup render
  */
 #define HW_RENDER_POINTS 9
 
 /**
  * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
+ * \ingroup render
  */
 #define HW_RENDER_TRIANGLES 0
 
 /**
  * Per triangle, the mesh face (or polygon) it comes from.
+ * \ingroup render
  */
 #define HW_RENDER_TRIANGLE_FACES 1
 
 /**
  * Per vertex, the mesh vertex (or polygon) it shows.
+ * \ingroup render
  */
 #define HW_RENDER_VERTEX_SOURCES 2
 
 /**
  * Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+ * \ingroup render
  */
 #define HW_RENDER_WIREFRAME_SOURCES 3
 
 /**
  * Per ::HW_RENDER_BOUNDARY segment, its edge id.
+ * \ingroup render
  */
 #define HW_RENDER_BOUNDARY_SOURCES 4
 
 /**
  * Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+ * \ingroup render
  */
 #define HW_RENDER_POINT_SOURCES 5
 
 /**
  * Pairs `removed, kept` (2 values each) of vertices merged into another.
+ * \ingroup repair
  */
 #define HW_REPAIR_MERGED_VERTICES 0
 
 /**
  * Vertices removed (merged ones included).
+ * \ingroup repair
  */
 #define HW_REPAIR_REMOVED_VERTICES 1
 
 /**
  * Faces removed.
+ * \ingroup repair
  */
 #define HW_REPAIR_REMOVED_FACES 2
 
 /**
  * Pairs `removed, kept` (2 values each) of duplicate faces.
+ * \ingroup repair
  */
 #define HW_REPAIR_DUPLICATE_FACES 3
 
 /**
  * Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
+ * \ingroup repair
  */
 #define HW_REPAIR_STITCHED_HALFEDGES 4
 
 /**
  * The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
  * count before the repair) copies vertex `ids[i]`.
+ * \ingroup repair
  */
 #define HW_REPAIR_VERTEX_COPIES 5
 
 /**
  * Faces whose corner order was reversed.
+ * \ingroup repair
  */
 #define HW_REPAIR_REORIENTED_FACES 6
 
 /**
  * Components of at most `value` faces.
+ * \ingroup repair
  */
 #define HW_SMALL_BY_FACE_COUNT 0
 
 /**
  * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
+ * \ingroup repair
  */
 #define HW_SMALL_BY_RELATIVE_DIAMETER 1
 
 /**
  * Keep every face and cut the surface along the edge (copies of its ends).
+ * \ingroup repair
  */
 #define HW_NON_MANIFOLD_EDGES_CUT 0
 
 /**
  * Keep faces in order while the edge has at most one face each way; remove the others.
+ * \ingroup repair
  */
 #define HW_NON_MANIFOLD_EDGES_REMOVE_FACES 1
 
 /**
+ * Kept: its id is the output element.
+ * \ingroup repair
+ */
+#define HW_FATE_KEPT 0
+
+/**
+ * A vertex merged into another: its id is the output vertex it went into.
+ * \ingroup repair
+ */
+#define HW_FATE_MERGED 1
+
+/**
+ * A face kept, reversed: its id is the output face.
+ * \ingroup repair
+ */
+#define HW_FATE_REVERSED 2
+
+/**
+ * A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_COLLAPSED 3
+
+/**
+ * A face removed as a duplicate: its id is the input face kept in its place.
+ * \ingroup repair
+ */
+#define HW_FATE_DUPLICATE 4
+
+/**
+ * Removed: a face the repairing build could not keep, or a vertex with a non-finite
+ * coordinate (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_UNBUILDABLE 5
+
+/**
+ * Removed with a small component (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_SMALL_COMPONENT 6
+
+/**
+ * A vertex removed because no kept face names it (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_UNREFERENCED 7
+
+/**
+ * The ::hw_fate of every input vertex.
+ * \ingroup repair
+ */
+#define HW_FATES_VERTEX_KINDS 0
+
+/**
+ * The id that goes with every input vertex's fate.
+ * \ingroup repair
+ */
+#define HW_FATES_VERTEX_IDS 1
+
+/**
+ * The ::hw_fate of every input face.
+ * \ingroup repair
+ */
+#define HW_FATES_FACE_KINDS 2
+
+/**
+ * The id that goes with every input face's fate.
+ * \ingroup repair
+ */
+#define HW_FATES_FACE_IDS 3
+
+/**
+ * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
+ * vertex, by output id.
+ * \ingroup repair
+ */
+#define HW_FATES_ADDED_VERTICES 4
+
+/**
  * Success.
+ * \ingroup errors
  */
 #define HW_OK 0
 
 /**
  * A required pointer argument was NULL.
+ * \ingroup errors
  */
 #define HW_ERR_NULL_ARGUMENT 1
 
 /**
  * An element id (vertex, half-edge, edge, face) is out of range or deleted, or an object handle
  * was already freed.
+ * \ingroup errors
  */
 #define HW_ERR_INVALID_HANDLE 2
 
 /**
  * The input data are malformed: bad sizes or counts, indices out of range, NaN or infinite
  * coordinates, an unknown enum value.
+ * \ingroup errors
  */
 #define HW_ERR_INVALID_INPUT 3
 
 /**
  * The input is not a manifold and the chosen policy refuses it.
+ * \ingroup errors
  */
 #define HW_ERR_NON_MANIFOLD 4
 
 /**
  * A caller's buffer is too small; the needed size was reported.
+ * \ingroup errors
  */
 #define HW_ERR_BUFFER_TOO_SMALL 5
 
 /**
  * Reading or writing a file failed.
+ * \ingroup errors
  */
 #define HW_ERR_IO 6
 
 /**
  * A file's contents could not be parsed.
+ * \ingroup errors
  */
 #define HW_ERR_PARSE 7
 
 /**
  * A mesh operation's precondition does not hold (e.g. flipping a boundary edge); nothing changed.
+ * \ingroup errors
  */
 #define HW_ERR_REFUSED 8
 
 /**
  * A Rust panic was caught at the C boundary: a bug in halfwing. The object passed in is left
  * as it was before the call only if the call does not mutate it.
+ * \ingroup errors
  */
 #define HW_ERR_PANIC 9
 
 /**
  * A named item (an attribute) does not exist.
+ * \ingroup errors
  */
 #define HW_ERR_NOT_FOUND 10
 
@@ -1235,247 +1774,295 @@ typedef struct {
  * The system refused memory the call needed (an array proportional to a count given: cells,
  * pixels, vertices); the message names the size. Nothing was changed, and calls needing less
  * memory still work.
+ * \ingroup errors
  */
 #define HW_ERR_OUT_OF_MEMORY 11
 
 /**
  * One quadrilateral per cell (a triangle where a pole collapses a side).
+ * \ingroup surfaces
  */
 #define HW_CELLS_QUADS 0
 
 /**
  * Two triangles per cell.
+ * \ingroup surfaces
  */
 #define HW_CELLS_TRIANGLES 1
 
 /**
  * Leave them open.
+ * \ingroup surfaces
  */
 #define HW_CAPS_NONE 0
 
 /**
  * One planar polygon per end.
+ * \ingroup surfaces
  */
 #define HW_CAPS_POLYGON 1
 
 /**
  * A fan of triangles from a new vertex on the axis.
+ * \ingroup surfaces
  */
 #define HW_CAPS_FAN 2
 
 /**
  * Per half-edge: the vertex it leaves.
+ * \ingroup navigation
  */
 #define HW_ARRAY_HALFEDGE_ORIGIN 0
 
 /**
  * Per half-edge: the next half-edge around its face or boundary loop.
+ * \ingroup navigation
  */
 #define HW_ARRAY_HALFEDGE_NEXT 1
 
 /**
  * Per half-edge: the previous half-edge around its face or boundary loop.
+ * \ingroup navigation
  */
 #define HW_ARRAY_HALFEDGE_PREV 2
 
 /**
  * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+ * \ingroup navigation
  */
 #define HW_ARRAY_HALFEDGE_FACE 3
 
 /**
  * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
+ * \ingroup navigation
  */
 #define HW_ARRAY_VERTEX_HALFEDGE 4
 
 /**
  * Per face: one of its half-edges.
+ * \ingroup navigation
  */
 #define HW_ARRAY_FACE_HALFEDGE 5
 
 /**
  * No sites.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_EMPTY 0
 
 /**
  * One distinct site (possibly repeated): one cell, the whole plane.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_POINT 1
 
 /**
  * Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
  * bisectors, and the hull lists the sites in order along their line.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_LINE 2
 
 /**
  * The sites span the plane: at least one triangle.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_PLANE 3
 
 /**
  * Per site: the site representing it (itself unless it duplicates a smaller index).
+ * \ingroup voronoi
  */
 #define HW_VORONOI_REPRESENTATIVE 0
 
 /**
  * Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
  * Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_TRIANGLES 1
 
 /**
  * Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_TRIANGLE_TWINS 2
 
 /**
  * The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
  * line; for one distinct site: that site).
+ * \ingroup voronoi
  */
 #define HW_VORONOI_HULL 3
 
 /**
  * Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
+ * \ingroup voronoi
  */
 #define HW_VORONOI_TRIANGLE_VERTEX 4
 
 /**
  * Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_HALFEDGE_ORIGIN 5
 
 /**
  * Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
  * out to infinity is followed by the one coming back).
+ * \ingroup voronoi
  */
 #define HW_VORONOI_HALFEDGE_NEXT 6
 
 /**
  * Per Voronoi half-edge: the previous half-edge around its cell.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_HALFEDGE_PREV 7
 
 /**
  * Per Voronoi half-edge: the site whose cell it bounds (on its left).
+ * \ingroup voronoi
  */
 #define HW_VORONOI_HALFEDGE_SITE 8
 
 /**
  * Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
  * `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_CELL_HALFEDGE 9
 
 /**
  * Per Voronoi vertex: one outgoing half-edge.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_VERTEX_HALFEDGE 10
 
 /**
  * Both ends are Voronoi vertices: from `point` to `end`.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_SEGMENT 0
 
 /**
  * One end at infinity: the points `point + t * direction`, `t >= 0`.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_RAY 1
 
 /**
  * Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
+ * \ingroup voronoi
  */
 #define HW_VORONOI_LINE_EDGE 2
 
 /**
  * Euclidean distance (the diagram's own metric).
+ * \ingroup voronoi
  */
 #define HW_METRIC_EUCLIDEAN 0
 
 /**
  * Manhattan (L1, taxicab) distance `|dx| + |dy|`.
+ * \ingroup voronoi
  */
 #define HW_METRIC_MANHATTAN 1
 
 /**
  * Chebyshev (L∞) distance `max(|dx|, |dy|)`.
+ * \ingroup voronoi
  */
 #define HW_METRIC_CHEBYSHEV 2
 
 /**
  * Face normals (Newell), indexed by face id.
+ * \ingroup winged
  */
 #define HW_WNORMALS_FACES 0
 
 /**
  * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
+ * \ingroup winged
  */
 #define HW_WNORMALS_VERTICES 1
 
 /**
  * The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
+ * \ingroup winged
  */
 #define HW_WTABLE_VERTICES 0
 
 /**
  * The face table: id, stored edge ("Face-Edge").
+ * \ingroup winged
  */
 #define HW_WTABLE_FACES 1
 
 /**
  * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
+ * \ingroup winged
  */
 #define HW_WTABLE_EDGES 2
 
 /**
  * The three tables, vertex, face and edge, separated by a blank line.
+ * \ingroup winged
  */
 #define HW_WTABLE_ALL 3
 
 /**
  * Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
  * from 1 with a letter (V1, E1, F1).
+ * \ingroup winged
  */
 #define HW_WNAMING_CW_CCW 0
 
 /**
  * The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+ * \ingroup winged
  */
 #define HW_WNAMING_DIRECT_INVERSE 1
 
 /**
  * Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
+ * \ingroup winged
  */
 #define HW_WNAMING_LEFT_RIGHT 2
 
 /**
  * Columns aligned with spaces; a hole is `∅` (UTF-8).
+ * \ingroup winged
  */
 #define HW_TABLE_TEXT 0
 
 /**
  * A Markdown table; a hole is `∅`.
+ * \ingroup winged
  */
 #define HW_TABLE_MARKDOWN 1
 
 /**
  * Comma-separated values with a header row; a hole is an empty field.
+ * \ingroup winged
  */
 #define HW_TABLE_CSV 2
 
 /**
  * Edges: the edges of a face's loop, or the edges at a vertex.
+ * \ingroup winged
  */
 #define HW_WCIRC_EDGES 0
 
 /**
  * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
+ * \ingroup winged
  */
 #define HW_WCIRC_VERTICES 1
 
 /**
  * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
+ * \ingroup winged
  */
 #define HW_WCIRC_FACES 2
 
@@ -1490,6 +2077,7 @@ extern "C" {
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_add(hw_mesh *mesh,
                                 hw_element_kind kind,
@@ -1503,6 +2091,7 @@ hw_status hw_mesh_attribute_add(hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_remove(hw_mesh *mesh, hw_element_kind kind, const char *name);
 
@@ -1512,6 +2101,7 @@ hw_status hw_mesh_attribute_remove(hw_mesh *mesh, hw_element_kind kind, const ch
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; outputs NULL or writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_info(const hw_mesh *mesh,
                                  hw_element_kind kind,
@@ -1528,6 +2118,7 @@ hw_status hw_mesh_attribute_info(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or a live mesh; `name` NULL or NUL-terminated; `out_data`, `out_len`
  * writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_view(const hw_mesh *mesh,
                                  hw_element_kind kind,
@@ -1543,6 +2134,7 @@ hw_status hw_mesh_attribute_view(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `name` NULL or NUL-terminated;
  * `out_data`, `out_len` writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_data(hw_mesh *mesh,
                                  hw_element_kind kind,
@@ -1556,6 +2148,7 @@ hw_status hw_mesh_attribute_data(hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
 
@@ -1568,6 +2161,7 @@ hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, siz
  * # Safety
  * `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
  * writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
                                  hw_element_kind kind,
@@ -1585,6 +2179,7 @@ hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_halfedges` writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_corner_normals_view(const hw_mesh *mesh,
                                       const double **out_xyz,
@@ -1598,6 +2193,7 @@ hw_status hw_mesh_corner_normals_view(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`
  * doubles.
+ * \ingroup attributes
  */
 hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_halfedges);
 
@@ -1608,6 +2204,7 @@ hw_status hw_mesh_corner_normals_set(hw_mesh *mesh, const double *xyz, size_t n_
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_uv` and `out_n_halfedges` writable.
+ * \ingroup attributes
  */
 hw_status hw_mesh_corner_uvs_view(const hw_mesh *mesh,
                                   const double **out_uv,
@@ -1620,6 +2217,7 @@ hw_status hw_mesh_corner_uvs_view(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `uv` NULL or `2 * n_halfedges`
  * doubles.
+ * \ingroup attributes
  */
 hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfedges);
 
@@ -1628,6 +2226,7 @@ hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfe
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup navigation
  */
 hw_status hw_circ_around_vertex(const hw_mesh *mesh,
                                 hw_vertex v,
@@ -1639,6 +2238,7 @@ hw_status hw_circ_around_vertex(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup navigation
  */
 hw_status hw_circ_around_face(const hw_mesh *mesh,
                               hw_face f,
@@ -1651,6 +2251,7 @@ hw_status hw_circ_around_face(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup navigation
  */
 hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *out);
 
@@ -1659,6 +2260,7 @@ hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup navigation
  */
 bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
 
@@ -1667,6 +2269,7 @@ bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup navigation
  */
 bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
 
@@ -1675,6 +2278,7 @@ bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup navigation
  */
 bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
 
@@ -1683,17 +2287,83 @@ bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup navigation
  */
 bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
 
 /**
+ * Builds the Delaunay triangulation of `n_sites` sites given as `2 * n_sites` doubles (x, y per
+ * site), without the Voronoi diagram (hw_voronoi_build() builds both): for callers that need
+ * only the triangles, it takes less time and memory.
+ *
+ * Input as for hw_voronoi_build(): any finite sites, duplicates merged (see
+ * ::HW_VORONOI_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite coordinate
+ * gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+ *
+ * On success `*out_delaunay` receives a new triangulation to release with hw_delaunay_free().
+ *
+ * # Safety
+ * `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_delaunay`
+ * writable.
+ * \ingroup voronoi
+ */
+hw_status hw_delaunay_build(const double *xy, size_t n_sites, hw_delaunay **out_delaunay);
+
+/**
+ * Releases a triangulation. NULL is a no-op; a triangulation freed already is refused, the last
+ * error saying so (within the limits the ownership conventions at the top of the header state).
+ *
+ * # Safety
+ * `delaunay` must be NULL or a triangulation from this library not in use by another thread.
+ * \ingroup voronoi
+ */
+void hw_delaunay_free(hw_delaunay *delaunay);
+
+/**
+ * Number of triangles (0 when all sites are collinear); 0 for a NULL triangulation.
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation.
+ * \ingroup voronoi
+ */
+size_t hw_delaunay_n_triangles(const hw_delaunay *delaunay);
+
+/**
+ * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL triangulation, with the error
+ * recorded).
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation.
+ * \ingroup voronoi
+ */
+hw_site_dimension hw_delaunay_dimension(const hw_delaunay *delaunay);
+
+/**
+ * A read-only view of one index array of the triangulation: `which` is one of
+ * ::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES, ::HW_VORONOI_TRIANGLE_TWINS and
+ * ::HW_VORONOI_HULL (the other arrays belong to the Voronoi diagram: `HW_ERR_INVALID_INPUT`).
+ * `*out_data` (NULL when empty) and its length `*out_len` are valid as long as the
+ * triangulation.
+ *
+ * # Safety
+ * `delaunay` must be NULL or a live triangulation; `out_data` and `out_len` writable.
+ * \ingroup voronoi
+ */
+hw_status hw_delaunay_view(const hw_delaunay *delaunay,
+                           hw_voronoi_array which,
+                           const uint32_t **out_data,
+                           size_t *out_len);
+
+/**
  * The name of an id list ("isolated vertices", …) as static text; NULL for an unknown list.
+ * \ingroup mesh
  */
 const char *hw_diagnostic_list_name(hw_diagnostic_list list);
 
 /**
  * The name of an edge list ("non-manifold edges (3+ faces)", …) as static text; NULL for an
  * unknown list.
+ * \ingroup mesh
  */
 const char *hw_diagnostic_edges_name(hw_diagnostic_edges edges);
 
@@ -1705,6 +2375,7 @@ const char *hw_diagnostic_edges_name(hw_diagnostic_edges edges);
  *
  * # Safety
  * As for hw_mesh_from_indexed().
+ * \ingroup mesh
  */
 hw_status hw_diagnose_indexed(const double *positions,
                               size_t n_vertices,
@@ -1720,6 +2391,7 @@ hw_status hw_diagnose_indexed(const double *positions,
  *
  * # Safety
  * `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
+ * \ingroup mesh
  */
 void hw_diagnostic_free(hw_diagnostic *diagnostic);
 
@@ -1728,6 +2400,7 @@ void hw_diagnostic_free(hw_diagnostic *diagnostic);
  *
  * # Safety
  * `diagnostic` must be NULL or live.
+ * \ingroup mesh
  */
 bool hw_diagnostic_is_clean(const hw_diagnostic *diagnostic);
 
@@ -1737,6 +2410,7 @@ bool hw_diagnostic_is_clean(const hw_diagnostic *diagnostic);
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
+ * \ingroup mesh
  */
 hw_status hw_diagnostic_ids(const hw_diagnostic *diagnostic,
                             hw_diagnostic_list list,
@@ -1748,6 +2422,7 @@ hw_status hw_diagnostic_ids(const hw_diagnostic *diagnostic,
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_count` writable.
+ * \ingroup mesh
  */
 hw_status hw_diagnostic_edge_count(const hw_diagnostic *diagnostic,
                                    hw_diagnostic_edges edges,
@@ -1761,6 +2436,7 @@ hw_status hw_diagnostic_edge_count(const hw_diagnostic *diagnostic,
  * # Safety
  * `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
  * `out_faces` and `out_n_faces` writable.
+ * \ingroup mesh
  */
 hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
                              hw_diagnostic_edges edges,
@@ -1780,6 +2456,7 @@ hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
  * # Safety
  * `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
  * writable.
+ * \ingroup mesh
  */
 hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
                                 char *buf,
@@ -1788,6 +2465,7 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
 
 /**
  * The doctor's default thresholds.
+ * \ingroup doctor
  */
 hw_doctor_options hw_doctor_options_default(void);
 
@@ -1801,6 +2479,7 @@ hw_doctor_options hw_doctor_options_default(void);
  *
  * # Safety
  * As for hw_mesh_from_indexed(); `options` NULL or readable; `out_report` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_examine_indexed(const double *positions,
                                     size_t n_vertices,
@@ -1816,6 +2495,7 @@ hw_status hw_doctor_examine_indexed(const double *positions,
  *
  * # Safety
  * `mesh` must be NULL or live; `options` NULL or readable; `out_report` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_examine_mesh(const hw_mesh *mesh,
                                  const hw_doctor_options *options,
@@ -1826,6 +2506,7 @@ hw_status hw_doctor_examine_mesh(const hw_mesh *mesh,
  *
  * # Safety
  * `report` must be NULL or a report from this library, not in use by another thread.
+ * \ingroup doctor
  */
 void hw_doctor_report_free(hw_doctor_report *report);
 
@@ -1837,12 +2518,14 @@ void hw_doctor_report_free(hw_doctor_report *report);
  *
  * # Safety
  * `report` must be NULL or live.
+ * \ingroup doctor
  */
 const hw_diagnostic *hw_doctor_report_diagnostic(const hw_doctor_report *report);
 
 /**
  * The name of a finding kind ("needles", "T-vertices", …) as static text; NULL for an unknown
  * kind.
+ * \ingroup doctor
  */
 const char *hw_doctor_finding_name(hw_doctor_finding kind);
 
@@ -1853,6 +2536,7 @@ const char *hw_doctor_finding_name(hw_doctor_finding kind);
  *
  * # Safety
  * `report` must be NULL or live; `out_ids`, `out_n_items` and `out_ids_per_item` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_finding(const hw_doctor_report *report,
                                    hw_doctor_finding kind,
@@ -1865,6 +2549,7 @@ hw_status hw_doctor_report_finding(const hw_doctor_report *report,
  *
  * # Safety
  * `report` must be NULL or live; `out_verdict` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_verdict *out_verdict);
 
@@ -1873,6 +2558,7 @@ hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_ver
  *
  * # Safety
  * `report` must be NULL or live; `out_count` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_component_count(const hw_doctor_report *report, size_t *out_count);
 
@@ -1881,6 +2567,7 @@ hw_status hw_doctor_report_component_count(const hw_doctor_report *report, size_
  *
  * # Safety
  * `report` must be NULL or live; `out_component` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_component(const hw_doctor_report *report,
                                      size_t index,
@@ -1891,6 +2578,7 @@ hw_status hw_doctor_report_component(const hw_doctor_report *report,
  *
  * # Safety
  * `report` must be NULL or live; `out_count` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_boundary_loop_count(const hw_doctor_report *report, size_t *out_count);
 
@@ -1901,6 +2589,7 @@ hw_status hw_doctor_report_boundary_loop_count(const hw_doctor_report *report, s
  *
  * # Safety
  * `report` must be NULL or live; every output writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
                                          size_t index,
@@ -1915,6 +2604,7 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
  *
  * # Safety
  * `report` must be NULL or live; `out_count` writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_vertex_fans_count(const hw_doctor_report *report, size_t *out_count);
 
@@ -1925,6 +2615,7 @@ hw_status hw_doctor_report_vertex_fans_count(const hw_doctor_report *report, siz
  *
  * # Safety
  * `report` must be NULL or live; every output writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_vertex_fan(const hw_doctor_report *report,
                                       size_t index,
@@ -1942,6 +2633,7 @@ hw_status hw_doctor_report_vertex_fan(const hw_doctor_report *report,
  *
  * # Safety
  * `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_text(const hw_doctor_report *report,
                                 char *buf,
@@ -1954,6 +2646,7 @@ hw_status hw_doctor_report_text(const hw_doctor_report *report,
  *
  * # Safety
  * As for hw_doctor_report_text().
+ * \ingroup doctor
  */
 hw_status hw_doctor_report_json(const hw_doctor_report *report,
                                 char *buf,
@@ -1966,6 +2659,7 @@ hw_status hw_doctor_report_json(const hw_doctor_report *report,
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
  * writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_add_vertex(hw_mesh *mesh, const double *xyz, hw_vertex *out_vertex);
 
@@ -1980,6 +2674,7 @@ hw_status hw_mesh_add_vertex(hw_mesh *mesh, const double *xyz, hw_vertex *out_ve
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `vertices` NULL (when `n` is 0) or
  * `n` ids; `out_face` writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_add_face(hw_mesh *mesh, const hw_vertex *vertices, size_t n, hw_face *out_face);
 
@@ -1989,6 +2684,7 @@ hw_status hw_mesh_add_face(hw_mesh *mesh, const hw_vertex *vertices, size_t n, h
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses.
+ * \ingroup edit
  */
 hw_status hw_mesh_delete_face(hw_mesh *mesh, hw_face f, bool delete_isolated_vertices);
 
@@ -1997,6 +2693,7 @@ hw_status hw_mesh_delete_face(hw_mesh *mesh, hw_face f, bool delete_isolated_ver
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses.
+ * \ingroup edit
  */
 hw_status hw_mesh_delete_edge(hw_mesh *mesh, hw_edge e, bool delete_isolated_vertices);
 
@@ -2005,6 +2702,7 @@ hw_status hw_mesh_delete_edge(hw_mesh *mesh, hw_edge e, bool delete_isolated_ver
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses.
+ * \ingroup edit
  */
 hw_status hw_mesh_delete_vertex(hw_mesh *mesh, hw_vertex v);
 
@@ -2014,6 +2712,7 @@ hw_status hw_mesh_delete_vertex(hw_mesh *mesh, hw_vertex v);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses.
+ * \ingroup edit
  */
 hw_status hw_mesh_flip_edge(hw_mesh *mesh, hw_edge e);
 
@@ -2024,6 +2723,7 @@ hw_status hw_mesh_flip_edge(hw_mesh *mesh, hw_edge e);
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `xyz` 3 doubles; `out_vertex`
  * writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_split_edge(hw_mesh *mesh, hw_edge e, const double *xyz, hw_vertex *out_vertex);
 
@@ -2035,6 +2735,7 @@ hw_status hw_mesh_split_edge(hw_mesh *mesh, hw_edge e, const double *xyz, hw_ver
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_halfedge` writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_split_face(hw_mesh *mesh,
                              hw_halfedge h0,
@@ -2048,6 +2749,7 @@ hw_status hw_mesh_split_face(hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_collapse_halfedge(hw_mesh *mesh, hw_halfedge h, hw_vertex *out_vertex);
 
@@ -2060,6 +2762,7 @@ hw_status hw_mesh_collapse_halfedge(hw_mesh *mesh, hw_halfedge h, hw_vertex *out
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_n_faces` NULL or writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_triangulate_face(hw_mesh *mesh, hw_face f, size_t *out_n_faces);
 
@@ -2069,6 +2772,7 @@ hw_status hw_mesh_triangulate_face(hw_mesh *mesh, hw_face f, size_t *out_n_faces
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_maps` NULL or writable.
+ * \ingroup edit
  */
 hw_status hw_mesh_garbage_collect(hw_mesh *mesh, hw_index_maps **out_maps);
 
@@ -2078,6 +2782,7 @@ hw_status hw_mesh_garbage_collect(hw_mesh *mesh, hw_index_maps **out_maps);
  *
  * # Safety
  * `maps` must be NULL or live; `out_map` and `out_len` writable.
+ * \ingroup edit
  */
 hw_status hw_index_maps_view(const hw_index_maps *maps,
                              hw_element_kind kind,
@@ -2090,6 +2795,7 @@ hw_status hw_index_maps_view(const hw_index_maps *maps,
  *
  * # Safety
  * `maps` must be NULL or maps from this library, not in use by another thread.
+ * \ingroup edit
  */
 void hw_index_maps_free(hw_index_maps *maps);
 
@@ -2110,6 +2816,7 @@ void hw_index_maps_free(hw_index_maps *maps);
  * # Safety
  * `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or point to a
  * writable `size_t`.
+ * \ingroup errors
  */
 hw_status hw_last_error_message(char *buf, size_t len, size_t *needed);
 
@@ -2120,6 +2827,7 @@ hw_status hw_last_error_message(char *buf, size_t len, size_t *needed);
  *
  * # Safety
  * `path` must be NULL or NUL-terminated; `out_soup` writable.
+ * \ingroup io
  */
 hw_status hw_soup_read(const char *path, hw_soup **out_soup);
 
@@ -2131,6 +2839,7 @@ hw_status hw_soup_read(const char *path, hw_soup **out_soup);
  *
  * # Safety
  * `soup` must be NULL or live; each output NULL or writable.
+ * \ingroup io
  */
 hw_status hw_soup_view(const hw_soup *soup,
                        const double **out_positions,
@@ -2146,6 +2855,7 @@ hw_status hw_soup_view(const hw_soup *soup,
  *
  * # Safety
  * `soup` must be NULL or a soup from this library, not in use by another thread.
+ * \ingroup io
  */
 void hw_soup_free(hw_soup *soup);
 
@@ -2159,6 +2869,7 @@ void hw_soup_free(hw_soup *soup);
  *
  * # Safety
  * `path` must be NULL or NUL-terminated; `out_mesh` writable; `out_diagnostic` NULL or writable.
+ * \ingroup io
  */
 hw_status hw_mesh_read(const char *path,
                        hw_build_policy policy,
@@ -2171,11 +2882,13 @@ hw_status hw_mesh_read(const char *path,
  *
  * # Safety
  * `mesh` must be NULL or live; `path` NULL or NUL-terminated.
+ * \ingroup io
  */
 hw_status hw_mesh_write(const hw_mesh *mesh, const char *path);
 
 /**
  * Creates an empty mesh. Returns NULL only if the allocation fails.
+ * \ingroup mesh
  */
 hw_mesh *hw_mesh_new(void);
 
@@ -2205,6 +2918,7 @@ hw_mesh *hw_mesh_new(void);
  * # Safety
  * Array arguments must point to at least as many elements as their counts say (they may be NULL
  * when the count is 0); `out_mesh` must be writable; `out_diagnostic` NULL or writable.
+ * \ingroup mesh
  */
 hw_status hw_mesh_from_indexed(const double *positions,
                                size_t n_vertices,
@@ -2222,6 +2936,7 @@ hw_status hw_mesh_from_indexed(const double *positions,
  *
  * # Safety
  * `mesh` must be NULL or a mesh from this library not in use by another thread.
+ * \ingroup mesh
  */
 void hw_mesh_free(hw_mesh *mesh);
 
@@ -2230,6 +2945,7 @@ void hw_mesh_free(hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
  */
 size_t hw_mesh_n_vertices(const hw_mesh *mesh);
 
@@ -2238,6 +2954,7 @@ size_t hw_mesh_n_vertices(const hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
  */
 size_t hw_mesh_n_faces(const hw_mesh *mesh);
 
@@ -2246,6 +2963,7 @@ size_t hw_mesh_n_faces(const hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
  */
 size_t hw_mesh_n_edges(const hw_mesh *mesh);
 
@@ -2254,6 +2972,7 @@ size_t hw_mesh_n_edges(const hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
  */
 size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 
@@ -2264,6 +2983,7 @@ size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
  */
 size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
 
@@ -2272,6 +2992,7 @@ size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out` NULL or writable.
+ * \ingroup nav
  */
 hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
 
@@ -2280,6 +3001,7 @@ hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_vertex hw_mesh_he_origin(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2288,6 +3010,7 @@ hw_vertex hw_mesh_he_origin(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_vertex hw_mesh_he_target(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2296,6 +3019,7 @@ hw_vertex hw_mesh_he_target(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_he_twin(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2305,6 +3029,7 @@ hw_halfedge hw_mesh_he_twin(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_he_next(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2313,6 +3038,7 @@ hw_halfedge hw_mesh_he_next(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_he_prev(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2321,6 +3047,7 @@ hw_halfedge hw_mesh_he_prev(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_face hw_mesh_he_face(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2329,6 +3056,7 @@ hw_face hw_mesh_he_face(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_edge hw_mesh_he_edge(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2337,6 +3065,7 @@ hw_edge hw_mesh_he_edge(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_edge_halfedge(const hw_mesh *mesh, hw_edge e, uint32_t side);
 
@@ -2346,6 +3075,7 @@ hw_halfedge hw_mesh_edge_halfedge(const hw_mesh *mesh, hw_edge e, uint32_t side)
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_vertex_halfedge(const hw_mesh *mesh, hw_vertex v);
 
@@ -2354,6 +3084,7 @@ hw_halfedge hw_mesh_vertex_halfedge(const hw_mesh *mesh, hw_vertex v);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 hw_halfedge hw_mesh_face_halfedge(const hw_mesh *mesh, hw_face f);
 
@@ -2362,6 +3093,7 @@ hw_halfedge hw_mesh_face_halfedge(const hw_mesh *mesh, hw_face f);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 bool hw_mesh_he_is_boundary(const hw_mesh *mesh, hw_halfedge h);
 
@@ -2370,6 +3102,7 @@ bool hw_mesh_he_is_boundary(const hw_mesh *mesh, hw_halfedge h);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 bool hw_mesh_edge_is_boundary(const hw_mesh *mesh, hw_edge e);
 
@@ -2378,6 +3111,7 @@ bool hw_mesh_edge_is_boundary(const hw_mesh *mesh, hw_edge e);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 bool hw_mesh_vertex_is_boundary(const hw_mesh *mesh, hw_vertex v);
 
@@ -2386,6 +3120,7 @@ bool hw_mesh_vertex_is_boundary(const hw_mesh *mesh, hw_vertex v);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 bool hw_mesh_face_is_boundary(const hw_mesh *mesh, hw_face f);
 
@@ -2394,6 +3129,7 @@ bool hw_mesh_face_is_boundary(const hw_mesh *mesh, hw_face f);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 uint32_t hw_mesh_vertex_valence(const hw_mesh *mesh, hw_vertex v);
 
@@ -2402,6 +3138,7 @@ uint32_t hw_mesh_vertex_valence(const hw_mesh *mesh, hw_vertex v);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup navigation
  */
 uint32_t hw_mesh_face_degree(const hw_mesh *mesh, hw_face f);
 
@@ -2411,6 +3148,7 @@ uint32_t hw_mesh_face_degree(const hw_mesh *mesh, hw_face f);
  * # Safety
  * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
  * NULL or writable.
+ * \ingroup normals
  */
 hw_status hw_mesh_face_normals(const hw_mesh *mesh,
                                double *out_normals,
@@ -2424,6 +3162,7 @@ hw_status hw_mesh_face_normals(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
  * NULL or writable.
+ * \ingroup normals
  */
 hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
                                  hw_normal_weighting weighting_kind,
@@ -2442,6 +3181,7 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
  * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
  * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
  * `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
+ * \ingroup normals
  */
 hw_status hw_mesh_normals(const hw_mesh *mesh,
                           hw_normal_weighting weighting_kind,
@@ -2461,6 +3201,7 @@ hw_status hw_mesh_normals(const hw_mesh *mesh,
  * # Safety
  * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
  * NULL or writable.
+ * \ingroup normals
  */
 hw_status hw_mesh_corner_normals(const hw_mesh *mesh,
                                  double crease_angle,
@@ -2473,6 +3214,7 @@ hw_status hw_mesh_corner_normals(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_xyz` must hold 3 writable doubles.
+ * \ingroup attributes
  */
 hw_status hw_mesh_vertex_position(const hw_mesh *mesh, hw_vertex v, double *out_xyz);
 
@@ -2481,6 +3223,7 @@ hw_status hw_mesh_vertex_position(const hw_mesh *mesh, hw_vertex v, double *out_
  *
  * # Safety
  * `mesh` must be NULL or a live mesh used by no other thread; `xyz` must hold 3 doubles.
+ * \ingroup attributes
  */
 hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *xyz);
 
@@ -2489,6 +3232,7 @@ hw_status hw_mesh_set_vertex_position(hw_mesh *mesh, hw_vertex v, const double *
  * them, smooth angle-weighted normals elsewhere), a crease angle of 30°, separate arrays,
  * glyphs as long as the mean edge; the mesh's own corner uvs when it has them, no other
  * per-corner attributes.
+ * \ingroup render
  */
 hw_render_options hw_render_options_default(void);
 
@@ -2510,6 +3254,7 @@ hw_render_options hw_render_options_default(void);
  * # Safety
  * `mesh` must be NULL or live; `diagnostic` NULL or live; `options` NULL or readable, with its
  * corner arrays NULL or as long as it says; `out_buffers` writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_build(const hw_mesh *mesh,
                                   const hw_diagnostic *diagnostic,
@@ -2533,6 +3278,7 @@ hw_status hw_render_buffers_build(const hw_mesh *mesh,
  * # Safety
  * `corners` must hold `dimension * n_corners` doubles and `sizes` `n_polygons` values (either
  * may be NULL when its count is 0); `out_buffers` writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_from_polygons(const double *corners,
                                           uint32_t dimension,
@@ -2551,6 +3297,7 @@ hw_status hw_render_buffers_from_polygons(const double *corners,
  *
  * # Safety
  * `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
                                                hw_render_buffers **out_buffers);
@@ -2578,6 +3325,7 @@ hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
  * # Safety
  * `report` must be NULL or live; the arrays as for hw_mesh_from_indexed(); `out_buffers`
  * writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_from_finding(const hw_doctor_report *report,
                                          hw_doctor_finding kind,
@@ -2595,6 +3343,7 @@ hw_status hw_render_buffers_from_finding(const hw_doctor_report *report,
  *
  * # Safety
  * `buffers` must be NULL or from this library, not in use by another thread.
+ * \ingroup render
  */
 void hw_render_buffers_free(hw_render_buffers *buffers);
 
@@ -2604,6 +3353,7 @@ void hw_render_buffers_free(hw_render_buffers *buffers);
  *
  * # Safety
  * `buffers` must be NULL or live; `out_data` and `out_len` writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_floats(const hw_render_buffers *buffers,
                                    hw_render_floats which,
@@ -2616,6 +3366,7 @@ hw_status hw_render_buffers_floats(const hw_render_buffers *buffers,
  *
  * # Safety
  * `buffers` must be NULL or live; `out_data` and `out_len` writable.
+ * \ingroup render
  */
 hw_status hw_render_buffers_indices(const hw_render_buffers *buffers,
                                     hw_render_indices which,
@@ -2627,6 +3378,7 @@ hw_status hw_render_buffers_indices(const hw_render_buffers *buffers,
  *
  * # Safety
  * `buffers` must be NULL or live.
+ * \ingroup render
  */
 size_t hw_render_buffers_n_vertices(const hw_render_buffers *buffers);
 
@@ -2637,6 +3389,7 @@ size_t hw_render_buffers_n_vertices(const hw_render_buffers *buffers);
  *
  * # Safety
  * `buffers` must be NULL or live.
+ * \ingroup render
  */
 size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
 
@@ -2647,6 +3400,7 @@ size_t hw_render_buffers_stride(const hw_render_buffers *buffers);
  *
  * # Safety
  * `buffers` must be NULL or live; `out_min` and `out_max` must each point to 3 writable floats.
+ * \ingroup render
  */
 hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
                                    float *out_min,
@@ -2659,6 +3413,7 @@ hw_status hw_render_buffers_bounds(const hw_render_buffers *buffers,
  *
  * # Safety
  * As for hw_mesh_from_indexed(); `out_soup` writable.
+ * \ingroup repair
  */
 hw_status hw_soup_from_indexed(const double *positions,
                                size_t n_vertices,
@@ -2682,6 +3437,7 @@ hw_status hw_soup_from_indexed(const double *positions,
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_merge_vertices(hw_soup *soup,
                                  double tolerance,
@@ -2696,6 +3452,7 @@ hw_status hw_soup_merge_vertices(hw_soup *soup,
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_remove_duplicate_faces(hw_soup *soup, hw_repair_report **out_report);
 
@@ -2705,6 +3462,7 @@ hw_status hw_soup_remove_duplicate_faces(hw_soup *soup, hw_repair_report **out_r
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_remove_unreferenced_vertices(hw_soup *soup, hw_repair_report **out_report);
 
@@ -2717,6 +3475,7 @@ hw_status hw_soup_remove_unreferenced_vertices(hw_soup *soup, hw_repair_report *
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_remove_small_components(hw_soup *soup,
                                           hw_small_components rule,
@@ -2732,6 +3491,7 @@ hw_status hw_soup_remove_small_components(hw_soup *soup,
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_orient_faces(hw_soup *soup, hw_repair_report **out_report);
 
@@ -2745,6 +3505,7 @@ hw_status hw_soup_orient_faces(hw_soup *soup, hw_repair_report **out_report);
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_repair_non_manifold_edges(hw_soup *soup,
                                             hw_non_manifold_edges how,
@@ -2757,6 +3518,7 @@ hw_status hw_soup_repair_non_manifold_edges(hw_soup *soup,
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_soup_split_non_manifold_vertices(hw_soup *soup, hw_repair_report **out_report);
 
@@ -2772,6 +3534,7 @@ hw_status hw_soup_split_non_manifold_vertices(hw_soup *soup, hw_repair_report **
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_mesh_stitch_borders(hw_mesh *mesh,
                                  double tolerance,
@@ -2784,6 +3547,7 @@ hw_status hw_mesh_stitch_borders(hw_mesh *mesh,
  *
  * # Safety
  * `report` must be NULL or live; `out_ids` and `out_len` writable.
+ * \ingroup repair
  */
 hw_status hw_repair_report_list(const hw_repair_report *report,
                                 hw_repair_list list,
@@ -2798,6 +3562,7 @@ hw_status hw_repair_report_list(const hw_repair_report *report,
  *
  * # Safety
  * `report` must be NULL or live; `out_maps` writable; `out_removed_corners` NULL or writable.
+ * \ingroup repair
  */
 hw_status hw_repair_report_maps(const hw_repair_report *report,
                                 const hw_index_maps **out_maps,
@@ -2809,8 +3574,107 @@ hw_status hw_repair_report_maps(const hw_repair_report *report,
  *
  * # Safety
  * `report` must be NULL or a report from this library, not in use by another thread.
+ * \ingroup repair
  */
 void hw_repair_report_free(hw_repair_report *report);
+
+/**
+ * Options that fill every hole: no bound on edges or perimeter.
+ * \ingroup repair
+ */
+hw_fill_hole_options hw_fill_hole_options_default(void);
+
+/**
+ * Fills the hole whose boundary loop holds half-edge `h` with triangles on its corners (no new
+ * vertex): Liepa's minimum-weight triangulation up to 100 edges, beyond that a triangulation
+ * on the hole's best-fit plane improved by edge flips. `*out_faces_added` (when not NULL)
+ * receives the number of new triangles (edges − 2). New faces, edges and corners get zero
+ * attributes. `HW_ERR_INVALID_HANDLE` for a bad `h`; `HW_ERR_REFUSED`, the mesh unchanged,
+ * when `h` has a face, the loop passes twice through a vertex, every triangulation needs an
+ * edge that exists already, a hole of more than 100 edges does not project onto a simple
+ * polygon, or the fill would fold (a new triangle degenerate, or turned more than 150° from a
+ * face beside it).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_faces_added` NULL or writable.
+ * \ingroup repair
+ */
+hw_status hw_mesh_fill_hole(hw_mesh *mesh, hw_halfedge h, size_t *out_faces_added);
+
+/**
+ * Fills every hole within `options`' bounds (NULL: every hole) as hw_mesh_fill_hole() does;
+ * holes it refuses are left open. `*out_filled`, `*out_refused` and `*out_faces_added` (each
+ * when not NULL) receive the holes filled, the holes refused and the triangles added.
+ * `HW_ERR_INVALID_INPUT`, the mesh unchanged, for a NaN or negative `max_perimeter`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `options` NULL or readable; the
+ * outputs NULL or writable.
+ * \ingroup repair
+ */
+hw_status hw_mesh_fill_holes(hw_mesh *mesh,
+                             const hw_fill_hole_options *options,
+                             size_t *out_filled,
+                             size_t *out_refused,
+                             size_t *out_faces_added);
+
+/**
+ * The default options of hw_repair_mesh().
+ * \ingroup repair
+ */
+hw_repair_options hw_repair_options_default(void);
+
+/**
+ * Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
+ * tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
+ * split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
+ * that cannot be kept left out), stitches borders, removes small components (when asked) and
+ * unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
+ * faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
+ * every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
+ * malformed soup; `HW_ERR_OUT_OF_MEMORY` when memory ran out.
+ *
+ * # Safety
+ * `soup` NULL or live; `options` NULL or readable; `out_mesh` writable; `out_fates` NULL or
+ * writable.
+ * \ingroup repair
+ */
+hw_status hw_repair_mesh(const hw_soup *soup,
+                         const hw_repair_options *options,
+                         hw_mesh **out_mesh,
+                         hw_repair_fates **out_fates);
+
+/**
+ * A read-only view of one list of the fates (`*out_ids`, NULL when empty, with `*out_len`
+ * values). Lives as long as the fates.
+ *
+ * # Safety
+ * `fates` NULL or live; `out_ids` and `out_len` writable.
+ * \ingroup repair
+ */
+hw_status hw_repair_fates_list(const hw_repair_fates *fates,
+                               hw_fates_list list,
+                               const uint32_t **out_ids,
+                               size_t *out_len);
+
+/**
+ * The number of elements of every fate, written to `*out_counts`.
+ *
+ * # Safety
+ * `fates` NULL or live; `out_counts` writable.
+ * \ingroup repair
+ */
+hw_status hw_repair_fates_counts(const hw_repair_fates *fates, hw_repair_fate_counts *out_counts);
+
+/**
+ * Releases the fates. NULL is a no-op; a second free is refused (within the limits the
+ * ownership conventions at the top of the header state).
+ *
+ * # Safety
+ * `fates` NULL or fates from this library, not in use by another thread.
+ * \ingroup repair
+ */
+void hw_repair_fates_free(hw_repair_fates *fates);
 
 /**
  * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that
@@ -2831,6 +3695,7 @@ void hw_repair_report_free(hw_repair_report *report);
  *
  * # Safety
  * As for hw_mesh_from_indexed(); `out_pairs` writable.
+ * \ingroup doctor
  */
 hw_status hw_self_intersections_indexed(const double *positions,
                                         size_t n_vertices,
@@ -2846,6 +3711,7 @@ hw_status hw_self_intersections_indexed(const double *positions,
  *
  * # Safety
  * `pairs` must be NULL or live; `out_ids` and `out_n_pairs` writable.
+ * \ingroup doctor
  */
 hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
                              const uint32_t **out_ids,
@@ -2856,12 +3722,14 @@ hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
  *
  * # Safety
  * `pairs` must be NULL or from this library, not in use by another thread.
+ * \ingroup doctor
  */
 void hw_face_pairs_free(hw_face_pairs *pairs);
 
 /**
  * A short, static, NUL-terminated English description of `status`. Unknown values give
  * `"unknown status"`. Never returns NULL; the string must not be freed.
+ * \ingroup errors
  */
 const char *hw_status_str(hw_status status);
 
@@ -2871,6 +3739,7 @@ const char *hw_status_str(hw_status status);
  *
  * # Safety
  * `out_mesh` must be writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_tetrahedron(hw_mesh **out_mesh);
 
@@ -2879,6 +3748,7 @@ hw_status hw_surface_tetrahedron(hw_mesh **out_mesh);
  *
  * # Safety
  * `out_mesh` must be writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_cube(double side, hw_mesh **out_mesh);
 
@@ -2888,6 +3758,7 @@ hw_status hw_surface_cube(double side, hw_mesh **out_mesh);
  *
  * # Safety
  * `out_mesh` must be writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_icosphere(double radius, uint32_t level, hw_mesh **out_mesh);
 
@@ -2897,6 +3768,7 @@ hw_status hw_surface_icosphere(double radius, uint32_t level, hw_mesh **out_mesh
  *
  * # Safety
  * `out_mesh` must be writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_torus(double major_radius,
                            double minor_radius,
@@ -2911,6 +3783,7 @@ hw_status hw_surface_torus(double major_radius,
  *
  * # Safety
  * `out_mesh` must be writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_grid(double width,
                           double height,
@@ -2926,6 +3799,7 @@ hw_status hw_surface_grid(double width,
  *
  * # Safety
  * `profile` must hold `3 * n_points` doubles; `direction` 3 doubles; `out_mesh` writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_sweep(const double *profile,
                            size_t n_points,
@@ -2945,6 +3819,7 @@ hw_status hw_surface_sweep(const double *profile,
  * # Safety
  * `profile` must hold `3 * n_points` doubles; `axis_origin` and `axis_direction` 3 doubles
  * each; `out_mesh` writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_revolution(const double *profile,
                                 size_t n_points,
@@ -2964,6 +3839,7 @@ hw_status hw_surface_revolution(const double *profile,
  *
  * # Safety
  * `first` and `second` must hold `3 * n_points` doubles each; `out_mesh` writable.
+ * \ingroup surfaces
  */
 hw_status hw_surface_ruled(const double *first,
                            const double *second,
@@ -2979,6 +3855,7 @@ hw_status hw_surface_ruled(const double *first,
  * A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
  * setting. In a build without the `parallel` feature everything is single-threaded and a valid
  * count changes nothing.
+ * \ingroup errors
  */
 hw_status hw_set_thread_count(size_t count);
 
@@ -2990,6 +3867,7 @@ hw_status hw_set_thread_count(size_t count);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
+ * \ingroup topology
  */
 hw_status hw_mesh_check(const hw_mesh *mesh);
 
@@ -2998,6 +3876,7 @@ hw_status hw_mesh_check(const hw_mesh *mesh);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
+ * \ingroup topology
  */
 hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
 
@@ -3009,6 +3888,7 @@ hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_halfedges` NULL or `capacity` writable elements;
  * `needed` NULL or writable.
+ * \ingroup topology
  */
 hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
                                  hw_halfedge *out_halfedges,
@@ -3021,6 +3901,7 @@ hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
+ * \ingroup topology
  */
 hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
 
@@ -3032,6 +3913,7 @@ hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_components` NULL or `capacity` writable elements;
  * `needed` NULL or writable.
+ * \ingroup topology
  */
 hw_status hw_mesh_face_components(const hw_mesh *mesh,
                                   uint32_t *out_components,
@@ -3041,12 +3923,14 @@ hw_status hw_mesh_face_components(const hw_mesh *mesh,
 /**
  * The version number of the library actually linked, in the form of `HW_VERSION_NUMBER`.
  * Compare with `HW_VERSION_NUMBER` to detect a header/library mismatch.
+ * \ingroup errors
  */
 uint32_t hw_version_number(void);
 
 /**
  * The version of the library actually linked, as a static NUL-terminated string such as
  * `"0.1.0"`. Never NULL; must not be freed.
+ * \ingroup errors
  */
 const char *hw_version_string(void);
 
@@ -3056,6 +3940,7 @@ const char *hw_version_string(void);
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_data` and `out_len` writable.
+ * \ingroup navigation
  */
 hw_status hw_mesh_view(const hw_mesh *mesh,
                        hw_mesh_array which,
@@ -3068,6 +3953,7 @@ hw_status hw_mesh_view(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_vertices` writable.
+ * \ingroup navigation
  */
 hw_status hw_mesh_view_positions(const hw_mesh *mesh,
                                  const double **out_xyz,
@@ -3085,6 +3971,7 @@ hw_status hw_mesh_view_positions(const hw_mesh *mesh,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_visited` NULL or writable.
+ * \ingroup navigation
  */
 hw_status hw_mesh_visit(const hw_mesh *mesh,
                         hw_element_kind kind,
@@ -3104,6 +3991,7 @@ hw_status hw_mesh_visit(const hw_mesh *mesh,
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out_visited` NULL or
  * writable.
+ * \ingroup navigation
  */
 hw_status hw_circ_visit(hw_circulator *circulator,
                         hw_visit_fn visit,
@@ -3124,6 +4012,7 @@ hw_status hw_circ_visit(hw_circulator *circulator,
  * # Safety
  * `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_voronoi`
  * writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_voronoi);
 
@@ -3134,6 +4023,7 @@ hw_status hw_voronoi_build(const double *xy, size_t n_sites, hw_voronoi **out_vo
  *
  * # Safety
  * `voronoi` must be NULL or a diagram from this library not in use by another thread.
+ * \ingroup voronoi
  */
 void hw_voronoi_free(hw_voronoi *voronoi);
 
@@ -3142,6 +4032,7 @@ void hw_voronoi_free(hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_n_sites(const hw_voronoi *voronoi);
 
@@ -3150,6 +4041,7 @@ size_t hw_voronoi_n_sites(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_n_unique_sites(const hw_voronoi *voronoi);
 
@@ -3158,6 +4050,7 @@ size_t hw_voronoi_n_unique_sites(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_n_triangles(const hw_voronoi *voronoi);
 
@@ -3166,6 +4059,7 @@ size_t hw_voronoi_n_triangles(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_n_vertices(const hw_voronoi *voronoi);
 
@@ -3174,6 +4068,7 @@ size_t hw_voronoi_n_vertices(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_n_halfedges(const hw_voronoi *voronoi);
 
@@ -3182,6 +4077,7 @@ size_t hw_voronoi_n_halfedges(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
+ * \ingroup voronoi
  */
 hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
 
@@ -3199,6 +4095,7 @@ hw_site_dimension hw_voronoi_dimension(const hw_voronoi *voronoi);
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_data` and `out_len` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_view(const hw_voronoi *voronoi,
                           hw_voronoi_array which,
@@ -3211,6 +4108,7 @@ hw_status hw_voronoi_view(const hw_voronoi *voronoi,
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_sites` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_sites(const hw_voronoi *voronoi, const double **out_xy, size_t *out_n_sites);
 
@@ -3220,6 +4118,7 @@ hw_status hw_voronoi_sites(const hw_voronoi *voronoi, const double **out_xy, siz
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_xy` and `out_n_vertices` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_vertices(const hw_voronoi *voronoi,
                               const double **out_xy,
@@ -3231,6 +4130,7 @@ hw_status hw_voronoi_vertices(const hw_voronoi *voronoi,
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_edge` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
                                    uint32_t halfedge,
@@ -3244,6 +4144,7 @@ hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_mesh` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh);
 
@@ -3255,6 +4156,7 @@ hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_site` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
                                   double x,
@@ -3271,6 +4173,7 @@ hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
  * `needed` NULL or writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
                                 uint32_t site,
@@ -3285,6 +4188,7 @@ hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_halfedge` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_edge_between(const hw_voronoi *voronoi,
                                   uint32_t a,
@@ -3298,6 +4202,7 @@ hw_status hw_voronoi_edge_between(const hw_voronoi *voronoi,
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_cells` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_clip_rect(const hw_voronoi *voronoi,
                                double xmin,
@@ -3317,6 +4222,7 @@ hw_status hw_voronoi_clip_rect(const hw_voronoi *voronoi,
  * # Safety
  * `voronoi` must be NULL or a live diagram; `clip_xy` must point to `2 * n_vertices` doubles;
  * `out_cells` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
                                  const double *clip_xy,
@@ -3329,6 +4235,7 @@ hw_status hw_voronoi_clip_convex(const hw_voronoi *voronoi,
  *
  * # Safety
  * `cells` must be NULL or cells from this library not in use by another thread.
+ * \ingroup voronoi
  */
 void hw_voronoi_cells_free(hw_voronoi_cells *cells);
 
@@ -3337,6 +4244,7 @@ void hw_voronoi_cells_free(hw_voronoi_cells *cells);
  *
  * # Safety
  * `cells` must be NULL or live cells.
+ * \ingroup voronoi
  */
 size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
 
@@ -3347,6 +4255,7 @@ size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
  *
  * # Safety
  * `cells` must be NULL or live cells; `out_xy` and `out_n_positions` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_positions(const hw_voronoi_cells *cells,
                                      const double **out_xy,
@@ -3359,6 +4268,7 @@ hw_status hw_voronoi_cells_positions(const hw_voronoi_cells *cells,
  *
  * # Safety
  * `cells` must be NULL or live cells; `out_indices` and `out_len` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
                                    uint32_t site,
@@ -3373,6 +4283,7 @@ hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
  * # Safety
  * `cells` must be NULL or live cells; `out_area` NULL or writable; `out_centroid` NULL or two
  * writable doubles.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
                                          uint32_t site,
@@ -3386,6 +4297,7 @@ hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
  *
  * # Safety
  * `cells` must be NULL or live cells; `out_mesh` writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mesh);
 
@@ -3396,6 +4308,7 @@ hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mes
  * # Safety
  * `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
  * `needed` NULL or writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
                                       uint32_t *out_sites,
@@ -3415,6 +4328,7 @@ hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
  * `needed` NULL or writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
                                  hw_metric metric_kind,
@@ -3430,6 +4344,7 @@ hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
 
 /**
  * The default SVG options: 800 pixels wide, filled cells, sites, no Delaunay edges.
+ * \ingroup voronoi
  */
 hw_svg_options hw_svg_options_default(void);
 
@@ -3442,6 +4357,7 @@ hw_svg_options hw_svg_options_default(void);
  * # Safety
  * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
  * `len` writable bytes; `needed` NULL or writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_svg(const hw_voronoi *voronoi,
                          const hw_voronoi_cells *cells,
@@ -3457,6 +4373,7 @@ hw_status hw_voronoi_svg(const hw_voronoi *voronoi,
  * # Safety
  * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `path` NULL
  * or NUL-terminated.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
                                const hw_voronoi_cells *cells,
@@ -3482,6 +4399,7 @@ hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
  * `xy` and `out_xy` must point to `2 * n_sites` doubles (readable, resp. writable; NULL only
  * when `n_sites` is 0); `clip_xy` to `2 * n_clip_vertices` doubles; the other outputs NULL or
  * writable.
+ * \ingroup voronoi
  */
 hw_status hw_voronoi_lloyd(const double *xy,
                            size_t n_sites,
@@ -3496,6 +4414,7 @@ hw_status hw_voronoi_lloyd(const double *xy,
 /**
  * Creates an empty structure, to build with the Euler operators (hw_winged_mvfs() first).
  * Returns NULL only if the allocation fails.
+ * \ingroup winged
  */
 hw_winged *hw_winged_new(void);
 
@@ -3516,6 +4435,7 @@ hw_winged *hw_winged_new(void);
  * # Safety
  * Array arguments must point to at least as many elements as their counts say (they may be NULL
  * when the count is 0); `out_winged` must be writable; `out_diagnostic` NULL or writable.
+ * \ingroup winged
  */
 hw_status hw_winged_from_indexed(const double *positions,
                                  size_t n_vertices,
@@ -3538,6 +4458,7 @@ hw_status hw_winged_from_indexed(const double *positions,
  * # Safety
  * As for hw_winged_from_indexed(); `edge_order` must point to `2 * n_edges` indices (NULL
  * when `n_edges` is 0).
+ * \ingroup winged
  */
 hw_status hw_winged_from_indexed_ordered(const double *positions,
                                          size_t n_vertices,
@@ -3557,6 +4478,7 @@ hw_status hw_winged_from_indexed_ordered(const double *positions,
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_winged` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_from_mesh(const hw_mesh *mesh, hw_winged **out_winged);
 
@@ -3572,6 +4494,7 @@ hw_status hw_winged_from_mesh(const hw_mesh *mesh, hw_winged **out_winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_mesh` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_to_mesh(const hw_winged *winged, hw_mesh **out_mesh);
 
@@ -3581,6 +4504,7 @@ hw_status hw_winged_to_mesh(const hw_winged *winged, hw_mesh **out_mesh);
  *
  * # Safety
  * `winged` must be NULL or a structure from this library not in use by another thread.
+ * \ingroup winged
  */
 void hw_winged_free(hw_winged *winged);
 
@@ -3589,6 +4513,7 @@ void hw_winged_free(hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_n_vertices(const hw_winged *winged);
 
@@ -3597,6 +4522,7 @@ size_t hw_winged_n_vertices(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_n_edges(const hw_winged *winged);
 
@@ -3605,6 +4531,7 @@ size_t hw_winged_n_edges(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_n_faces(const hw_winged *winged);
 
@@ -3614,6 +4541,7 @@ size_t hw_winged_n_faces(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_vertex_capacity(const hw_winged *winged);
 
@@ -3622,6 +4550,7 @@ size_t hw_winged_vertex_capacity(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_edge_capacity(const hw_winged *winged);
 
@@ -3630,6 +4559,7 @@ size_t hw_winged_edge_capacity(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 size_t hw_winged_face_capacity(const hw_winged *winged);
 
@@ -3638,6 +4568,7 @@ size_t hw_winged_face_capacity(const hw_winged *winged);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
 
@@ -3646,6 +4577,7 @@ bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
 
@@ -3654,6 +4586,7 @@ bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
 
@@ -3663,6 +4596,7 @@ bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_record` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_edge(const hw_winged *winged, hw_wedge e, hw_wedge_record *out_record);
 
@@ -3673,6 +4607,7 @@ hw_status hw_winged_edge(const hw_winged *winged, hw_wedge e, hw_wedge_record *o
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_records` and `out_len` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_edge_records(const hw_winged *winged,
                                  const hw_wedge_record **out_records,
@@ -3685,6 +4620,7 @@ hw_status hw_winged_edge_records(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
 
@@ -3694,6 +4630,7 @@ hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 hw_wedge hw_winged_face_edge(const hw_winged *winged, hw_wface f);
 
@@ -3702,6 +4639,7 @@ hw_wedge hw_winged_face_edge(const hw_winged *winged, hw_wface f);
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
+ * \ingroup winged
  */
 hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
 
@@ -3712,6 +4650,7 @@ hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+ * \ingroup winged
  */
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
@@ -3722,6 +4661,7 @@ hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+ * \ingroup winged
  */
 hw_status hw_winged_vertex_normal(const hw_winged *winged,
                                   hw_wvertex v,
@@ -3737,6 +4677,7 @@ hw_status hw_winged_vertex_normal(const hw_winged *winged,
  * # Safety
  * `winged` must be NULL or a live structure; `out_xyz` NULL or `len` writable doubles; `needed`
  * NULL or writable.
+ * \ingroup winged
  */
 hw_status hw_winged_normals(const hw_winged *winged,
                             hw_wnormals which,
@@ -3751,6 +4692,7 @@ hw_status hw_winged_normals(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure.
+ * \ingroup winged
  */
 hw_status hw_winged_check(const hw_winged *winged);
 
@@ -3765,6 +4707,7 @@ hw_status hw_winged_check(const hw_winged *winged);
  * # Safety
  * `winged` must be NULL or a live structure; `buf` NULL or `len` writable bytes; `needed` NULL
  * or writable.
+ * \ingroup winged
  */
 hw_status hw_winged_table(const hw_winged *winged,
                           hw_wtable which,
@@ -3780,6 +4723,7 @@ hw_status hw_winged_table(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out` writable.
+ * \ingroup winged
  */
 hw_status hw_wcirc_around_face(const hw_winged *winged,
                                hw_wface f,
@@ -3792,6 +4736,7 @@ hw_status hw_wcirc_around_face(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out` writable.
+ * \ingroup winged
  */
 hw_status hw_wcirc_around_vertex(const hw_winged *winged,
                                  hw_wvertex v,
@@ -3803,6 +4748,7 @@ hw_status hw_wcirc_around_vertex(const hw_winged *winged,
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ * \ingroup winged
  */
 bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
 
@@ -3811,6 +4757,7 @@ bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ * \ingroup winged
  */
 bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
 
@@ -3819,6 +4766,7 @@ bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
+ * \ingroup winged
  */
 bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
 
@@ -3830,6 +4778,7 @@ bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
  * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
  * `out_face` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_mvfs(hw_winged *winged,
                          const double *position,
@@ -3845,6 +4794,7 @@ hw_status hw_winged_mvfs(hw_winged *winged,
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
  * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
  * `out_vertex` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_mev(hw_winged *winged,
                         hw_wface face,
@@ -3862,6 +4812,7 @@ hw_status hw_winged_mev(hw_winged *winged,
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `out_edge`
  * and `out_face` writable.
+ * \ingroup winged
  */
 hw_status hw_winged_mef(hw_winged *winged,
                         hw_wface face,
@@ -3879,6 +4830,7 @@ hw_status hw_winged_mef(hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
+ * \ingroup winged
  */
 hw_status hw_winged_kev(hw_winged *winged, hw_wedge edge, hw_wvertex vertex);
 
@@ -3888,6 +4840,7 @@ hw_status hw_winged_kev(hw_winged *winged, hw_wedge edge, hw_wvertex vertex);
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
+ * \ingroup winged
  */
 hw_status hw_winged_kef(hw_winged *winged, hw_wedge edge, hw_wface kill);
 
@@ -3896,6 +4849,7 @@ hw_status hw_winged_kef(hw_winged *winged, hw_wedge edge, hw_wface kill);
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
+ * \ingroup winged
  */
 hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
 
@@ -3908,6 +4862,7 @@ hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
  * NULL or writable.
+ * \ingroup winged
  */
 hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps);
 
@@ -3917,6 +4872,7 @@ hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps)
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
  * doubles.
+ * \ingroup winged
  */
 hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *xyz);
 

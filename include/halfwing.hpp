@@ -612,7 +612,9 @@ class repair_report {
 /// What hw::repair_mesh() did to every input element (owns an hw_repair_fates).
 class repair_fates {
  public:
+  /// An empty object (owns nothing).
   repair_fates() = default;
+  /// Takes ownership of `raw` (from hw_repair_mesh()).
   explicit repair_fates(hw_repair_fates* raw) : raw_(raw) {}
 
   /// One list (see ::hw_fates_list): fates (::hw_fate) and ids of the input vertices and
@@ -629,7 +631,9 @@ class repair_fates {
     check(hw_repair_fates_counts(raw_.get(), &c));
     return c;
   }
+  /// The C object, for calls the wrapper does not cover. Still owned by this object.
   hw_repair_fates* get() const noexcept { return raw_.get(); }
+  /// Whether this object owns fates (false once moved from).
   explicit operator bool() const noexcept { return static_cast<bool>(raw_); }
 
  private:
@@ -1053,6 +1057,26 @@ class mesh {
     hw_repair_report* raw = nullptr;
     check(hw_mesh_stitch_borders(get(), tolerance, relative, &raw));
     return repair_report(raw);
+  }
+  /// Fills the hole whose boundary loop holds `h` (see hw_mesh_fill_hole()); returns the
+  /// triangles added. Throws hw::error (HW_ERR_REFUSED, mesh unchanged) when it cannot.
+  size_t fill_hole(hw_halfedge h) {
+    size_t faces = 0;
+    check(hw_mesh_fill_hole(get(), h, &faces));
+    return faces;
+  }
+  /// What fill_holes() did: holes filled and refused (left open), triangles added.
+  struct fill_holes_result {
+    size_t filled = 0;       ///< Holes closed.
+    size_t refused = 0;      ///< Holes within the bounds left open (see hw_mesh_fill_holes()).
+    size_t faces_added = 0;  ///< Triangles added in all.
+  };
+  /// Fills every hole within `options`' bounds (see hw_mesh_fill_holes()).
+  fill_holes_result fill_holes(const hw_fill_hole_options& options = hw_fill_hole_options_default()) {
+    fill_holes_result result;
+    check(hw_mesh_fill_holes(get(), &options, &result.filled, &result.refused,
+                             &result.faces_added));
+    return result;
   }
 
   /// Adds an isolated vertex.
@@ -1502,7 +1526,9 @@ class delaunay {
     raw_ = detail::owned<hw_delaunay, hw_delaunay_free>(raw);
   }
 
+  /// The number of triangles (see hw_delaunay_n_triangles()).
   std::size_t n_triangles() const { return hw_delaunay_n_triangles(get()); }
+  /// Whether the sites span a plane, a line, a point or nothing (see hw_delaunay_dimension()).
   hw_site_dimension dimension() const { return hw_delaunay_dimension(get()); }
 
   /// One index array of the triangulation (::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES,
@@ -1514,6 +1540,7 @@ class delaunay {
     return {data, n};
   }
 
+  /// The C object, for calls the wrapper does not cover. Still owned by this object.
   hw_delaunay* get() const noexcept { return raw_.get(); }
 
  private:

@@ -24,6 +24,7 @@ use super::voronoi::{
 /// Numbering as for ::hw_voronoi: sites keep their input index, a duplicated site is represented
 /// by the smallest index of its group, and the arrays are those of the same names in
 /// ::hw_voronoi_view() (the triangulation is the same one).
+/// \ingroup voronoi
 pub struct hw_delaunay {
     pub(crate) delaunay: Delaunay,
 }
@@ -71,6 +72,7 @@ pub(crate) fn delaunay_array(delaunay: &Delaunay, which: hw_voronoi_array) -> Op
 /// # Safety
 /// `xy` must point to `2 * n_sites` doubles (NULL only when `n_sites` is 0); `out_delaunay`
 /// writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_build(
     xy: *const f64,
@@ -93,6 +95,7 @@ pub unsafe extern "C" fn hw_delaunay_build(
 ///
 /// # Safety
 /// `delaunay` must be NULL or a triangulation from this library not in use by another thread.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_free(delaunay: *mut hw_delaunay) {
     // SAFETY: forwarded from the caller.
@@ -103,6 +106,7 @@ pub unsafe extern "C" fn hw_delaunay_free(delaunay: *mut hw_delaunay) {
 ///
 /// # Safety
 /// `delaunay` must be NULL or a live triangulation.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_n_triangles(delaunay: *const hw_delaunay) -> usize {
     // SAFETY: forwarded from the caller.
@@ -114,6 +118,7 @@ pub unsafe extern "C" fn hw_delaunay_n_triangles(delaunay: *const hw_delaunay) -
 ///
 /// # Safety
 /// `delaunay` must be NULL or a live triangulation.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_dimension(delaunay: *const hw_delaunay) -> hw_site_dimension {
     // SAFETY: forwarded from the caller.
@@ -132,6 +137,7 @@ pub unsafe extern "C" fn hw_delaunay_dimension(delaunay: *const hw_delaunay) -> 
 ///
 /// # Safety
 /// `delaunay` must be NULL or a live triangulation; `out_data` and `out_len` writable.
+/// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_view(
     delaunay: *const hw_delaunay,

@@ -19,6 +19,7 @@ use super::status::*;
 /// indices refer to the input face list, vertex indices to the input positions. Faces with fewer
 /// than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
 /// the edge, fan and area findings. Every list is sorted ascending.
+/// \ingroup mesh
 pub struct hw_diagnostic {
     pub(crate) diagnostic: Diagnostic,
 }
@@ -75,49 +76,67 @@ pub(crate) unsafe fn give_built<T: 'static>(
 /// ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
 /// lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
 /// one family passed where another is expected is refused, never read as a different list.
+/// \ingroup mesh
 pub type hw_diagnostic_list = u32;
 /// The first id list.
+/// \ingroup mesh
 pub const HW_DIAG_LIST_FIRST: hw_diagnostic_list = 16;
 /// Faces with fewer than 3 corners.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 16;
 /// Faces with a vertex index beyond the positions.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 17;
 /// Faces naming one vertex more than once.
+/// \ingroup mesh
 pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 18;
 /// Vertices with a NaN or infinite coordinate.
+/// \ingroup mesh
 pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 19;
 /// Vertices whose faces form more than one fan, faces being in one fan when they share an edge
 /// at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
 /// ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
+/// \ingroup mesh
 pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 20;
 /// Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
 /// face, but not listed here).
+/// \ingroup mesh
 pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 21;
 /// Faces with zero area.
+/// \ingroup mesh
 pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 22;
 /// Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
 /// `i`-th input face not listed here.
+/// \ingroup mesh
 pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 23;
 /// Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
 /// copies input vertex `ids[i]` (same position).
+/// \ingroup mesh
 pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 24;
 /// Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
 /// neighbours, or to turn a closed component outward).
+/// \ingroup mesh
 pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 25;
 /// The number of id lists.
+/// \ingroup mesh
 pub const HW_DIAG_LIST_COUNT: hw_diagnostic_list = 10;
 
 /// One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
 /// ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
 /// lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
+/// \ingroup mesh
 pub type hw_diagnostic_edges = u32;
 /// The first edge list.
+/// \ingroup mesh
 pub const HW_DIAG_EDGES_FIRST: hw_diagnostic_edges = 32;
 /// Edges used by three or more faces.
+/// \ingroup mesh
 pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 32;
 /// Edges whose two faces traverse them in the same direction.
+/// \ingroup mesh
 pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 33;
 /// The number of edge lists.
+/// \ingroup mesh
 pub const HW_DIAG_EDGES_COUNT: hw_diagnostic_edges = 2;
 
 /// A list of a diagnostic: where it lives in one, and its name.
@@ -174,6 +193,7 @@ fn edge_list(
 }
 
 /// The name of an id list ("isolated vertices", …) as static text; NULL for an unknown list.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_diagnostic_list_name(list: hw_diagnostic_list) -> *const std::ffi::c_char {
     entry(&ID_LISTS, HW_DIAG_LIST_FIRST, list).map_or(std::ptr::null(), |(_, name)| name.as_ptr())
@@ -181,6 +201,7 @@ pub extern "C" fn hw_diagnostic_list_name(list: hw_diagnostic_list) -> *const st
 
 /// The name of an edge list ("non-manifold edges (3+ faces)", …) as static text; NULL for an
 /// unknown list.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_diagnostic_edges_name(edges: hw_diagnostic_edges) -> *const std::ffi::c_char {
     entry(&EDGE_LISTS, HW_DIAG_EDGES_FIRST, edges)
@@ -194,6 +215,7 @@ pub extern "C" fn hw_diagnostic_edges_name(edges: hw_diagnostic_edges) -> *const
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed().
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnose_indexed(
     positions: *const f64,
@@ -224,6 +246,7 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or a diagnostic from this library, not in use by another thread.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
     // SAFETY: forwarded from the caller.
@@ -234,6 +257,7 @@ pub unsafe extern "C" fn hw_diagnostic_free(diagnostic: *mut hw_diagnostic) {
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic) -> bool {
     // SAFETY: forwarded from the caller.
@@ -249,6 +273,7 @@ pub unsafe extern "C" fn hw_diagnostic_is_clean(diagnostic: *const hw_diagnostic
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_ids` and `out_len` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_ids(
     diagnostic: *const hw_diagnostic,
@@ -268,6 +293,7 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_count` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge_count(
     diagnostic: *const hw_diagnostic,
@@ -294,6 +320,7 @@ pub unsafe extern "C" fn hw_diagnostic_edge_count(
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_vertices` must hold 2 writable `uint32_t`;
 /// `out_faces` and `out_n_faces` writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_edge(
     diagnostic: *const hw_diagnostic,
@@ -336,6 +363,7 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
 /// # Safety
 /// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
 /// writable.
+/// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_summary(
     diagnostic: *const hw_diagnostic,

@@ -12,6 +12,7 @@ use super::status::*;
 use super::threads::with_threads;
 
 /// The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
+/// \ingroup doctor
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_doctor_options {
@@ -47,6 +48,7 @@ impl From<hw_doctor_options> for DoctorOptions {
 }
 
 /// The doctor's default thresholds.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_doctor_options_default() -> hw_doctor_options {
     let d = DoctorOptions::default();
@@ -67,6 +69,7 @@ pub extern "C" fn hw_doctor_options_default() -> hw_doctor_options {
 /// those of the face list hw_mesh_write() would write: the mesh's own ids when nothing is
 /// deleted). Malformed faces are listed in the report's diagnostic and left out of every other
 /// finding. The report's size follows the findings, not the mesh.
+/// \ingroup doctor
 pub struct hw_doctor_report {
     report: DoctorReport,
     diagnostic: hw_diagnostic,
@@ -104,6 +107,7 @@ fn doctor_error(error: crate::doctor::DoctorError) -> FfiError {
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed(); `options` NULL or readable; `out_report` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_examine_indexed(
     positions: *const f64,
@@ -137,6 +141,7 @@ pub unsafe extern "C" fn hw_doctor_examine_indexed(
 ///
 /// # Safety
 /// `mesh` must be NULL or live; `options` NULL or readable; `out_report` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_examine_mesh(
     mesh: *const hw_mesh,
@@ -158,6 +163,7 @@ pub unsafe extern "C" fn hw_doctor_examine_mesh(
 ///
 /// # Safety
 /// `report` must be NULL or a report from this library, not in use by another thread.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_free(report: *mut hw_doctor_report) {
     // SAFETY: forwarded from the caller.
@@ -171,6 +177,7 @@ pub unsafe extern "C" fn hw_doctor_report_free(report: *mut hw_doctor_report) {
 ///
 /// # Safety
 /// `report` must be NULL or live.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_diagnostic(
     report: *const hw_doctor_report,
@@ -185,42 +192,57 @@ pub unsafe extern "C" fn hw_doctor_report_diagnostic(
 /// run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
 /// apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
 /// one family passed where another is expected is refused, never read as a different list.
+/// \ingroup doctor
 pub type hw_doctor_finding = u32;
 /// The first finding kind.
+/// \ingroup doctor
 pub const HW_DOCTOR_FINDING_FIRST: hw_doctor_finding = 64;
 /// Indices of small components (into hw_doctor_report_component()); one id per item.
+/// \ingroup doctor
 pub const HW_DOCTOR_SMALL_COMPONENTS: hw_doctor_finding = 64;
 /// Faces of a closed path along which the orientation flips (the surface is not orientable),
 /// each sharing an edge with the next and the last with the first; one id per item.
+/// \ingroup doctor
 pub const HW_DOCTOR_NON_ORIENTABLE_WITNESS: hw_doctor_finding = 65;
 /// Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
+/// \ingroup doctor
 pub const HW_DOCTOR_ZERO_LENGTH_EDGES: hw_doctor_finding = 66;
 /// Triangles with an angle below the needle threshold; one id per item.
+/// \ingroup doctor
 pub const HW_DOCTOR_NEEDLES: hw_doctor_finding = 67;
 /// Triangles with an angle above the cap threshold; one id per item.
+/// \ingroup doctor
 pub const HW_DOCTOR_CAPS: hw_doctor_finding = 68;
 /// Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
 /// first, then the two faces, ascending).
+/// \ingroup doctor
 pub const HW_DOCTOR_FOLDED_EDGES: hw_doctor_finding = 69;
 /// Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
+/// \ingroup doctor
 pub const HW_DOCTOR_LONG_EDGES: hw_doctor_finding = 70;
 /// Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
 /// lowest vertex at that position).
+/// \ingroup doctor
 pub const HW_DOCTOR_DUPLICATE_POSITIONS: hw_doctor_finding = 71;
 /// Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
 /// vertex, then the first vertex of its group).
+/// \ingroup doctor
 pub const HW_DOCTOR_NEAR_DUPLICATE_VERTICES: hw_doctor_finding = 72;
 /// Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
 /// then the lowest such face).
+/// \ingroup doctor
 pub const HW_DOCTOR_DUPLICATE_FACES: hw_doctor_finding = 73;
 /// Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
 /// the edge's two ends, smaller first, and the edge's face).
+/// \ingroup doctor
 pub const HW_DOCTOR_T_VERTICES: hw_doctor_finding = 74;
 /// Pairs of faces that intersect other than along the vertices and edges they share, decided
 /// exactly (polygons as their triangles; touching counts; triangles with exactly collinear
 /// corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+/// \ingroup doctor
 pub const HW_DOCTOR_SELF_INTERSECTIONS: hw_doctor_finding = 75;
 /// The number of finding kinds.
+/// \ingroup doctor
 pub const HW_DOCTOR_FINDING_COUNT: hw_doctor_finding = 12;
 
 /// The kind whose value is `kind`, if any.
@@ -236,6 +258,7 @@ pub(super) fn finding_kind(kind: hw_doctor_finding) -> Result<Finding, FfiError>
 
 /// The name of a finding kind ("needles", "T-vertices", …) as static text; NULL for an unknown
 /// kind.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_doctor_finding_name(kind: hw_doctor_finding) -> *const std::ffi::c_char {
     finding_at(kind).map_or(std::ptr::null(), |kind| kind.c_name().as_ptr())
@@ -247,6 +270,7 @@ pub extern "C" fn hw_doctor_finding_name(kind: hw_doctor_finding) -> *const std:
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_ids`, `out_n_items` and `out_ids_per_item` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_finding(
     report: *const hw_doctor_report,
@@ -276,12 +300,18 @@ pub unsafe extern "C" fn hw_doctor_report_finding(
 /// `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
 /// `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
 /// volume, no self-intersection and no zero-area face.
+/// \ingroup doctor
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct hw_doctor_verdict {
+    /// No non-manifold edge or vertex and no malformed face.
     pub manifold: bool,
+    /// No boundary.
     pub closed: bool,
+    /// Every component orientable and consistently oriented.
     pub oriented: bool,
+    /// All three, finite coordinates, every component enclosing a positive volume, no
+    /// self-intersection and no zero-area face.
     pub closed_polyhedron: bool,
     /// Why it is not a closed polyhedron (the first reason, static text), NULL when it is one.
     pub reason: *const std::ffi::c_char,
@@ -291,6 +321,7 @@ pub struct hw_doctor_verdict {
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_verdict` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_verdict(
     report: *const hw_doctor_report,
@@ -315,24 +346,32 @@ pub unsafe extern "C" fn hw_doctor_report_verdict(
 }
 
 /// One connected component (faces joined through shared edges).
+/// \ingroup doctor
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct hw_doctor_component {
     /// Its lowest face.
     pub first_face: u32,
+    /// Its faces.
     pub n_faces: usize,
+    /// Its distinct edges.
     pub n_edges: usize,
     /// Distinct vertices (one shared with another component through a non-manifold vertex
     /// counts in both).
     pub n_vertices: usize,
+    /// Its boundary loops (0 when it is closed).
     pub n_boundary_loops: usize,
     /// V − E + F.
     pub euler_characteristic: i64,
     /// The genus of an orientable 2-manifold component; -1 for any other.
     pub genus: i64,
+    /// No boundary edge (every edge has two or more faces).
     pub closed: bool,
+    /// No non-manifold edge or vertex.
     pub manifold: bool,
+    /// Its faces can be oriented so that every two-face edge is walked both ways.
     pub orientable: bool,
+    /// Every two-face edge is walked both ways as given.
     pub consistently_oriented: bool,
     /// 1 when a closed, manifold, consistently oriented component faces outward (encloses a
     /// positive volume), -1 inward, 0 otherwise or when it encloses no volume.
@@ -351,6 +390,7 @@ pub struct hw_doctor_component {
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_count` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_component_count(
     report: *const hw_doctor_report,
@@ -364,6 +404,7 @@ pub unsafe extern "C" fn hw_doctor_report_component_count(
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_component` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_component(
     report: *const hw_doctor_report,
@@ -403,6 +444,7 @@ pub unsafe extern "C" fn hw_doctor_report_component(
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_count` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_boundary_loop_count(
     report: *const hw_doctor_report,
@@ -418,6 +460,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop_count(
 ///
 /// # Safety
 /// `report` must be NULL or live; every output writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
     report: *const hw_doctor_report,
@@ -451,6 +494,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_count` writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
     report: *const hw_doctor_report,
@@ -466,6 +510,7 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
 ///
 /// # Safety
 /// `report` must be NULL or live; every output writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_vertex_fan(
     report: *const hw_doctor_report,
@@ -507,6 +552,7 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fan(
 ///
 /// # Safety
 /// `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_text(
     report: *const hw_doctor_report,
@@ -523,6 +569,7 @@ pub unsafe extern "C" fn hw_doctor_report_text(
 ///
 /// # Safety
 /// As for hw_doctor_report_text().
+/// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_json(
     report: *const hw_doctor_report,

@@ -1,8 +1,10 @@
 //! Repairs: merging vertices, removing duplicate faces, unreferenced vertices and small
 //! components, orienting faces, repairing non-manifold edges and splitting non-manifold vertices
 //! of a soup (`hw_soup_*`), stitching a mesh's borders (`hw_mesh_stitch_borders`),
-//! each with a report of what changed (`hw_repair_report`).
+//! each with a report of what changed (`hw_repair_report`), and filling a mesh's holes
+//! (`hw_mesh_fill_hole`, `hw_mesh_fill_holes`).
 
+use crate::repair::{FillError, HoleFillOptions, fill_hole, fill_holes};
 use crate::repair::{
     NonManifoldEdges, RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices,
     orient_faces, remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices,
@@ -12,6 +14,7 @@ use crate::soup::PolygonSoup;
 
 use super::boundary::{Out, arg_mut, arg_ref, give_view, guard, guard_void};
 use super::edit::hw_index_maps;
+use super::elements::hw_halfedge;
 use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
@@ -48,8 +51,10 @@ pub const HW_REPAIR_DUPLICATE_FACES: hw_repair_list = 3;
 pub const HW_REPAIR_STITCHED_HALFEDGES: hw_repair_list = 4;
 /// The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
 /// count before the repair) copies vertex `ids[i]`.
+/// \ingroup repair
 pub const HW_REPAIR_VERTEX_COPIES: hw_repair_list = 5;
 /// Faces whose corner order was reversed.
+/// \ingroup repair
 pub const HW_REPAIR_REORIENTED_FACES: hw_repair_list = 6;
 
 /// Which components hw_soup_remove_small_components() removes.
@@ -63,10 +68,13 @@ pub const HW_SMALL_BY_FACE_COUNT: hw_small_components = 0;
 pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
 
 /// What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
+/// \ingroup repair
 pub type hw_non_manifold_edges = u32;
 /// Keep every face and cut the surface along the edge (copies of its ends).
+/// \ingroup repair
 pub const HW_NON_MANIFOLD_EDGES_CUT: hw_non_manifold_edges = 0;
 /// Keep faces in order while the edge has at most one face each way; remove the others.
+/// \ingroup repair
 pub const HW_NON_MANIFOLD_EDGES_REMOVE_FACES: hw_non_manifold_edges = 1;
 
 impl From<RepairError> for FfiError {
@@ -75,6 +83,18 @@ impl From<RepairError> for FfiError {
             RepairError::Build(build) => build.into(),
             other => FfiError::invalid_input(other.to_string()),
         }
+    }
+}
+
+impl From<FillError> for FfiError {
+    fn from(error: FillError) -> Self {
+        let status = match &error {
+            FillError::Handle(_) => HW_ERR_INVALID_HANDLE,
+            FillError::BadOption { .. } => HW_ERR_INVALID_INPUT,
+            FillError::Edit(e) => return FfiError::from(*e),
+            _ => HW_ERR_REFUSED,
+        };
+        FfiError::new(status, error.to_string())
     }
 }
 
@@ -266,6 +286,7 @@ pub unsafe extern "C" fn hw_soup_remove_small_components(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_orient_faces(
     soup: *mut hw_soup,
@@ -284,6 +305,7 @@ pub unsafe extern "C" fn hw_soup_orient_faces(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_repair_non_manifold_edges(
     soup: *mut hw_soup,
@@ -311,6 +333,7 @@ pub unsafe extern "C" fn hw_soup_repair_non_manifold_edges(
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_soup_split_non_manifold_vertices(
     soup: *mut hw_soup,
@@ -425,4 +448,109 @@ pub unsafe extern "C" fn hw_repair_report_maps(
 pub unsafe extern "C" fn hw_repair_report_free(report: *mut hw_repair_report) {
     // SAFETY: forwarded from the caller.
     guard_void(|| unsafe { free_handle(report, "hw_repair_report") });
+}
+
+/// Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+/// \ingroup repair
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct hw_fill_hole_options {
+    /// Holes with more boundary edges than this are left open.
+    pub max_edges: usize,
+    /// Holes whose perimeter exceeds this are left open; infinity for no bound.
+    pub max_perimeter: f64,
+}
+
+/// Options that fill every hole: no bound on edges or perimeter.
+/// \ingroup repair
+#[unsafe(no_mangle)]
+pub extern "C" fn hw_fill_hole_options_default() -> hw_fill_hole_options {
+    let options = HoleFillOptions::default();
+    hw_fill_hole_options {
+        max_edges: options.max_edges,
+        max_perimeter: options.max_perimeter,
+    }
+}
+
+/// Fills the hole whose boundary loop holds half-edge `h` with triangles on its corners (no new
+/// vertex): Liepa's minimum-weight triangulation up to 100 edges, beyond that a triangulation
+/// on the hole's best-fit plane improved by edge flips. `*out_faces_added` (when not NULL)
+/// receives the number of new triangles (edges − 2). New faces, edges and corners get zero
+/// attributes. `HW_ERR_INVALID_HANDLE` for a bad `h`; `HW_ERR_REFUSED`, the mesh unchanged,
+/// when `h` has a face, the loop passes twice through a vertex, every triangulation needs an
+/// edge that exists already, a hole of more than 100 edges does not project onto a simple
+/// polygon, or the fill would fold (a new triangle degenerate, or turned more than 150° from a
+/// face beside it).
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_faces_added` NULL or writable.
+/// \ingroup repair
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_fill_hole(
+    mesh: *mut hw_mesh,
+    h: hw_halfedge,
+    out_faces_added: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let out = Out::optional(out_faces_added);
+        // SAFETY: forwarded from the caller.
+        let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
+        let filled = fill_hole(mesh, h.into())?;
+        if let Some(out) = out {
+            // SAFETY: writable per the caller.
+            unsafe { out.write(filled.faces.len()) };
+        }
+        Ok(())
+    })
+}
+
+/// Fills every hole within `options`' bounds (NULL: every hole) as hw_mesh_fill_hole() does;
+/// holes it refuses are left open. `*out_filled`, `*out_refused` and `*out_faces_added` (each
+/// when not NULL) receive the holes filled, the holes refused and the triangles added.
+/// `HW_ERR_INVALID_INPUT`, the mesh unchanged, for a NaN or negative `max_perimeter`.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `options` NULL or readable; the
+/// outputs NULL or writable.
+/// \ingroup repair
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_fill_holes(
+    mesh: *mut hw_mesh,
+    options: *const hw_fill_hole_options,
+    out_filled: *mut usize,
+    out_refused: *mut usize,
+    out_faces_added: *mut usize,
+) -> hw_status {
+    guard(|| {
+        let outs = [
+            Out::optional(out_filled),
+            Out::optional(out_refused),
+            Out::optional(out_faces_added),
+        ];
+        // SAFETY: forwarded from the caller.
+        let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
+        // SAFETY: NULL or readable per the caller.
+        let raw = unsafe { options.as_ref() }
+            .copied()
+            .unwrap_or_else(|| hw_fill_hole_options_default());
+        let report = fill_holes(
+            mesh,
+            &HoleFillOptions {
+                max_edges: raw.max_edges,
+                max_perimeter: raw.max_perimeter,
+            },
+        )?;
+        let values = [
+            report.filled.len(),
+            report.refused.len(),
+            report.faces_added(),
+        ];
+        for (out, value) in outs.into_iter().zip(values) {
+            if let Some(out) = out {
+                // SAFETY: writable per the caller.
+                unsafe { out.write(value) };
+            }
+        }
+        Ok(())
+    })
 }

@@ -19,6 +19,7 @@ use super::status::*;
 
 /// Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
 /// duplicates only and keeps every component.
+/// \ingroup repair
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_repair_options {
@@ -41,6 +42,7 @@ pub struct hw_repair_options {
 }
 
 /// The default options of hw_repair_mesh().
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_repair_options_default() -> hw_repair_options {
     hw_repair_options {
@@ -89,6 +91,7 @@ impl TryFrom<&hw_repair_options> for RepairOptions {
 
 /// What hw_repair_mesh() did to every input element. Opaque; read with hw_repair_fates_list()
 /// and hw_repair_fates_counts(), release with hw_repair_fates_free().
+/// \ingroup repair
 pub struct hw_repair_fates {
     fates: RepairFates,
     vertex_kinds: Vec<u32>,
@@ -98,40 +101,56 @@ pub struct hw_repair_fates {
 }
 
 /// The fate of an element, in the kinds lists of hw_repair_fates_list().
+/// \ingroup repair
 pub type hw_fate = u32;
 /// Kept: its id is the output element.
+/// \ingroup repair
 pub const HW_FATE_KEPT: hw_fate = 0;
 /// A vertex merged into another: its id is the output vertex it went into.
+/// \ingroup repair
 pub const HW_FATE_MERGED: hw_fate = 1;
 /// A face kept, reversed: its id is the output face.
+/// \ingroup repair
 pub const HW_FATE_REVERSED: hw_fate = 2;
 /// A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
+/// \ingroup repair
 pub const HW_FATE_COLLAPSED: hw_fate = 3;
 /// A face removed as a duplicate: its id is the input face kept in its place.
+/// \ingroup repair
 pub const HW_FATE_DUPLICATE: hw_fate = 4;
 /// Removed: a face the repairing build could not keep, or a vertex with a non-finite
 /// coordinate (id `UINT32_MAX`).
+/// \ingroup repair
 pub const HW_FATE_UNBUILDABLE: hw_fate = 5;
 /// Removed with a small component (id `UINT32_MAX`).
+/// \ingroup repair
 pub const HW_FATE_SMALL_COMPONENT: hw_fate = 6;
 /// A vertex removed because no kept face names it (id `UINT32_MAX`).
+/// \ingroup repair
 pub const HW_FATE_UNREFERENCED: hw_fate = 7;
 
 /// One list of hw_repair_fates_list().
+/// \ingroup repair
 pub type hw_fates_list = u32;
 /// The ::hw_fate of every input vertex.
+/// \ingroup repair
 pub const HW_FATES_VERTEX_KINDS: hw_fates_list = 0;
 /// The id that goes with every input vertex's fate.
+/// \ingroup repair
 pub const HW_FATES_VERTEX_IDS: hw_fates_list = 1;
 /// The ::hw_fate of every input face.
+/// \ingroup repair
 pub const HW_FATES_FACE_KINDS: hw_fates_list = 2;
 /// The id that goes with every input face's fate.
+/// \ingroup repair
 pub const HW_FATES_FACE_IDS: hw_fates_list = 3;
 /// Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
 /// vertex, by output id.
+/// \ingroup repair
 pub const HW_FATES_ADDED_VERTICES: hw_fates_list = 4;
 
 /// The counts of hw_repair_fates_counts().
+/// \ingroup repair
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct hw_repair_fate_counts {
@@ -211,6 +230,7 @@ impl hw_repair_fates {
 /// # Safety
 /// `soup` NULL or live; `options` NULL or readable; `out_mesh` writable; `out_fates` NULL or
 /// writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_mesh(
     soup: *const hw_soup,
@@ -242,6 +262,7 @@ pub unsafe extern "C" fn hw_repair_mesh(
 ///
 /// # Safety
 /// `fates` NULL or live; `out_ids` and `out_len` writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_fates_list(
     fates: *const hw_repair_fates,
@@ -271,6 +292,7 @@ pub unsafe extern "C" fn hw_repair_fates_list(
 ///
 /// # Safety
 /// `fates` NULL or live; `out_counts` writable.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_fates_counts(
     fates: *const hw_repair_fates,
@@ -310,6 +332,7 @@ pub unsafe extern "C" fn hw_repair_fates_counts(
 ///
 /// # Safety
 /// `fates` NULL or fates from this library, not in use by another thread.
+/// \ingroup repair
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_repair_fates_free(fates: *mut hw_repair_fates) {
     // SAFETY: forwarded from the caller.

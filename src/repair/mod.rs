@@ -4,7 +4,8 @@
 //! On indexed face lists ([`PolygonSoup`](crate::soup::PolygonSoup)): [`merge_vertices`] (exact and near duplicates),
 //! [`remove_duplicate_faces`], [`remove_unreferenced_vertices`] and
 //! [`remove_small_components`], [`orient_faces`], [`repair_non_manifold_edges`] and
-//! [`split_non_manifold_vertices`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`].
+//! [`split_non_manifold_vertices`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`], and
+//! [`fill_hole`] / [`fill_holes`], which close boundary loops with triangles.
 //! The doctor's detection serves them: what it lists as duplicates, unreferenced vertices or
 //! small components is what the repairs remove.
 //!
@@ -19,6 +20,7 @@
 //! repair joins it as one [`RepairStep`].
 
 mod fates;
+mod fill_hole;
 mod merge_vertices;
 mod orient_faces;
 mod remove_duplicate_faces;
@@ -32,6 +34,10 @@ mod stitch_borders;
 mod tolerance;
 
 pub use fates::{FaceFate, Removal, VertexFate};
+pub use fill_hole::{
+    DEGENERATE_RATIO, EXACT_CORNERS_MAX, FOLD_ANGLE_DEGREES, FillError, FilledHole,
+    HoleFillOptions, HoleFillReport, fill_hole, fill_holes,
+};
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;
 pub use remove_duplicate_faces::remove_duplicate_faces;

@@ -14,6 +14,7 @@ mod triangulate;
 
 pub use garbage::IndexMaps;
 pub(crate) use garbage::compaction_map;
+pub(crate) use triangulate::{JoinedCorners, chords_of};
 
 use super::Mesh;
 use super::circulators::{HalfedgeWalk, Step};

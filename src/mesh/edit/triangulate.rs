@@ -57,7 +57,20 @@ impl Mesh {
             );
         }
         chords_of(&triangles, n as u32, &mut chords);
-        let needed_edges = (n - 3) as u64;
+        self.cut_along_chords(f, loop_, &chords)
+    }
+
+    /// Cuts face `f` into triangles along `chords`, pairs `(a, c)`, `a < c`, of corners that
+    /// join no vertices an edge joins (see [`JoinedCorners::allows`]) and that nest, as
+    /// [`chords_of`] gives for a triangulation of the face's ring of corners. `into[k]` is the
+    /// half-edge of `f` into corner `k`. Returns the faces, `f` first.
+    pub(crate) fn cut_along_chords(
+        &mut self,
+        f: FaceId,
+        mut into: Vec<HalfedgeId>,
+        chords: &[(u32, u32)],
+    ) -> Result<Vec<FaceId>, EditError> {
+        let needed_edges = chords.len() as u64;
         if self.origin.len() as u64 + 2 * needed_edges >= u64::from(u32::MAX)
             || self.face_halfedge.len() as u64 + needed_edges >= u64::from(u32::MAX)
         {
@@ -68,10 +81,11 @@ impl Mesh {
         // A chord (a, c), a < c, splits `f` from corner a to corner c: the new face takes the
         // corners between them, and `f` the rest, where the new half-edge a → c leads into c.
         // Taking the chords from the shortest span up, every chord within (a, c) has been cut
-        // already, so the new face is a triangle. `into[k]` is the half-edge of `f` into k.
+        // already, so the new face is a triangle.
+        let mut chords = chords.to_vec();
         chords.sort_unstable_by_key(|&(a, c)| c - a);
-        let mut into = loop_;
-        let mut faces = vec![f];
+        let mut faces = Vec::with_capacity(chords.len() + 1);
+        faces.push(f);
         for &(a, c) in &chords {
             // The chords passed `JoinedCorners::allows` and nest: `split_face`'s checks hold.
             let new_into_c = self.cut_face(into[a as usize], into[c as usize])?;
@@ -84,7 +98,7 @@ impl Mesh {
 
 /// Sets `chords` to the diagonals `(a, c)`, `a < c`, of a triangulation of the ring of corners
 /// `0..n`: the triangle sides that are not sides of the ring, each once.
-fn chords_of(triangles: &[[u32; 3]], n: u32, chords: &mut Vec<(u32, u32)>) {
+pub(crate) fn chords_of(triangles: &[[u32; 3]], n: u32, chords: &mut Vec<(u32, u32)>) {
     chords.clear();
     for t in triangles {
         for k in 0..3 {
@@ -101,7 +115,7 @@ fn chords_of(triangles: &[[u32; 3]], n: u32, chords: &mut Vec<(u32, u32)>) {
 
 /// Which corners of a face may not be joined by a new edge: those whose vertices an edge
 /// already joins, and two corners of one vertex.
-struct JoinedCorners<'a> {
+pub(crate) struct JoinedCorners<'a> {
     vertices: &'a [VertexId],
     /// The pairs `(u, v)`, `u < v`, of the face's vertices that an edge joins.
     edges: HashSet<(u32, u32)>,
@@ -113,7 +127,7 @@ impl<'a> JoinedCorners<'a> {
     /// The edges among the face's `vertices` (corner k at `vertices[k]`), from every fan: one
     /// scan of all half-edges when some vertex may have fans its walk misses, else a walk round
     /// each vertex.
-    fn new(mesh: &Mesh, vertices: &'a [VertexId]) -> Self {
+    pub(crate) fn new(mesh: &Mesh, vertices: &'a [VertexId]) -> Self {
         let n = vertices.len();
         let mut corners_of: HashMap<u32, Vec<u32>> = HashMap::with_capacity(n);
         for (k, v) in vertices.iter().enumerate() {
@@ -172,7 +186,7 @@ impl<'a> JoinedCorners<'a> {
     }
 
     /// Up to `count` corners that every other corner may be joined to, first ones first.
-    fn free_corners(&self, count: usize) -> Vec<u32> {
+    pub(crate) fn free_corners(&self, count: usize) -> Vec<u32> {
         (0..self.blocked.len() as u32)
             .filter(|&k| !self.blocked[k as usize])
             .take(count)
@@ -181,12 +195,18 @@ impl<'a> JoinedCorners<'a> {
 
     /// Whether new edges may be cut along `chords` (pairs of corners): none joins a vertex to
     /// itself or two vertices an edge or another chord joins.
-    fn allows(&self, chords: &[(u32, u32)]) -> bool {
+    pub(crate) fn allows(&self, chords: &[(u32, u32)]) -> bool {
         let mut cut = HashSet::with_capacity(chords.len());
         chords.iter().all(|&(a, c)| {
             let (u, v) = (self.vertices[a as usize].0, self.vertices[c as usize].0);
-            let pair = (u.min(v), u.max(v));
-            u != v && !self.edges.contains(&pair) && cut.insert(pair)
+            self.may_join(a, c) && cut.insert((u.min(v), u.max(v)))
         })
+    }
+
+    /// Whether corners `a` and `c` may be joined by a new edge: they are two vertices no edge
+    /// joins.
+    pub(crate) fn may_join(&self, a: u32, c: u32) -> bool {
+        let (u, v) = (self.vertices[a as usize].0, self.vertices[c as usize].0);
+        u != v && !self.edges.contains(&(u.min(v), u.max(v)))
     }
 }

@@ -1,0 +1,237 @@
+//! Triangulating a long hole in O(n log n): its ring of corners is projected onto its best-fit
+//! plane (across its Newell normal) and triangulated there by the crate's polygon sweep; when
+//! the projection is a simple polygon no triangle is inverted in it, so none faces against the
+//! others. Edge flips then bring the triangles closer to the surface a non-planar hole spans.
+
+use std::collections::HashMap;
+
+use robust::{Coord, orient2d};
+
+use super::geometry::{angle_between, cross, dot, sub, triangle_normal, unit};
+use crate::geom::{PolygonOutcome, PolygonTriangulator, newell_vector};
+use crate::mesh::{JoinedCorners, chords_of};
+
+/// Flips tried per corner at most: each flip lowers the largest angle between the normals of
+/// the two triangles and their four neighbours, and the cap keeps the pass linear.
+const FLIPS_PER_CORNER: usize = 8;
+
+/// Why the projection cannot be used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum ProjectionRefusal {
+    /// The ring has no area (Newell vector zero or not finite).
+    NoPlane,
+    /// The projected ring crosses or touches itself.
+    NotSimple,
+    /// Every triangulation tried needs a diagonal joining two vertices an edge joins already.
+    Joined,
+}
+
+/// The triangles (corner indices, in the ring's winding) of the ring `points`, or why none.
+pub(super) fn projected_triangles(
+    points: &[[f64; 3]],
+    rim_normals: &[[f64; 3]],
+    joined: &JoinedCorners,
+) -> Result<Vec<[u32; 3]>, ProjectionRefusal> {
+    let n = points.len();
+    let normal = unit(newell_vector(points.iter().copied()));
+    if normal == [0.0; 3] {
+        return Err(ProjectionRefusal::NoPlane);
+    }
+    // An orthonormal frame (u, v, normal): the projected ring winds counter-clockwise.
+    let helper = if normal[0].abs() < 0.6 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let u = unit(cross(helper, normal));
+    let v = cross(normal, u);
+    let origin = points[0];
+    let flat: Vec<[f64; 3]> = points
+        .iter()
+        .map(|&p| {
+            let d = sub(p, origin);
+            [dot(d, u), dot(d, v), 0.0]
+        })
+        .collect();
+    let mut triangles = Vec::with_capacity(n - 2);
+    let mut chords = Vec::with_capacity(n - 3);
+    let outcome = PolygonTriangulator::new().triangulate_choosing(
+        &flat,
+        &joined.free_corners(2),
+        &mut triangles,
+        |candidate| {
+            chords_of(candidate, n as u32, &mut chords);
+            joined.allows(&chords)
+        },
+    );
+    match outcome {
+        None => return Err(ProjectionRefusal::Joined),
+        Some(PolygonOutcome::Exact) => {}
+        Some(_) => return Err(ProjectionRefusal::NotSimple),
+    }
+    Flips::new(points, &flat, rim_normals, triangles).run(joined)
+}
+
+/// A triangulation of the ring being improved by flips.
+struct Flips<'a> {
+    points: &'a [[f64; 3]],
+    flat: &'a [[f64; 3]],
+    rim_normals: &'a [[f64; 3]],
+    triangles: Vec<[u32; 3]>,
+    normals: Vec<[f64; 3]>,
+    /// Directed side `(u, v)` → the triangle holding it.
+    sides: HashMap<(u32, u32), usize>,
+}
+
+impl<'a> Flips<'a> {
+    fn new(
+        points: &'a [[f64; 3]],
+        flat: &'a [[f64; 3]],
+        rim_normals: &'a [[f64; 3]],
+        triangles: Vec<[u32; 3]>,
+    ) -> Self {
+        let mut sides = HashMap::with_capacity(3 * triangles.len());
+        let mut normals = Vec::with_capacity(triangles.len());
+        for (t, tri) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                sides.insert((tri[k], tri[(k + 1) % 3]), t);
+            }
+            normals.push(
+                triangle_normal(
+                    points[tri[0] as usize],
+                    points[tri[1] as usize],
+                    points[tri[2] as usize],
+                )
+                .0,
+            );
+        }
+        Flips {
+            points,
+            flat,
+            rim_normals,
+            triangles,
+            normals,
+            sides,
+        }
+    }
+
+    fn is_rim_side(&self, a: u32, b: u32) -> bool {
+        let n = self.points.len() as u32;
+        b == (a + 1) % n
+    }
+
+    /// The normal of the face across the directed side `(a, b)` of a triangle: the rim face
+    /// (zero when there is none) or the triangle holding `(b, a)`.
+    fn across(&self, a: u32, b: u32) -> [f64; 3] {
+        if self.is_rim_side(a, b) {
+            self.rim_normals[a as usize]
+        } else {
+            self.normals[self.sides[&(b, a)]]
+        }
+    }
+
+    /// Largest angle between `normal` and the faces across the sides `(a, b)`.
+    fn worst(&self, normal: [f64; 3], sides: [(u32, u32); 2]) -> f64 {
+        sides
+            .iter()
+            .map(|&(a, b)| self.across(a, b))
+            .filter(|&m| m != [0.0; 3])
+            .map(|m| angle_between(normal, m))
+            .fold(0.0, f64::max)
+    }
+
+    fn flat_orient(&self, a: u32, b: u32, c: u32) -> f64 {
+        let p = |k: u32| {
+            let q = self.flat[k as usize];
+            Coord { x: q[0], y: q[1] }
+        };
+        orient2d(p(a), p(b), p(c))
+    }
+
+    /// The corner of triangle `t` after side `(a, b)`.
+    fn apex(&self, t: usize, a: u32) -> u32 {
+        let tri = self.triangles[t];
+        let k = tri
+            .iter()
+            .position(|&c| c == a)
+            .expect("a corner of the triangle");
+        tri[(k + 2) % 3]
+    }
+
+    /// Flips the chord `(a, c)` when that keeps both triangles proper in the projection, cuts
+    /// no joined vertices and lowers the largest angle around the two triangles.
+    fn try_flip(&mut self, a: u32, c: u32, joined: &JoinedCorners) -> bool {
+        let (Some(&t1), Some(&t2)) = (self.sides.get(&(a, c)), self.sides.get(&(c, a))) else {
+            return false;
+        };
+        // t1 = a c b, t2 = c a d; the quad is a d c b, the new chord b d.
+        let (b, d) = (self.apex(t1, a), self.apex(t2, c));
+        if self.sides.contains_key(&(b, d))
+            || self.sides.contains_key(&(d, b))
+            || !joined.may_join(b, d)
+            || self.flat_orient(a, d, b) <= 0.0
+            || self.flat_orient(d, c, b) <= 0.0
+        {
+            return false;
+        }
+        let p = |k: u32| self.points[k as usize];
+        let before = angle_between(self.normals[t1], self.normals[t2])
+            .max(self.worst(self.normals[t1], [(c, b), (b, a)]))
+            .max(self.worst(self.normals[t2], [(a, d), (d, c)]));
+        let (n1, _) = triangle_normal(p(a), p(d), p(b));
+        let (n2, _) = triangle_normal(p(d), p(c), p(b));
+        if super::folds::is_degenerate(p(a), p(d), p(b))
+            || super::folds::is_degenerate(p(d), p(c), p(b))
+        {
+            return false;
+        }
+        let after = angle_between(n1, n2)
+            .max(self.worst(n1, [(a, d), (b, a)]))
+            .max(self.worst(n2, [(d, c), (c, b)]));
+        if after >= before * (1.0 - 1e-9) {
+            return false;
+        }
+        for side in [(a, c), (c, a), (c, b), (b, a), (a, d), (d, c)] {
+            self.sides.remove(&side);
+        }
+        self.triangles[t1] = [a, d, b];
+        self.triangles[t2] = [d, c, b];
+        self.normals[t1] = n1;
+        self.normals[t2] = n2;
+        for (t, tri) in [(t1, [a, d, b]), (t2, [d, c, b])] {
+            for k in 0..3 {
+                self.sides.insert((tri[k], tri[(k + 1) % 3]), t);
+            }
+        }
+        true
+    }
+
+    fn run(mut self, joined: &JoinedCorners) -> Result<Vec<[u32; 3]>, ProjectionRefusal> {
+        let mut budget = FLIPS_PER_CORNER * self.points.len();
+        let mut stack: Vec<(u32, u32)> = self
+            .sides
+            .keys()
+            .filter(|&&(a, c)| a < c && !self.is_rim_side(a, c) && !self.is_rim_side(c, a))
+            .copied()
+            .collect();
+        stack.sort_unstable();
+        while let Some((a, c)) = stack.pop() {
+            if budget == 0 {
+                break;
+            }
+            let t1 = self.sides.get(&(a, c)).copied();
+            if t1.is_none() || !self.try_flip(a, c, joined) {
+                continue;
+            }
+            budget -= 1;
+            let t1 = t1.expect("checked");
+            let [_, d, b] = self.triangles[t1];
+            for (x, y) in [(a, d), (d, c), (c, b), (b, a)] {
+                if !self.is_rim_side(x, y) && !self.is_rim_side(y, x) {
+                    stack.push((x, y));
+                }
+            }
+        }
+        Ok(self.triangles)
+    }
+}
