@@ -79,3 +79,31 @@ fn every_vertex_repair_copies_is_used_by_a_face() {
     assert_eq!(diagnostic.isolated_vertices, Vec::<u32>::new());
     assert_eq!(mesh.isolated_vertices(), Vec::<u32>::new());
 }
+
+/// A clean closed surface facing inward comes out facing outward under Repair, and Strict and
+/// Skip keep it as it is. Before: a list with no defect took the direct route, which never
+/// turned closed components outward.
+#[test]
+fn a_clean_inside_out_tetrahedron_is_turned_outward() {
+    use halfwing::soup::FaceList;
+    let positions = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    // Every face clockwise seen from outside.
+    let inward = [0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0];
+    let list = FaceList::triangles(&positions, &inward);
+    let (mesh, diagnostic) = Mesh::from_face_list(&list, BuildPolicy::Repair).unwrap();
+    mesh.check().unwrap();
+    assert_eq!(diagnostic.reoriented_faces, vec![0, 1, 2, 3]);
+    // The first face now runs 0, 2, 1: its normal points away from the opposite vertex 3.
+    let normal = halfwing::geom::face_normals(&mesh)[0];
+    assert!(normal[2] < 0.0, "{normal:?}");
+    for policy in [BuildPolicy::Strict, BuildPolicy::Skip] {
+        let (mesh, diagnostic) = Mesh::from_face_list(&list, policy).unwrap();
+        assert!(diagnostic.reoriented_faces.is_empty());
+        assert!(halfwing::geom::face_normals(&mesh)[0][2] > 0.0);
+    }
+}

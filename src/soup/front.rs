@@ -4,6 +4,7 @@
 use std::borrow::Cow;
 
 use super::edge_buckets::EdgeBuckets;
+use super::orient::has_inward_closed_component;
 use super::resolve::resolve;
 use super::table::{MAX_VERTICES, non_finite_among, non_finite_vertices};
 use super::{BuildError, BuildPolicy, DegenerateFaces, Diagnostic, FaceList, FaceTable};
@@ -116,8 +117,11 @@ pub(crate) fn walk_faces<'a, T: Send + Unreached>(
                     non_finite_vertices(list.positions)
                 };
                 // Non-finite coordinates never enter a structure: resolve refuses them or
-                // leaves their faces out.
-                if non_finite_vertices.is_empty() {
+                // leaves their faces out. Repair turns inward closed components outward, which
+                // only resolve does.
+                let turns_outward = policy == BuildPolicy::Repair
+                    && has_inward_closed_component(&table, list.positions);
+                if non_finite_vertices.is_empty() && !turns_outward {
                     let diagnostic = Diagnostic {
                         degenerate_faces: areas.into_faces(),
                         isolated_vertices,

@@ -128,6 +128,14 @@ pub(crate) fn flip_faces(table: &mut FaceTable<'_>, faces: &[usize]) {
     }
 }
 
+/// Whether a closed component of `table` (well formed, its vertices at `positions`) encloses a
+/// negative volume: the Repair policy must then turn it outward, so the build cannot take the
+/// direct route.
+pub(crate) fn has_inward_closed_component(table: &FaceTable<'_>, positions: &[[f64; 3]]) -> bool {
+    let pairing = super::pair_edges(table, positions.len());
+    !faces_facing_inward(table, &pairing, |v| positions[v as usize]).is_empty()
+}
+
 /// The faces of the closed components of `table` that enclose a negative volume, ascending:
 /// flipped, every closed component faces outward. `pairing` is `table`'s; components are joined
 /// through paired edges, and a component is closed when none of its corners is on the boundary
