@@ -241,6 +241,8 @@ static void topology(void) {
   CHECK_STATUS(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, NULL),
                HW_ERR_INVALID_INPUT, "face 0 names vertex 9");
   hw_soup_free(soup);
+}
+
 static void fill_holes(void) {
   /* An open box: a unit cube without its top, two triangles a side; the top is a 4-edge hole. */
   const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
