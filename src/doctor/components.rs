@@ -142,7 +142,7 @@ pub(super) fn components(
     }
     for problem in &pairing.problems {
         let component = &mut components
-            [component_of[surface.face_of_corner(problem.corners[0] as usize) as usize] as usize];
+            [component_of[surface.face_of_corner(problem.corners[0] as usize)] as usize];
         component.n_edges += 1;
         match problem.defect {
             EdgeDefect::NonManifold => component.manifold = false,

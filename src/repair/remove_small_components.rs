@@ -52,8 +52,8 @@ pub fn remove_small_components(
     let (component_of, n_components) = face_components(surface, &inspection.pairing);
     let mut sizes = vec![0usize; n_components];
     let mut boxes = vec![EMPTY_BOX; n_components];
-    for f in 0..surface.n_faces() {
-        let component = component_of[f] as usize;
+    for (f, &component) in component_of.iter().enumerate().take(surface.n_faces()) {
+        let component = component as usize;
         sizes[component] += 1;
         for &v in surface.face(f) {
             grow(&mut boxes[component], soup.positions[v as usize]);
@@ -63,7 +63,9 @@ pub fn remove_small_components(
     let widest = diameters.iter().copied().fold(0.0, f64::max);
     let is_small = |c: usize| match small {
         SmallComponents::FaceCount(count) => sizes[c] <= count,
-        SmallComponents::RelativeDiameter(ratio) => !(diameters[c] > ratio * widest),
+        SmallComponents::RelativeDiameter(ratio) => {
+            diameters[c].partial_cmp(&(ratio * widest)) != Some(std::cmp::Ordering::Greater)
+        }
     };
     let mut removed = vec![false; n_faces];
     for f in 0..surface.n_faces() {

@@ -23,7 +23,9 @@ impl Tolerance {
     pub(crate) fn absolute(self, diagonal: f64) -> Result<f64, RepairError> {
         let refuse = |value, reason| Err(RepairError::BadTolerance { value, reason });
         match self {
-            Tolerance::Absolute(t) if !(t >= 0.0) => refuse(t, "it must be 0 or more (not NaN)"),
+            Tolerance::Absolute(t) if t.is_nan() || t < 0.0 => {
+                refuse(t, "it must be 0 or more (not NaN)")
+            }
             Tolerance::Absolute(t) if t.is_infinite() => refuse(t, "it must be finite"),
             Tolerance::Absolute(t) => Ok(t),
             Tolerance::Relative(r) if !(0.0..=1.0).contains(&r) => {
