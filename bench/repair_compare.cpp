@@ -9,7 +9,6 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,6 +16,7 @@
 #include "../c_tests/cgal_soup.hpp"
 #include "halfwing.hpp"
 #include "models.hpp"
+#include "options.hpp"
 #include "timing.hpp"
 
 namespace {
@@ -67,31 +67,15 @@ void compare(const bench::IndexedMesh& welded, int repeats) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
-  int repeats = 5;
-  std::vector<std::string> files;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) {
-      quick = true;
-    } else if (std::strcmp(argv[i], "--repeats") == 0 && i + 1 < argc) {
-      repeats = std::max(1, std::atoi(argv[++i]));
-    } else if (argv[i][0] == '-') {
-      std::fprintf(stderr, "usage: %s [--quick] [--repeats N] [model files...]\n", argv[0]);
-      return 2;
-    } else {
-      files.push_back(argv[i]);
-    }
-  }
-  if (quick) repeats = 1;
+  bench::options opts;
+  if (!bench::parse_options(argc, argv, opts)) return 2;
   std::printf("halfwing %s merge_vertices vs CGAL %s merge_duplicate_points_in_polygon_soup; "
               "memory: %s\n",
               hw::version().c_str(), CGAL_VERSION_STR, bench::set_memory_policy(false));
   std::printf("times: best of %d runs, in ms; ratio = halfwing / CGAL (lower is better)\n",
-              repeats);
+              opts.repeats);
   std::printf("%-30s %9s %9s %12s %12s %9s\n", "model", "vertices", "left", "halfwing", "CGAL",
               "ratio");
-  const uint32_t n = quick ? 100 : 708;
-  compare(bench::torus(n, n, true), repeats);
-  for (const std::string& file : files) compare(bench::read_file(file), repeats);
+  bench::compare_models(opts, compare);
   return 0;
 }

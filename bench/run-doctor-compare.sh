@@ -8,20 +8,4 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/build.sh"
 build_benchmark doctor_compare
 
-options=()
-models=()
-while (($#)); do
-  case "$1" in
-    --repeats) options+=("$1" "$2"); shift 2 ;;
-    -*) options+=("$1"); shift ;;
-    *) models+=("$1"); shift ;;
-  esac
-done
-if ((${#models[@]} == 0)); then
-  for model in closed/igl_armadillo.obj closed/luke_dragon.obj open/c3d_stanford-bunny.obj \
-    broken/igl_truck.obj broken/c3d_teapot.obj; do
-    [[ -f "$data/$model" ]] && models+=("$data/$model")
-  done
-fi
-echo "machine: $(nproc) cores; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
-"$build/bench/doctor_compare" "${options[@]}" "${models[@]}"
+run_benchmark doctor_compare "closed/igl_armadillo.obj closed/luke_dragon.obj open/c3d_stanford-bunny.obj broken/igl_truck.obj broken/c3d_teapot.obj" "$@"

@@ -13,24 +13,5 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/build.sh"
 build_benchmark mesh_compare
 
-options=()
-models=()
-while (($#)); do
-  case "$1" in
-    --repeats | --only) options+=("$1" "$2"); shift 2 ;;
-    -*) options+=("$1"); shift ;;
-    *) models+=("$1"); shift ;;
-  esac
-done
-only_generated=0
-for option in "${options[@]}"; do [[ "$option" == --only ]] && only_generated=1; done
-if ((${#models[@]} == 0 && !only_generated)); then
-  # The largest closed and open real models (all manifold, so every library builds them).
-  for model in closed/igl_armadillo.obj closed/c3d_nefertiti.obj closed/luke_dragon.obj \
-    open/c3d_stanford-bunny.obj; do
-    [[ -f "$data/$model" ]] && models+=("$data/$model")
-  done
-fi
-
-echo "machine: $(nproc) cores; load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
-"$build/bench/mesh_compare" "${options[@]}" "${models[@]}"
+# The largest closed and open real models (all manifold, so every library builds them).
+run_benchmark mesh_compare "closed/igl_armadillo.obj closed/c3d_nefertiti.obj closed/luke_dragon.obj open/c3d_stanford-bunny.obj" "$@"
