@@ -11,8 +11,8 @@ use halfwing::geom::self_intersections;
 use halfwing::soup::PolygonSoup;
 use halfwing::surfaces::{CellFaces, Torus, torus};
 
-#[path = "../tests/shared_data/mod.rs"]
-mod shared_data;
+#[path = "../tests/test_data/mod.rs"]
+mod test_data;
 
 /// The test models with the most triangles (about 100k, 100k and 86k).
 const MODELS: [&str; 3] = [
@@ -50,7 +50,7 @@ fn inputs() -> Vec<Input> {
     let (positions, triangles) = triangles_of(&ring);
     let mut inputs = vec![("torus-1M".to_string(), positions, triangles)];
     for model in MODELS {
-        let path = shared_data::root().join(model);
+        let path = test_data::root().join(model);
         let Ok(soup) = halfwing::io::read_path(&path) else {
             eprintln!("skipping {}: not readable", path.display());
             continue;

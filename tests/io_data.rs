@@ -9,10 +9,10 @@ use std::path::{Path, PathBuf};
 use halfwing::io::{IoError, read_path};
 use halfwing::soup::PolygonSoup;
 
-mod shared_data;
+mod test_data;
 
 fn data_dir() -> PathBuf {
-    let dir = shared_data::root();
+    let dir = test_data::root();
     assert!(
         dir.join("MANIFEST.md").is_file(),
         "test data not found at {} (set HALFWING_DATA)",

@@ -10,7 +10,7 @@ use halfwing::io::{
 use halfwing::soup::PolygonSoup;
 use proptest::prelude::*;
 
-mod shared_data;
+mod test_data;
 
 /// The encodings a soup is written in.
 #[derive(Clone, Copy, Debug)]
@@ -116,7 +116,7 @@ fn assert_round_trips(soup: &PolygonSoup, what: &str) {
 
 #[test]
 fn data_set_meshes_round_trip_in_every_format() {
-    let dir = shared_data::root();
+    let dir = test_data::root();
     let names = [
         "meshes/polygonal/cgal_mpi.off",
         "meshes/polygonal/igl_cylinder.obj",

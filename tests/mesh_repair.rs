@@ -5,10 +5,10 @@ use halfwing::io::read_path;
 use halfwing::mesh::Mesh;
 use halfwing::soup::BuildPolicy;
 
-mod shared_data;
+mod test_data;
 
 fn broken(name: &str) -> halfwing::soup::PolygonSoup {
-    read_path(shared_data::root().join("meshes/broken").join(name)).expect("the test model reads")
+    read_path(test_data::root().join("meshes/broken").join(name)).expect("the test model reads")
 }
 
 fn repaired(name: &str) -> Mesh {

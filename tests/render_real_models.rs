@@ -15,10 +15,10 @@ use halfwing::render::{
     MeshBufferOptions, MeshBuffers, Shading, SurfaceOptions, VertexLayout, mesh_buffers,
 };
 
-mod shared_data;
+mod test_data;
 
 fn mesh_files() -> Vec<PathBuf> {
-    let dir = shared_data::root();
+    let dir = test_data::root();
     let mut files = Vec::new();
     let mut pending = vec![dir.join("meshes")];
     while let Some(folder) = pending.pop() {

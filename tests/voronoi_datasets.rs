@@ -1,7 +1,7 @@
 //! The shared 2D point sets (`data/points2d/`): exact Delaunay, equidistant Voronoi vertices,
 //! clipped cells that tile their bounding box, and the counts MANIFEST.md states.
 
-mod shared_data;
+mod test_data;
 mod voronoi_common;
 
 use halfwing::voronoi::{Delaunay, Dimension, Voronoi};
@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use voronoi_common::*;
 
 fn data_dir() -> PathBuf {
-    shared_data::root().join("points2d")
+    test_data::root().join("points2d")
 }
 
 /// (file, number of points, exact duplicates) as MANIFEST.md lists them.

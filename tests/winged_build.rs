@@ -4,7 +4,7 @@ use halfwing::soup::{BuildError, BuildPolicy, Diagnostic, EdgeReport, FaceList, 
 use halfwing::winged::{EdgeId, FaceId, Side, VertexId, Winged, WingedError};
 use proptest::prelude::*;
 
-mod shared_data;
+mod test_data;
 
 fn soup(positions: Vec<[f64; 3]>, faces: &[&[u32]]) -> PolygonSoup {
     PolygonSoup {
@@ -426,7 +426,7 @@ fn invalid_handles_are_errors() {
 /// Every model file of the test data's `meshes/<dir>`, read with the crate's reader (files the
 /// reader refuses are left out: the readers have their own tests).
 fn models(dir: &str) -> Vec<(std::path::PathBuf, PolygonSoup)> {
-    let root = shared_data::root().join("meshes").join(dir);
+    let root = test_data::root().join("meshes").join(dir);
     let mut files: Vec<_> = std::fs::read_dir(&root)
         .unwrap_or_else(|e| panic!("{} (set HALFWING_DATA): {e}", root.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))

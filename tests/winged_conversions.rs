@@ -10,12 +10,12 @@ use halfwing::mesh::{self, Mesh};
 use halfwing::soup::{BuildPolicy, PolygonSoup};
 use halfwing::winged::{EdgeId, FaceId, VertexId, Winged, WingedError};
 
-mod shared_data;
+mod test_data;
 
 /// The meshes of the test data set under `dirs` that read, positions and faces only, in file
-/// name order. Fails when the data set is missing (see `shared_data`).
+/// name order. Fails when the data set is missing (see `test_data`).
 fn models_in(dirs: &[&str]) -> Vec<(PathBuf, PolygonSoup)> {
-    let root = shared_data::root().join("meshes");
+    let root = test_data::root().join("meshes");
     assert!(
         root.is_dir(),
         "test data not found at {} (set HALFWING_DATA)",

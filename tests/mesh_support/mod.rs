@@ -7,13 +7,13 @@ use std::path::{Path, PathBuf};
 
 use halfwing::soup::PolygonSoup;
 
-#[path = "../shared_data/mod.rs"]
-mod shared_data;
+#[path = "../test_data/mod.rs"]
+mod test_data;
 pub mod soups;
 
 /// Root of the test meshes.
 pub fn data_dir() -> PathBuf {
-    shared_data::root().join("meshes")
+    test_data::root().join("meshes")
 }
 
 /// Reads an OFF (also NOFF/COFF: extra per-vertex and per-face columns are ignored) or OBJ file
