@@ -220,6 +220,27 @@ fn splitting_gives_each_fan_a_vertex() {
     assert_eq!(bow_tie.indices, vec![0, 1, 2, 5, 3, 4]);
 }
 
+/// Two non-planar quads on the corners of a tetrahedron, each the other reversed: a closed
+/// pillow. Read from the same corner, both quads take the same diagonal, so the pillow encloses
+/// nothing and is left as given, either way round (a fan from each quad's first corner once
+/// took different diagonals, gave it a volume, flipped it, and flipped it back on a second run).
+#[test]
+fn a_pillow_of_two_bent_quads_encloses_nothing() {
+    let positions = vec![
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0],
+    ];
+    for indices in [vec![1, 2, 3, 0, 2, 1, 0, 3], vec![0, 3, 2, 1, 3, 0, 1, 2]] {
+        let mut pillow = PolygonSoup {
+            face_sizes: vec![4, 4],
+            ..triangles(positions.clone(), indices)
+        };
+        assert!(orient_faces(&mut pillow).unwrap().is_empty());
+    }
+}
+
 #[test]
 fn orienting_flips_the_minority_and_turns_closed_components_outward() {
     // One face of a tetrahedron reversed: that face is reoriented, uvs reversed with it.

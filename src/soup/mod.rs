@@ -10,6 +10,7 @@
 mod degenerate;
 mod diagnostic;
 mod edge_buckets;
+mod enclosed_volume;
 mod face_list;
 mod front;
 mod inspect;
@@ -24,13 +25,12 @@ mod umbrellas;
 pub(crate) use degenerate::DegenerateFaces;
 pub use diagnostic::{Diagnostic, EdgeReport, ListProblem};
 pub(crate) use edge_buckets::{EdgeBuckets, EdgeVisit, EdgeVisitor};
+pub(crate) use enclosed_volume::component_volumes;
 pub use face_list::{FaceList, FaceSizes, PolygonSoup};
 pub(crate) use front::{Pinched, Unreached, Walked, build_splitting_pinched, walk_faces};
 pub use inspect::diagnose;
 pub(crate) use inspect::{Inspection, inspect, unnamed_vertices};
-pub(crate) use orient::{
-    component_volumes, faces_facing_inward, faces_to_flip, flip_faces, search_orientations,
-};
+pub(crate) use orient::{faces_facing_inward, faces_to_flip, flip_faces, search_orientations};
 pub use pairing::{BOUNDARY, EdgeDefect, EdgePairing, ProblemEdge, UNPAIRED, pair_edges};
 pub use policy::{BuildError, BuildPolicy};
 pub use resolve::{Resolved, resolve};

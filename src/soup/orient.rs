@@ -2,8 +2,8 @@
 //! CGAL's `orient_polygon_soup` does, before any vertex is duplicated; and, once the faces pair,
 //! flip closed components that face inward.
 
-use super::FaceTable;
 use super::pairing::{BOUNDARY, EdgeDefect, EdgePairing, UNPAIRED};
+use super::{FaceTable, component_volumes};
 use crate::disjoint_sets;
 
 /// Orientations given to the faces of a table breadth-first through their two-face edges: the
@@ -175,78 +175,4 @@ pub(crate) fn faces_facing_inward(
     (0..n_faces)
         .filter(|&f| closed[component[f]] && volume[component[f]].sign < 0.0)
         .collect()
-}
-
-/// The volume a component's faces enclose, positive when they run counter-clockwise seen from
-/// outside.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct EnclosedVolume {
-    /// The volume, which may overflow to infinity or underflow to zero at extreme coordinates.
-    pub(crate) volume: f64,
-    /// Its sign, -1, 0 or 1, right whatever the coordinates' magnitude.
-    pub(crate) sign: f64,
-}
-
-/// The volume enclosed by the faces of each component `c < n_components` for which `wanted(c)`
-/// holds (zero for the others), `component[f]` being face `f`'s: the sum of the tetrahedra from
-/// a corner of the component to each triangle of its faces' fans. The sum is taken relative to
-/// that corner and scaled by the component's extent, so that neither cancellation far from the
-/// origin nor under- or overflow at extreme coordinates decides its sign.
-pub(crate) fn component_volumes(
-    table: &FaceTable<'_>,
-    component: &[usize],
-    n_components: usize,
-    wanted: impl Fn(usize) -> bool,
-    position: impl Fn(u32) -> [f64; 3],
-) -> Vec<EnclosedVolume> {
-    let n_faces = table.n_faces();
-    let mut origin = vec![[f64::NAN; 3]; n_components];
-    let mut extent = vec![0.0f64; n_components];
-    for f in (0..n_faces).filter(|&f| wanted(component[f])) {
-        let c = component[f];
-        if origin[c][0].is_nan() {
-            origin[c] = position(table.face(f)[0]);
-        }
-        for &v in table.face(f) {
-            let p = position(v);
-            for k in 0..3 {
-                extent[c] = extent[c].max((p[k] - origin[c][k]).abs());
-            }
-        }
-    }
-    let mut volume = vec![0.0f64; n_components];
-    for f in (0..n_faces).filter(|&f| wanted(component[f])) {
-        let c = component[f];
-        if extent[c] == 0.0 || !extent[c].is_finite() {
-            continue;
-        }
-        let scaled = |v: u32| {
-            let p = position(v);
-            std::array::from_fn::<f64, 3, _>(|k| (p[k] - origin[c][k]) / extent[c])
-        };
-        let face = table.face(f);
-        let first = scaled(face[0]);
-        for pair in face[1..].windows(2) {
-            volume[c] += determinant(first, scaled(pair[0]), scaled(pair[1]));
-        }
-    }
-    volume
-        .iter()
-        .enumerate()
-        .map(|(c, &scaled)| EnclosedVolume {
-            volume: if scaled == 0.0 {
-                0.0
-            } else {
-                scaled * extent[c] * extent[c] * extent[c] / 6.0
-            },
-            sign: if scaled == 0.0 { 0.0 } else { scaled.signum() },
-        })
-        .collect()
-}
-
-/// The determinant of the rows `a`, `b`, `c`: six times the signed volume of the tetrahedron
-/// they span with the origin.
-fn determinant(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
-    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-        + a[2] * (b[0] * c[1] - b[1] * c[0])
 }

@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 
 use halfwing::soup::PolygonSoup;
 
+pub mod soups;
 #[path = "../test_data/mod.rs"]
 mod test_data;
-pub mod soups;
 
 /// Root of the test meshes.
 pub fn data_dir() -> PathBuf {
