@@ -54,6 +54,21 @@ static void builds_larger_than_memory(const double *zeros) {
   CHECK_STATUS(hw_doctor_examine_indexed(zeros, n_vertices, sizes, 1, triangle, 3, NULL, &report),
                HW_ERR_OUT_OF_MEMORY, "cannot allocate");
   CHECK(report == NULL);
+  CHECK_STATUS(hw_diagnose_indexed(zeros, n_vertices, sizes, 1, triangle, 3, &diagnostic),
+               HW_ERR_OUT_OF_MEMORY, "cannot allocate 20.0 GB for 500000000 vertices");
+  CHECK(diagnostic == NULL);
+}
+
+static void self_intersections_larger_than_memory(const double *zeros) {
+  hw_face_pairs *pairs = NULL;
+  /* A billion faces of three corners, sizes and indices all 0 (the zero pages): 672 GB to
+   * search, refused before the sizes are read. */
+  const uint32_t *zero_ids = (const uint32_t *)(const void *)zeros;
+  const size_t n_faces = 1000000000;
+  CHECK_STATUS(hw_self_intersections_indexed(zeros, 3, zero_ids, n_faces, zero_ids, 3 * n_faces,
+                                             &pairs),
+               HW_ERR_OUT_OF_MEMORY, "for 3000000000 corners");
+  CHECK(pairs == NULL);
 }
 
 static void voronoi_larger_than_memory(const double *zeros) {
@@ -98,6 +113,7 @@ static int child(void) {
   CHECK(setrlimit(RLIMIT_AS, &limit) == 0);
 
   builds_larger_than_memory(zeros);
+  self_intersections_larger_than_memory(zeros);
   voronoi_larger_than_memory(zeros);
   lying_header();
 

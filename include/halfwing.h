@@ -2370,7 +2370,8 @@ const char *hw_diagnostic_edges_name(hw_diagnostic_edges edges);
 /**
  * Analyses an indexed face list without building anything (same arguments as
  * hw_mesh_from_indexed()). Malformed data are not an error here — they are what the diagnostic
- * reports; only NULL or impossible array arguments fail. On success `*out_diagnostic` receives
+ * reports; only NULL or impossible array arguments fail, and `HW_ERR_OUT_OF_MEMORY` when the
+ * analysis needs more memory than the system gives. On success `*out_diagnostic` receives
  * a diagnostic to release with hw_diagnostic_free().
  *
  * # Safety
@@ -3691,7 +3692,8 @@ void hw_repair_fates_free(hw_repair_fates *fates);
  * success `*out_pairs` receives the pairs, sorted, smaller face first; release them with
  * hw_face_pairs_free(). `HW_ERR_INVALID_INPUT`: the sizes do not add up to `n_indices`, an
  * index is out of range, or a corner of a face has a NaN or infinite coordinate (the
- * message names the face and the vertex).
+ * message names the face and the vertex). `HW_ERR_OUT_OF_MEMORY`: the search needs more
+ * memory than the system gives (checked before it starts).
  *
  * # Safety
  * As for hw_mesh_from_indexed(); `out_pairs` writable.

@@ -72,7 +72,9 @@ fn build_both(
 
 /// The diagnosis of `list`, timed.
 fn diagnose(list: &FaceList<'_>, case: &str) -> Diagnostic {
-    timed(&format!("{case}, diagnosis"), || Mesh::diagnose(list))
+    timed(&format!("{case}, diagnosis"), || {
+        Mesh::diagnose(list).unwrap()
+    })
 }
 
 #[test]

@@ -316,7 +316,7 @@ fn diagnoses_describe_the_input_as_the_manifest_measured() {
         // loader, which keeps them.
         let file = data_dir().join(relative);
         let soup = halfwing::io::read_path(&file).unwrap_or_else(|_| load(&file));
-        let diagnostic = Mesh::diagnose(&soup.as_face_list());
+        let diagnostic = Mesh::diagnose(&soup.as_face_list()).unwrap();
         let found = [
             diagnostic.non_manifold_vertices.len(),
             diagnostic.non_manifold_edges.len(),

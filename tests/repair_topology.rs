@@ -126,7 +126,13 @@ fn assert_strict_build(soup: &PolygonSoup) -> Mesh {
 fn cutting_two_tetrahedra_on_an_edge_keeps_both_closed() {
     let mut soup = tetrahedra_on_an_edge();
     let before = corner_data(&soup);
-    assert_eq!(diagnose(&soup.as_face_list()).non_manifold_edges.len(), 1);
+    assert_eq!(
+        diagnose(&soup.as_face_list())
+            .unwrap()
+            .non_manifold_edges
+            .len(),
+        1
+    );
     let report = repair_non_manifold_edges(&mut soup, NonManifoldEdges::Cut).unwrap();
     // The second tetrahedron gets copies of both ends of the edge.
     assert_eq!(report.vertex_copies, vec![0, 1]);
@@ -162,7 +168,12 @@ fn removing_faces_keeps_one_face_each_way_on_the_edge() {
     assert_eq!(soup.n_faces(), 6);
     let uvs = soup.corner_uvs.as_ref().unwrap();
     assert_eq!(uvs[12][0], 18.0, "face 6 became face 4 with its uvs");
-    assert!(diagnose(&soup.as_face_list()).non_manifold_edges.is_empty());
+    assert!(
+        diagnose(&soup.as_face_list())
+            .unwrap()
+            .non_manifold_edges
+            .is_empty()
+    );
     assert!(
         repair_non_manifold_edges(&mut soup, NonManifoldEdges::RemoveFaces)
             .unwrap()
@@ -192,7 +203,9 @@ fn splitting_gives_each_fan_a_vertex() {
     let mut soup = tetrahedra_on_a_vertex();
     let before = corner_data(&soup);
     assert_eq!(
-        diagnose(&soup.as_face_list()).non_manifold_vertices,
+        diagnose(&soup.as_face_list())
+            .unwrap()
+            .non_manifold_vertices,
         vec![0]
     );
     let report = split_non_manifold_vertices(&mut soup).unwrap();
@@ -320,7 +333,13 @@ fn a_mobius_band_keeps_one_disagreeing_edge() {
     let settled = soup.clone();
     assert!(orient_faces(&mut soup).unwrap().is_empty());
     assert_eq!(soup, settled);
-    assert_eq!(diagnose(&soup.as_face_list()).inconsistent_edges.len(), 1);
+    assert_eq!(
+        diagnose(&soup.as_face_list())
+            .unwrap()
+            .inconsistent_edges
+            .len(),
+        1
+    );
 }
 
 #[test]
@@ -432,7 +451,7 @@ fn every_test_model_settles_and_clean_ones_are_untouched() {
                 // Out-of-range indices: refused, as documented.
                 continue;
             };
-            let clean = diagnose(&original.as_face_list());
+            let clean = diagnose(&original.as_face_list()).unwrap();
             if group == "closed"
                 && !clean.has_invalid_input()
                 && !clean.has_edge_defects()
@@ -442,7 +461,7 @@ fn every_test_model_settles_and_clean_ones_are_untouched() {
             } else if !changed {
                 assert_eq!(soup, original);
             }
-            let found = diagnose(&soup.as_face_list());
+            let found = diagnose(&soup.as_face_list()).unwrap();
             assert!(found.non_manifold_edges.is_empty(), "{name}");
             assert!(found.non_manifold_vertices.is_empty(), "{name}");
             assert_each_settled(&soup, how);
@@ -509,7 +528,7 @@ proptest! {
 
         orient_faces(&mut repaired).unwrap();
         assert_each_settled(&repaired, how);
-        let found = diagnose(&repaired.as_face_list());
+        let found = diagnose(&repaired.as_face_list()).unwrap();
         prop_assert!(found.non_manifold_edges.is_empty());
         prop_assert!(found.non_manifold_vertices.is_empty());
         let settled = repaired.clone();

@@ -210,7 +210,8 @@ pub extern "C" fn hw_diagnostic_edges_name(edges: hw_diagnostic_edges) -> *const
 
 /// Analyses an indexed face list without building anything (same arguments as
 /// hw_mesh_from_indexed()). Malformed data are not an error here — they are what the diagnostic
-/// reports; only NULL or impossible array arguments fail. On success `*out_diagnostic` receives
+/// reports; only NULL or impossible array arguments fail, and `HW_ERR_OUT_OF_MEMORY` when the
+/// analysis needs more memory than the system gives. On success `*out_diagnostic` receives
 /// a diagnostic to release with hw_diagnostic_free().
 ///
 /// # Safety
@@ -234,7 +235,7 @@ pub unsafe extern "C" fn hw_diagnose_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )?
         };
-        let diagnostic = crate::mesh::Mesh::diagnose(&list);
+        let diagnostic = crate::mesh::Mesh::diagnose(&list)?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(hw_diagnostic::into_handle(diagnostic)) };
         Ok(())

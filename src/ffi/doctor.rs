@@ -93,7 +93,10 @@ unsafe fn options_arg(options: *const hw_doctor_options) -> DoctorOptions {
 
 fn doctor_error(error: crate::doctor::DoctorError) -> FfiError {
     match error {
-        crate::doctor::DoctorError::OutOfMemory(refusal) => refusal.into(),
+        crate::doctor::DoctorError::OutOfMemory(refusal)
+        | crate::doctor::DoctorError::SelfIntersections(
+            crate::geom::SelfIntersectionError::OutOfMemory(refusal),
+        ) => refusal.into(),
         _ => FfiError::invalid_input(error.to_string()),
     }
 }

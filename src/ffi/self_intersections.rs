@@ -1,7 +1,7 @@
 //! `hw_face_pairs`: the self-intersections of an indexed face list, on their own (the doctor
 //! reports them among its findings).
 
-use crate::geom::face_self_intersections;
+use crate::geom::{SelfIntersectionError, face_self_intersections};
 
 use super::boundary::{Out, arg_ref, guard, guard_void, view_start};
 use super::error::FfiError;
@@ -31,7 +31,8 @@ pub struct hw_face_pairs {
 /// success `*out_pairs` receives the pairs, sorted, smaller face first; release them with
 /// hw_face_pairs_free(). `HW_ERR_INVALID_INPUT`: the sizes do not add up to `n_indices`, an
 /// index is out of range, or a corner of a face has a NaN or infinite coordinate (the
-/// message names the face and the vertex).
+/// message names the face and the vertex). `HW_ERR_OUT_OF_MEMORY`: the search needs more
+/// memory than the system gives (checked before it starts).
 ///
 /// # Safety
 /// As for hw_mesh_from_indexed(); `out_pairs` writable.
@@ -54,8 +55,11 @@ pub unsafe extern "C" fn hw_self_intersections_indexed(
                 positions, n_vertices, face_sizes, n_faces, indices, n_indices,
             )
         }?;
-        let pairs = with_threads(|| face_self_intersections(&list))
-            .map_err(|error| FfiError::invalid_input(error.to_string()))?;
+        let pairs =
+            with_threads(|| face_self_intersections(&list)).map_err(|error| match error {
+                SelfIntersectionError::OutOfMemory(refusal) => FfiError::from(refusal),
+                other => FfiError::invalid_input(other.to_string()),
+            })?;
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(into_handle(hw_face_pairs { pairs })) };
         Ok(())

@@ -9,6 +9,7 @@ use super::embedded_stars::{StarTriangle, embedded_stars};
 use super::exact_orientation::{ExactOrientation, ExponentRange, scale_points};
 use super::parallel::map_indexed;
 use super::triangle_intersection::{SharedCorners, corners_are_collinear, triangles_meet};
+use crate::allocation::{OutOfMemory, ensure_room};
 use crate::render::{TriangulateError, triangulate_faces};
 use crate::soup::FaceList;
 
@@ -47,6 +48,28 @@ pub enum SelfIntersectionError {
     /// The face sizes do not match the indices, or the triangulation would be too large.
     #[error("malformed face list: {0}")]
     MalformedFaceList(TriangulateError),
+    /// The system refused the memory the search needs (see [`OutOfMemory`]).
+    #[error(transparent)]
+    OutOfMemory(#[from] OutOfMemory),
+}
+
+/// Makes sure the memory a search over `n_triangles` triangles on `n_vertices` vertices needs
+/// can be had, before anything that size is allocated; a refusal names `count` items of `what`.
+fn ensure_search_room(
+    n_triangles: usize,
+    n_vertices: usize,
+    count: usize,
+    what: &'static str,
+) -> Result<(), OutOfMemory> {
+    // Per triangle: its triangulation entry (16 bytes), its prepared form twice (prepared, then
+    // kept: 2 × 72) and its box tree node and order (64); per vertex, its embedded-star flag and
+    // the stars' working arrays (16).
+    const BYTES_PER_TRIANGLE: u64 = 224;
+    const BYTES_PER_VERTEX: u64 = 16;
+    let bytes = (n_triangles as u64)
+        .saturating_mul(BYTES_PER_TRIANGLE)
+        .saturating_add((n_vertices as u64).saturating_mul(BYTES_PER_VERTEX));
+    ensure_room(bytes, count, what)
 }
 
 /// The pairs of triangles that intersect other than along the vertices and the edge they share,
@@ -107,6 +130,9 @@ pub fn self_intersections(
 pub fn face_self_intersections(
     faces: &FaceList<'_>,
 ) -> Result<Vec<[u32; 2]>, SelfIntersectionError> {
+    // Each face gives at most as many triangles as it has corners.
+    let n_corners = faces.indices.len();
+    ensure_search_room(n_corners, faces.positions.len(), n_corners, "corners")?;
     let triangulation = triangulate_faces(faces).map_err(|error| match error {
         TriangulateError::IndexOutOfRange {
             face,
@@ -167,6 +193,12 @@ fn intersecting_faces(
 ) -> Result<Vec<[u32; 2]>, SelfIntersectionError> {
     let face_of = |t: usize| faces.map_or(t as u32, |faces| faces[t]);
     check_corners(positions, triangles, face_of)?;
+    ensure_search_room(
+        triangles.len(),
+        positions.len(),
+        triangles.len(),
+        "triangles",
+    )?;
     let prepare = |t: usize| {
         let corners = &triangles[t];
         let points = corners.map(|v| positions[v as usize]);

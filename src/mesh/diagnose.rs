@@ -2,6 +2,7 @@
 //! a policy.
 
 use super::Mesh;
+use crate::OutOfMemory;
 use crate::soup::{Diagnostic, FaceList};
 
 impl Mesh {
@@ -10,7 +11,11 @@ impl Mesh {
     /// vertices, degenerate faces (see [`Diagnostic`] for each definition). The lists of what a
     /// policy changes are empty: this describes the input, not a build. When the list as a whole
     /// is malformed, only [`Diagnostic::list_problem`] is set.
-    pub fn diagnose(list: &FaceList<'_>) -> Diagnostic {
+    ///
+    /// # Errors
+    /// [`OutOfMemory`] when the analysis needs more memory than the system gives (checked
+    /// before anything the size of the list is allocated).
+    pub fn diagnose(list: &FaceList<'_>) -> Result<Diagnostic, OutOfMemory> {
         crate::soup::diagnose(list)
     }
 }

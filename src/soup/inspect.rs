@@ -6,6 +6,7 @@ use super::pairing::{EdgeDefect, EdgePairing, ProblemEdge, pair_edges};
 use super::table::{MAX_VERTICES, non_finite_vertices};
 use super::umbrellas::Fans;
 use super::{Diagnostic, EdgeReport, FaceDefects, FaceList, FaceTable, ListProblem};
+use crate::OutOfMemory;
 
 /// A face list laid out as a table, with its malformed faces and the diagnostic of its findings.
 pub(crate) struct Inspection<'a> {
@@ -113,9 +114,14 @@ fn report_problems(table: &FaceTable<'_>, problems: &[ProblemEdge], diagnostic: 
 
 /// The findings of `list` as it is (see [`Diagnostic`]; the lists of what a policy changes are
 /// empty). When the list as a whole is malformed, only [`Diagnostic::list_problem`] is set.
-pub fn diagnose(list: &FaceList<'_>) -> Diagnostic {
-    match inspect(list) {
+///
+/// # Errors
+/// [`OutOfMemory`] when the analysis needs more memory than the system gives (checked before
+/// anything the size of the list is allocated).
+pub fn diagnose(list: &FaceList<'_>) -> Result<Diagnostic, OutOfMemory> {
+    list.ensure_working_room()?;
+    Ok(match inspect(list) {
         Ok(inspection) => inspection.diagnostic,
         Err(diagnostic) => *diagnostic,
-    }
+    })
 }
