@@ -23,18 +23,9 @@ pub mod ffi;
 #[doc = include_str!("../README.md")]
 struct ReadmeExamples;
 
-mod allocation;
-mod counted;
-mod cycles;
-mod disjoint_sets;
-mod id_set;
-mod large_arrays;
-mod order;
-mod prefetch;
-mod radix_sort;
-mod rare_hits;
+mod support;
 
-pub use allocation::OutOfMemory;
+pub use support::allocation::OutOfMemory;
 
 /// The crate version, as `Cargo.toml` states it.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -4,11 +4,11 @@
 
 use super::boundary::BoundaryLoop;
 use super::measure::{EMPTY_BOX, distance, grow};
-use crate::disjoint_sets;
 use crate::geom::newell_vector;
 use crate::soup::{
     BOUNDARY, EdgeDefect, EdgePairing, FaceTable, UNPAIRED, component_volumes, search_orientations,
 };
+use crate::support::disjoint_sets;
 
 /// One connected component: faces joined through shared edges (any number of faces on an edge).
 #[derive(Clone, Debug, Default, PartialEq)]

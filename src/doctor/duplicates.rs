@@ -4,9 +4,9 @@
 
 use super::measure::{bounding_box, distance};
 use super::point_tree::PointTree;
-use crate::prefetch::prefetch;
-use crate::radix_sort::radix_sort_by_high_word;
 use crate::soup::{BOUNDARY, EdgePairing, FaceTable};
+use crate::support::prefetch::prefetch;
+use crate::support::radix_sort::radix_sort_by_high_word;
 
 /// A vertex lying inside a boundary edge it is not an end of, within the tolerance. Laid out as
 /// four `u32` (C reads a list of them as one array).

@@ -4,7 +4,7 @@
 use std::fmt::{self, Write};
 
 use super::{DoctorReport, Finding};
-use crate::counted::counted;
+use crate::support::counted::counted;
 
 /// How many elements of a finding the text names before counting the rest.
 const SHOWN: usize = 8;

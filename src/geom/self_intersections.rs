@@ -9,9 +9,9 @@ use super::embedded_stars::{StarTriangle, embedded_stars};
 use super::exact_orientation::{ExactOrientation, ExponentRange, scale_points};
 use super::parallel::map_indexed;
 use super::triangle_intersection::{SharedCorners, corners_are_collinear, triangles_meet};
-use crate::allocation::{OutOfMemory, ensure_room};
 use crate::render::{TriangulateError, triangulate_faces};
 use crate::soup::FaceList;
+use crate::support::allocation::{OutOfMemory, ensure_room};
 
 /// Why the self-intersections of a mesh could not be computed.
 #[derive(Debug, Error, Clone, PartialEq, Eq)]

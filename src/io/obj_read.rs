@@ -33,8 +33,8 @@
 
 use std::io::Read;
 
-use crate::allocation::{OutOfMemory, try_push, try_vec_with_capacity};
 use crate::soup::PolygonSoup;
+use crate::support::allocation::{OutOfMemory, try_push, try_vec_with_capacity};
 
 use super::error::IoError;
 use super::format::MeshFormat;

@@ -15,8 +15,8 @@
 
 use std::io::Read;
 
-use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_vec_with_capacity;
 
 use super::attributes::spread_to_corners;
 use super::error::{IoError, Location};

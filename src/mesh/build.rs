@@ -16,13 +16,13 @@
 
 use std::mem::MaybeUninit;
 
-use crate::large_arrays::{filled, fit, with_capacity_written};
-use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, EdgeVisitor,
     FaceList, FaceTable, Pinched, Unreached, Walked, build_splitting_pinched, face_edges,
     walk_faces,
 };
+use crate::support::large_arrays::{filled, fit, with_capacity_written};
+use crate::support::rare_hits::rare_hits;
 
 use super::Mesh;
 use super::connectivity::Deletions;

@@ -17,7 +17,7 @@
 
 use super::Mesh;
 use super::ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
-use crate::id_set::IdSet;
+use crate::support::id_set::IdSet;
 
 /// How a walk steps from one half-edge to the following one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -2,7 +2,7 @@
 
 use super::Mesh;
 use super::ids::{EdgeId, FaceId, INVALID_INDEX};
-use crate::disjoint_sets;
+use crate::support::disjoint_sets;
 
 /// The faces of a mesh split into edge-connected components.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

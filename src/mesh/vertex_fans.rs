@@ -4,9 +4,9 @@ use std::ops::Range;
 
 use super::Mesh;
 use super::ids::{HalfedgeId, INVALID_INDEX, VertexId};
-use crate::cycles::{for_each_cycle_length, total_cycle_length_interleaved};
-use crate::order::mostly_nearby;
-use crate::rare_hits::rare_hits;
+use crate::support::cycles::{for_each_cycle_length, total_cycle_length_interleaved};
+use crate::support::order::mostly_nearby;
+use crate::support::rare_hits::rare_hits;
 
 impl Mesh {
     /// Live vertices with no half-edge, ascending.

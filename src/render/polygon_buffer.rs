@@ -2,9 +2,9 @@
 //! diagram, or any set of regions. Each polygon owns its corners (neighbours do not share
 //! vertices), so each can get its own colour from [`PolygonBuffer::vertex_polygons`].
 
-use crate::allocation::ensure_room;
 use crate::geom::newell_vector;
 use crate::soup::{FaceList, FaceSizes};
+use crate::support::allocation::ensure_room;
 
 use super::error::RenderError;
 use super::line_buffer::push_point;

@@ -7,9 +7,9 @@
 //! render vertex; where they differ (a flat-shaded edge, a crease, a uv seam) the vertex is split,
 //! since OpenGL has one index per vertex for all attributes.
 
-use crate::allocation::ensure_room;
 use crate::geom::{VertexNormalWeighting, corner_normals, face_normals, vertex_normals};
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
+use crate::support::allocation::ensure_room;
 
 use super::error::RenderError;
 use super::line_buffer::push_point;

@@ -2,9 +2,9 @@
 
 use super::tolerance::clusters;
 use super::{RepairError, RepairReport, Tolerance};
-use crate::disjoint_sets;
 use crate::doctor::{bounding_box, distance};
 use crate::mesh::{HalfedgeId, INVALID_INDEX, IndexMaps, Mesh};
+use crate::support::disjoint_sets;
 
 /// Glues the boundary edges of `mesh` that lie on each other, end on end (exactly, or within
 /// `tolerance`), like CGAL's `stitch_borders`, and compacts the mesh

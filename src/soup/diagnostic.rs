@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use crate::counted::counted;
+use crate::support::counted::counted;
 
 /// How many elements of one list [`Diagnostic::summary`] names before it only counts the rest.
 const SUMMARY_SAMPLE: usize = 8;

@@ -23,8 +23,8 @@ use std::collections::HashMap;
 use super::FaceTable;
 use super::large_buckets::LargeBuckets;
 use super::table::{face_edges, is_well_formed};
-use crate::large_arrays::{copied_into, zeroed, zeroed_reusable};
-use crate::prefetch::prefetch;
+use crate::support::large_arrays::{copied_into, zeroed, zeroed_reusable};
+use crate::support::prefetch::prefetch;
 
 /// A slot: larger vertex in the high half, then whether the first corner ran from the smaller
 /// vertex to the larger (bit 31), then the value (bits 0..31), which becomes [`CLOSED`] once a

@@ -1,7 +1,7 @@
 //! Borrowed and owned indexed face lists.
 
 use super::table::{MAX_CORNERS, MAX_VERTICES};
-use crate::allocation::{OutOfMemory, ensure_room};
+use crate::support::allocation::{OutOfMemory, ensure_room};
 
 /// How the polygons of a face list are sized.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -8,7 +8,7 @@ use super::orient::has_inward_closed_component;
 use super::resolve::resolve;
 use super::table::{MAX_VERTICES, non_finite_among, non_finite_vertices};
 use super::{BuildError, BuildPolicy, DegenerateFaces, Diagnostic, FaceList, FaceTable};
-use crate::large_arrays;
+use crate::support::large_arrays;
 
 /// What a builder's walk made, with the table it walked, the positions of its vertices (the
 /// input's, then those of repair's copies) and the diagnostic so far (degenerate faces

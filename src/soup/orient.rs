@@ -4,7 +4,7 @@
 
 use super::pairing::{BOUNDARY, EdgeDefect, EdgePairing, UNPAIRED};
 use super::{FaceTable, component_volumes};
-use crate::disjoint_sets;
+use crate::support::disjoint_sets;
 
 /// Orientations given to the faces of a table breadth-first through their two-face edges: the
 /// same across an edge walked both ways, opposite across an edge walked one way twice; each

@@ -8,7 +8,7 @@
 
 use super::FaceTable;
 use super::edge_buckets::{EdgeBuckets, EdgeVisit, edge_key};
-use crate::large_arrays::filled;
+use crate::support::large_arrays::filled;
 
 /// `partner` value of a corner whose edge no other face uses.
 pub const BOUNDARY: u32 = u32::MAX;

@@ -5,8 +5,8 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use super::{FaceList, FaceSizes, ListProblem};
-use crate::order::mostly_nearby;
-use crate::rare_hits::rare_hits_by_runs;
+use crate::support::order::mostly_nearby;
+use crate::support::rare_hits::rare_hits_by_runs;
 
 /// Largest number of corners a table may hold: every corner may need two half-edges and
 /// half-edge ids must stay below `u32::MAX`.

@@ -14,7 +14,7 @@ use std::collections::HashMap;
 use super::pairing::{BOUNDARY, EdgePairing, UNPAIRED};
 use super::resolve::VertexCopies;
 use super::{BuildError, FaceTable};
-use crate::disjoint_sets;
+use crate::support::disjoint_sets;
 
 /// Disjoint sets of corners (see [`disjoint_sets`]): each set is the fan of faces around the
 /// corners' vertex.

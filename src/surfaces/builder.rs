@@ -3,8 +3,8 @@
 use glam::DVec3;
 
 use super::SurfaceError;
-use crate::allocation::{OutOfMemory, try_vec_with_capacity};
 use crate::soup::PolygonSoup;
+use crate::support::allocation::{OutOfMemory, try_vec_with_capacity};
 
 /// Largest vertex count a generator may produce: `u32::MAX` is the invalid index.
 const MAX_VERTICES: usize = u32::MAX as usize - 1;

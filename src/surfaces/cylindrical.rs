@@ -5,8 +5,8 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_direction, checked_polyline, checked_steps};
-use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_vec_with_capacity;
 
 /// Relative size below which a segment counts as parallel to the sweep: `|s × r| ≤ tol·|s|·|r|`.
 const PARALLEL_TOLERANCE: f64 = 1e-12;

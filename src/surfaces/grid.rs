@@ -6,8 +6,8 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_length, checked_steps};
-use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_vec_with_capacity;
 
 /// Parameters of a grid in the plane z = 0, centred at the origin.
 #[derive(Clone, Copy, Debug)]

@@ -9,8 +9,8 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_direction, checked_point, checked_polyline, checked_steps};
-use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_vec_with_capacity;
 
 /// A profile point closer to the axis than this fraction of the profile's size is a pole: it
 /// becomes one vertex on the axis instead of a ring of coincident vertices.

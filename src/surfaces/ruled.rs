@@ -5,8 +5,8 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_polyline, checked_steps};
-use crate::allocation::try_filled;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_filled;
 
 /// Parameters of a ruled surface.
 #[derive(Clone, Copy, Debug)]

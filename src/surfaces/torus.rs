@@ -8,8 +8,8 @@ use super::SurfaceError;
 use super::builder::{SoupBuilder, ensure_fits};
 use super::lattice::{CellFaces, Lattice};
 use super::polyline::{checked_length, checked_steps};
-use crate::allocation::try_vec_with_capacity;
 use crate::soup::PolygonSoup;
+use crate::support::allocation::try_vec_with_capacity;
 
 /// Parameters of a torus centred at the origin with the z axis as its axis.
 #[derive(Clone, Copy, Debug)]

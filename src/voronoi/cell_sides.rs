@@ -14,7 +14,7 @@
 use super::delaunay::{Dimension, INVALID};
 use super::diagram::{EdgeEnds, Voronoi};
 use super::incremental::{next_edge, prev_edge};
-use crate::id_set::IdSet;
+use crate::support::id_set::IdSet;
 
 /// A Voronoi edge seen from one of its cells (which lies on the side's left).
 #[derive(Clone, Copy, Debug)]

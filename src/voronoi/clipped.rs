@@ -7,8 +7,8 @@ use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
-use crate::large_arrays;
 use crate::soup::PolygonSoup;
+use crate::support::large_arrays;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
 ///

@@ -7,10 +7,10 @@ use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{SetBounds, exact_normalising_scale, orient2d};
 use super::spatial_sort::{bounding_box, brio_hilbert_order};
-use crate::allocation::ensure_room;
-use crate::id_set::IdSet;
-use crate::large_arrays;
-use crate::prefetch::prefetch;
+use crate::support::allocation::ensure_room;
+use crate::support::id_set::IdSet;
+use crate::support::large_arrays;
+use crate::support::prefetch::prefetch;
 
 /// Invalid index (no half-edge, no twin, no site).
 pub const INVALID: u32 = u32::MAX;

@@ -9,9 +9,9 @@ use super::expansion::Exact;
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
 use super::predicates::{incircle_in, normalising_scale_of_box, pow2};
-use crate::disjoint_sets;
 use crate::geom::exact_orientation::{dyadic, integers};
-use crate::large_arrays;
+use crate::support::disjoint_sets;
+use crate::support::large_arrays;
 
 /// Geometry of an undirected Voronoi edge.
 #[derive(Clone, Copy, Debug, PartialEq)]

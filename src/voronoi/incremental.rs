@@ -19,7 +19,7 @@
 //! and testing it reads one record, usually one cache line, instead of two arrays.
 
 use super::predicates::{SetBounds, incircle_in, orient2d_in};
-use crate::large_arrays;
+use crate::support::large_arrays;
 
 /// The vertex at infinity.
 pub(crate) const GHOST: u32 = u32::MAX;

@@ -11,7 +11,7 @@ use super::error::VoronoiError;
 use super::exact_distance::Metric;
 use std::cmp::Ordering;
 
-use crate::allocation::try_filled;
+use crate::support::allocation::try_filled;
 
 /// A `width × height` image of site indices, row-major, row 0 at the top (largest y).
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -8,7 +8,7 @@
 //! randomness is a fixed hash of the site index, so results are reproducible.
 
 use super::parallel::map_indexed;
-use crate::radix_sort::radix_sort_by_high_word;
+use crate::support::radix_sort::radix_sort_by_high_word;
 
 /// Bits per axis of the Hilbert grid (the sort key packs `2 × 14` Hilbert bits and 4 round bits
 /// into 32 bits; ties inside one of the `2^28` cells keep index order).

@@ -15,12 +15,12 @@ use super::error::WingedError;
 use super::ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 use super::record::EdgeRecord;
 use super::structure::Winged;
-use crate::large_arrays;
-use crate::rare_hits::rare_hits;
 use crate::soup::{
     BuildError, BuildPolicy, DegenerateFaces, Diagnostic, EdgeBuckets, EdgeVisit, FaceList,
     FaceTable, Pinched, Unreached, Walked, build_splitting_pinched, face_edges, walk_faces,
 };
+use crate::support::large_arrays;
+use crate::support::rare_hits::rare_hits;
 
 impl Winged {
     /// Builds the structure from an indexed face list under `policy`, with the same analysis,

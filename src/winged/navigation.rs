@@ -4,7 +4,7 @@
 use super::error::WingedError;
 use super::ids::{EdgeId, EdgeUse, FaceId, VertexId};
 use super::structure::Winged;
-use crate::cycles::for_each_cycle_length;
+use crate::support::cycles::for_each_cycle_length;
 
 /// How a [`Walk`] steps from one use to the next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

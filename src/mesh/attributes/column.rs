@@ -4,7 +4,7 @@
 use std::any::Any;
 use std::fmt;
 
-use crate::allocation::{OutOfMemory, try_filled};
+use crate::support::allocation::{OutOfMemory, try_filled};
 
 /// The numeric type of an attribute column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
