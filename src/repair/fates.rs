@@ -44,6 +44,10 @@ pub enum Removal {
     /// [`BuildPolicy::Repair`](crate::soup::BuildPolicy::Repair)), or a vertex with a NaN or
     /// infinite coordinate.
     Unbuildable,
+    /// A triangle whose corners lie on one line (see
+    /// [`remove_degenerate_faces`](super::remove_degenerate_faces)), removed or collapsed with
+    /// its short edge; or a vertex merged away by such a collapse that nothing followed.
+    Degenerate,
     /// In a component removed as small.
     SmallComponent,
     /// A vertex no kept face names.
