@@ -184,6 +184,7 @@ static void degenerate_faces_and_t_vertices(void) {
   hw_mesh_free(mesh);
 
   /* The T-vertex 3 splits the edge 0-1 under it; stitching then closes the crack. */
+  report = NULL;
   CHECK(hw_mesh_from_indexed(crack, 7, crack_sizes, 7, crack_indices, 21, HW_BUILD_STRICT, &mesh,
                              NULL) == HW_OK);
   CHECK_STATUS(hw_mesh_remove_t_vertices(mesh, INFINITY, false, &report), HW_ERR_INVALID_INPUT,

@@ -124,6 +124,13 @@ impl Ledger {
         }
     }
 
+    /// Applies a step's report: its vertex and face maps, merged vertices following the vertex
+    /// they went into, other gone elements removed for `why`.
+    pub(super) fn apply(&mut self, report: &super::RepairReport, why: Removal) {
+        self.map_vertices(&report.maps.vertices, &report.merged_vertices, why);
+        self.map_faces(&report.maps.faces, |_| why);
+    }
+
     /// Applies a step's face map; gone faces are removed for `why(old id)`.
     pub(super) fn map_faces(&mut self, map: &[u32], why: impl Fn(u32) -> Removal) {
         for t in self.faces.iter_mut().filter(|t| t.removal.is_none()) {

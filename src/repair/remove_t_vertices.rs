@@ -148,7 +148,8 @@ fn t_vertex_splits(mesh: &Mesh, tolerance: f64) -> Vec<Split> {
 fn along_segment(p: [f64; 3], a: [f64; 3], b: [f64; 3], tolerance: f64) -> Option<f64> {
     let exactly =
         are_collinear(a, b, p) && (0..3).all(|k| a[k].min(b[k]) <= p[k] && p[k] <= a[k].max(b[k]));
-    if !exactly && !(tolerance > 0.0 && lies_inside_segment(p, a, b, tolerance)) {
+    let near = tolerance > 0.0 && lies_inside_segment(p, a, b, tolerance);
+    if !exactly && !near {
         return None;
     }
     let (ab, ap) = (difference(b, a), difference(p, a));

@@ -283,12 +283,7 @@ fn run(
         RepairStep::RemoveDegenerateFaces => {
             if let Some(tolerance) = options.degenerate_tolerance {
                 let report = remove_degenerate_faces(mesh(work, ledger)?, tolerance)?;
-                ledger.map_vertices(
-                    &report.maps.vertices,
-                    &report.merged_vertices,
-                    Removal::Degenerate,
-                );
-                ledger.map_faces(&report.maps.faces, |_| Removal::Degenerate);
+                ledger.apply(&report, Removal::Degenerate);
                 edits.flipped_edges += report.flipped_faces.len();
             }
         }
@@ -309,12 +304,7 @@ fn run(
         }
         RepairStep::StitchBorders => {
             let report = stitch_borders(mesh(work, ledger)?, options.stitch_tolerance)?;
-            ledger.map_vertices(
-                &report.maps.vertices,
-                &report.merged_vertices,
-                Removal::Unbuildable,
-            );
-            ledger.map_faces(&report.maps.faces, |_| Removal::Unbuildable);
+            ledger.apply(&report, Removal::Unbuildable);
             edits.stitched_edges += report.stitched_halfedges.len();
         }
         RepairStep::RemoveSmallComponents => {
