@@ -58,6 +58,21 @@ halfwing_cli_test(repair_small_components 0
 halfwing_cli_test(repair_bad_tolerance 2
   ARGS repair "${_meshes}/broken/cgal_cubes.off" "${_cli_scratch}/x.off" --merge-relative 2
   STDERR "tolerance 2 refused")
+halfwing_cli_test(repair_degenerate_faces 0
+  ARGS repair "${_meshes}/broken/cgaltest_degtri_four.off" "${_cli_scratch}/degtri_four.off"
+  STDOUT "removed faces \\(degenerate\\): 1")
+halfwing_cli_test(repair_keep_degenerate_faces 0
+  ARGS repair "${_meshes}/broken/cgaltest_degtri_four.off" "${_cli_scratch}/degtri_kept.off" --keep-degenerate-faces
+  STDOUT "faces:    4 in, 4 out")
+halfwing_cli_test(repair_t_vertices 0
+  ARGS repair "${_meshes}/broken/cgal_degtri_sliding.off" "${_cli_scratch}/sliding.off"
+  STDOUT "flipped edges: 1, split edges: 3, stitched edges: 1")
+halfwing_cli_test(repair_keep_with_tolerance 2
+  ARGS repair "${_meshes}/broken/cgal_cubes.off" "${_cli_scratch}/x.off" --keep-t-vertices --t-vertex-tolerance 1
+  STDERR "--keep-t-vertices excludes --t-vertex-tolerance")
+halfwing_cli_test(repair_bad_degenerate_tolerance 2
+  ARGS repair "${_meshes}/broken/cgal_cubes.off" "${_cli_scratch}/x.off" --degenerate-tolerance -1
+  STDERR "tolerance -1 refused")
 halfwing_cli_test(repair_unknown_output_format 2
   ARGS repair "${_meshes}/broken/cgal_cubes.off" "${_cli_scratch}/x.stl" STDERR "x.stl: unknown output format")
 halfwing_cli_test(repair_unwritable 4

@@ -25,9 +25,14 @@
 //   the volume between; halfwing turns every closed component outward, as its builds do). In the
 //   test data that is only broken/cgal_spheres_intersecting.off: two spheres that cross, which
 //   CGAL takes as one inside the other and turns inward (its input should not self-intersect).
+// - remove_degenerate_faces on every triangle model both build as a mesh: the triangles whose
+//   corners lie on one line (counted with exact predicates) before, the same count on both
+//   sides, and after: halfwing leaves none, so never more than CGAL. Models with any are listed
+//   with both counts and both face counts.
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Simple_cartesian.h>
@@ -50,6 +55,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 std::size_t compared_soups = 0, compared_stitches = 0, models_stitched = 0;
 std::size_t compared_splits = 0, models_split = 0, compared_orientations = 0, models_turned = 0;
+std::size_t compared_degenerate = 0, models_degenerate = 0;
 
 std::size_t distinct_corners(std::vector<std::size_t> polygon) {
   std::sort(polygon.begin(), polygon.end());
@@ -114,6 +120,59 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
                  m.name.c_str(), after, cgal_after);
   ++compared_stitches;
   models_stitched += after < before;
+}
+
+/// The triangles whose corners lie on one line, decided with exact predicates.
+std::size_t degenerate_triangles(const cgal_soup::ExactMesh& mesh) {
+  std::size_t n = 0;
+  for (auto f : mesh.faces()) {
+    std::vector<cgal_soup::Exact::Point_3> p;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) p.push_back(mesh.point(v));
+    n += p.size() == 3 && CGAL::collinear(p[0], p[1], p[2]);
+  }
+  return n;
+}
+
+/// The same for a halfwing mesh (compacted: faces 0 to n - 1).
+std::size_t degenerate_triangles(const hw::mesh& mesh) {
+  const auto positions = mesh.view_positions();
+  std::size_t n = 0;
+  for (uint32_t f = 0; f < mesh.n_faces(); ++f) {
+    std::vector<cgal_soup::Exact::Point_3> p;
+    for (hw_vertex v : mesh.vertices_of(hw_face{f}))
+      p.emplace_back(positions[3 * v.idx], positions[3 * v.idx + 1], positions[3 * v.idx + 2]);
+    n += p.size() == 3 && CGAL::collinear(p[0], p[1], p[2]);
+  }
+  return n;
+}
+
+/// Removes the degenerate triangles of a triangle model with both libraries, when both build it.
+void compare_degenerate(const indexed::Mesh& m) {
+  if (!std::all_of(m.face_sizes.begin(), m.face_sizes.end(), [](uint32_t s) { return s == 3; }))
+    return;
+  cgal_soup::ExactMesh theirs = cgal_soup::exact_mesh(cgal_soup::of(m));
+  if (theirs.is_empty()) return;
+  hw::mesh ours;
+  try {
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_STRICT);
+  } catch (const hw::error&) {
+    return;
+  }
+  const std::size_t before = degenerate_triangles(theirs);
+  CHECK(before == degenerate_triangles(ours));
+  PMP::remove_degenerate_faces(theirs);
+  const hw::repair_report report = ours.remove_degenerate_faces();
+  CHECK(hw_mesh_check(ours.get()) == HW_OK);
+  const std::size_t after = degenerate_triangles(ours), cgal_after = degenerate_triangles(theirs);
+  CHECK(after == 0 && after <= cgal_after);
+  if (before > 0)
+    std::printf("  %-42s %zu degenerate triangles; after: halfwing %zu (%zu faces, %zu flips), "
+                "CGAL %zu (%zu faces)\n",
+                m.name.c_str(), before, after, ours.n_faces(),
+                report.list(HW_REPAIR_FLIPPED_FACES).size() / 2, cgal_after,
+                static_cast<std::size_t>(theirs.number_of_faces()));
+  ++compared_degenerate;
+  models_degenerate += before > 0;
 }
 
 /// The soup's faces as CGAL polygons.
@@ -266,6 +325,7 @@ void compare(const std::filesystem::path& path) {
   if (m.n_faces() <= 20000) compare_stitch(unwelded(m), comparable);
   compare_split(m);
   compare_orientation(m);
+  compare_degenerate(m);
 }
 
 }  // namespace
@@ -285,7 +345,10 @@ int main() {
   std::printf("compared: %zu vertex splits (%zu split something), %zu orientations (%zu turned "
               "faces)\n",
               compared_splits, models_split, compared_orientations, models_turned);
+  std::printf("compared: %zu degenerate-face removals (%zu had degenerate triangles)\n",
+              compared_degenerate, models_degenerate);
   CHECK(compared_soups > 50 && compared_stitches > 50 && models_stitched > 20);
+  CHECK(compared_degenerate > 20 && models_degenerate > 0);
   CHECK(compared_splits > 50 && models_split > 0 && compared_orientations > 20 &&
         models_turned > 10);
   return check_summary("compare_repair_cgal");

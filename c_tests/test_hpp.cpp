@@ -345,6 +345,19 @@ static void repair_pipeline() {
   CHECK(c.kept_vertices + c.added_vertices == m.n_vertices());
   CHECK(c.kept_faces + c.removed_faces == input.face_sizes().size());
   CHECK(repaired.second.list(HW_FATES_VERTEX_KINDS).size() == n_input);
+
+  // A cap flips with the triangle across its long edge; a T-vertex splits the edge under it.
+  hw::mesh cap = hw::mesh::from_indexed({0, 0, 0, 2, 0, 0, 1, 0, 0, 1, -1, 0}, {3, 3},
+                                        {0, 1, 2, 1, 0, 3});
+  const hw::repair_report flipped = cap.remove_degenerate_faces();
+  CHECK(flipped.list(HW_REPAIR_FLIPPED_FACES) == std::vector<uint32_t>({0, 1}));
+  CHECK(cap.n_faces() == 2 && cap.remove_degenerate_faces().list(HW_REPAIR_FLIPPED_FACES).empty());
+  hw::mesh crack = hw::mesh::from_indexed(
+      {0, 0, 0, 2, 0, 0, 1, -1, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, 3, 0, 0}, {3, 3, 3, 3, 3, 3, 3},
+      {0, 2, 1, 0, 3, 4, 3, 1, 4, 2, 0, 5, 5, 0, 4, 1, 2, 6, 4, 1, 6});
+  CHECK(crack.remove_t_vertices().list(HW_REPAIR_VERTEX_COPIES) == std::vector<uint32_t>({3}));
+  CHECK(crack.stitch_borders().list(HW_REPAIR_STITCHED_HALFEDGES).size() == 4);
+  CHECK(crack.n_vertices() == 7 && hw_mesh_check(crack.get()) == HW_OK);
   hw_repair_options bad = hw_repair_options_default();
   bad.merge_tolerance = -1;
   bool threw = false;

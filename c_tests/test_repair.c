@@ -149,6 +149,61 @@ static void stitch_borders(void) {
   hw_mesh_free(mesh);
 }
 
+/* A disk with a crack: triangle 0 2 1 below the edge 0-1; above it two triangles meeting at 3,
+ * the middle of 0-1 (a T-vertex), and at 4; triangles at 5 and 6 join the sides. */
+static const double crack[] = {0, 0, 0, 2, 0, 0, 1, -1, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, 3, 0, 0};
+static const uint32_t crack_sizes[] = {3, 3, 3, 3, 3, 3, 3};
+static const uint32_t crack_indices[] = {0, 2, 1, 0, 3, 4, 3, 1, 4, 2, 0,
+                                         5, 5, 0, 4, 1, 2, 6, 4, 1, 6};
+
+static void degenerate_faces_and_t_vertices(void) {
+  const double p[] = {0, 0, 0, 2, 0, 0, 1, 0, 0, 1, -1, 0};
+  const uint32_t s[] = {3, 3};
+  const uint32_t ix[] = {0, 1, 2, 1, 0, 3};
+  hw_mesh *mesh = NULL;
+  CHECK(hw_mesh_from_indexed(p, 4, s, 2, ix, 6, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  hw_repair_report *report = NULL;
+  CHECK_STATUS(hw_mesh_remove_degenerate_faces(mesh, -1.0, false, &report), HW_ERR_INVALID_INPUT,
+               "0 or more");
+  CHECK_STATUS(hw_mesh_remove_degenerate_faces(mesh, NAN, false, &report), HW_ERR_INVALID_INPUT,
+               "NaN");
+  CHECK_STATUS(hw_mesh_remove_degenerate_faces(mesh, 2.0, true, &report), HW_ERR_INVALID_INPUT,
+               "between 0 and 1");
+  CHECK(report == NULL);
+  /* The cap 0 1 2 flips with 1 0 3 across its long edge: 3 2 0 and 2 3 1, both kept. */
+  CHECK(hw_mesh_remove_degenerate_faces(mesh, 0.0, false, &report) == HW_OK);
+  const uint32_t *ids = NULL;
+  CHECK(list_len(report, HW_REPAIR_FLIPPED_FACES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  hw_repair_report_free(report);
+  CHECK(hw_mesh_n_faces(mesh) == 2 && hw_mesh_check(mesh) == HW_OK);
+  /* A second run changes nothing. */
+  CHECK(hw_mesh_remove_degenerate_faces(mesh, 0.0, false, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_FLIPPED_FACES, &ids) == 0);
+  hw_repair_report_free(report);
+  hw_mesh_free(mesh);
+
+  /* The T-vertex 3 splits the edge 0-1 under it; stitching then closes the crack. */
+  report = NULL;
+  CHECK(hw_mesh_from_indexed(crack, 7, crack_sizes, 7, crack_indices, 21, HW_BUILD_STRICT, &mesh,
+                             NULL) == HW_OK);
+  CHECK_STATUS(hw_mesh_remove_t_vertices(mesh, INFINITY, false, &report), HW_ERR_INVALID_INPUT,
+               "finite");
+  CHECK(report == NULL && hw_mesh_n_vertices(mesh) == 7);
+  CHECK(hw_mesh_remove_t_vertices(mesh, 0.0, false, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 1 && ids[0] == 3);
+  hw_repair_report_free(report);
+  CHECK(hw_mesh_n_vertices(mesh) == 8 && hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_stitch_borders(mesh, 0.0, false, &report) == HW_OK);
+  CHECK(list_len(report, HW_REPAIR_STITCHED_HALFEDGES, &ids) == 4);
+  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 2 && ids[0] == 7 && ids[1] == 3);
+  hw_repair_report_free(report);
+  CHECK(hw_mesh_n_vertices(mesh) == 7 && hw_mesh_check(mesh) == HW_OK);
+  CHECK(hw_mesh_remove_t_vertices(mesh, 1e-3, true, NULL) == HW_OK);
+  CHECK(hw_mesh_n_vertices(mesh) == 7);
+  hw_mesh_free(mesh);
+}
+
 /* Two outward tetrahedra sharing the edge 0-1 (four faces on it). */
 static const double tetrahedra[] = {0,   0,   0, 1,   0,    0, 0.5, 1,    0,
                                     0.5, 0.3, 1, 0.5, -1.0, 0, 0.5, -0.3, -1};
@@ -284,6 +339,7 @@ int main(void) {
   refusals_change_nothing();
   small_components();
   stitch_borders();
+  degenerate_faces_and_t_vertices();
   topology();
   fill_holes();
   return check_summary("test_repair");

@@ -138,8 +138,75 @@ static void refusals_write_nothing(void) {
   hw_soup_free(soup);
 }
 
+/* A disk with a crack 0-1-3 (3 a T-vertex in the middle of 0-1), as in test_repair.c. */
+static void t_vertices_and_degenerate_faces(void) {
+  static const double crack[] = {0, 0, 0, 2, 0,  0, 1, -1, 0, 1, 0,
+                                 0, 1, 1, 0, -1, 0, 0, 3,  0, 0};
+  static const uint32_t crack_sizes[] = {3, 3, 3, 3, 3, 3, 3};
+  static const uint32_t crack_indices[] = {0, 2, 1, 0, 3, 4, 3, 1, 4, 2, 0,
+                                           5, 5, 0, 4, 1, 2, 6, 4, 1, 6};
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(crack, 7, crack_sizes, 7, crack_indices, 21, &soup) == HW_OK);
+  hw_repair_options options = hw_repair_options_default();
+  CHECK(options.remove_degenerate_faces && options.remove_t_vertices);
+  hw_mesh *mesh = NULL;
+  hw_repair_fates *fates = NULL;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  hw_repair_fate_counts counts;
+  CHECK(hw_repair_fates_counts(fates, &counts) == HW_OK);
+  CHECK(counts.split_edges == 1 && counts.stitched_edges == 2 && counts.added_vertices == 0);
+  CHECK(counts.flipped_edges == 0 && hw_mesh_n_vertices(mesh) == 7);
+  hw_repair_fates_free(fates);
+  hw_mesh_free(mesh);
+  /* Turned off: the crack stays open. */
+  options.remove_t_vertices = false;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  CHECK(hw_repair_fates_counts(fates, &counts) == HW_OK);
+  CHECK(counts.split_edges == 0 && counts.stitched_edges == 0);
+  hw_repair_fates_free(fates);
+  hw_mesh_free(mesh);
+  options = hw_repair_options_default();
+  options.t_vertex_tolerance = -1;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "0 or more");
+  options = hw_repair_options_default();
+  options.degenerate_tolerance = NAN;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "NaN");
+  hw_soup_free(soup);
+
+  /* An octahedron whose vertex 6 sits 1e-9 from vertex 0 and takes its place in two faces;
+   * the slivers 0 3 6 and 0 6 1 close the gap. Within a tolerance of 1e-6 they are degenerate
+   * and collapse with the short edge 0-6, which merges 6 into 0. */
+  static const double sliver[] = {0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0,
+                                  0, 0, -1, 0, 1e-9, 1};
+  static const uint32_t sliver_sizes[] = {3, 3, 3, 3, 3, 3, 3, 3, 3, 3};
+  static const uint32_t sliver_indices[] = {0, 1, 2, 0, 2, 3, 6, 3, 4, 6, 4, 1, 0, 3,
+                                            6, 0, 6, 1, 5, 2, 1, 5, 3, 2, 5, 4, 3, 5,
+                                            1, 4};
+  CHECK(hw_soup_from_indexed(sliver, 7, sliver_sizes, 10, sliver_indices, 30, &soup) == HW_OK);
+  options = hw_repair_options_default();
+  CHECK(hw_repair_mesh(soup, &options, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_n_faces(mesh) == 10);
+  hw_mesh_free(mesh);
+  options.degenerate_tolerance = 1e-6;
+  CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+  CHECK(hw_mesh_check(mesh) == HW_OK && hw_mesh_n_faces(mesh) == 8);
+  CHECK(hw_repair_fates_counts(fates, &counts) == HW_OK);
+  CHECK(counts.merged_vertices == 1 && counts.removed_faces == 2);
+  const uint32_t *kinds = NULL;
+  const uint32_t *ids = NULL;
+  CHECK(fates_list(fates, HW_FATES_FACE_KINDS, &kinds) == 10);
+  CHECK(kinds[4] == HW_FATE_DEGENERATE && kinds[5] == HW_FATE_DEGENERATE);
+  CHECK(fates_list(fates, HW_FATES_VERTEX_KINDS, &kinds) == 7);
+  CHECK(fates_list(fates, HW_FATES_VERTEX_IDS, &ids) == 7);
+  CHECK(kinds[6] == HW_FATE_MERGED && ids[6] == 0);
+  hw_repair_fates_free(fates);
+  hw_mesh_free(mesh);
+  hw_soup_free(soup);
+}
+
 int main(void) {
   every_fate_of_a_small_soup();
+  t_vertices_and_degenerate_faces();
   a_model_accounts_for_every_element();
   refusals_write_nothing();
   return check_summary("test_repair_mesh");

@@ -243,7 +243,8 @@ typedef struct hw_render_buffers hw_render_buffers;
 typedef struct hw_repair_fates hw_repair_fates;
 
 /**
- * What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
+ * What a repair changed. Opaque; from the `hw_soup_*` repairs, hw_mesh_remove_degenerate_faces(),
+ * hw_mesh_remove_t_vertices() and hw_mesh_stitch_borders();
  * read with hw_repair_report_list() and hw_repair_report_maps(), release with
  * hw_repair_report_free(). Ids are those of the input.
  * \ingroup repair
@@ -755,7 +756,8 @@ typedef struct {
 
 /**
  * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
- * duplicates only and keeps every component.
+ * duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
+ * exactly on them, and keeps every component.
  * \ingroup repair
  */
 typedef struct {
@@ -789,6 +791,34 @@ typedef struct {
    * The face count or the diameter ratio.
    */
   double small_value;
+  /**
+   * Whether degenerate triangles are mended (hw_mesh_remove_degenerate_faces(), after the
+   * build). Default true.
+   */
+  bool remove_degenerate_faces;
+  /**
+   * Triangles this close to a line are degenerate (as `merge_tolerance`). Default 0: exactly
+   * on one line.
+   */
+  double degenerate_tolerance;
+  /**
+   * Whether `degenerate_tolerance` is relative. Default false.
+   */
+  bool degenerate_relative;
+  /**
+   * Whether boundary edges are split at T-vertices (hw_mesh_remove_t_vertices(), before
+   * stitching). Default true.
+   */
+  bool remove_t_vertices;
+  /**
+   * Boundary vertices this close to another boundary edge split it (as `merge_tolerance`).
+   * Default 0: exactly on the edge.
+   */
+  double t_vertex_tolerance;
+  /**
+   * Whether `t_vertex_tolerance` is relative. Default false.
+   */
+  bool t_vertex_relative;
 } hw_repair_options;
 
 /**
@@ -834,6 +864,14 @@ typedef struct {
    * Pairs of boundary edges stitched into one.
    */
   size_t stitched_edges;
+  /**
+   * Edges flipped to mend a degenerate triangle.
+   */
+  size_t flipped_edges;
+  /**
+   * Boundary edges split at a T-vertex.
+   */
+  size_t split_edges;
 } hw_repair_fate_counts;
 
 /**
@@ -1598,6 +1636,13 @@ typedef uint32_t hw_fate;
 #define HW_REPAIR_REORIENTED_FACES 6
 
 /**
+ * Pairs `cap, across` (2 values each) of triangles whose shared edge
+ * hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
+ * \ingroup repair
+ */
+#define HW_REPAIR_FLIPPED_FACES 7
+
+/**
  * Components of at most `value` faces.
  * \ingroup repair
  */
@@ -1669,6 +1714,13 @@ typedef uint32_t hw_fate;
  * \ingroup repair
  */
 #define HW_FATE_UNREFERENCED 7
+
+/**
+ * A face removed as degenerate: its corners on one line, collapsed with a short edge or
+ * removed by hw_mesh_remove_degenerate_faces() (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_DEGENERATE 8
 
 /**
  * The ::hw_fate of every input vertex.
@@ -3524,6 +3576,50 @@ hw_status hw_soup_repair_non_manifold_edges(hw_soup *soup,
 hw_status hw_soup_split_non_manifold_vertices(hw_soup *soup, hw_repair_report **out_report);
 
 /**
+ * Mends the mesh's degenerate triangles: those whose corners lie exactly on one line (decided
+ * exactly), or within `tolerance` of it (absolute, or when `relative` a fraction of the live
+ * vertices' bounding-box diagonal). A triangle with an edge at most the tolerance long (zero
+ * when exact) has the edge collapsed into its lower end (::HW_REPAIR_MERGED_VERTICES), which
+ * removes the two triangles beside it and keeps the surface closed; a cap (its corner opposite
+ * its longest edge on that edge) has that edge flipped with the triangle across it
+ * (::HW_REPAIR_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
+ * leaving a boundary. Every removed face is in ::HW_REPAIR_REMOVED_FACES. Faces of more than 3
+ * corners are left as they are; vertices only removed faces named stay, isolated. Corners keep
+ * their normals and texture coordinates (a corner at a merged vertex keeps its own). The mesh
+ * is then compacted (the report's maps; the identity when nothing changed, the mesh then
+ * unchanged). Afterwards no triangle is degenerate. `HW_ERR_INVALID_INPUT`, the mesh
+ * unchanged, for a tolerance negative, NaN, infinite or relative above 1.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
+ */
+hw_status hw_mesh_remove_degenerate_faces(hw_mesh *mesh,
+                                          double tolerance,
+                                          bool relative,
+                                          hw_repair_report **out_report);
+
+/**
+ * Splits every boundary edge on whose inside a boundary vertex lies (a T-vertex: exactly, or
+ * within `tolerance` as for hw_mesh_remove_degenerate_faces()) with a new vertex at the
+ * T-vertex's position, so that hw_mesh_stitch_borders() can then close the crack. The `i`-th
+ * new vertex (id `n + i`, `n` the vertex count before) copies T-vertex `ids[i]` of
+ * ::HW_REPAIR_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
+ * are interpolated along the edge. Edges whose face has a corner at the T-vertex's position
+ * are left. Nothing is removed; the mesh is compacted (the report's maps cover the elements
+ * there were before; the identity when nothing was split). Afterwards no boundary vertex lies
+ * inside a boundary edge. Refusals as for hw_mesh_remove_degenerate_faces().
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+ * \ingroup repair
+ */
+hw_status hw_mesh_remove_t_vertices(hw_mesh *mesh,
+                                    double tolerance,
+                                    bool relative,
+                                    hw_repair_report **out_report);
+
+/**
  * Glues the mesh's boundary edges that lie on each other end on end (exactly, or within
  * `tolerance`, absolute or when `relative` a fraction of the live vertices' bounding-box
  * diagonal), like CGAL's `stitch_borders`: an edge is stitched when exactly one other boundary
@@ -3557,7 +3653,7 @@ hw_status hw_repair_report_list(const hw_repair_report *report,
 
 /**
  * The report's old-to-new maps, to read with hw_index_maps_view() (a soup's repairs fill the
- * vertex and face maps; hw_mesh_stitch_borders() all four). Owned by the report: do not free
+ * vertex and face maps; the `hw_mesh_*` repairs all four). Owned by the report: do not free
  * it; it lives as long as the report. Also `*out_removed_corners` (when not NULL): corners
  * dropped from kept faces.
  *
@@ -3629,7 +3725,8 @@ hw_repair_options hw_repair_options_default(void);
  * Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
  * tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
  * split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
- * that cannot be kept left out), stitches borders, removes small components (when asked) and
+ * that cannot be kept left out), mends degenerate triangles and splits boundary edges at
+ * T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
  * unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
  * faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
  * every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a

@@ -1051,6 +1051,22 @@ class mesh {
     check(hw_mesh_garbage_collect(get(), &maps));
     return index_maps(maps);
   }
+  /// Mends degenerate triangles (see hw_mesh_remove_degenerate_faces()): short edges collapse,
+  /// caps flip with the triangle across, the rest are removed; the mesh is compacted, the
+  /// report's maps giving the new ids.
+  repair_report remove_degenerate_faces(double tolerance = 0, bool relative = false) {
+    hw_repair_report* raw = nullptr;
+    check(hw_mesh_remove_degenerate_faces(get(), tolerance, relative, &raw));
+    return repair_report(raw);
+  }
+  /// Splits boundary edges at the T-vertices on them (see hw_mesh_remove_t_vertices()), so
+  /// that stitch_borders() can close the cracks; the report's vertex copies name the
+  /// T-vertices.
+  repair_report remove_t_vertices(double tolerance = 0, bool relative = false) {
+    hw_repair_report* raw = nullptr;
+    check(hw_mesh_remove_t_vertices(get(), tolerance, relative, &raw));
+    return repair_report(raw);
+  }
   /// Glues coincident boundary edges (see hw_mesh_stitch_borders()); the mesh is compacted,
   /// the report's maps giving the new ids.
   repair_report stitch_borders(double tolerance = 0, bool relative = false) {

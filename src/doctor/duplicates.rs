@@ -286,7 +286,7 @@ pub(super) fn t_vertices(
 }
 
 /// Whether `p` projects strictly between `a` and `b` and lies within `tolerance` of the segment.
-fn lies_inside_segment(p: [f64; 3], a: [f64; 3], b: [f64; 3], tolerance: f64) -> bool {
+pub(crate) fn lies_inside_segment(p: [f64; 3], a: [f64; 3], b: [f64; 3], tolerance: f64) -> bool {
     let ab: [f64; 3] = std::array::from_fn(|k| b[k] - a[k]);
     let ap: [f64; 3] = std::array::from_fn(|k| p[k] - a[k]);
     let squared = ab.iter().map(|x| x * x).sum::<f64>();

@@ -32,8 +32,11 @@ pub use finding::{Finding, Highlight};
 pub use shape::FoldedEdge;
 
 pub(crate) use components::face_components;
-pub(crate) use duplicates::{coincident_vertices, duplicate_faces, lowest_at_each_position};
+pub(crate) use duplicates::{
+    coincident_vertices, duplicate_faces, lies_inside_segment, lowest_at_each_position,
+};
 pub(crate) use measure::{EMPTY_BOX, bounding_box, distance, grow};
+pub(crate) use point_tree::PointTree;
 
 use std::ffi::CStr;
 

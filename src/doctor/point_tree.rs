@@ -4,7 +4,7 @@
 use super::measure::bounding_box;
 
 /// Points split recursively at the median of their widest axis, each node holding its box.
-pub(super) struct PointTree {
+pub(crate) struct PointTree {
     /// Point ids, ordered so that each node's points are a contiguous range.
     ids: Vec<u32>,
     nodes: Vec<Node>,
@@ -22,7 +22,7 @@ const LEAF: usize = 8;
 
 impl PointTree {
     /// The tree of the points `ids`, at `position(id)` (finite).
-    pub(super) fn new(mut ids: Vec<u32>, position: &impl Fn(u32) -> [f64; 3]) -> Self {
+    pub(crate) fn new(mut ids: Vec<u32>, position: &impl Fn(u32) -> [f64; 3]) -> Self {
         let mut nodes = Vec::with_capacity(2 * ids.len() / LEAF + 1);
         if !ids.is_empty() {
             let n = ids.len();
@@ -33,7 +33,7 @@ impl PointTree {
 
     /// Calls `visit(id)` for every point whose node box, grown by `reach`, the segment `a b`
     /// crosses: every point within `reach` of the segment, and some others nearby.
-    pub(super) fn near_segment(
+    pub(crate) fn near_segment(
         &self,
         a: [f64; 3],
         b: [f64; 3],

@@ -1,14 +1,17 @@
 //! Repairs: merging vertices, removing duplicate faces, unreferenced vertices and small
 //! components, orienting faces, repairing non-manifold edges and splitting non-manifold vertices
-//! of a soup (`hw_soup_*`), stitching a mesh's borders (`hw_mesh_stitch_borders`),
+//! of a soup (`hw_soup_*`), mending a mesh's degenerate triangles
+//! (`hw_mesh_remove_degenerate_faces`), splitting its boundary edges at T-vertices
+//! (`hw_mesh_remove_t_vertices`) and stitching its borders (`hw_mesh_stitch_borders`),
 //! each with a report of what changed (`hw_repair_report`), and filling a mesh's holes
 //! (`hw_mesh_fill_hole`, `hw_mesh_fill_holes`).
 
 use crate::repair::{FillError, HoleFillOptions, fill_hole, fill_holes};
 use crate::repair::{
     NonManifoldEdges, RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices,
-    orient_faces, remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices,
-    repair_non_manifold_edges, split_non_manifold_vertices, stitch_borders,
+    orient_faces, remove_degenerate_faces, remove_duplicate_faces, remove_small_components,
+    remove_t_vertices, remove_unreferenced_vertices, repair_non_manifold_edges,
+    split_non_manifold_vertices, stitch_borders,
 };
 use crate::soup::PolygonSoup;
 
@@ -22,7 +25,8 @@ use super::io::hw_soup;
 use super::mesh::hw_mesh;
 use super::status::*;
 
-/// What a repair changed. Opaque; from the `hw_soup_*` repairs and hw_mesh_stitch_borders();
+/// What a repair changed. Opaque; from the `hw_soup_*` repairs, hw_mesh_remove_degenerate_faces(),
+/// hw_mesh_remove_t_vertices() and hw_mesh_stitch_borders();
 /// read with hw_repair_report_list() and hw_repair_report_maps(), release with
 /// hw_repair_report_free(). Ids are those of the input.
 /// \ingroup repair
@@ -56,6 +60,10 @@ pub const HW_REPAIR_VERTEX_COPIES: hw_repair_list = 5;
 /// Faces whose corner order was reversed.
 /// \ingroup repair
 pub const HW_REPAIR_REORIENTED_FACES: hw_repair_list = 6;
+/// Pairs `cap, across` (2 values each) of triangles whose shared edge
+/// hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
+/// \ingroup repair
+pub const HW_REPAIR_FLIPPED_FACES: hw_repair_list = 7;
 
 /// Which components hw_soup_remove_small_components() removes.
 /// \ingroup repair
@@ -347,6 +355,85 @@ pub unsafe extern "C" fn hw_soup_split_non_manifold_vertices(
     }
 }
 
+/// Runs `repair` on the mesh and gives its report (when `out_report` is not NULL).
+///
+/// # Safety
+/// `mesh` NULL or live and not used by another thread; `out_report` NULL or writable.
+unsafe fn repair_mesh_in_place(
+    mesh: *mut hw_mesh,
+    out_report: *mut *mut hw_repair_report,
+    repair: impl FnOnce(&mut crate::mesh::Mesh) -> Result<RepairReport, RepairError>,
+) -> hw_status {
+    guard(|| {
+        let out = Out::optional(out_report);
+        // SAFETY: forwarded from the caller.
+        let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
+        let report = repair(mesh)?;
+        give_report(out, report);
+        Ok(())
+    })
+}
+
+/// Mends the mesh's degenerate triangles: those whose corners lie exactly on one line (decided
+/// exactly), or within `tolerance` of it (absolute, or when `relative` a fraction of the live
+/// vertices' bounding-box diagonal). A triangle with an edge at most the tolerance long (zero
+/// when exact) has the edge collapsed into its lower end (::HW_REPAIR_MERGED_VERTICES), which
+/// removes the two triangles beside it and keeps the surface closed; a cap (its corner opposite
+/// its longest edge on that edge) has that edge flipped with the triangle across it
+/// (::HW_REPAIR_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
+/// leaving a boundary. Every removed face is in ::HW_REPAIR_REMOVED_FACES. Faces of more than 3
+/// corners are left as they are; vertices only removed faces named stay, isolated. Corners keep
+/// their normals and texture coordinates (a corner at a merged vertex keeps its own). The mesh
+/// is then compacted (the report's maps; the identity when nothing changed, the mesh then
+/// unchanged). Afterwards no triangle is degenerate. `HW_ERR_INVALID_INPUT`, the mesh
+/// unchanged, for a tolerance negative, NaN, infinite or relative above 1.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_remove_degenerate_faces(
+    mesh: *mut hw_mesh,
+    tolerance: f64,
+    relative: bool,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_mesh_in_place(mesh, out_report, |mesh| {
+            remove_degenerate_faces(mesh, tolerance_arg(tolerance, relative))
+        })
+    }
+}
+
+/// Splits every boundary edge on whose inside a boundary vertex lies (a T-vertex: exactly, or
+/// within `tolerance` as for hw_mesh_remove_degenerate_faces()) with a new vertex at the
+/// T-vertex's position, so that hw_mesh_stitch_borders() can then close the crack. The `i`-th
+/// new vertex (id `n + i`, `n` the vertex count before) copies T-vertex `ids[i]` of
+/// ::HW_REPAIR_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
+/// are interpolated along the edge. Edges whose face has a corner at the T-vertex's position
+/// are left. Nothing is removed; the mesh is compacted (the report's maps cover the elements
+/// there were before; the identity when nothing was split). Afterwards no boundary vertex lies
+/// inside a boundary edge. Refusals as for hw_mesh_remove_degenerate_faces().
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh no other thread uses; `out_report` NULL or writable.
+/// \ingroup repair
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_remove_t_vertices(
+    mesh: *mut hw_mesh,
+    tolerance: f64,
+    relative: bool,
+    out_report: *mut *mut hw_repair_report,
+) -> hw_status {
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_mesh_in_place(mesh, out_report, |mesh| {
+            remove_t_vertices(mesh, tolerance_arg(tolerance, relative))
+        })
+    }
+}
+
 /// Glues the mesh's boundary edges that lie on each other end on end (exactly, or within
 /// `tolerance`, absolute or when `relative` a fraction of the live vertices' bounding-box
 /// diagonal), like CGAL's `stitch_borders`: an edge is stitched when exactly one other boundary
@@ -366,14 +453,12 @@ pub unsafe extern "C" fn hw_mesh_stitch_borders(
     relative: bool,
     out_report: *mut *mut hw_repair_report,
 ) -> hw_status {
-    guard(|| {
-        let out = Out::optional(out_report);
-        // SAFETY: forwarded from the caller.
-        let mesh = &mut unsafe { arg_mut(mesh, "mesh") }?.mesh;
-        let report = stitch_borders(mesh, tolerance_arg(tolerance, relative))?;
-        give_report(out, report);
-        Ok(())
-    })
+    // SAFETY: forwarded from the caller.
+    unsafe {
+        repair_mesh_in_place(mesh, out_report, |mesh| {
+            stitch_borders(mesh, tolerance_arg(tolerance, relative))
+        })
+    }
 }
 
 /// A read-only view of one list of the report (`*out_ids`, NULL when empty, with `*out_len`
@@ -401,6 +486,7 @@ pub unsafe extern "C" fn hw_repair_report_list(
                 HW_REPAIR_STITCHED_HALFEDGES => Ok(report.report.stitched_halfedges.as_flattened()),
                 HW_REPAIR_VERTEX_COPIES => Ok(&report.report.vertex_copies[..]),
                 HW_REPAIR_REORIENTED_FACES => Ok(&report.report.reoriented_faces[..]),
+                HW_REPAIR_FLIPPED_FACES => Ok(report.report.flipped_faces.as_flattened()),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown repair list {other}"
                 ))),
@@ -410,7 +496,7 @@ pub unsafe extern "C" fn hw_repair_report_list(
 }
 
 /// The report's old-to-new maps, to read with hw_index_maps_view() (a soup's repairs fill the
-/// vertex and face maps; hw_mesh_stitch_borders() all four). Owned by the report: do not free
+/// vertex and face maps; the `hw_mesh_*` repairs all four). Owned by the report: do not free
 /// it; it lives as long as the report. Also `*out_removed_corners` (when not NULL): corners
 /// dropped from kept faces.
 ///

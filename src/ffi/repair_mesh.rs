@@ -18,7 +18,8 @@ use super::repair::{
 use super::status::*;
 
 /// Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
-/// duplicates only and keeps every component.
+/// duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
+/// exactly on them, and keeps every component.
 /// \ingroup repair
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -39,6 +40,22 @@ pub struct hw_repair_options {
     pub small_rule: hw_small_components,
     /// The face count or the diameter ratio.
     pub small_value: f64,
+    /// Whether degenerate triangles are mended (hw_mesh_remove_degenerate_faces(), after the
+    /// build). Default true.
+    pub remove_degenerate_faces: bool,
+    /// Triangles this close to a line are degenerate (as `merge_tolerance`). Default 0: exactly
+    /// on one line.
+    pub degenerate_tolerance: f64,
+    /// Whether `degenerate_tolerance` is relative. Default false.
+    pub degenerate_relative: bool,
+    /// Whether boundary edges are split at T-vertices (hw_mesh_remove_t_vertices(), before
+    /// stitching). Default true.
+    pub remove_t_vertices: bool,
+    /// Boundary vertices this close to another boundary edge split it (as `merge_tolerance`).
+    /// Default 0: exactly on the edge.
+    pub t_vertex_tolerance: f64,
+    /// Whether `t_vertex_tolerance` is relative. Default false.
+    pub t_vertex_relative: bool,
 }
 
 /// The default options of hw_repair_mesh().
@@ -53,6 +70,12 @@ pub extern "C" fn hw_repair_options_default() -> hw_repair_options {
         remove_small_components: false,
         small_rule: HW_SMALL_BY_FACE_COUNT,
         small_value: 0.0,
+        remove_degenerate_faces: true,
+        degenerate_tolerance: 0.0,
+        degenerate_relative: false,
+        remove_t_vertices: true,
+        t_vertex_tolerance: 0.0,
+        t_vertex_relative: false,
     }
 }
 
@@ -83,6 +106,12 @@ impl TryFrom<&hw_repair_options> for RepairOptions {
         };
         Ok(RepairOptions {
             merge_tolerance: tolerance_arg(o.merge_tolerance, o.merge_relative),
+            degenerate_tolerance: o
+                .remove_degenerate_faces
+                .then(|| tolerance_arg(o.degenerate_tolerance, o.degenerate_relative)),
+            t_vertex_tolerance: o
+                .remove_t_vertices
+                .then(|| tolerance_arg(o.t_vertex_tolerance, o.t_vertex_relative)),
             stitch_tolerance: tolerance_arg(o.stitch_tolerance, o.stitch_relative),
             small_components,
         })
@@ -128,6 +157,10 @@ pub const HW_FATE_SMALL_COMPONENT: hw_fate = 6;
 /// A vertex removed because no kept face names it (id `UINT32_MAX`).
 /// \ingroup repair
 pub const HW_FATE_UNREFERENCED: hw_fate = 7;
+/// A face removed as degenerate: its corners on one line, collapsed with a short edge or
+/// removed by hw_mesh_remove_degenerate_faces() (id `UINT32_MAX`).
+/// \ingroup repair
+pub const HW_FATE_DEGENERATE: hw_fate = 8;
 
 /// One list of hw_repair_fates_list().
 /// \ingroup repair
@@ -170,6 +203,10 @@ pub struct hw_repair_fate_counts {
     pub removed_faces: usize,
     /// Pairs of boundary edges stitched into one.
     pub stitched_edges: usize,
+    /// Edges flipped to mend a degenerate triangle.
+    pub flipped_edges: usize,
+    /// Boundary edges split at a T-vertex.
+    pub split_edges: usize,
 }
 
 fn removal_kind(why: Removal) -> (hw_fate, u32) {
@@ -177,6 +214,7 @@ fn removal_kind(why: Removal) -> (hw_fate, u32) {
         Removal::Collapsed => (HW_FATE_COLLAPSED, INVALID_INDEX),
         Removal::Duplicate { of } => (HW_FATE_DUPLICATE, of),
         Removal::Unbuildable => (HW_FATE_UNBUILDABLE, INVALID_INDEX),
+        Removal::Degenerate => (HW_FATE_DEGENERATE, INVALID_INDEX),
         Removal::SmallComponent => (HW_FATE_SMALL_COMPONENT, INVALID_INDEX),
         Removal::Unreferenced => (HW_FATE_UNREFERENCED, INVALID_INDEX),
     }
@@ -221,7 +259,8 @@ impl hw_repair_fates {
 /// Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
 /// tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
 /// split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
-/// that cannot be kept left out), stitches borders, removes small components (when asked) and
+/// that cannot be kept left out), mends degenerate triangles and splits boundary edges at
+/// T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
 /// unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
 /// faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
 /// every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
@@ -320,6 +359,8 @@ pub unsafe extern "C" fn hw_repair_fates_counts(
             reversed_faces,
             removed_faces,
             stitched_edges: fates.stitched_edges,
+            flipped_edges: fates.flipped_edges,
+            split_edges: fates.split_edges,
         };
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(counts) };

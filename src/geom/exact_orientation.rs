@@ -180,6 +180,18 @@ impl ExactOrientation {
     }
 }
 
+/// Whether three finite points lie exactly on one line (two or all of them equal included):
+/// the exact signs of the triangle's projections on the three coordinate planes are all zero.
+pub(crate) fn are_collinear(a: Point, b: Point, c: Point) -> bool {
+    let mut points = [a, b, c];
+    let range = ExponentRange::of(points.iter().flatten().copied());
+    let arithmetic = ExactOrientation::for_points(&mut points, range);
+    let [a, b, c] = points;
+    [(0, 1), (1, 2), (2, 0)]
+        .into_iter()
+        .all(|(i, j)| arithmetic.orient2d([a[i], a[j]], [b[i], b[j]], [c[i], c[j]]) == Sign::Zero)
+}
+
 /// Multiplies `points` by `2^shift` (exactly, within the adaptive range).
 pub(crate) fn scale_points(points: &mut [Point], shift: i32) {
     for p in points {

@@ -6,8 +6,8 @@ pub(crate) use newell::{
     triangle_squared_size,
 };
 mod normals;
-pub(crate) use newell::rescued_area_vector;
-pub(crate) use normals::normalized;
+pub(crate) use newell::{cross, difference, rescued_area_vector};
+pub(crate) use normals::{dot, normalized};
 mod box_tree;
 mod embedded_stars;
 pub(crate) mod exact_orientation;

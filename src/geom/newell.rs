@@ -225,7 +225,7 @@ fn is_negligible_area(area_vector: [f64; 3], squared_perimeter: f64) -> bool {
     squared_length(area_vector) <= bound * bound
 }
 
-fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+pub(crate) fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
     [
         u[1] * v[2] - u[2] * v[1],
         u[2] * v[0] - u[0] * v[2],
@@ -233,7 +233,7 @@ fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+pub(crate) fn difference(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 

@@ -394,7 +394,7 @@ fn add_scaled(sum: &mut [f64; 3], v: [f64; 3], weight: f64) {
     }
 }
 
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 

@@ -44,6 +44,10 @@ pub enum Removal {
     /// [`BuildPolicy::Repair`](crate::soup::BuildPolicy::Repair)), or a vertex with a NaN or
     /// infinite coordinate.
     Unbuildable,
+    /// A triangle whose corners lie on one line (see
+    /// [`remove_degenerate_faces`](super::remove_degenerate_faces)), removed or collapsed with
+    /// its short edge; or a vertex merged away by such a collapse that nothing followed.
+    Degenerate,
     /// In a component removed as small.
     SmallComponent,
     /// A vertex no kept face names.
@@ -118,6 +122,13 @@ impl Ledger {
                 t.removal = Some(why);
             }
         }
+    }
+
+    /// Applies a step's report: its vertex and face maps, merged vertices following the vertex
+    /// they went into, other gone elements removed for `why`.
+    pub(super) fn apply(&mut self, report: &super::RepairReport, why: Removal) {
+        self.map_vertices(&report.maps.vertices, &report.merged_vertices, why);
+        self.map_faces(&report.maps.faces, |_| why);
     }
 
     /// Applies a step's face map; gone faces are removed for `why(old id)`.

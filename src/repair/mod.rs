@@ -4,7 +4,9 @@
 //! On indexed face lists ([`PolygonSoup`](crate::soup::PolygonSoup)): [`merge_vertices`] (exact and near duplicates),
 //! [`remove_duplicate_faces`], [`remove_unreferenced_vertices`] and
 //! [`remove_small_components`], [`orient_faces`], [`repair_non_manifold_edges`] and
-//! [`split_non_manifold_vertices`]. On a [`Mesh`](crate::mesh::Mesh): [`stitch_borders`], and
+//! [`split_non_manifold_vertices`]. On a [`Mesh`](crate::mesh::Mesh): [`remove_degenerate_faces`] (collapsing short edges,
+//! flipping caps), [`remove_t_vertices`] (splitting boundary edges where another border's vertex
+//! lies on them), [`stitch_borders`], and
 //! [`fill_hole`] / [`fill_holes`], which close boundary loops with triangles.
 //! The doctor's detection serves them: what it lists as duplicates, unreferenced vertices or
 //! small components is what the repairs remove.
@@ -22,9 +24,12 @@
 mod fates;
 mod fill_hole;
 mod merge_vertices;
+mod mesh_maps;
 mod orient_faces;
+mod remove_degenerate_faces;
 mod remove_duplicate_faces;
 mod remove_small_components;
+mod remove_t_vertices;
 mod remove_unreferenced_vertices;
 mod repair_mesh;
 mod repair_non_manifold_edges;
@@ -40,8 +45,10 @@ pub use fill_hole::{
 };
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;
+pub use remove_degenerate_faces::remove_degenerate_faces;
 pub use remove_duplicate_faces::remove_duplicate_faces;
 pub use remove_small_components::{SmallComponents, remove_small_components};
+pub use remove_t_vertices::remove_t_vertices;
 pub use remove_unreferenced_vertices::remove_unreferenced_vertices;
 pub use repair_mesh::{FateCounts, RepairFates, RepairOptions, RepairStep, repair_mesh};
 pub use repair_non_manifold_edges::{NonManifoldEdges, repair_non_manifold_edges};
@@ -75,6 +82,9 @@ pub struct RepairReport {
     pub vertex_copies: Vec<u32>,
     /// Faces whose corner order was reversed.
     pub reoriented_faces: Vec<u32>,
+    /// Pairs `[cap, across]` of triangles whose shared edge [`remove_degenerate_faces`] flipped:
+    /// `cap` had a corner on the edge. Both stay.
+    pub flipped_faces: Vec<[u32; 2]>,
     /// Corners dropped from faces that were kept (a corner repeating its predecessor's vertex
     /// after a merge).
     pub removed_corners: usize,
@@ -89,6 +99,7 @@ impl RepairReport {
             && self.stitched_halfedges.is_empty()
             && self.vertex_copies.is_empty()
             && self.reoriented_faces.is_empty()
+            && self.flipped_faces.is_empty()
             && self.removed_corners == 0
     }
 }

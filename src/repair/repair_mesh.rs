@@ -3,17 +3,25 @@
 use super::fates::Ledger;
 use super::{
     FaceFate, Removal, RepairError, SmallComponents, Tolerance, VertexFate, merge_vertices,
-    remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices, stitch_borders,
+    remove_degenerate_faces, remove_duplicate_faces, remove_small_components, remove_t_vertices,
+    remove_unreferenced_vertices, stitch_borders,
 };
 use crate::mesh::{INVALID_INDEX, Mesh, VertexId, compaction_map};
 use crate::soup::{BuildPolicy, PolygonSoup};
 
-/// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only and keeps
-/// every component.
+/// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only, mends
+/// exactly degenerate triangles, splits edges at vertices exactly on them, and keeps every
+/// component.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RepairOptions {
     /// Vertices this close merge (first step).
     pub merge_tolerance: Tolerance,
+    /// Triangles this close to a line are mended (after the build), or `None` to leave
+    /// degenerate triangles as they are.
+    pub degenerate_tolerance: Option<Tolerance>,
+    /// Boundary vertices this close to another boundary edge split it (before stitching), or
+    /// `None` to leave T-vertices as they are.
+    pub t_vertex_tolerance: Option<Tolerance>,
     /// Boundary edges this close stitch (after the build).
     pub stitch_tolerance: Tolerance,
     /// Components removed as small, if any.
@@ -24,6 +32,8 @@ impl Default for RepairOptions {
     fn default() -> Self {
         RepairOptions {
             merge_tolerance: Tolerance::EXACT,
+            degenerate_tolerance: Some(Tolerance::EXACT),
+            t_vertex_tolerance: Some(Tolerance::EXACT),
             stitch_tolerance: Tolerance::EXACT,
             small_components: None,
         }
@@ -40,6 +50,10 @@ pub enum RepairStep {
     /// The build under [`BuildPolicy::Repair`]: non-manifold vertices split, non-manifold edges
     /// cut, faces reoriented to agree, closed components turned outward.
     Build,
+    /// [`remove_degenerate_faces`] with [`RepairOptions::degenerate_tolerance`], when set.
+    RemoveDegenerateFaces,
+    /// [`remove_t_vertices`] with [`RepairOptions::t_vertex_tolerance`], when set.
+    RemoveTVertices,
     /// [`stitch_borders`] with [`RepairOptions::stitch_tolerance`].
     StitchBorders,
     /// [`remove_small_components`], when [`RepairOptions::small_components`] is set.
@@ -50,10 +64,12 @@ pub enum RepairStep {
 
 impl RepairStep {
     /// Every step, in the order [`repair_mesh`] runs them.
-    pub const ALL: [RepairStep; 6] = [
+    pub const ALL: [RepairStep; 8] = [
         RepairStep::MergeVertices,
         RepairStep::RemoveDuplicateFaces,
         RepairStep::Build,
+        RepairStep::RemoveDegenerateFaces,
+        RepairStep::RemoveTVertices,
         RepairStep::StitchBorders,
         RepairStep::RemoveSmallComponents,
         RepairStep::RemoveUnreferencedVertices,
@@ -70,8 +86,13 @@ pub struct RepairFates {
     /// The fate of every input face.
     pub faces: Vec<FaceFate>,
     /// Pairs `[output vertex, input vertex]` of output vertices that copy an input vertex (made
-    /// by splitting non-manifold vertices and cutting non-manifold edges), by output id.
+    /// by splitting non-manifold vertices, cutting non-manifold edges, and splitting an edge at
+    /// a T-vertex where stitching did not merge the copy into it), by output id.
     pub added_vertices: Vec<[u32; 2]>,
+    /// Edges flipped to mend a degenerate triangle (both its faces kept, with new corners).
+    pub flipped_edges: usize,
+    /// Boundary edges split at a T-vertex (one per T-vertex; the face beside gains a corner).
+    pub split_edges: usize,
     /// Pairs of boundary edges stitched into one.
     pub stitched_edges: usize,
 }
@@ -158,6 +179,7 @@ impl Removal {
     pub fn name(self) -> &'static str {
         match self {
             Removal::Collapsed => "collapsed",
+            Removal::Degenerate => "degenerate",
             Removal::Duplicate { .. } => "duplicate",
             Removal::Unbuildable => "unbuildable",
             Removal::SmallComponent => "small component",
@@ -175,7 +197,8 @@ enum Work {
 /// Runs the repairs on `soup`, in the order of [`RepairStep::ALL`], and builds the result:
 /// merge duplicate vertices, remove duplicate faces, build under [`BuildPolicy::Repair`]
 /// (split non-manifold vertices, cut non-manifold edges, reorient, turn closed components
-/// outward, leave out faces it cannot keep), stitch borders, remove small components (when
+/// outward, leave out faces it cannot keep), mend degenerate triangles and split boundary
+/// edges at T-vertices (each when asked, as by default), stitch borders, remove small components (when
 /// asked), remove unreferenced vertices. The mesh comes from a last build under
 /// [`BuildPolicy::Repair`], which only turns closed components that stitching closed outward.
 ///
@@ -192,9 +215,9 @@ pub fn repair_mesh(
 ) -> Result<(Mesh, RepairFates), RepairError> {
     let mut ledger = Ledger::new(soup.positions.len(), soup.n_faces());
     let mut work = Work::Soup(soup.clone());
-    let mut stitched_edges = 0;
+    let mut edits = StepEdits::default();
     for step in RepairStep::ALL {
-        stitched_edges += run(step, &mut work, options, &mut ledger)?;
+        run(step, &mut work, options, &mut ledger, &mut edits)?;
     }
     let mesh = match work {
         Work::Mesh(mesh) => *mesh,
@@ -206,18 +229,29 @@ pub fn repair_mesh(
             vertices: ledger.vertex_fates(),
             faces: ledger.face_fates(),
             added_vertices: ledger.added_vertices(),
-            stitched_edges,
+            flipped_edges: edits.flipped_edges,
+            split_edges: edits.split_edges,
+            stitched_edges: edits.stitched_edges,
         },
     ))
 }
 
-/// Runs one step, giving the number of edges it stitched.
+/// The edits of the steps that change elements without adding or removing them.
+#[derive(Default)]
+struct StepEdits {
+    flipped_edges: usize,
+    split_edges: usize,
+    stitched_edges: usize,
+}
+
+/// Runs one step, recording its fates in `ledger` and its other edits in `edits`.
 fn run(
     step: RepairStep,
     work: &mut Work,
     options: &RepairOptions,
     ledger: &mut Ledger,
-) -> Result<usize, RepairError> {
+    edits: &mut StepEdits,
+) -> Result<(), RepairError> {
     match step {
         RepairStep::MergeVertices => {
             let report = merge_vertices(soup(work, ledger), options.merge_tolerance)?;
@@ -246,15 +280,32 @@ fn run(
                 *work = Work::Mesh(Box::new(build(soup, ledger)?));
             }
         }
+        RepairStep::RemoveDegenerateFaces => {
+            if let Some(tolerance) = options.degenerate_tolerance {
+                let report = remove_degenerate_faces(mesh(work, ledger)?, tolerance)?;
+                ledger.apply(&report, Removal::Degenerate);
+                edits.flipped_edges += report.flipped_faces.len();
+            }
+        }
+        RepairStep::RemoveTVertices => {
+            if let Some(tolerance) = options.t_vertex_tolerance {
+                let mesh = mesh(work, ledger)?;
+                let report = remove_t_vertices(mesh, tolerance)?;
+                ledger.map_vertices(&report.maps.vertices, &[], Removal::Unbuildable);
+                let sources: Vec<u32> = report
+                    .vertex_copies
+                    .iter()
+                    .map(|&v| report.maps.vertices[v as usize])
+                    .collect();
+                let first = mesh.n_vertices() - sources.len();
+                ledger.add_vertices(first as u32, &sources);
+                edits.split_edges += sources.len();
+            }
+        }
         RepairStep::StitchBorders => {
             let report = stitch_borders(mesh(work, ledger)?, options.stitch_tolerance)?;
-            ledger.map_vertices(
-                &report.maps.vertices,
-                &report.merged_vertices,
-                Removal::Unbuildable,
-            );
-            ledger.map_faces(&report.maps.faces, |_| Removal::Unbuildable);
-            return Ok(report.stitched_halfedges.len());
+            ledger.apply(&report, Removal::Unbuildable);
+            edits.stitched_edges += report.stitched_halfedges.len();
         }
         RepairStep::RemoveSmallComponents => {
             if let Some(small) = options.small_components {
@@ -268,7 +319,7 @@ fn run(
             ledger.map_vertices(&report.maps.vertices, &[], Removal::Unreferenced);
         }
     }
-    Ok(0)
+    Ok(())
 }
 
 /// The work as a soup, a mesh being turned into its face list (deleted elements compacted).

@@ -1,9 +1,9 @@
 //! Stitching borders: gluing boundary edges that lie on each other.
 
-use super::tolerance::clusters;
+use super::mesh_maps::identity_maps;
+use super::tolerance::{absolute_on_mesh, clusters};
 use super::{RepairError, RepairReport, Tolerance};
-use crate::doctor::{bounding_box, distance};
-use crate::mesh::{HalfedgeId, INVALID_INDEX, IndexMaps, Mesh};
+use crate::mesh::{HalfedgeId, INVALID_INDEX, Mesh};
 use crate::support::disjoint_sets;
 
 /// Glues the boundary edges of `mesh` that lie on each other, end on end (exactly, or within
@@ -29,11 +29,7 @@ use crate::support::disjoint_sets;
 /// identity.
 pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairReport, RepairError> {
     let n_slots = mesh.vertex_capacity();
-    let live_vertices = (0..n_slots as u32)
-        .filter(|&v| !mesh.is_vertex_deleted(crate::mesh::VertexId(v)))
-        .map(|v| mesh.positions()[v as usize]);
-    let [low, high] = bounding_box(live_vertices);
-    let absolute = tolerance.absolute(distance(low, high))?;
+    let absolute = absolute_on_mesh(tolerance, mesh)?;
 
     let boundary: Vec<HalfedgeId> = (0..mesh.halfedge_capacity() as u32)
         .map(HalfedgeId)
@@ -104,12 +100,7 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
 
     if pairs.is_empty() {
         return Ok(RepairReport {
-            maps: IndexMaps {
-                vertices: (0..n_slots as u32).collect(),
-                halfedges: (0..mesh.halfedge_capacity() as u32).collect(),
-                edges: (0..mesh.edge_capacity() as u32).collect(),
-                faces: (0..mesh.face_capacity() as u32).collect(),
-            },
+            maps: identity_maps(mesh),
             ..RepairReport::default()
         });
     }

@@ -1,7 +1,8 @@
 //! The distance under which two positions count as one, and the clusters it makes.
 
 use super::RepairError;
-use crate::doctor::{coincident_vertices, distance, lowest_at_each_position};
+use crate::doctor::{bounding_box, coincident_vertices, distance, lowest_at_each_position};
+use crate::mesh::{Mesh, VertexId};
 
 /// How close two positions must be to be merged or stitched.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,6 +36,16 @@ impl Tolerance {
             Tolerance::Relative(_) => Ok(0.0),
         }
     }
+}
+
+/// The absolute distance of `tolerance` on `mesh`: a relative one scales the diagonal of the
+/// live vertices' bounding box. Refused as [`Tolerance::absolute`] refuses.
+pub(crate) fn absolute_on_mesh(tolerance: Tolerance, mesh: &Mesh) -> Result<f64, RepairError> {
+    let live = (0..mesh.vertex_capacity() as u32)
+        .filter(|&v| !mesh.is_vertex_deleted(VertexId(v)))
+        .map(|v| mesh.positions()[v as usize]);
+    let [low, high] = bounding_box(live);
+    tolerance.absolute(distance(low, high))
 }
 
 /// The kept position of every position: the lowest of its cluster (`kept[v] <= v`; non-finite

@@ -13,12 +13,21 @@ usage: halfwing repair IN OUT [options]
 Repairs IN and writes the result to OUT (format by extension, as for convert): merges duplicate
 vertices, removes duplicate faces, builds a manifold (splitting non-manifold vertices, cutting
 non-manifold edges, orienting faces consistently and closed parts outward, leaving out faces that
-cannot be kept), stitches borders, optionally removes small components, removes unreferenced
-vertices. Prints what became of the input's vertices and faces.
+cannot be kept), mends degenerate triangles (collapsing short edges, flipping caps), splits
+boundary edges at T-vertices, stitches borders, optionally removes small components, removes
+unreferenced vertices. Prints what became of the input's vertices and faces.
 
 options:
   --merge-tolerance T     merge vertices at most T apart (default 0: identical positions)
   --merge-relative R      ... at most R (0 to 1) times the bounding-box diagonal apart
+  --degenerate-tolerance T  mend triangles whose corners are within T of a line (default 0:
+                          exactly on one line)
+  --degenerate-relative R ... within R times the diagonal
+  --keep-degenerate-faces leave degenerate triangles as they are
+  --t-vertex-tolerance T  split boundary edges at boundary vertices at most T from them
+                          (default 0: exactly on the edge)
+  --t-vertex-relative R   ... at most R times the diagonal from them
+  --keep-t-vertices       leave T-vertices as they are
   --stitch-tolerance T    stitch boundary edges whose ends are at most T apart (default 0)
   --stitch-relative R     ... at most R times the diagonal apart
   --small-faces N         remove components of at most N faces
@@ -31,10 +40,19 @@ malformed as a whole, 4 OUT cannot be written.
 pub fn run(args: &[String]) -> Outcome {
     let Some(args) = Args::parse(
         args,
-        &["--binary", "--ascii"],
+        &[
+            "--binary",
+            "--ascii",
+            "--keep-degenerate-faces",
+            "--keep-t-vertices",
+        ],
         &[
             "--merge-tolerance",
             "--merge-relative",
+            "--degenerate-tolerance",
+            "--degenerate-relative",
+            "--t-vertex-tolerance",
+            "--t-vertex-relative",
             "--stitch-tolerance",
             "--stitch-relative",
             "--small-faces",
@@ -51,6 +69,18 @@ pub fn run(args: &[String]) -> Outcome {
     let binary = ply_binary(&args, output)?;
     let options = RepairOptions {
         merge_tolerance: tolerance(&args, "--merge-tolerance", "--merge-relative")?,
+        degenerate_tolerance: optional_step(
+            &args,
+            "--keep-degenerate-faces",
+            "--degenerate-tolerance",
+            "--degenerate-relative",
+        )?,
+        t_vertex_tolerance: optional_step(
+            &args,
+            "--keep-t-vertices",
+            "--t-vertex-tolerance",
+            "--t-vertex-relative",
+        )?,
         stitch_tolerance: tolerance(&args, "--stitch-tolerance", "--stitch-relative")?,
         small_components: match (
             args.parsed::<usize>("--small-faces")?,
@@ -103,7 +133,10 @@ pub fn run(args: &[String]) -> Outcome {
             println!("  removed {what} ({reason}): {count}");
         }
     }
-    println!("stitched edges: {}", fates.stitched_edges);
+    println!(
+        "flipped edges: {}, split edges: {}, stitched edges: {}",
+        fates.flipped_edges, fates.split_edges, fates.stitched_edges
+    );
     Ok(0)
 }
 
@@ -117,4 +150,22 @@ fn tolerance(args: &Args, absolute: &str, relative: &str) -> Result<Tolerance, F
         (None, Some(r)) => Ok(Tolerance::Relative(r)),
         (None, None) => Ok(Tolerance::EXACT),
     }
+}
+
+/// The tolerance of a step that `keep` turns off (`None`), refusing a tolerance given with it.
+fn optional_step(
+    args: &Args,
+    keep: &str,
+    absolute: &str,
+    relative: &str,
+) -> Result<Option<Tolerance>, Failure> {
+    if !args.flag(keep) {
+        return tolerance(args, absolute, relative).map(Some);
+    }
+    if args.value(absolute).is_some() || args.value(relative).is_some() {
+        return Err(Failure::usage(format!(
+            "{keep} excludes {absolute} and {relative}"
+        )));
+    }
+    Ok(None)
 }

@@ -1,0 +1,13 @@
+//! The index maps of a mesh repair that changed nothing.
+
+use crate::mesh::{IndexMaps, Mesh};
+
+/// Identity maps of every slot of the mesh's vertices, half-edges, edges and faces.
+pub(super) fn identity_maps(mesh: &Mesh) -> IndexMaps {
+    IndexMaps {
+        vertices: (0..mesh.vertex_capacity() as u32).collect(),
+        halfedges: (0..mesh.halfedge_capacity() as u32).collect(),
+        edges: (0..mesh.edge_capacity() as u32).collect(),
+        faces: (0..mesh.face_capacity() as u32).collect(),
+    }
+}
