@@ -2,22 +2,41 @@
 
 use super::fates::Ledger;
 use super::{
-    FaceFate, Removal, RepairError, SmallComponents, Tolerance, VertexFate, merge_vertices,
-    remove_duplicate_faces, remove_small_components, remove_unreferenced_vertices, stitch_borders,
+    FaceFate, FillError, HoleFillOptions, Removal, RepairError, SmallComponents, Tolerance,
+    VertexFate, fill_holes, merge_vertices, remove_duplicate_faces, remove_small_components,
+    remove_unreferenced_vertices, stitch_borders,
 };
-use crate::mesh::{INVALID_INDEX, Mesh, VertexId, compaction_map};
+use crate::mesh::{FaceId, INVALID_INDEX, Mesh, VertexId, compaction_map};
 use crate::soup::{BuildPolicy, PolygonSoup};
 
-/// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only and keeps
-/// every component.
+/// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only, fills no
+/// hole and keeps every component.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RepairOptions {
     /// Vertices this close merge (first step).
     pub merge_tolerance: Tolerance,
     /// Boundary edges this close stitch (after the build).
     pub stitch_tolerance: Tolerance,
+    /// Holes filled (after stitching), if any: see [`fill_holes`]. Off by default: an open
+    /// surface (a terrain, a sheet, a scan's outer border) is often open on purpose, and a fill
+    /// adds faces no input describes. [`RepairOptions::fill_holes_up_to`] fills the holes of at
+    /// most some number of boundary edges.
+    pub fill_holes: Option<HoleFillOptions>,
     /// Components removed as small, if any.
     pub small_components: Option<SmallComponents>,
+}
+
+impl RepairOptions {
+    /// These options, filling every hole of at most `max_edges` boundary edges.
+    pub fn fill_holes_up_to(self, max_edges: usize) -> Self {
+        RepairOptions {
+            fill_holes: Some(HoleFillOptions {
+                max_edges,
+                ..HoleFillOptions::default()
+            }),
+            ..self
+        }
+    }
 }
 
 impl Default for RepairOptions {
@@ -25,6 +44,7 @@ impl Default for RepairOptions {
         RepairOptions {
             merge_tolerance: Tolerance::EXACT,
             stitch_tolerance: Tolerance::EXACT,
+            fill_holes: None,
             small_components: None,
         }
     }
@@ -42,6 +62,8 @@ pub enum RepairStep {
     Build,
     /// [`stitch_borders`] with [`RepairOptions::stitch_tolerance`].
     StitchBorders,
+    /// [`fill_holes`], when [`RepairOptions::fill_holes`] is set: holes it refuses stay open.
+    FillHoles,
     /// [`remove_small_components`], when [`RepairOptions::small_components`] is set.
     RemoveSmallComponents,
     /// [`remove_unreferenced_vertices`].
@@ -50,11 +72,12 @@ pub enum RepairStep {
 
 impl RepairStep {
     /// Every step, in the order [`repair_mesh`] runs them.
-    pub const ALL: [RepairStep; 6] = [
+    pub const ALL: [RepairStep; 7] = [
         RepairStep::MergeVertices,
         RepairStep::RemoveDuplicateFaces,
         RepairStep::Build,
         RepairStep::StitchBorders,
+        RepairStep::FillHoles,
         RepairStep::RemoveSmallComponents,
         RepairStep::RemoveUnreferencedVertices,
     ];
@@ -62,7 +85,8 @@ impl RepairStep {
 
 /// What [`repair_mesh`] did to every input element. Every input vertex is kept, merged or
 /// removed, every input face kept or removed; the output's vertices are the kept input vertices
-/// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces.
+/// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces and the
+/// added ones ([`RepairFates::added_faces`]). Filling holes adds faces, never vertices.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct RepairFates {
     /// The fate of every input vertex.
@@ -72,8 +96,14 @@ pub struct RepairFates {
     /// Pairs `[output vertex, input vertex]` of output vertices that copy an input vertex (made
     /// by splitting non-manifold vertices and cutting non-manifold edges), by output id.
     pub added_vertices: Vec<[u32; 2]>,
+    /// Output faces that no input face became: the triangles filling holes, by output id.
+    pub added_faces: Vec<u32>,
     /// Pairs of boundary edges stitched into one.
     pub stitched_edges: usize,
+    /// Holes filled.
+    pub filled_holes: usize,
+    /// Holes within [`RepairOptions::fill_holes`]' bounds that filling refused (left open).
+    pub refused_holes: usize,
 }
 
 /// Counts of a [`RepairFates`].
@@ -87,6 +117,8 @@ pub struct FateCounts {
     pub removed_vertices: usize,
     /// Output vertices that copy an input vertex.
     pub added_vertices: usize,
+    /// Output faces that no input face became (hole fills).
+    pub added_faces: usize,
     /// Input faces in the output.
     pub kept_faces: usize,
     /// Kept faces that run the other way round.
@@ -98,10 +130,11 @@ pub struct FateCounts {
 impl RepairFates {
     /// The number of elements of every fate: kept, merged and removed vertices sum to the input
     /// vertices, kept and added ones to the output's; kept and removed faces sum to the input
-    /// faces.
+    /// faces, kept and added ones to the output's.
     pub fn counts(&self) -> FateCounts {
         let mut counts = FateCounts {
             added_vertices: self.added_vertices.len(),
+            added_faces: self.added_faces.len(),
             ..FateCounts::default()
         };
         for fate in &self.vertices {
@@ -175,8 +208,8 @@ enum Work {
 /// Runs the repairs on `soup`, in the order of [`RepairStep::ALL`], and builds the result:
 /// merge duplicate vertices, remove duplicate faces, build under [`BuildPolicy::Repair`]
 /// (split non-manifold vertices, cut non-manifold edges, reorient, turn closed components
-/// outward, leave out faces it cannot keep), stitch borders, remove small components (when
-/// asked), remove unreferenced vertices. The mesh comes from a last build under
+/// outward, leave out faces it cannot keep), stitch borders, fill holes (when asked), remove
+/// small components (when asked), remove unreferenced vertices. The mesh comes from a last build under
 /// [`BuildPolicy::Repair`], which only turns closed components that stitching closed outward.
 ///
 /// The returned mesh passes [`Mesh::check`] and builds again under [`BuildPolicy::Strict`]
@@ -192,9 +225,9 @@ pub fn repair_mesh(
 ) -> Result<(Mesh, RepairFates), RepairError> {
     let mut ledger = Ledger::new(soup.positions.len(), soup.n_faces());
     let mut work = Work::Soup(soup.clone());
-    let mut stitched_edges = 0;
+    let mut tally = Tally::default();
     for step in RepairStep::ALL {
-        stitched_edges += run(step, &mut work, options, &mut ledger)?;
+        run(step, &mut work, options, &mut ledger, &mut tally)?;
     }
     let mesh = match work {
         Work::Mesh(mesh) => *mesh,
@@ -206,18 +239,30 @@ pub fn repair_mesh(
             vertices: ledger.vertex_fates(),
             faces: ledger.face_fates(),
             added_vertices: ledger.added_vertices(),
-            stitched_edges,
+            added_faces: ledger.added_faces(),
+            stitched_edges: tally.stitched_edges,
+            filled_holes: tally.filled_holes,
+            refused_holes: tally.refused_holes,
         },
     ))
 }
 
-/// Runs one step, giving the number of edges it stitched.
+/// What the steps did beyond the fates of elements.
+#[derive(Default)]
+struct Tally {
+    stitched_edges: usize,
+    filled_holes: usize,
+    refused_holes: usize,
+}
+
+/// Runs one step.
 fn run(
     step: RepairStep,
     work: &mut Work,
     options: &RepairOptions,
     ledger: &mut Ledger,
-) -> Result<usize, RepairError> {
+    tally: &mut Tally,
+) -> Result<(), RepairError> {
     match step {
         RepairStep::MergeVertices => {
             let report = merge_vertices(soup(work, ledger), options.merge_tolerance)?;
@@ -254,7 +299,35 @@ fn run(
                 Removal::Unbuildable,
             );
             ledger.map_faces(&report.maps.faces, |_| Removal::Unbuildable);
-            return Ok(report.stitched_halfedges.len());
+            tally.stitched_edges += report.stitched_halfedges.len();
+        }
+        RepairStep::FillHoles => {
+            if let Some(fill) = options.fill_holes {
+                let mesh = mesh(work, ledger)?;
+                let report = fill_holes(mesh, &fill).map_err(|e| match e {
+                    FillError::BadOption { name, value, range } => {
+                        RepairError::BadOption { name, value, range }
+                    }
+                    other => unreachable!("fill_holes refuses only options: {other}"),
+                })?;
+                let mut added: Vec<u32> = report
+                    .filled
+                    .iter()
+                    .flat_map(|hole| hole.faces.iter().map(|f| f.0))
+                    .collect();
+                added.sort_unstable();
+                ledger.add_faces(&added);
+                // A refused fill may leave a deleted face id behind: the ids are compacted as
+                // the mesh turns into a face list.
+                let deleted: Vec<bool> = (0..mesh.face_capacity() as u32)
+                    .map(|f| mesh.is_face_deleted(FaceId(f)))
+                    .collect();
+                ledger.map_faces(&compaction_map(deleted.len(), &deleted), |_| {
+                    Removal::Unbuildable
+                });
+                tally.filled_holes += report.filled.len();
+                tally.refused_holes += report.refused.len();
+            }
         }
         RepairStep::RemoveSmallComponents => {
             if let Some(small) = options.small_components {
@@ -268,7 +341,7 @@ fn run(
             ledger.map_vertices(&report.maps.vertices, &[], Removal::Unreferenced);
         }
     }
-    Ok(0)
+    Ok(())
 }
 
 /// The work as a soup, a mesh being turned into its face list (deleted elements compacted).
