@@ -164,11 +164,6 @@
 #define HW_VERSION_NUMBER (((HW_VERSION_MAJOR * 10000) + (HW_VERSION_MINOR * 100)) + HW_VERSION_PATCH)
 
 /**
- * The steps of [`repair_mesh`], in the order they run.
- */
-typedef struct RepairStep RepairStep;
-
-/**
  * A 2D Delaunay triangulation, without its Voronoi diagram. Opaque; build it with
  * hw_delaunay_build() and release it with hw_delaunay_free(). It never changes after
  * construction, so every function taking a `const hw_delaunay *` may run concurrently.

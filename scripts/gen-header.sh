@@ -23,7 +23,8 @@ else
 fi
 # Every name the header gives C starts with hw_ / HW_ (DESIGN.md): a public Rust constant that
 # slipped in must be excluded in cbindgen.toml.
-if stray=$(grep -E '^#define [A-Za-z_]+' include/halfwing.h | grep -vE '^#define (HW_|HALFWING_H)'); then
+if stray=$(grep -E '^#define [A-Za-z_]+|^typedef [a-z]+ [A-Za-z_]+;|^} [A-Za-z_]+;' include/halfwing.h |
+  grep -vE '^#define (HW_|HALFWING_H)|^typedef [a-z]+ hw_[a-z0-9_]+;|^} hw_[a-z0-9_]+;'); then
   echo "gen-header: names without the hw_/HW_ prefix in include/halfwing.h:" >&2
   echo "$stray" >&2
   exit 1

@@ -200,8 +200,6 @@ fn convex_and_nonconvex_planar_holes_are_covered_once() {
 }
 
 #[test]
-#[ignore = "ears along the saddle's rim still tilt 50° (bound 45°): the weights do not yet keep \
-            ears where the rim bends least"]
 fn saddle_holes_face_up() {
     // z = 0.3 (x² − y²) on the unit circle: not planar, slopes below 35°.
     fill_prism_top(&circle(60, |x, y| 0.3 * (x * x - y * y)), 45.0);
@@ -209,8 +207,6 @@ fn saddle_holes_face_up() {
 }
 
 #[test]
-#[ignore = "one triangle tilts 10.000004° against the 10° bound: the flips do not yet remove the \
-            ears that stand up along the rim's bend"]
 fn hundred_thousand_edge_hole() {
     let outline = circle(100_000, |x, y| 0.1 * x * y);
     let start = Instant::now();
@@ -330,8 +326,6 @@ fn every_open_model_is_closed_without_folds() {
 }
 
 #[test]
-#[ignore = "fills of the elephant's holes still cross faces nearby: no self-intersection test \
-            guards the fills yet"]
 fn every_open_model_is_filled_without_new_self_intersections() {
     fill_open_models(true);
 }
@@ -377,6 +371,9 @@ fn fill_open_models(no_new_intersections: bool) {
             .copied()
             .filter(|pair| !before.contains(pair))
             .collect();
+        for (_, why) in &report.refused {
+            eprintln!("{name}: refused: {why}");
+        }
         eprintln!(
             "{name}: {loops} holes, {} filled ({} faces), {left} left ({} refused), largest angle {:.1}°, \
              self-intersections {} -> {}",
@@ -396,6 +393,8 @@ fn fill_open_models(no_new_intersections: bool) {
         filled_models += usize::from(!report.filled.is_empty());
     }
     // Flat sheets (a triangle, a square, a plane) are refused: their cap would lie on them,
-    // facing the other way, a fold. The nine other open models are filled.
-    assert!(filled_models >= 9, "{filled_models} models filled");
+    // facing the other way, a fold. The teapot's holes lie where its parts already run through
+    // each other (453 intersecting pairs before any fill): every fill tried crosses them, and
+    // they are refused. The eight other open models are filled.
+    assert!(filled_models >= 8, "{filled_models} models filled");
 }

@@ -71,7 +71,7 @@ fn check_accounting(input: &PolygonSoup, mesh: &Mesh, fates: &RepairFates) {
         mesh.n_vertices()
     );
     assert_eq!(counts.kept_faces + counts.removed_faces, input.n_faces());
-    assert_eq!(counts.kept_faces, mesh.n_faces());
+    assert_eq!(counts.kept_faces + counts.added_faces, mesh.n_faces());
     let mut named = vec![0u32; mesh.n_vertices()];
     for fate in &fates.vertices {
         match *fate {
@@ -94,9 +94,76 @@ fn check_accounting(input: &PolygonSoup, mesh: &Mesh, fates: &RepairFates) {
             faces[face as usize] += 1;
         }
     }
+    for &f in &fates.added_faces {
+        faces[f as usize] += 1;
+    }
     assert!(
         faces.iter().all(|&n| n == 1),
         "every output face named once"
+    );
+}
+
+/// A unit cube of quads without its top: one hole of four edges.
+fn open_box() -> PolygonSoup {
+    let positions: Vec<[f64; 3]> = (0..8)
+        .map(|i| [f64::from(i & 1), f64::from((i >> 1) & 1), f64::from(i >> 2)])
+        .collect();
+    let quads = [
+        [0, 2, 3, 1],
+        [0, 1, 5, 4],
+        [1, 3, 7, 5],
+        [3, 2, 6, 7],
+        [2, 0, 4, 6],
+    ];
+    PolygonSoup {
+        positions,
+        face_sizes: vec![4; quads.len()],
+        indices: quads.iter().flatten().copied().collect(),
+        corner_normals: None,
+        corner_uvs: None,
+    }
+}
+
+#[test]
+fn holes_are_filled_only_when_asked_and_the_new_faces_are_accounted_for() {
+    let soup = open_box();
+    let (mesh, fates) = repair_mesh(&soup, &RepairOptions::default()).unwrap();
+    check_accounting(&soup, &mesh, &fates);
+    assert_eq!(mesh.boundary_loops().len(), 1, "left open by default");
+    assert_eq!((fates.filled_holes, fates.added_faces.len()), (0, 0));
+
+    let too_small = RepairOptions::default().fill_holes_up_to(3);
+    let (mesh, fates) = repair_mesh(&soup, &too_small).unwrap();
+    assert_eq!(
+        mesh.boundary_loops().len(),
+        1,
+        "a hole of 4 edges is beyond 3"
+    );
+    assert_eq!(fates.filled_holes, 0);
+
+    let options = RepairOptions::default().fill_holes_up_to(4);
+    let report = repair_and_check("open box", &soup, &options);
+    assert!(report.is_closed());
+    let (mesh, fates) = repair_mesh(&soup, &options).unwrap();
+    assert_eq!((fates.filled_holes, fates.refused_holes), (1, 0));
+    assert_eq!(fates.added_faces.len(), 2);
+    assert_eq!(fates.counts().added_faces, 2);
+    assert_eq!(mesh.n_faces(), 7);
+    assert!(mesh.boundary_loops().is_empty());
+}
+
+#[test]
+fn an_open_model_comes_out_closed_when_holes_are_filled() {
+    let path = data_dir().join("open").join("pmp_hemisphere.off");
+    let soup = read_path(&path).unwrap();
+    let options = RepairOptions::default().fill_holes_up_to(usize::MAX);
+    let report = repair_and_check("pmp_hemisphere.off", &soup, &options);
+    assert!(report.is_closed());
+    let (mesh, fates) = repair_mesh(&soup, &options).unwrap();
+    assert_eq!(fates.filled_holes, 1);
+    assert_eq!(
+        fates.counts().kept_faces + fates.added_faces.len(),
+        mesh.n_faces()
     );
 }
 

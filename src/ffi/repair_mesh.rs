@@ -113,6 +113,8 @@ impl TryFrom<&hw_repair_options> for RepairOptions {
                 .remove_t_vertices
                 .then(|| tolerance_arg(o.t_vertex_tolerance, o.t_vertex_relative)),
             stitch_tolerance: tolerance_arg(o.stitch_tolerance, o.stitch_relative),
+            // Hole filling is not among the C options yet: off, as by default.
+            fill_holes: None,
             small_components,
         })
     }
@@ -346,6 +348,8 @@ pub unsafe extern "C" fn hw_repair_fates_counts(
             merged_vertices,
             removed_vertices,
             added_vertices,
+            // None without hole filling, which the C options do not offer yet.
+            added_faces: _,
             kept_faces,
             reversed_faces,
             removed_faces,

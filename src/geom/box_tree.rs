@@ -120,6 +120,40 @@ impl<T: Boxed + Copy + Send + Sync> BoxTree<T> {
         BoxTree { items, nodes }
     }
 
+    /// `visit(item)` for every item whose box overlaps `bounds`: O(log n + k) for `k` such
+    /// items on the meshes this serves.
+    pub(crate) fn visit_overlapping(&self, bounds: &BoundingBox, mut visit: impl FnMut(&T)) {
+        if self.items.is_empty() {
+            return;
+        }
+        let mut stack = vec![0u32];
+        while let Some(index) = stack.pop() {
+            let node = &self.nodes[index as usize];
+            if !node.bounds.overlaps(bounds) {
+                continue;
+            }
+            if node.is_leaf() {
+                let items = &self.items[node.start as usize..(node.start + node.len) as usize];
+                for item in items.iter().filter(|i| i.bounding_box().overlaps(bounds)) {
+                    visit(item);
+                }
+            } else {
+                let (left, right) = self.children(index);
+                stack.extend([left, right]);
+            }
+        }
+    }
+
+    /// The number of items.
+    pub(crate) fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    /// The items, in the tree's order.
+    pub(crate) fn into_items(self) -> Vec<T> {
+        self.items
+    }
+
     /// `test(a, b)` for every pair of distinct items whose boxes overlap, each pair once in an
     /// unspecified order (and either way round); the `Some` results, in an unspecified order.
     pub(crate) fn overlapping_pairs<R: Send>(

@@ -8,14 +8,14 @@ pub(crate) use newell::{
 mod normals;
 pub(crate) use newell::{cross, difference, rescued_area_vector};
 pub(crate) use normals::{dot, normalized};
-mod box_tree;
+pub(crate) mod box_tree;
 mod embedded_stars;
 pub(crate) mod exact_orientation;
 mod parallel;
 mod plane_side;
 mod polygon_triangulation;
 mod self_intersections;
-mod triangle_intersection;
+pub(crate) mod triangle_intersection;
 pub(crate) mod wide_integer;
 
 pub use newell::{

@@ -6,9 +6,9 @@ use thiserror::Error;
 
 use super::box_tree::{BoundingBox, BoxTree, Boxed};
 use super::embedded_stars::{StarTriangle, embedded_stars};
-use super::exact_orientation::{ExactOrientation, ExponentRange, scale_points};
+use super::exact_orientation::ExponentRange;
 use super::parallel::map_indexed;
-use super::triangle_intersection::{SharedCorners, corners_are_collinear, triangles_meet};
+use super::triangle_intersection::{SharedCorners, is_degenerate_exactly, triangles_meet_exactly};
 use crate::render::{TriangulateError, triangulate_faces};
 use crate::soup::FaceList;
 use crate::support::allocation::{OutOfMemory, ensure_room};
@@ -203,9 +203,7 @@ fn intersecting_faces(
         let corners = &triangles[t];
         let points = corners.map(|v| positions[v as usize]);
         let exponents = ExponentRange::of(points.iter().flatten().copied());
-        let mut exact_points = points;
-        let arithmetic = ExactOrientation::for_points(&mut exact_points, exponents);
-        if corners_are_collinear(arithmetic, &exact_points) {
+        if is_degenerate_exactly(points, exponents) {
             return Prepared::Degenerate(face_of(t));
         }
         Prepared::Proper(PreparedTriangle {
@@ -248,18 +246,12 @@ fn intersecting_faces(
         if settled {
             return None;
         }
-        let corner = |v: u32| positions[v as usize];
-        let [a0, a1, a2] = a.corners;
-        let [b0, b1, b2] = b.corners;
-        let mut first = [corner(a0), corner(a1), corner(a2)];
-        let mut second = [corner(b0), corner(b1), corner(b2)];
-        let (arithmetic, shift) = ExactOrientation::for_range(a.exponents.union(b.exponents));
-        if let Some(shift) = shift {
-            scale_points(&mut first, shift);
-            scale_points(&mut second, shift);
-        }
-        triangles_meet(arithmetic, &first, &second, shared)
-            .then(|| [a.face.min(b.face), a.face.max(b.face)])
+        let corners = |t: &PreparedTriangle| t.corners.map(|v| positions[v as usize]);
+        triangles_meet_exactly(
+            (a.corners, corners(a), a.exponents),
+            (b.corners, corners(b), b.exponents),
+        )
+        .then(|| [a.face.min(b.face), a.face.max(b.face)])
     });
     pairs.extend(degenerate_faces);
     Ok(pairs)

@@ -7,7 +7,7 @@
 //! normal has its largest component: dropping a coordinate is exact, and that projection maps
 //! their plane one to one.
 
-use super::exact_orientation::{ExactOrientation, Point, Sign};
+use super::exact_orientation::{ExactOrientation, ExponentRange, Point, Sign, scale_points};
 use super::plane_side::TrianglePlane;
 
 /// Which corners two triangles share, by vertex identity (not by position).
@@ -77,6 +77,30 @@ pub(crate) fn triangles_meet(
         }
         SharedCorners::All => true,
     }
+}
+
+/// Whether the triangle at `points`, whose coordinates (finite) have the exponent range
+/// `exponents`, is degenerate: its corners collinear, decided exactly.
+pub(crate) fn is_degenerate_exactly(points: [Point; 3], exponents: ExponentRange) -> bool {
+    let mut exact_points = points;
+    let arithmetic = ExactOrientation::for_points(&mut exact_points, exponents);
+    corners_are_collinear(arithmetic, &exact_points)
+}
+
+/// [`triangles_meet`] for two non-degenerate triangles given by their corners' vertex ids,
+/// positions and coordinates' exponent ranges: the arithmetic is chosen for both, and which
+/// corners they share is read from the ids.
+pub(crate) fn triangles_meet_exactly(
+    (first_ids, mut first, first_exponents): ([u32; 3], [Point; 3], ExponentRange),
+    (second_ids, mut second, second_exponents): ([u32; 3], [Point; 3], ExponentRange),
+) -> bool {
+    let (arithmetic, shift) = ExactOrientation::for_range(first_exponents.union(second_exponents));
+    if let Some(shift) = shift {
+        scale_points(&mut first, shift);
+        scale_points(&mut second, shift);
+    }
+    let shared = SharedCorners::of(first_ids, second_ids);
+    triangles_meet(arithmetic, &first, &second, shared)
 }
 
 /// Are the corners of `t` collinear (coincident corners included): is it a degenerate triangle?

@@ -177,6 +177,22 @@ impl Ledger {
         }
     }
 
+    /// Records faces added at the given ids.
+    pub(super) fn add_faces(&mut self, ids: &[u32]) {
+        self.faces.extend(ids.iter().map(|&f| Tracked::at(f)));
+    }
+
+    /// The output ids of the added faces that are in the output, sorted.
+    pub(super) fn added_faces(&self) -> Vec<u32> {
+        let mut added: Vec<u32> = self.faces[self.n_input_faces..]
+            .iter()
+            .filter(|t| t.removal.is_none())
+            .map(|t| t.current)
+            .collect();
+        added.sort_unstable();
+        added
+    }
+
     /// Flips the orientation of the faces now at the given ids.
     pub(super) fn reverse_faces(&mut self, ids: &[u32]) {
         let mut flip = vec![false; self.faces.len()];

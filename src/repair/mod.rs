@@ -18,8 +18,9 @@
 //! in their order; [`RepairReport::maps`] gives the old-to-new ids.
 //!
 //! [`repair_mesh`] runs them all in turn, with a repairing build between the face-list and the
-//! mesh repairs, and says what became of every input vertex and face ([`RepairFates`]). A new
-//! repair joins it as one [`RepairStep`].
+//! mesh repairs, and says what became of every input vertex and face ([`RepairFates`]); it
+//! fills holes only when [`RepairOptions::fill_holes`] asks. A new repair joins it as one
+//! [`RepairStep`].
 
 mod fates;
 mod fill_hole;
@@ -40,8 +41,8 @@ mod tolerance;
 
 pub use fates::{FaceFate, Removal, VertexFate};
 pub use fill_hole::{
-    DEGENERATE_RATIO, EXACT_CORNERS_MAX, FOLD_ANGLE_DEGREES, FillError, FilledHole,
-    HoleFillOptions, HoleFillReport, fill_hole, fill_holes,
+    CROSSING_RETRIES, DEGENERATE_RATIO, EXACT_CORNERS_MAX, FOLD_ANGLE_DEGREES, FillError,
+    FilledHole, HoleFillOptions, HoleFillReport, fill_hole, fill_holes,
 };
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;

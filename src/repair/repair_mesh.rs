@@ -2,16 +2,16 @@
 
 use super::fates::Ledger;
 use super::{
-    FaceFate, Removal, RepairError, SmallComponents, Tolerance, VertexFate, merge_vertices,
-    remove_degenerate_faces, remove_duplicate_faces, remove_small_components, remove_t_vertices,
-    remove_unreferenced_vertices, stitch_borders,
+    FaceFate, FillError, HoleFillOptions, Removal, RepairError, SmallComponents, Tolerance,
+    VertexFate, fill_holes, merge_vertices, remove_degenerate_faces, remove_duplicate_faces,
+    remove_small_components, remove_t_vertices, remove_unreferenced_vertices, stitch_borders,
 };
-use crate::mesh::{INVALID_INDEX, Mesh, VertexId, compaction_map};
+use crate::mesh::{FaceId, INVALID_INDEX, Mesh, VertexId, compaction_map};
 use crate::soup::{BuildPolicy, PolygonSoup};
 
 /// Options of [`repair_mesh`]. The default merges and stitches exact duplicates only, mends
-/// exactly degenerate triangles, splits edges at vertices exactly on them, and keeps every
-/// component.
+/// exactly degenerate triangles, splits edges at vertices exactly on them, fills no hole and
+/// keeps every component.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RepairOptions {
     /// Vertices this close merge (first step).
@@ -24,8 +24,26 @@ pub struct RepairOptions {
     pub t_vertex_tolerance: Option<Tolerance>,
     /// Boundary edges this close stitch (after the build).
     pub stitch_tolerance: Tolerance,
+    /// Holes filled (after stitching), if any: see [`fill_holes`]. Off by default: an open
+    /// surface (a terrain, a sheet, a scan's outer border) is often open on purpose, and a fill
+    /// adds faces no input describes. [`RepairOptions::fill_holes_up_to`] fills the holes of at
+    /// most some number of boundary edges.
+    pub fill_holes: Option<HoleFillOptions>,
     /// Components removed as small, if any.
     pub small_components: Option<SmallComponents>,
+}
+
+impl RepairOptions {
+    /// These options, filling every hole of at most `max_edges` boundary edges.
+    pub fn fill_holes_up_to(self, max_edges: usize) -> Self {
+        RepairOptions {
+            fill_holes: Some(HoleFillOptions {
+                max_edges,
+                ..HoleFillOptions::default()
+            }),
+            ..self
+        }
+    }
 }
 
 impl Default for RepairOptions {
@@ -35,6 +53,7 @@ impl Default for RepairOptions {
             degenerate_tolerance: Some(Tolerance::EXACT),
             t_vertex_tolerance: Some(Tolerance::EXACT),
             stitch_tolerance: Tolerance::EXACT,
+            fill_holes: None,
             small_components: None,
         }
     }
@@ -56,6 +75,8 @@ pub enum RepairStep {
     RemoveTVertices,
     /// [`stitch_borders`] with [`RepairOptions::stitch_tolerance`].
     StitchBorders,
+    /// [`fill_holes`], when [`RepairOptions::fill_holes`] is set: holes it refuses stay open.
+    FillHoles,
     /// [`remove_small_components`], when [`RepairOptions::small_components`] is set.
     RemoveSmallComponents,
     /// [`remove_unreferenced_vertices`].
@@ -64,13 +85,14 @@ pub enum RepairStep {
 
 impl RepairStep {
     /// Every step, in the order [`repair_mesh`] runs them.
-    pub const ALL: [RepairStep; 8] = [
+    pub const ALL: [RepairStep; 9] = [
         RepairStep::MergeVertices,
         RepairStep::RemoveDuplicateFaces,
         RepairStep::Build,
         RepairStep::RemoveDegenerateFaces,
         RepairStep::RemoveTVertices,
         RepairStep::StitchBorders,
+        RepairStep::FillHoles,
         RepairStep::RemoveSmallComponents,
         RepairStep::RemoveUnreferencedVertices,
     ];
@@ -78,7 +100,8 @@ impl RepairStep {
 
 /// What [`repair_mesh`] did to every input element. Every input vertex is kept, merged or
 /// removed, every input face kept or removed; the output's vertices are the kept input vertices
-/// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces.
+/// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces and the
+/// added ones ([`RepairFates::added_faces`]). Filling holes adds faces, never vertices.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct RepairFates {
     /// The fate of every input vertex.
@@ -93,8 +116,14 @@ pub struct RepairFates {
     pub flipped_edges: usize,
     /// Boundary edges split at a T-vertex (one per T-vertex; the face beside gains a corner).
     pub split_edges: usize,
+    /// Output faces that no input face became: the triangles filling holes, by output id.
+    pub added_faces: Vec<u32>,
     /// Pairs of boundary edges stitched into one.
     pub stitched_edges: usize,
+    /// Holes filled.
+    pub filled_holes: usize,
+    /// Holes within [`RepairOptions::fill_holes`]' bounds that filling refused (left open).
+    pub refused_holes: usize,
 }
 
 /// Counts of a [`RepairFates`].
@@ -108,6 +137,8 @@ pub struct FateCounts {
     pub removed_vertices: usize,
     /// Output vertices that copy an input vertex.
     pub added_vertices: usize,
+    /// Output faces that no input face became (hole fills).
+    pub added_faces: usize,
     /// Input faces in the output.
     pub kept_faces: usize,
     /// Kept faces that run the other way round.
@@ -119,10 +150,11 @@ pub struct FateCounts {
 impl RepairFates {
     /// The number of elements of every fate: kept, merged and removed vertices sum to the input
     /// vertices, kept and added ones to the output's; kept and removed faces sum to the input
-    /// faces.
+    /// faces, kept and added ones to the output's.
     pub fn counts(&self) -> FateCounts {
         let mut counts = FateCounts {
             added_vertices: self.added_vertices.len(),
+            added_faces: self.added_faces.len(),
             ..FateCounts::default()
         };
         for fate in &self.vertices {
@@ -198,8 +230,9 @@ enum Work {
 /// merge duplicate vertices, remove duplicate faces, build under [`BuildPolicy::Repair`]
 /// (split non-manifold vertices, cut non-manifold edges, reorient, turn closed components
 /// outward, leave out faces it cannot keep), mend degenerate triangles and split boundary
-/// edges at T-vertices (each when asked, as by default), stitch borders, remove small components (when
-/// asked), remove unreferenced vertices. The mesh comes from a last build under
+/// edges at T-vertices (each when asked, as by default), stitch borders, fill holes (when
+/// asked), remove small components (when asked), remove unreferenced vertices. The mesh comes
+/// from a last build under
 /// [`BuildPolicy::Repair`], which only turns closed components that stitching closed outward.
 ///
 /// The returned mesh passes [`Mesh::check`] and builds again under [`BuildPolicy::Strict`]
@@ -229,19 +262,24 @@ pub fn repair_mesh(
             vertices: ledger.vertex_fates(),
             faces: ledger.face_fates(),
             added_vertices: ledger.added_vertices(),
+            added_faces: ledger.added_faces(),
             flipped_edges: edits.flipped_edges,
             split_edges: edits.split_edges,
             stitched_edges: edits.stitched_edges,
+            filled_holes: edits.filled_holes,
+            refused_holes: edits.refused_holes,
         },
     ))
 }
 
-/// The edits of the steps that change elements without adding or removing them.
+/// What the steps did beyond the fates of elements.
 #[derive(Default)]
 struct StepEdits {
     flipped_edges: usize,
     split_edges: usize,
     stitched_edges: usize,
+    filled_holes: usize,
+    refused_holes: usize,
 }
 
 /// Runs one step, recording its fates in `ledger` and its other edits in `edits`.
@@ -306,6 +344,34 @@ fn run(
             let report = stitch_borders(mesh(work, ledger)?, options.stitch_tolerance)?;
             ledger.apply(&report, Removal::Unbuildable);
             edits.stitched_edges += report.stitched_halfedges.len();
+        }
+        RepairStep::FillHoles => {
+            if let Some(fill) = options.fill_holes {
+                let mesh = mesh(work, ledger)?;
+                let report = fill_holes(mesh, &fill).map_err(|e| match e {
+                    FillError::BadOption { name, value, range } => {
+                        RepairError::BadOption { name, value, range }
+                    }
+                    other => unreachable!("fill_holes refuses only options: {other}"),
+                })?;
+                let mut added: Vec<u32> = report
+                    .filled
+                    .iter()
+                    .flat_map(|hole| hole.faces.iter().map(|f| f.0))
+                    .collect();
+                added.sort_unstable();
+                ledger.add_faces(&added);
+                // A refused fill may leave a deleted face id behind: the ids are compacted as
+                // the mesh turns into a face list.
+                let deleted: Vec<bool> = (0..mesh.face_capacity() as u32)
+                    .map(|f| mesh.is_face_deleted(FaceId(f)))
+                    .collect();
+                ledger.map_faces(&compaction_map(deleted.len(), &deleted), |_| {
+                    Removal::Unbuildable
+                });
+                edits.filled_holes += report.filled.len();
+                edits.refused_holes += report.refused.len();
+            }
         }
         RepairStep::RemoveSmallComponents => {
             if let Some(small) = options.small_components {

@@ -5,7 +5,7 @@ use crate::convert::ply_binary;
 use crate::failure::{Failure, Outcome};
 use crate::files::{read_mesh, write_mesh};
 use crate::progress::Progress;
-use halfwing::repair::{RepairOptions, SmallComponents, Tolerance, repair_mesh};
+use halfwing::repair::{HoleFillOptions, RepairOptions, SmallComponents, Tolerance, repair_mesh};
 
 const HELP: &str = "\
 usage: halfwing repair IN OUT [options]
@@ -14,7 +14,8 @@ Repairs IN and writes the result to OUT (format by extension, as for convert): m
 vertices, removes duplicate faces, builds a manifold (splitting non-manifold vertices, cutting
 non-manifold edges, orienting faces consistently and closed parts outward, leaving out faces that
 cannot be kept), mends degenerate triangles (collapsing short edges, flipping caps), splits
-boundary edges at T-vertices, stitches borders, optionally removes small components, removes
+boundary edges at T-vertices, stitches borders, optionally fills holes and removes small
+components, removes
 unreferenced vertices. Prints what became of the input's vertices and faces.
 
 options:
@@ -30,6 +31,8 @@ options:
   --keep-t-vertices       leave T-vertices as they are
   --stitch-tolerance T    stitch boundary edges whose ends are at most T apart (default 0)
   --stitch-relative R     ... at most R times the diagonal apart
+  --fill-holes N          fill holes of at most N boundary edges (default: none filled; a fill
+                          that would fold or intersect the mesh is refused, the hole left open)
   --small-faces N         remove components of at most N faces
   --small-diameter R      remove components at most R (0 to 1) times the largest one's size
   --binary | --ascii      PLY encoding of OUT (default binary)
@@ -55,6 +58,7 @@ pub fn run(args: &[String]) -> Outcome {
             "--t-vertex-relative",
             "--stitch-tolerance",
             "--stitch-relative",
+            "--fill-holes",
             "--small-faces",
             "--small-diameter",
         ],
@@ -82,6 +86,12 @@ pub fn run(args: &[String]) -> Outcome {
             "--t-vertex-relative",
         )?,
         stitch_tolerance: tolerance(&args, "--stitch-tolerance", "--stitch-relative")?,
+        fill_holes: args
+            .parsed::<usize>("--fill-holes")?
+            .map(|max_edges| HoleFillOptions {
+                max_edges,
+                ..HoleFillOptions::default()
+            }),
         small_components: match (
             args.parsed::<usize>("--small-faces")?,
             args.parsed::<f64>("--small-diameter")?,
@@ -118,12 +128,13 @@ pub fn run(args: &[String]) -> Outcome {
         counts.added_vertices
     );
     println!(
-        "faces:    {} in, {} out: {} kept ({} reversed), {} removed",
+        "faces:    {} in, {} out: {} kept ({} reversed), {} removed, {} added",
         soup.n_faces(),
         mesh.n_faces(),
         counts.kept_faces,
         counts.reversed_faces,
-        counts.removed_faces
+        counts.removed_faces,
+        counts.added_faces
     );
     for (what, reasons) in [
         ("vertices", fates.removed_vertices_by_reason()),
@@ -137,6 +148,12 @@ pub fn run(args: &[String]) -> Outcome {
         "flipped edges: {}, split edges: {}, stitched edges: {}",
         fates.flipped_edges, fates.split_edges, fates.stitched_edges
     );
+    if options.fill_holes.is_some() {
+        println!(
+            "holes: {} filled, {} refused (left open)",
+            fates.filled_holes, fates.refused_holes
+        );
+    }
     Ok(0)
 }
 

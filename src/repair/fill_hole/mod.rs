@@ -1,15 +1,18 @@
 //! Filling holes: closing a boundary loop of a [`Mesh`] with triangles on its own corners (no
 //! new vertex), like CGAL's `triangulate_hole`.
 //!
+//! What a good fill is: one that spans the hole like the plane across its mean (Newell)
+//! normal, bent only as the surface around it is. Each new triangle's *turn* is the largest of
+//! its tilt from the mean normal, its angle to each new triangle beside it, and its angle to a
+//! face across the hole's rim beyond the angle the mean plane makes with that face.
+//!
 //! Which triangulation: a loop of at most [`EXACT_CORNERS_MAX`] corners gets Liepa's
-//! minimum-weight triangulation (smallest largest angle between the normals of neighbouring
-//! triangles — new ones and the faces around the hole — or between a new triangle and the
-//! hole's mean normal, then the least bent patch); it costs O(n³)
-//! time and O(n²) memory, hence the bound. A longer loop is projected onto its best-fit plane
-//! (across its Newell normal) and, when the projection is a simple polygon, triangulated there
-//! in O(n log n), then improved by edge flips that lower the angles between neighbouring normals
-//! (at most a fixed number per corner). A long loop whose projection crosses or touches itself
-//! is refused ([`FillError::NotSimple`]).
+//! minimum-weight triangulation (the smallest largest turn, then the least bent patch); it
+//! costs O(n³) time and O(n²) memory, hence the bound. A longer loop is projected onto its
+//! best-fit plane (across its Newell normal) and, when the projection is a simple polygon,
+//! triangulated there in O(n log n), then improved by edge flips that lower the largest turn of
+//! the two triangles (at most a fixed number per corner). A long loop whose projection crosses
+//! or touches itself is refused ([`FillError::NotSimple`]).
 //!
 //! Never folded: before the mesh is touched, every triangulation passes the fold test — no new
 //! triangle is degenerate (twice its area at most [`DEGENERATE_RATIO`] times its longest side
@@ -17,13 +20,22 @@
 //! face beside it (a new triangle, or the face across the hole's rim). A hole that fails is left
 //! open with [`FillError::Folded`].
 //!
+//! Never intersecting: the new triangles are tested exactly against the mesh's faces near them
+//! (fans of their corners, found in a box tree) and against each other. The minimum-weight
+//! triangulation is then computed again without the triangles that cross, up to
+//! [`CROSSING_RETRIES`] times; a projected one (whose triangles cannot cross each other) is not
+//! retried. A hole whose every triangulation tried crosses the mesh is left open with
+//! [`FillError::SelfIntersecting`]. A fill touches no face but along its rim.
+//!
 //! New faces, edges and corners get zero user attributes (as [`Mesh::add_face`] and
 //! [`Mesh::split_face`] give them); the mesh keeps no per-corner normals or texture coordinates
 //! of its own, so a mesh exported afterwards has none on the new faces. No vertex is added.
 
+mod crossings;
 mod folds;
 mod geometry;
 mod projected;
+mod turns;
 mod weights;
 
 use thiserror::Error;
@@ -31,13 +43,19 @@ use thiserror::Error;
 pub use folds::{DEGENERATE_RATIO, FOLD_ANGLE_DEGREES};
 
 use crate::mesh::{EditError, FaceId, HalfedgeId, HandleError, JoinedCorners, Mesh, VertexId};
+use crossings::Surroundings;
 use folds::{Fold, first_fold};
 use geometry::{norm, sub, unit};
 use projected::{ProjectionRefusal, projected_triangles};
+use turns::Turns;
 
 /// Loops of at most this many corners get the exact minimum-weight triangulation; longer ones
 /// the O(n log n) projected triangulation. 100 corners: about 1.7·10⁵ candidate triangles.
 pub const EXACT_CORNERS_MAX: usize = 100;
+
+/// Times the minimum-weight triangulation of a hole is computed again, each time without the
+/// triangles of the last one that crossed the mesh, before the hole is refused.
+pub const CROSSING_RETRIES: usize = 16;
 
 /// Which holes [`fill_holes`] fills.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -124,6 +142,10 @@ pub enum FillError {
     /// than [`FOLD_ANGLE_DEGREES`] from a face beside it.
     #[error("hole filling refused: the fill would fold ({0})")]
     Folded(String),
+    /// Every triangulation tried has a new triangle that intersects a face of the mesh or
+    /// another new triangle.
+    #[error("hole filling refused: every triangulation tried intersects the mesh or itself")]
+    SelfIntersecting,
     /// The mesh refused the new faces (a vertex whose fans cannot take them, ids exhausted).
     #[error(transparent)]
     Edit(#[from] EditError),
@@ -151,13 +173,27 @@ fn face_normal_across(mesh: &Mesh, s: HalfedgeId) -> [f64; 3] {
 }
 
 /// Fills the hole whose boundary loop holds `h` with triangles on its corners (see the module
-/// docs for which) and returns them.
+/// docs for which) and returns them. O(n log n) for a mesh of `n` elements (the faces near the
+/// hole are found in a box tree built for the call), plus O(m³) for a loop of `m` ≤
+/// [`EXACT_CORNERS_MAX`] corners.
 ///
 /// # Errors
 /// Refused, with the mesh unchanged, when `h` is invalid or has a face, when the loop passes
 /// twice through one vertex, when every triangulation needs an edge that exists already, when
-/// a long loop does not project onto a simple polygon, or when the fill would fold.
+/// a long loop does not project onto a simple polygon, when the fill would fold, or when it
+/// would intersect the mesh or itself.
 pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError> {
+    boundary_sides(mesh, h)?;
+    let mut surroundings = Surroundings::new(mesh);
+    fill_hole_within(mesh, h, &mut surroundings)
+}
+
+/// [`fill_hole`] against `surroundings` (the mesh's faces), to which the new faces are added.
+fn fill_hole_within(
+    mesh: &mut Mesh,
+    h: HalfedgeId,
+    surroundings: &mut Surroundings,
+) -> Result<FilledHole, FillError> {
     let sides = boundary_sides(mesh, h)?;
     let n = sides.len();
     let corners: Vec<VertexId> = sides.iter().map(|&s| mesh.origin(s)).collect();
@@ -166,29 +202,55 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
         return Err(FillError::RepeatedVertex(v.0));
     }
     let points: Vec<[f64; 3]> = corners.iter().map(|&v| mesh.position(v)).collect();
+    let ids: Vec<u32> = corners.iter().map(|v| v.0).collect();
     let rim_normals: Vec<[f64; 3]> = sides.iter().map(|&s| face_normal_across(mesh, s)).collect();
     let joined = JoinedCorners::new(mesh, &corners);
     let triangles = if n <= EXACT_CORNERS_MAX {
+        let turns = Turns::new(unit(crate::geom::newell_vector(points.iter().copied())));
         let is_joined = |i: usize, j: usize| !joined.may_join(i as u32, j as u32);
-        weights::minimum_weight_triangles(&points, &rim_normals, &is_joined)
-            .ok_or(FillError::Joined)?
+        let mut forbidden = std::collections::HashSet::new();
+        let mut attempt = 0;
+        loop {
+            let is_forbidden = |t: [u32; 3]| forbidden.contains(&t);
+            let triangles = weights::minimum_weight_triangles(
+                &points,
+                &rim_normals,
+                &turns,
+                &is_joined,
+                &is_forbidden,
+            )
+            .ok_or(if forbidden.is_empty() {
+                FillError::Joined
+            } else {
+                FillError::SelfIntersecting
+            })?;
+            check_folds(&points, &rim_normals, &triangles)?;
+            let crossing = surroundings.crossing_triangles(&ids, &points, &triangles, true);
+            if crossing.is_empty() {
+                break triangles;
+            }
+            attempt += 1;
+            if attempt > CROSSING_RETRIES {
+                return Err(FillError::SelfIntersecting);
+            }
+            forbidden.extend(crossing.into_iter().map(|t| triangles[t]));
+        }
     } else {
-        projected_triangles(&points, &rim_normals, &joined).map_err(|e| match e {
-            ProjectionRefusal::Joined => FillError::Joined,
-            ProjectionRefusal::NoPlane | ProjectionRefusal::NotSimple => FillError::NotSimple,
-        })?
+        let triangles =
+            projected_triangles(&points, &rim_normals, &joined).map_err(|e| match e {
+                ProjectionRefusal::Joined => FillError::Joined,
+                ProjectionRefusal::NoPlane | ProjectionRefusal::NotSimple => FillError::NotSimple,
+            })?;
+        check_folds(&points, &rim_normals, &triangles)?;
+        // Triangles of a simple polygon in projection cannot cross each other.
+        if !surroundings
+            .crossing_triangles(&ids, &points, &triangles, false)
+            .is_empty()
+        {
+            return Err(FillError::SelfIntersecting);
+        }
+        triangles
     };
-    match first_fold(&points, &rim_normals, &triangles) {
-        None => {}
-        Some(Fold::Degenerate(_)) => {
-            return Err(FillError::Folded("a new triangle has no area".into()));
-        }
-        Some(Fold::Folded(_, angle)) => {
-            return Err(FillError::Folded(format!(
-                "a new triangle turns {angle:.1}° from a face beside it"
-            )));
-        }
-    }
     let mut chords = Vec::with_capacity(n.saturating_sub(3));
     crate::mesh::chords_of(&triangles, n as u32, &mut chords);
     if !joined.allows(&chords) {
@@ -205,6 +267,7 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
             return Err(e.into());
         }
     };
+    surroundings.add(mesh, faces.iter().copied());
     Ok(FilledHole {
         boundary_halfedge: h,
         edges: n,
@@ -212,8 +275,25 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
     })
 }
 
+/// The fold test ([`first_fold`]) as an error.
+fn check_folds(
+    points: &[[f64; 3]],
+    rim_normals: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+) -> Result<(), FillError> {
+    match first_fold(points, rim_normals, triangles) {
+        None => Ok(()),
+        Some(Fold::Degenerate(_)) => Err(FillError::Folded("a new triangle has no area".into())),
+        Some(Fold::Folded(_, angle)) => Err(FillError::Folded(format!(
+            "a new triangle turns {angle:.1}° from a face beside it"
+        ))),
+    }
+}
+
 /// Fills every hole within `options`' bounds, in the order of [`Mesh::boundary_loops`], and
-/// reports each one filled, refused (left open, see [`fill_hole`]) or skipped.
+/// reports each one filled, refused (left open, see [`fill_hole`]) or skipped. The mesh's faces
+/// go into one box tree for all holes: O(n log² n) for a mesh of `n` elements, plus O(m³) for
+/// each loop of `m` ≤ [`EXACT_CORNERS_MAX`] corners.
 ///
 /// # Errors
 /// [`FillError::BadOption`] when `max_perimeter` is NaN or negative (the mesh is unchanged).
@@ -226,8 +306,15 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
         });
     }
     let mut report = HoleFillReport::default();
+    let mut surroundings = Surroundings::new(mesh);
     for h in mesh.boundary_loops() {
-        let sides = boundary_sides(mesh, h)?;
+        let sides = match boundary_sides(mesh, h) {
+            Ok(sides) => sides,
+            Err(e) => {
+                report.refused.push((h, e));
+                continue;
+            }
+        };
         let perimeter: f64 = sides
             .iter()
             .map(|&s| {
@@ -244,7 +331,7 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
             report.skipped += 1;
             continue;
         }
-        match fill_hole(mesh, h) {
+        match fill_hole_within(mesh, h, &mut surroundings) {
             Ok(hole) => report.filled.push(hole),
             Err(e) => report.refused.push((h, e)),
         }

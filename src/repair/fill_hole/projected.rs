@@ -7,12 +7,14 @@ use std::collections::HashMap;
 
 use robust::{Coord, orient2d};
 
-use super::geometry::{angle_between, cross, dot, sub, triangle_normal, unit};
+use super::geometry::{cross, dot, sub, triangle_normal, unit};
+use super::turns::Turns;
 use crate::geom::{PolygonOutcome, PolygonTriangulator, newell_vector};
 use crate::mesh::{JoinedCorners, chords_of};
 
-/// Flips tried per corner at most: each flip lowers the largest angle between the normals of
-/// the two triangles and their four neighbours, and the cap keeps the pass linear.
+/// Flips tried per corner at most: each flip lowers the largest turn ([`Turns`]) of the two
+/// triangles (their tilts, the angle between them, their angles to their four neighbours), and
+/// the cap keeps the pass linear.
 const FLIPS_PER_CORNER: usize = 8;
 
 /// Why the projection cannot be used.
@@ -34,6 +36,7 @@ pub(super) fn projected_triangles(
 ) -> Result<Vec<[u32; 3]>, ProjectionRefusal> {
     let n = points.len();
     let normal = unit(newell_vector(points.iter().copied()));
+    let turns = Turns::new(normal);
     if normal == [0.0; 3] {
         return Err(ProjectionRefusal::NoPlane);
     }
@@ -69,7 +72,73 @@ pub(super) fn projected_triangles(
         Some(PolygonOutcome::Exact) => {}
         Some(_) => return Err(ProjectionRefusal::NotSimple),
     }
-    Flips::new(points, &flat, rim_normals, triangles).run(joined)
+    // The sweep (a fan, for a convex projection) puts its thin ears wherever its start falls;
+    // a strip puts two where the ring bends least out of the mean plane.
+    let largest_tilt = |triangles: &[[u32; 3]]| {
+        triangles
+            .iter()
+            .map(|t| turns.tilt(triangle_normal_at(points, *t)))
+            .fold(0.0, f64::max)
+    };
+    let mut best_tilt = largest_tilt(&triangles);
+    for start in (0..STRIP_STARTS).map(|k| (k * n / STRIP_STARTS) as u32) {
+        let strip = strip_triangles(n as u32, start);
+        let tilt = largest_tilt(&strip);
+        if tilt < best_tilt && is_proper_in_projection(points, &flat, &strip) && {
+            chords_of(&strip, n as u32, &mut chords);
+            joined.allows(&chords)
+        } {
+            (triangles, best_tilt) = (strip, tilt);
+        }
+    }
+    Flips::new(points, &flat, rim_normals, turns, triangles).run(joined)
+}
+
+/// Corners at which [`projected_triangles`] tries a strip, evenly spread round the ring.
+const STRIP_STARTS: usize = 16;
+
+/// The zigzag strip over a ring of `n` corners from corner `start`: an ear there, then
+/// triangles alternately on either side until the strip closes opposite (the other ear). In the
+/// ring's winding.
+fn strip_triangles(n: u32, start: u32) -> Vec<[u32; 3]> {
+    let next = |k: u32| (k + 1) % n;
+    let previous = |k: u32| (k + n - 1) % n;
+    let (mut a, mut b) = (next(start), previous(start));
+    let mut triangles = Vec::with_capacity(n as usize - 2);
+    triangles.push([start, a, b]);
+    while next(a) != b {
+        triangles.push([a, next(a), b]);
+        a = next(a);
+        if next(a) == b {
+            break;
+        }
+        triangles.push([previous(b), b, a]);
+        b = previous(b);
+    }
+    triangles
+}
+
+/// The unit normal of triangle `t` of `points`.
+fn triangle_normal_at(points: &[[f64; 3]], t: [u32; 3]) -> [f64; 3] {
+    let [a, b, c] = t.map(|k| points[k as usize]);
+    triangle_normal(a, b, c).0
+}
+
+/// Whether every triangle is counter-clockwise in the projection `flat` and not degenerate: a
+/// triangulation of a ring whose projection is simple then covers it once.
+fn is_proper_in_projection(points: &[[f64; 3]], flat: &[[f64; 3]], triangles: &[[u32; 3]]) -> bool {
+    let coord = |k: u32| Coord {
+        x: flat[k as usize][0],
+        y: flat[k as usize][1],
+    };
+    triangles.iter().all(|&[a, b, c]| {
+        orient2d(coord(a), coord(b), coord(c)) > 0.0
+            && !super::folds::is_degenerate(
+                points[a as usize],
+                points[b as usize],
+                points[c as usize],
+            )
+    })
 }
 
 /// A triangulation of the ring being improved by flips.
@@ -77,6 +146,7 @@ struct Flips<'a> {
     points: &'a [[f64; 3]],
     flat: &'a [[f64; 3]],
     rim_normals: &'a [[f64; 3]],
+    turns: Turns,
     triangles: Vec<[u32; 3]>,
     normals: Vec<[f64; 3]>,
     /// Directed side `(u, v)` → the triangle holding it.
@@ -88,6 +158,7 @@ impl<'a> Flips<'a> {
         points: &'a [[f64; 3]],
         flat: &'a [[f64; 3]],
         rim_normals: &'a [[f64; 3]],
+        turns: Turns,
         triangles: Vec<[u32; 3]>,
     ) -> Self {
         let mut sides = HashMap::with_capacity(3 * triangles.len());
@@ -109,6 +180,7 @@ impl<'a> Flips<'a> {
             points,
             flat,
             rim_normals,
+            turns,
             triangles,
             normals,
             sides,
@@ -120,24 +192,21 @@ impl<'a> Flips<'a> {
         b == (a + 1) % n
     }
 
-    /// The normal of the face across the directed side `(a, b)` of a triangle: the rim face
-    /// (zero when there is none) or the triangle holding `(b, a)`.
-    fn across(&self, a: u32, b: u32) -> [f64; 3] {
-        if self.is_rim_side(a, b) {
-            self.rim_normals[a as usize]
-        } else {
-            self.normals[self.sides[&(b, a)]]
-        }
-    }
-
-    /// Largest angle between `normal` and the faces across the sides `(a, b)`.
+    /// The largest turn of a triangle with unit normal `normal` whose other sides are `sides`:
+    /// its tilt, and its turn to the faces across those sides (the rim face or the triangle
+    /// holding the side the other way round).
     fn worst(&self, normal: [f64; 3], sides: [(u32, u32); 2]) -> f64 {
         sides
             .iter()
-            .map(|&(a, b)| self.across(a, b))
-            .filter(|&m| m != [0.0; 3])
-            .map(|m| angle_between(normal, m))
-            .fold(0.0, f64::max)
+            .map(|&(a, b)| {
+                if self.is_rim_side(a, b) {
+                    self.turns.rim(normal, self.rim_normals[a as usize])
+                } else {
+                    self.turns
+                        .between(normal, self.normals[self.sides[&(b, a)]])
+                }
+            })
+            .fold(self.turns.tilt(normal), f64::max)
     }
 
     fn flat_orient(&self, a: u32, b: u32, c: u32) -> f64 {
@@ -175,7 +244,7 @@ impl<'a> Flips<'a> {
             return false;
         }
         let p = |k: u32| self.points[k as usize];
-        let before = angle_between(self.normals[t1], self.normals[t2])
+        let before = (self.turns.between(self.normals[t1], self.normals[t2]))
             .max(self.worst(self.normals[t1], [(c, b), (b, a)]))
             .max(self.worst(self.normals[t2], [(a, d), (d, c)]));
         let (n1, _) = triangle_normal(p(a), p(d), p(b));
@@ -185,10 +254,15 @@ impl<'a> Flips<'a> {
         {
             return false;
         }
-        let after = angle_between(n1, n2)
+        let after = (self.turns.between(n1, n2))
             .max(self.worst(n1, [(a, d), (b, a)]))
             .max(self.worst(n2, [(d, c), (c, b)]));
-        if after >= before * (1.0 - 1e-9) {
+        // The largest tilt never rises: a flip that trades a bend between triangles for a
+        // steeper triangle would undo the choice of ears.
+        let tilts = |m1, m2| self.turns.tilt(m1).max(self.turns.tilt(m2));
+        if after >= before * (1.0 - 1e-9)
+            || tilts(n1, n2) > tilts(self.normals[t1], self.normals[t2])
+        {
             return false;
         }
         for side in [(a, c), (c, a), (c, b), (b, a), (a, d), (d, c)] {

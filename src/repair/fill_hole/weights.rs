@@ -1,12 +1,12 @@
 //! Liepa's minimum-weight triangulation of a hole's boundary loop: among all triangulations
-//! of the loop (no new vertex), the one whose largest angle between normals — of two new
-//! triangles, of a new triangle and the face across a boundary side, or of a new triangle and
-//! the loop's mean (Newell) normal — is smallest, ties broken by the smallest sum of angles
-//! between new triangles (the least bent patch). O(n³) time and O(n²) memory for `n` corners,
-//! so it serves loops up to [`super::EXACT_CORNERS_MAX`] corners only.
+//! of the loop (no new vertex), the one whose largest turn ([`Turns`]: a new triangle's tilt
+//! from the loop's mean normal, its angle to a new triangle beside it, its angle to a face
+//! across the rim beyond the mean plane's) is smallest, ties broken by the smallest sum of
+//! angles between new triangles (the least bent patch). O(n³) time and O(n²) memory for `n`
+//! corners, so it serves loops up to [`super::EXACT_CORNERS_MAX`] corners only.
 
-use super::geometry::{angle_between, triangle_normal, unit};
-use crate::geom::newell_vector;
+use super::geometry::{angle_between, triangle_normal};
+use super::turns::Turns;
 
 /// A triangulation's weight: the largest angle (radians) between neighbouring normals, then the
 /// sum of the angles between neighbouring new triangles (how much the patch bends).
@@ -41,17 +41,19 @@ impl Weight {
 
 /// The triangles `(i, k, j)`, `i < k < j`, of the minimum-weight triangulation of the loop
 /// `points` (corners in loop order), or `None` when every triangulation needs a diagonal that
-/// `is_joined` says exists already (a second edge between two vertices).
+/// `is_joined` says exists already (a second edge between two vertices) or a triangle that
+/// `is_forbidden` rules out.
 ///
 /// `side_normals[i]` is the unit normal of the face across the side from corner `i` to
 /// `i + 1` (a zero vector when unknown: the angle there is not counted).
 pub(super) fn minimum_weight_triangles(
     points: &[[f64; 3]],
     side_normals: &[[f64; 3]],
+    turns: &Turns,
     is_joined: &dyn Fn(usize, usize) -> bool,
+    is_forbidden: &dyn Fn([u32; 3]) -> bool,
 ) -> Option<Vec<[u32; 3]>> {
     let n = points.len();
-    let mean_normal = unit(newell_vector(points.iter().copied()));
     let at = |i: usize, j: usize| i * n + j;
     let mut weight = vec![Weight::INFINITE; n * n];
     let mut apex = vec![usize::MAX; n * n];
@@ -59,16 +61,6 @@ pub(super) fn minimum_weight_triangles(
     for i in 0..n - 1 {
         weight[at(i, i + 1)] = Weight::ZERO;
     }
-    // The neighbour across a range's side: the face outside for a boundary side, otherwise the
-    // triangle chosen below it.
-    let below = |normal: &[[f64; 3]], i: usize, j: usize| -> Option<[f64; 3]> {
-        if j == i + 1 {
-            let s = side_normals[i];
-            (s != [0.0; 3]).then_some(s)
-        } else {
-            Some(normal[at(i, j)])
-        }
-    };
     for span in 2..n {
         for i in 0..n - span {
             let j = i + span;
@@ -80,29 +72,25 @@ pub(super) fn minimum_weight_triangles(
             let mut best_normal = [0.0; 3];
             for k in i + 1..j {
                 let (left, right) = (weight[at(i, k)], weight[at(k, j)]);
-                if left.max_angle == f64::INFINITY || right.max_angle == f64::INFINITY {
+                if left.max_angle == f64::INFINITY
+                    || right.max_angle == f64::INFINITY
+                    || is_forbidden([i as u32, k as u32, j as u32])
+                {
                     continue;
                 }
                 let (nt, _) = triangle_normal(points[i], points[k], points[j]);
-                // Turning from the hole's mean normal counts too: it keeps ears along a
-                // curved rim from standing up along the rim's bend.
-                let mut angle: f64 = if mean_normal == [0.0; 3] {
-                    0.0
-                } else {
-                    angle_between(nt, mean_normal)
-                };
+                let mut angle = turns.tilt(nt);
                 let mut bend = 0.0;
                 for (a, b) in [(i, k), (k, j)] {
-                    if let Some(nb) = below(&normal, a, b) {
-                        let turn = angle_between(nt, nb);
-                        angle = angle.max(turn);
-                        if b > a + 1 {
-                            bend += turn;
-                        }
+                    if b == a + 1 {
+                        angle = angle.max(turns.rim(nt, side_normals[a]));
+                    } else {
+                        angle = angle.max(turns.between(nt, normal[at(a, b)]));
+                        bend += angle_between(nt, normal[at(a, b)]);
                     }
                 }
-                if span == n - 1 && side_normals[n - 1] != [0.0; 3] {
-                    angle = angle.max(angle_between(nt, side_normals[n - 1]));
+                if span == n - 1 {
+                    angle = angle.max(turns.rim(nt, side_normals[n - 1]));
                 }
                 let w = left.join(right).join(Weight {
                     max_angle: angle,

@@ -1,0 +1,151 @@
+//! Whether a fill would intersect the mesh: its new triangles are tested exactly (as
+//! [`crate::geom::self_intersections`] tests pairs) against the mesh's faces whose boxes they
+//! overlap, found in box trees, and against each other.
+//!
+//! The mesh's faces are held as fans of triangles. Filled patches are added as they are cut in,
+//! in trees of doubling sizes (a new tree absorbs every smaller one), so that filling many holes
+//! costs O(n log² n) for the trees and each query O(log² n + k).
+
+use crate::geom::box_tree::{BoundingBox, BoxTree, Boxed};
+use crate::geom::exact_orientation::ExponentRange;
+use crate::geom::triangle_intersection::{is_degenerate_exactly, triangles_meet_exactly};
+use crate::mesh::{FaceId, Mesh};
+
+/// A non-degenerate triangle on mesh vertices, ready for exact tests.
+#[derive(Clone, Copy, Debug)]
+struct Nearby {
+    bounds: BoundingBox,
+    ids: [u32; 3],
+    points: [[f64; 3]; 3],
+    exponents: ExponentRange,
+}
+
+impl Boxed for Nearby {
+    fn bounding_box(&self) -> &BoundingBox {
+        &self.bounds
+    }
+}
+
+impl Nearby {
+    /// The triangle on vertices `ids` at `points`, or `None` when it is degenerate or a
+    /// coordinate is not finite (no intersection can be decided with it).
+    fn new(ids: [u32; 3], points: [[f64; 3]; 3]) -> Option<Nearby> {
+        if !points.iter().flatten().all(|x| x.is_finite()) {
+            return None;
+        }
+        let exponents = ExponentRange::of(points.iter().flatten().copied());
+        (!is_degenerate_exactly(points, exponents)).then(|| Nearby {
+            bounds: BoundingBox::of_points(&points),
+            ids,
+            points,
+            exponents,
+        })
+    }
+
+    fn meets(&self, other: &Nearby) -> bool {
+        triangles_meet_exactly(
+            (self.ids, self.points, self.exponents),
+            (other.ids, other.points, other.exponents),
+        )
+    }
+}
+
+/// The faces of a mesh, as triangles in box trees, that fills must not cross.
+pub(super) struct Surroundings {
+    /// Trees of strictly decreasing sizes.
+    trees: Vec<BoxTree<Nearby>>,
+}
+
+impl Surroundings {
+    /// The live faces of `mesh` (fans from their first corner). O(n log n).
+    pub(super) fn new(mesh: &Mesh) -> Surroundings {
+        let faces = (0..mesh.face_capacity() as u32)
+            .map(FaceId)
+            .filter(|&f| mesh.check_face(f).is_ok());
+        let mut surroundings = Surroundings { trees: Vec::new() };
+        surroundings.add(mesh, faces);
+        surroundings
+    }
+
+    /// Adds the faces `faces` of `mesh`.
+    pub(super) fn add(&mut self, mesh: &Mesh, faces: impl IntoIterator<Item = FaceId>) {
+        let mut triangles = Vec::new();
+        let mut corners = Vec::new();
+        for f in faces {
+            corners.clear();
+            corners.extend(mesh.face_vertices(f).map(|v| v.0));
+            for i in 1..corners.len().saturating_sub(1) {
+                let ids = [corners[0], corners[i], corners[i + 1]];
+                triangles.extend(Nearby::new(
+                    ids,
+                    ids.map(|v| mesh.position(crate::mesh::VertexId(v))),
+                ));
+            }
+        }
+        while self
+            .trees
+            .last()
+            .is_some_and(|tree| tree.len() <= triangles.len())
+        {
+            let tree = self.trees.pop().expect("checked");
+            triangles.extend(tree.into_items());
+        }
+        if !triangles.is_empty() {
+            self.trees.push(BoxTree::new(triangles));
+        }
+    }
+
+    /// The indices of the triangles of `triangles` (corner indices into `ids` and `points`, the
+    /// hole's corners' vertex ids and positions) that meet a face of the surroundings or, when
+    /// `among_themselves`, another of `triangles`. Degenerate triangles are not listed: the fold
+    /// test refuses them.
+    pub(super) fn crossing_triangles(
+        &self,
+        ids: &[u32],
+        points: &[[f64; 3]],
+        triangles: &[[u32; 3]],
+        among_themselves: bool,
+    ) -> Vec<usize> {
+        let new: Vec<(usize, Nearby)> = triangles
+            .iter()
+            .enumerate()
+            .filter_map(|(t, tri)| {
+                Nearby::new(
+                    tri.map(|k| ids[k as usize]),
+                    tri.map(|k| points[k as usize]),
+                )
+                .map(|nearby| (t, nearby))
+            })
+            .collect();
+        let mut crossing = vec![false; triangles.len()];
+        for &(t, ref triangle) in &new {
+            for tree in &self.trees {
+                if crossing[t] {
+                    break;
+                }
+                tree.visit_overlapping(&triangle.bounds, |other| {
+                    crossing[t] = crossing[t] || triangle.meets(other);
+                });
+            }
+        }
+        if among_themselves && new.len() > 1 {
+            let pairs = BoxTree::new(new.iter().map(|&(t, n)| Indexed(t, n)).collect())
+                .overlapping_pairs(|a, b| a.1.meets(&b.1).then_some([a.0, b.0]));
+            for [a, b] in pairs {
+                crossing[a] = true;
+                crossing[b] = true;
+            }
+        }
+        (0..triangles.len()).filter(|&t| crossing[t]).collect()
+    }
+}
+
+/// A new triangle and its index, for the search among new triangles.
+#[derive(Clone, Copy, Debug)]
+struct Indexed(usize, Nearby);
+
+impl Boxed for Indexed {
+    fn bounding_box(&self) -> &BoundingBox {
+        &self.1.bounds
+    }
+}
