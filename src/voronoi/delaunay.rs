@@ -208,6 +208,11 @@ impl Delaunay {
         let mut triangles = large_arrays::zeroed::<u32>(3 * count);
         let mut corner_ranks = large_arrays::zeroed::<u32>(3 * count);
         let mut twins = large_arrays::zeroed::<u32>(3 * count);
+        // The gather below asks for its records ahead when they are unlikely to be in cache
+        // already: not for a construction array that fits in a core's cache (10k sites: this
+        // fill 3.29M -> 2.12M instructions).
+        const PREFETCH_MIN_BYTES: usize = 1 << 20;
+        let prefetching = size_of_val(built) >= PREFETCH_MIN_BYTES;
         // Runs of output triangles are independent: filled in parallel.
         let run = run_length(count);
         let runs: Vec<_> = triangles
@@ -227,12 +232,14 @@ impl Delaunay {
                 // A gather through `old_index`: each triangle is asked for 16 ahead, and the new
                 // numbers of its neighbours 8 ahead, once its record has arrived (1M sites:
                 // this fill 32.6 -> 22.4 ms, best of 12).
-                if let Some(&ahead) = olds.get(j + 16) {
-                    prefetch(&built[ahead as usize]);
-                }
-                if let Some(&near) = olds.get(j + 8) {
-                    for o in built[near as usize].twins {
-                        prefetch(&new_index[(o / 3) as usize]);
+                if prefetching {
+                    if let Some(&ahead) = olds.get(j + 16) {
+                        prefetch(&built[ahead as usize]);
+                    }
+                    if let Some(&near) = olds.get(j + 8) {
+                        for o in built[near as usize].twins {
+                            prefetch(&new_index[(o / 3) as usize]);
+                        }
                     }
                 }
                 let triangle = &built[old as usize];

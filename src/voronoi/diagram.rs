@@ -448,7 +448,7 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
     let largest = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
-    let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+    let (unit, unit_inverse) = unit_scale_of(largest);
     let [bx, by, cx, cy] = [bx, by, cx, cy].map(|x| x * unit);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
     let det = bx * cy - by * cx;
@@ -465,10 +465,26 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     } else {
         exact_circumcentre_offset(a, b, c, unit)
     };
-    if unit == 1.0 {
-        offset
+    // `unit_inverse` is exact, so this rounds as dividing by `unit` would, several times faster.
+    offset.map(|x| x * unit_inverse)
+}
+
+/// [`normalising_scale_of_box`] of a box reaching `largest` (not negative) in every direction,
+/// and its inverse, both powers of two. For a normal `largest` both come straight from its
+/// exponent bits: this runs once per Delaunay triangle.
+#[inline(always)]
+fn unit_scale_of(largest: f64) -> (f64, f64) {
+    const EXPONENT_SHIFT: u32 = 52;
+    // For a biased exponent `b` of 1 to 2045, 2^-e and 2^e (e = b - 1023) are both normal.
+    let biased = largest.to_bits() >> EXPONENT_SHIFT;
+    if (1..=2045).contains(&biased) {
+        (
+            f64::from_bits((2046 - biased) << EXPONENT_SHIFT),
+            f64::from_bits(biased << EXPONENT_SHIFT),
+        )
     } else {
-        offset.map(|x| x / unit)
+        let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+        (unit, unit.recip())
     }
 }
 
@@ -578,6 +594,34 @@ mod tests {
         assert!(
             (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
         );
+    }
+
+    #[test]
+    fn unit_scale_matches_the_box_scale_and_inverts_exactly() {
+        let magnitudes = [
+            0.0,
+            f64::from_bits(1),
+            3e-310,
+            f64::MIN_POSITIVE,
+            1e-300,
+            0.75,
+            1.0,
+            3.0,
+            1e300,
+            f64::MAX,
+            f64::INFINITY,
+        ];
+        for largest in magnitudes {
+            let (unit, inverse) = unit_scale_of(largest);
+            let expected = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+            assert_eq!(unit.to_bits(), expected.to_bits(), "largest = {largest:e}");
+            assert_eq!(
+                inverse.to_bits(),
+                expected.recip().to_bits(),
+                "largest = {largest:e}"
+            );
+            assert_eq!(unit * inverse, 1.0, "largest = {largest:e}");
+        }
     }
 
     #[test]

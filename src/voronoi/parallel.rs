@@ -36,9 +36,15 @@ pub(crate) fn run_length(len: usize) -> usize {
 }
 
 /// Length of the runs of a pass that does extra work at the seams between runs: an eighth of the
-/// pass (work for every thread of a small machine, few seams), but at least 2^12 elements.
+/// pass (work for every thread of a small machine, few seams), but at least 2^12 elements. With
+/// one thread the pass is one run, with no seams to pay for (the Voronoi vertices of 100k sites:
+/// 5% fewer instructions).
 pub(crate) fn seamed_run_length(len: usize) -> usize {
-    len.div_ceil(8).max(MIN_RUN)
+    #[cfg(feature = "parallel")]
+    if pool_can_help() {
+        return len.div_ceil(8).max(MIN_RUN);
+    }
+    len.max(1)
 }
 
 const MIN_RUN: usize = 1 << 12;

@@ -257,12 +257,28 @@ fn grid_gives_degree_four_vertices() {
 #[test]
 fn grid_split_into_parallel_runs_merges_across_their_seams() {
     // 120 × 120 sites: about 28k triangles and 14k cells, so every parallel pass splits them
-    // into several runs (`parallel::run_length`, `seamed_run_length`), and cocircular squares
-    // straddle the seams between the Voronoi vertices' runs.
+    // into several runs (`parallel::run_length`, `seamed_run_length`, the latter only when
+    // threads share the work), and cocircular squares straddle the seams between the Voronoi
+    // vertices' runs.
     let side = 120;
     let pts: Vec<[f64; 2]> = (0..side * side)
         .map(|i| [(i % side) as f64, (i / side) as f64])
         .collect();
+    #[cfg(feature = "parallel")]
+    let v = {
+        let in_pool = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| Voronoi::new(&pts).unwrap())
+        };
+        let (alone, shared) = (in_pool(1), in_pool(2));
+        assert_eq!(alone.vertices(), shared.vertices());
+        assert_eq!(alone.triangle_vertex, shared.triangle_vertex);
+        shared
+    };
+    #[cfg(not(feature = "parallel"))]
     let v = Voronoi::new(&pts).unwrap();
     check_voronoi(&v);
     assert_eq!(v.n_vertices(), (side - 1) * (side - 1));
