@@ -56,14 +56,17 @@ static void library_wide_calls() {
   hw::set_thread_count(0);
   CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::set_thread_count(HW_MAX_THREAD_COUNT + 1); }));
 
-  CHECK(hw::diagnostic_list_name(HW_DIAG_ISOLATED_VERTICES) == "isolated vertices");
-  CHECK(hw::diagnostic_edges_name(HW_DIAG_INCONSISTENT_EDGES) == "inconsistently oriented edges");
-  CHECK(hw::doctor_finding_name(HW_DOCTOR_T_VERTICES) == "T-vertices");
+  CHECK(hw::diagnostic_list_name(HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES) == "isolated vertices");
+  CHECK(hw::diagnostic_edges_name(HW_DIAGNOSTIC_EDGES_INCONSISTENT) ==
+        "inconsistently oriented edges");
+  CHECK(hw::doctor_finding_name(HW_DOCTOR_FINDING_T_VERTICES) == "T-vertices");
   // The three families have disjoint values: a value of one is unknown to the others.
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::doctor_finding_name(HW_DIAG_SKIPPED_FACES); }));
   CHECK(refused_with(HW_ERR_INVALID_INPUT,
-                     [] { hw::diagnostic_list_name(HW_DIAG_NON_MANIFOLD_EDGES); }));
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::diagnostic_edges_name(HW_DOCTOR_CAPS); }));
+                     [] { hw::doctor_finding_name(HW_DIAGNOSTIC_LIST_SKIPPED_FACES); }));
+  CHECK(refused_with(HW_ERR_INVALID_INPUT,
+                     [] { hw::diagnostic_list_name(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD); }));
+  CHECK(refused_with(HW_ERR_INVALID_INPUT,
+                     [] { hw::diagnostic_edges_name(HW_DOCTOR_FINDING_CAPS); }));
 }
 
 static void mesh_editing() {
@@ -117,15 +120,16 @@ static void deleting_and_index_maps() {
   m.delete_edge(diagonal, false);  // takes both faces, keeps the vertices
   CHECK(m.n_faces() == 0 && m.n_vertices() == 4);
   hw::index_maps maps = m.garbage_collect();
-  CHECK(maps.view(HW_ELEMENT_VERTEX).size() == 4 && maps.view(HW_ELEMENT_FACE).size() == 2);
-  CHECK(maps.view(HW_ELEMENT_FACE)[0] == HW_INVALID_INDEX);
-  CHECK(maps.view(HW_ELEMENT_VERTEX)[3] == 3);
+  CHECK(maps.view(HW_ELEMENT_KIND_VERTEX).size() == 4 &&
+        maps.view(HW_ELEMENT_KIND_FACE).size() == 2);
+  CHECK(maps.view(HW_ELEMENT_KIND_FACE)[0] == HW_INVALID_INDEX);
+  CHECK(maps.view(HW_ELEMENT_KIND_VERTEX)[3] == 3);
 
   hw::mesh n = square();
   n.delete_vertex(hw_vertex{1});  // only in the first triangle
   CHECK(n.n_faces() == 1 && n.n_vertices() == 3);
   const hw::index_maps compacted = n.garbage_collect();
-  const auto vertices = compacted.view(HW_ELEMENT_VERTEX);
+  const auto vertices = compacted.view(HW_ELEMENT_KIND_VERTEX);
   CHECK(vertices[0] == 0 && vertices[1] == HW_INVALID_INDEX && vertices[2] == 1 &&
         vertices[3] == 2);
   CHECK(refused_with(HW_ERR_INVALID_HANDLE, [] { square().delete_vertex(hw_vertex{9}); }));
@@ -147,35 +151,37 @@ static void topology_views_and_normals() {
   CHECK(std::set<uint32_t>(components.begin(), components.end()).size() == m.n_components());
 
   // The connectivity views hold the arrays the navigation reads.
-  const auto next = m.view(HW_ARRAY_HALFEDGE_NEXT);
+  const auto next = m.view(HW_MESH_ARRAY_HALFEDGE_NEXT);
   CHECK(next.size() == m.n_halfedges());
   for (uint32_t h = 0; h < next.size(); h += 97) CHECK(next[h] == m.next(hw_halfedge{h}).idx);
 
   // One pass gives what the two separate calls give.
-  const auto both = m.normals(HW_WEIGHT_AREA);
+  const auto both = m.normals(HW_NORMAL_WEIGHTING_AREA);
   CHECK(close(both.faces, m.face_normals()));
-  CHECK(close(both.vertices, m.vertex_normals(HW_WEIGHT_AREA)));
+  CHECK(close(both.vertices, m.vertex_normals(HW_NORMAL_WEIGHTING_AREA)));
 }
 
 static void attribute_info() {
   hw::mesh m = square();
-  m.add_attribute<float>(HW_ELEMENT_VERTEX, "uv", 2);
-  const auto info = m.attribute_info(HW_ELEMENT_VERTEX, "uv");
-  CHECK(info.first == HW_SCALAR_F32 && info.second == 2);
-  CHECK(refused_with(HW_ERR_NOT_FOUND, [] { square().attribute_info(HW_ELEMENT_FACE, "none"); }));
+  m.add_attribute<float>(HW_ELEMENT_KIND_VERTEX, "uv", 2);
+  const auto info = m.attribute_info(HW_ELEMENT_KIND_VERTEX, "uv");
+  CHECK(info.first == HW_SCALAR_TYPE_F32 && info.second == 2);
+  CHECK(refused_with(HW_ERR_NOT_FOUND,
+                     [] { square().attribute_info(HW_ELEMENT_KIND_FACE, "none"); }));
 }
 
 static void diagnostic_edges_and_vertex_fans() {
   // Three triangles on edge 0-1.
   const std::vector<double> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
   const hw::diagnostic d = hw::diagnostic::of(positions, {3, 3, 3}, {0, 1, 2, 1, 0, 3, 0, 1, 4});
-  CHECK(d.edge_count(HW_DIAG_NON_MANIFOLD_EDGES) == 1);
-  const hw::diagnostic::edge_report edge = d.edge(HW_DIAG_NON_MANIFOLD_EDGES, 0);
+  CHECK(d.edge_count(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD) == 1);
+  const hw::diagnostic::edge_report edge = d.edge(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0);
   CHECK(edge.vertices[0] == 0 && edge.vertices[1] == 1);
   CHECK((edge.faces == std::vector<uint32_t>{0, 1, 2}));
-  CHECK(hw::diagnostic().edge_count(HW_DIAG_NON_MANIFOLD_EDGES) == 0);
+  CHECK(hw::diagnostic().edge_count(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD) == 0);
   CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
-    hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2}).edge(HW_DIAG_NON_MANIFOLD_EDGES, 0);
+    hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2})
+        .edge(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0);
   }));
 
   // Two triangles meeting at their corner 0 only: two fans there.
@@ -228,7 +234,8 @@ static void winged_bulk_calls() {
   const auto edge = k.mev(made.second, made.first, {1, 0, 0});
   k.kev(edge.first, edge.second);
   const hw::index_maps maps = k.garbage_collect();
-  CHECK(maps.view(HW_ELEMENT_VERTEX).size() == 2 && maps.view(HW_ELEMENT_VERTEX)[1] == HW_INVALID_INDEX);
+  CHECK(maps.view(HW_ELEMENT_KIND_VERTEX).size() == 2 &&
+        maps.view(HW_ELEMENT_KIND_VERTEX)[1] == HW_INVALID_INDEX);
 }
 
 int main() {

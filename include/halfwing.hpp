@@ -15,10 +15,10 @@
 // half-edges are plain `uint32_t` indices, as in C.
 //
 // Enumerations: the wrapper takes the C types and constants as they are (hw_element_kind with
-// HW_ELEMENT_FACE, hw_doctor_finding with HW_DOCTOR_NEEDLES...), not enum class copies, so C and
-// C++ code spell each value the same way. The C types are integers, not C enums, so a value
-// coming back from C is never an invalid enumerator; a value of the wrong family (an
-// HW_DIAG_* list passed as an hw_doctor_finding) is refused with HW_ERR_INVALID_INPUT, the
+// HW_ELEMENT_KIND_FACE, hw_doctor_finding with HW_DOCTOR_FINDING_NEEDLES...), not enum class
+// copies, so C and C++ code spell each value the same way. The C types are integers, not C enums,
+// so a value coming back from C is never an invalid enumerator; a value of the wrong family (an
+// HW_DIAGNOSTIC_LIST_* value passed as an hw_doctor_finding) is refused with HW_ERR_INVALID_INPUT, the
 // families having disjoint values.
 #ifndef HALFWING_HPP
 #define HALFWING_HPP
@@ -181,13 +181,13 @@ std::string copied_text(Copy copy) {
 template <class T>
 struct scalar_type;
 template <>
-struct scalar_type<double> : std::integral_constant<hw_scalar_type, HW_SCALAR_F64> {};
+struct scalar_type<double> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_F64> {};
 template <>
-struct scalar_type<float> : std::integral_constant<hw_scalar_type, HW_SCALAR_F32> {};
+struct scalar_type<float> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_F32> {};
 template <>
-struct scalar_type<int32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_I32> {};
+struct scalar_type<int32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_I32> {};
 template <>
-struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_U32> {};
+struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_U32> {};
 
 }  // namespace detail
 
@@ -808,7 +808,7 @@ class mesh {
   static mesh from_indexed(const std::vector<double>& positions,
                            const std::vector<uint32_t>& face_sizes,
                            const std::vector<uint32_t>& indices,
-                           hw_build_policy policy = HW_BUILD_STRICT,
+                           hw_build_policy policy = HW_BUILD_POLICY_STRICT,
                            diagnostic* report = nullptr) {
     return mesh(detail::build_indexed<hw_mesh>(hw_mesh_from_indexed, positions, face_sizes,
                                                indices, policy, report));
@@ -816,7 +816,7 @@ class mesh {
 
   /// Reads an OBJ, OFF or PLY file; see hw_mesh_read(). `report`, when given, receives the
   /// diagnostic, also of a refused file.
-  static mesh read(const std::string& path, hw_build_policy policy = HW_BUILD_STRICT,
+  static mesh read(const std::string& path, hw_build_policy policy = HW_BUILD_POLICY_STRICT,
                    diagnostic* report = nullptr) {
     hw_mesh* raw = nullptr;
     hw_diagnostic* found = nullptr;
@@ -895,10 +895,10 @@ class mesh {
     return nav().loop(h);
   }
 
-  /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` (HW_ELEMENT_VERTEX,
-  /// HW_ELEMENT_HALFEDGE, HW_ELEMENT_EDGE, HW_ELEMENT_FACE) in increasing id order; an `f` that
-  /// returns bool stops the visit by returning false. Returns the number of calls. An exception
-  /// thrown by `f` ends the visit and is rethrown here. See hw_mesh_visit().
+  /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` (HW_ELEMENT_KIND_VERTEX,
+  /// HW_ELEMENT_KIND_HALFEDGE, HW_ELEMENT_KIND_EDGE, HW_ELEMENT_KIND_FACE) in increasing id order;
+  /// an `f` that returns bool stops the visit by returning false. Returns the number of calls. An
+  /// exception thrown by `f` ends the visit and is rethrown here. See hw_mesh_visit().
   template <class F>
   std::size_t visit(hw_element_kind kind, F&& f) const {
     detail::visitor<std::remove_reference_t<F>> v{f, nullptr};
@@ -933,7 +933,7 @@ class mesh {
   }
   /// The component of every face slot (see hw_mesh_face_components()).
   std::vector<uint32_t> face_components() const {
-    std::vector<uint32_t> out(slots(HW_ELEMENT_FACE));
+    std::vector<uint32_t> out(slots(HW_ELEMENT_KIND_FACE));
     std::size_t n = 0;
     check(hw_mesh_face_components(get(), out.data(), out.size(), &n));
     out.resize(n);
@@ -963,19 +963,20 @@ class mesh {
   // Normals, x y z per element slot.
   /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_FACE));
+    std::vector<double> out(3 * slots(HW_ELEMENT_KIND_FACE));
     check(hw_mesh_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Vertex normals with this weighting, x y z per vertex slot.
-  std::vector<double> vertex_normals(hw_normal_weighting weighting = HW_WEIGHT_UNIFORM) const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_VERTEX));
+  std::vector<double> vertex_normals(
+      hw_normal_weighting weighting = HW_NORMAL_WEIGHTING_UNIFORM) const {
+    std::vector<double> out(3 * slots(HW_ELEMENT_KIND_VERTEX));
     check(hw_mesh_vertex_normals(get(), weighting, out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Normals per corner (x y z per half-edge slot), split at edges sharper than `crease_angle` radians (see hw_mesh_corner_normals()).
   std::vector<double> corner_normals(double crease_angle) const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_HALFEDGE));
+    std::vector<double> out(3 * slots(HW_ELEMENT_KIND_HALFEDGE));
     check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
     return out;
   }
@@ -987,8 +988,8 @@ class mesh {
   /// Face and vertex normals in one pass (see hw_mesh_normals()).
   face_and_vertex_normals normals(hw_normal_weighting weighting_kind) const {
     face_and_vertex_normals out;
-    out.faces.resize(3 * slots(HW_ELEMENT_FACE));
-    out.vertices.resize(3 * slots(HW_ELEMENT_VERTEX));
+    out.faces.resize(3 * slots(HW_ELEMENT_KIND_FACE));
+    out.vertices.resize(3 * slots(HW_ELEMENT_KIND_VERTEX));
     check(hw_mesh_normals(get(), weighting_kind, out.faces.data(), out.faces.size() / 3, nullptr,
                           out.vertices.data(), out.vertices.size() / 3, nullptr));
     return out;
@@ -1195,12 +1196,12 @@ class mesh {
   // throws hw::error with the library's message otherwise.
   nav_view checked_nav(hw_vertex v) const {
     hw_circulator c;
-    check(hw_circ_around_vertex(get(), v, HW_CIRC_HALFEDGES, &c));
+    check(hw_circ_around_vertex(get(), v, HW_CIRCULATOR_KIND_HALFEDGES, &c));
     return nav();
   }
   nav_view checked_nav(hw_face f) const {
     hw_circulator c;
-    check(hw_circ_around_face(get(), f, HW_CIRC_HALFEDGES, &c));
+    check(hw_circ_around_face(get(), f, HW_CIRCULATOR_KIND_HALFEDGES, &c));
     return nav();
   }
   std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
@@ -1243,7 +1244,7 @@ class winged {
   static winged from_indexed(const std::vector<double>& positions,
                              const std::vector<uint32_t>& face_sizes,
                              const std::vector<uint32_t>& indices,
-                             hw_build_policy policy = HW_BUILD_STRICT,
+                             hw_build_policy policy = HW_BUILD_POLICY_STRICT,
                              diagnostic* report = nullptr) {
     return winged(detail::build_indexed<hw_winged>(hw_winged_from_indexed, positions, face_sizes,
                                                    indices, policy, report));
@@ -1353,21 +1354,29 @@ class winged {
   }
 
   /// The edges of `f`'s loop, counter-clockwise from its stored edge.
-  edge_range face_edges(hw_wface f) const { return edge_range(around(f, HW_WCIRC_EDGES)); }
+  edge_range face_edges(hw_wface f) const {
+    return edge_range(around(f, HW_WCIRCULATOR_KIND_EDGES));
+  }
   /// The corners of `f`, counter-clockwise from its first corner.
   vertex_range face_vertices(hw_wface f) const {
-    return vertex_range(around(f, HW_WCIRC_VERTICES));
+    return vertex_range(around(f, HW_WCIRCULATOR_KIND_VERTICES));
   }
   /// The faces across `f`'s edges (holes skipped).
-  face_range face_faces(hw_wface f) const { return face_range(around(f, HW_WCIRC_FACES)); }
+  face_range face_faces(hw_wface f) const {
+    return face_range(around(f, HW_WCIRCULATOR_KIND_FACES));
+  }
   /// The edges at `v`, counter-clockwise.
-  edge_range vertex_edges(hw_wvertex v) const { return edge_range(around(v, HW_WCIRC_EDGES)); }
+  edge_range vertex_edges(hw_wvertex v) const {
+    return edge_range(around(v, HW_WCIRCULATOR_KIND_EDGES));
+  }
   /// The neighbours of `v`, counter-clockwise.
   vertex_range vertex_vertices(hw_wvertex v) const {
-    return vertex_range(around(v, HW_WCIRC_VERTICES));
+    return vertex_range(around(v, HW_WCIRCULATOR_KIND_VERTICES));
   }
   /// The faces around `v`, counter-clockwise (holes skipped).
-  face_range vertex_faces(hw_wvertex v) const { return face_range(around(v, HW_WCIRC_FACES)); }
+  face_range vertex_faces(hw_wvertex v) const {
+    return face_range(around(v, HW_WCIRCULATOR_KIND_FACES));
+  }
 
   /// Make vertex, face, solid: returns the new vertex and (point) face.
   std::pair<hw_wvertex, hw_wface> mvfs(const point& p) {
@@ -1405,7 +1414,7 @@ class winged {
 
   /// A table in a textbook layout; see hw_winged_table().
   std::string table(hw_wtable which, hw_wnaming naming = HW_WNAMING_CW_CCW,
-                    hw_table_format format = HW_TABLE_TEXT) const {
+                    hw_table_format format = HW_TABLE_FORMAT_TEXT) const {
     return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
       return hw_winged_table(get(), which, naming, format, buf, len, needed);
     });
@@ -1531,8 +1540,9 @@ class delaunay {
   /// Whether the sites span a plane, a line, a point or nothing (see hw_delaunay_dimension()).
   hw_site_dimension dimension() const { return hw_delaunay_dimension(get()); }
 
-  /// One index array of the triangulation (::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES,
-  /// ::HW_VORONOI_TRIANGLE_TWINS, ::HW_VORONOI_HULL); see hw_delaunay_view().
+  /// One index array of the triangulation (::HW_VORONOI_ARRAY_REPRESENTATIVE,
+  /// ::HW_VORONOI_ARRAY_TRIANGLES,
+  /// ::HW_VORONOI_ARRAY_TRIANGLE_TWINS, ::HW_VORONOI_ARRAY_HULL); see hw_delaunay_view().
   values_view<const uint32_t> view(hw_voronoi_array which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
@@ -1823,21 +1833,21 @@ inline mesh icosphere(double radius, uint32_t level) {
 }
 /// A closed torus about the z axis (see hw_surface_torus()).
 inline mesh torus(double major_radius, double minor_radius, uint32_t major_steps,
-                  uint32_t minor_steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t minor_steps, hw_cell_faces faces = HW_CELL_FACES_QUADS) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, faces, out);
   });
 }
 /// A flat grid in the plane z = 0 (see hw_surface_grid()).
 inline mesh grid(double width, double height, uint32_t cells_x, uint32_t cells_y,
-                 hw_cell_faces faces = HW_CELLS_QUADS) {
+                 hw_cell_faces faces = HW_CELL_FACES_QUADS) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_grid(width, height, cells_x, cells_y, faces, out);
   });
 }
 /// `profile` swept along `direction` in `steps` rows.
 inline mesh sweep(const std::vector<point>& profile, bool closed, const point& direction,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t steps, hw_cell_faces faces = HW_CELL_FACES_QUADS) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_sweep(detail::flat(profile), profile.size(), closed, direction.data(), steps,
                             faces, out);
@@ -1846,7 +1856,7 @@ inline mesh sweep(const std::vector<point>& profile, bool closed, const point& d
 /// `profile` turned about an axis; `angle` in radians, or a full turn when `angle` is omitted.
 inline mesh revolution(const std::vector<point>& profile, bool closed, const point& axis_origin,
                        const point& axis_direction, uint32_t steps, double angle = 0.0,
-                       hw_caps caps = HW_CAPS_NONE, hw_cell_faces faces = HW_CELLS_QUADS) {
+                       hw_caps caps = HW_CAPS_NONE, hw_cell_faces faces = HW_CELL_FACES_QUADS) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_revolution(detail::flat(profile), profile.size(), closed, axis_origin.data(),
                                  axis_direction.data(), angle == 0.0, angle, steps, caps, faces,
@@ -1855,7 +1865,7 @@ inline mesh revolution(const std::vector<point>& profile, bool closed, const poi
 }
 /// Straight rulings from `first[i]` to `second[i]`.
 inline mesh ruled(const std::vector<point>& first, const std::vector<point>& second, bool closed,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t steps, hw_cell_faces faces = HW_CELL_FACES_QUADS) {
   if (first.size() != second.size())
     throw error(HW_ERR_INVALID_INPUT, "ruled surface polylines differ in length");
   return detail::generate([&](hw_mesh** out) {

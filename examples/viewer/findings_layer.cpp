@@ -98,9 +98,9 @@ findings_layer::findings_layer(const std::string& path) {
     if (layer.n_items > 0) {
       const auto buffers = hw::render_buffers::finding(report_, kind, list.positions,
                                                        list.face_sizes, list.indices);
-      layer.outlines = std::make_unique<gpu_lines>(buffers, HW_RENDER_WIREFRAME);
-      layer.lines = std::make_unique<gpu_lines>(buffers, HW_RENDER_BOUNDARY);
-      const std::vector<float> marks = crosses(buffers.floats(HW_RENDER_POINTS), size);
+      layer.outlines = std::make_unique<gpu_lines>(buffers, HW_RENDER_FLOATS_WIREFRAME);
+      layer.lines = std::make_unique<gpu_lines>(buffers, HW_RENDER_FLOATS_BOUNDARY);
+      const std::vector<float> marks = crosses(buffers.floats(HW_RENDER_FLOATS_POINTS), size);
       layer.crosses = std::make_unique<gpu_lines>(hw::values_view<const float>(marks.data(), marks.size()));
     }
     kinds_.push_back(std::move(layer));

@@ -52,9 +52,9 @@ class gpu_surface {
  public:
   explicit gpu_surface(const hw::render_buffers& buffers) {
     glBindVertexArray(vao_.get());
-    upload_attribute(positions_, buffers.floats(HW_RENDER_POSITIONS), 0, 3);
-    upload_attribute(normals_, buffers.floats(HW_RENDER_NORMALS), 1, 3);
-    const auto triangles = buffers.indices(HW_RENDER_TRIANGLES);
+    upload_attribute(positions_, buffers.floats(HW_RENDER_FLOATS_POSITIONS), 0, 3);
+    upload_attribute(normals_, buffers.floats(HW_RENDER_FLOATS_NORMALS), 1, 3);
+    const auto triangles = buffers.indices(HW_RENDER_INDICES_TRIANGLES);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get());  // recorded in the VAO
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size_bytes()),
                  triangles.data(), GL_STATIC_DRAW);
