@@ -60,7 +60,7 @@ std::vector<FacePair> cgal_self_intersections(const Soup& soup, std::vector<uint
 }
 
 std::vector<FacePair> doctor_self_intersections(const hw::doctor_report& report) {
-  const auto found = report.finding(HW_DOCTOR_FINDING_SELF_INTERSECTIONS);
+  const auto found = report.finding(hw::DoctorFinding::SelfIntersections);
   std::vector<FacePair> pairs(found.n_items);
   for (std::size_t i = 0; i < found.n_items; ++i)
     pairs[i] = {found.ids[2 * i], found.ids[2 * i + 1]};

@@ -237,7 +237,7 @@ int main() {
     } catch (const hw::error& e) {
       // Files halfwing cannot even parse (an index beyond the vertex list) are the parser's
       // business; say so and go on.
-      CHECK(e.status() == HW_ERR_PARSE);
+      CHECK(e.status() == hw::Status::Parse);
       std::printf("  %-42s not parsed: %s\n", path.filename().c_str(), e.what());
     }
   }

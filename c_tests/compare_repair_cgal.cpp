@@ -90,7 +90,7 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
   hw::mesh ours;
   try {
-    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_POLICY_STRICT);
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, hw::BuildPolicy::Strict);
   } catch (const hw::error&) {
     return;  // non-finite coordinates, degenerate corners: not a mesh for halfwing
   }
@@ -102,7 +102,7 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
   const hw::repair_report report = ours.stitch_borders();
   CHECK(hw_mesh_check(ours.get()) == HW_OK);
   const std::size_t after = our_boundary_halfedges(ours), cgal_after = cgal_boundary_halfedges(theirs);
-  CHECK(report.list(HW_REPAIR_LIST_STITCHED_HALFEDGES).size() == before - after);
+  CHECK(report.list(hw::RepairList::StitchedHalfedges).size() == before - after);
   if (!comparable) {
     std::printf("  %-42s not compared: %zu boundary half-edges after stitching, CGAL %zu\n",
                 m.name.c_str(), after, cgal_after);
@@ -125,10 +125,10 @@ Soup cgal_of(const hw::soup& soup) {
 void compare_split(const indexed::Mesh& m) {
   hw::soup ours = hw::soup::from_indexed(m.positions, m.face_sizes, m.indices);
   ours.orient_faces();
-  ours.repair_non_manifold_edges(HW_NON_MANIFOLD_EDGES_CUT);
+  ours.repair_non_manifold_edges(hw::NonManifoldEdges::Cut);
   const std::size_t n_before = ours.positions().size() / 3;
   const hw::repair_report split = ours.split_non_manifold_vertices();
-  const std::vector<uint32_t> copies = split.list(HW_REPAIR_LIST_VERTEX_COPIES);
+  const std::vector<uint32_t> copies = split.list(hw::RepairList::VertexCopies);
   CHECK(ours.positions().size() / 3 == n_before + copies.size());
   Soup soup = cgal_of(ours);
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
@@ -187,7 +187,7 @@ void compare_orientation(const indexed::Mesh& m) {
     }
     hw::soup ours = hw::soup::from_indexed(turned.positions, turned.face_sizes, turned.indices);
     const std::vector<uint32_t> our_turned =
-        ours.orient_faces().list(HW_REPAIR_LIST_REORIENTED_FACES);
+        ours.orient_faces().list(hw::RepairList::ReorientedFaces);
     if (our_turned != cgal_turned) {
       std::printf("  %-42s differs: %zu faces reversed, CGAL %zu\n",
                   turned.name.c_str(), our_turned.size(), cgal_turned.size());
@@ -254,7 +254,7 @@ void compare(const std::filesystem::path& path) {
   CHECK(static_cast<std::size_t>(std::count(named.begin(), named.end(), true)) ==
         theirs.points.size());
   std::printf("  %-42s merged %zu vertices, %zu faces left, %zu points left\n", m.name.c_str(),
-              merged.list(HW_REPAIR_LIST_MERGED_VERTICES).size() / 2, our_faces,
+              merged.list(hw::RepairList::MergedVertices).size() / 2, our_faces,
               theirs.points.size());
   ++compared_soups;
 
@@ -263,7 +263,7 @@ void compare(const std::filesystem::path& path) {
   std::size_t non_manifold_edges = 0;
   hw::check(hw_diagnostic_edge_count(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
                                      &non_manifold_edges));
-  const bool comparable = merged.list(HW_REPAIR_LIST_REMOVED_FACES).empty() &&
+  const bool comparable = merged.list(hw::RepairList::RemovedFaces).empty() &&
                           proper == after.n_faces() && non_manifold_edges == 0;
   compare_stitch(m, comparable);
   if (m.n_faces() <= 20000) compare_stitch(unwelded(m), comparable);

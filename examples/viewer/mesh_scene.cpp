@@ -38,7 +38,7 @@ void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines)
 }  // namespace
 
 mesh_scene::mesh_scene(const std::string& path)
-    : path_(path), mesh_(hw::mesh::read(path, HW_BUILD_POLICY_REPAIR, &report_)), findings_(path) {
+    : path_(path), mesh_(hw::mesh::read(path, hw::BuildPolicy::Repair, &report_)), findings_(path) {
   options_.shading = HW_SHADING_CREASE;
   rebuild();
 }
@@ -46,11 +46,11 @@ mesh_scene::mesh_scene(const std::string& path)
 void mesh_scene::rebuild() {
   buffers_ = std::make_unique<hw::render_buffers>(mesh_, options_, &report_);
   surface_ = std::make_unique<gpu_surface>(*buffers_);
-  wireframe_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FLOATS_WIREFRAME);
-  boundary_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FLOATS_BOUNDARY);
-  non_manifold_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FLOATS_NON_MANIFOLD);
-  vertex_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FLOATS_VERTEX_NORMALS);
-  face_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FLOATS_FACE_NORMALS);
+  wireframe_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Wireframe);
+  boundary_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Boundary);
+  non_manifold_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::NonManifold);
+  vertex_normals_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::VertexNormals);
+  face_normals_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::FaceNormals);
 }
 
 void mesh_scene::draw(const programs& with) const {
