@@ -149,7 +149,7 @@
  * Minor version: added functionality.
  * \ingroup errors
  */
-#define HW_VERSION_MINOR 1
+#define HW_VERSION_MINOR 2
 
 /**
  * Patch version: bug fixes.
@@ -3946,7 +3946,7 @@ uint32_t hw_version_number(void);
 
 /**
  * The version of the library actually linked, as a static NUL-terminated string such as
- * `"0.1.0"`. Never NULL; must not be freed.
+ * `"0.2.0"`. Never NULL; must not be freed.
  * \ingroup errors
  */
 const char *hw_version_string(void);

@@ -357,7 +357,7 @@ inline void check(hw_status status) {
   }
 }
 
-/// The version of the linked library, e.g. "0.1.0".
+/// The version of the linked library, e.g. "0.2.0".
 inline std::string version() { return hw_version_string(); }
 /// The version of the linked library as one number (see hw_version_number()).
 inline uint32_t version_number() { return hw_version_number(); }
