@@ -245,9 +245,9 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   const auto [hw_normals, om_normals] = best_ms(
       repeats,
       [&] {
-        hw::check(hw_mesh_normals(mesh.get(), HW_WEIGHT_UNIFORM, face_normals.data(),
-                                  mesh.n_faces(), nullptr, vertex_normals.data(),
-                                  mesh.n_vertices(), nullptr));
+        hw::check(hw_mesh_normals(mesh.get(), HW_NORMAL_WEIGHTING_UNIFORM, face_normals.data(),
+                                  mesh.n_faces(), nullptr, vertex_normals.data(), mesh.n_vertices(),
+                                  nullptr));
       },
       [&] { om.update_normals(); });
   double worst_normal_gap = 0;

@@ -49,7 +49,7 @@ void compare(const bench::IndexedMesh& welded, int repeats) {
       const auto start = bench::Clock::now();
       const hw::repair_report report = soup.merge_vertices();
       ours = std::min(ours, bench::elapsed_ms(start, bench::Clock::now()));
-      our_left = m.n_vertices() - report.list(HW_REPAIR_MERGED_VERTICES).size() / 2;
+      our_left = m.n_vertices() - report.list(hw::RepairList::MergedVertices).size() / 2;
     }
     {
       Soup soup = cgal_soup::of(m);

@@ -2,13 +2,14 @@
 #include "valence_sums.h"
 
 size_t valence_sum_checked_circulator(const hw_mesh *mesh) {
-  const size_t n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_VERTEX);
+  const size_t n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX);
   size_t sum = 0;
   uint32_t v;
   for (v = 0; v < n_vertices; ++v) {
     hw_vertex vertex = {v}, w;
     hw_circulator c;
-    if (hw_circ_around_vertex(mesh, vertex, HW_CIRC_VERTICES, &c) != HW_OK) return (size_t)-1;
+    if (hw_circ_around_vertex(mesh, vertex, HW_CIRCULATOR_KIND_VERTICES, &c) != HW_OK)
+      return (size_t)-1;
     while (hw_circ_next_vertex(&c, &w)) ++sum;
   }
   return sum;

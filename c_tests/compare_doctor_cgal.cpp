@@ -60,7 +60,7 @@ std::vector<FacePair> cgal_self_intersections(const Soup& soup, std::vector<uint
 }
 
 std::vector<FacePair> doctor_self_intersections(const hw::doctor_report& report) {
-  const auto found = report.finding(HW_DOCTOR_SELF_INTERSECTIONS);
+  const auto found = report.finding(hw::DoctorFinding::SelfIntersections);
   std::vector<FacePair> pairs(found.n_items);
   for (std::size_t i = 0; i < found.n_items; ++i)
     pairs[i] = {found.ids[2 * i], found.ids[2 * i + 1]};
@@ -106,8 +106,8 @@ void compare(const std::filesystem::path& path) {
   const hw::doctor_report report = hw::doctor_report::of(m.positions, m.face_sizes, m.indices);
   const hw_doctor_verdict verdict = report.verdict();
   Soup soup = cgal_soup::of(m);
-  const bool malformed = count_of(report, HW_DIAG_FACES_TOO_SMALL) +
-                             count_of(report, HW_DIAG_FACES_REPEATED_VERTEX) >
+  const bool malformed = count_of(report, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL) +
+                             count_of(report, HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX) >
                          0;
   const bool is_mesh = PMP::is_polygon_soup_a_polygon_mesh(soup.polygons);
   CHECK(is_mesh == (verdict.manifold && verdict.oriented && !malformed));
@@ -144,7 +144,7 @@ void compare(const std::filesystem::path& path) {
                      ours.size(), cgal.size());
       // CGAL's degenerate faces are exactly collinear corners; the zero-area faces of the
       // diagnostic include those.
-      const std::vector<uint32_t> zero_area = ids_of(report, HW_DIAG_DEGENERATE_FACES);
+      const std::vector<uint32_t> zero_area = ids_of(report, HW_DIAGNOSTIC_LIST_DEGENERATE_FACES);
       CHECK(std::includes(zero_area.begin(), zero_area.end(), degenerate.begin(),
                           degenerate.end()));
       // On their own, with the degenerate faces' (f, f) pairs as CGAL gives them.
@@ -159,10 +159,11 @@ void compare(const std::filesystem::path& path) {
 
   // Where the only edge defects are none, orient_polygon_soup duplicates one point per extra fan
   // of each non-manifold vertex.
-  const std::size_t non_manifold_vertices = count_of(report, HW_DIAG_NON_MANIFOLD_VERTICES);
+  const std::size_t non_manifold_vertices =
+      count_of(report, HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES);
   if (non_manifold_vertices > 0 && !malformed &&
-      edge_count_of(report, HW_DIAG_NON_MANIFOLD_EDGES) == 0 &&
-      edge_count_of(report, HW_DIAG_INCONSISTENT_EDGES) == 0) {
+      edge_count_of(report, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD) == 0 &&
+      edge_count_of(report, HW_DIAGNOSTIC_EDGES_INCONSISTENT) == 0) {
     std::size_t extra_fans = 0, n = 0;
     hw::check(hw_doctor_report_vertex_fans_count(report.get(), &n));
     for (std::size_t i = 0; i < n; ++i) {

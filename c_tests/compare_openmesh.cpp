@@ -157,11 +157,11 @@ void compare_clean(const std::filesystem::path& path) {
     om_normals.insert(om_normals.end(), {n[0], n[1], n[2]});
   }
   std::vector<double> normals(3 * mesh.n_vertices());
-  hw::check(hw_mesh_vertex_normals(mesh.get(), HW_WEIGHT_UNIFORM, normals.data(),
+  hw::check(hw_mesh_vertex_normals(mesh.get(), HW_NORMAL_WEIGHTING_UNIFORM, normals.data(),
                                    mesh.n_vertices(), nullptr));
   const double uniform_error = max_difference(normals, om_normals);
   CHECK(uniform_error < 1e-9);
-  hw::check(hw_mesh_vertex_normals(mesh.get(), HW_WEIGHT_ANGLE, normals.data(),
+  hw::check(hw_mesh_vertex_normals(mesh.get(), HW_NORMAL_WEIGHTING_ANGLE, normals.data(),
                                    mesh.n_vertices(), nullptr));
   const double angle_error = max_difference(normals, angle_weighted_reference(m));
   CHECK(angle_error < 1e-9);
@@ -188,12 +188,13 @@ void compare_broken(const std::filesystem::path& path) {
     hw::check(hw_diagnostic_ids(raw, list, &ids, &n));
     into.insert(ids, ids + n);
   };
-  take(HW_DIAG_SKIPPED_FACES, named);
-  take(HW_DIAG_FACES_TOO_SMALL, named);
-  take(HW_DIAG_FACES_OUT_OF_RANGE, named);
-  take(HW_DIAG_FACES_REPEATED_VERTEX, named);
-  take(HW_DIAG_NON_MANIFOLD_VERTICES, vertices);
-  for (hw_diagnostic_edges which : {HW_DIAG_NON_MANIFOLD_EDGES, HW_DIAG_INCONSISTENT_EDGES}) {
+  take(HW_DIAGNOSTIC_LIST_SKIPPED_FACES, named);
+  take(HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, named);
+  take(HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE, named);
+  take(HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX, named);
+  take(HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, vertices);
+  for (hw_diagnostic_edges which :
+       {HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, HW_DIAGNOSTIC_EDGES_INCONSISTENT}) {
     std::size_t n = 0;
     hw::check(hw_diagnostic_edge_count(raw, which, &n));
     for (std::size_t i = 0; i < n; ++i) {
@@ -236,7 +237,7 @@ int main() {
     } catch (const hw::error& e) {
       // Files halfwing cannot even parse (an index beyond the vertex list) are the parser's
       // business; say so and go on.
-      CHECK(e.status() == HW_ERR_PARSE);
+      CHECK(e.status() == hw::Status::Parse);
       std::printf("  %-42s not parsed: %s\n", path.filename().c_str(), e.what());
     }
   }

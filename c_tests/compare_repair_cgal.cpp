@@ -71,7 +71,7 @@ std::size_t cgal_boundary_halfedges(const SurfaceMesh& mesh) {
 // A mesh fresh from a build or a stitch has no deleted slot.
 std::size_t our_boundary_halfedges(const hw::mesh& mesh) {
   std::size_t n = 0;
-  for (std::size_t h = 0; h < hw_mesh_slot_count(mesh.get(), HW_ELEMENT_HALFEDGE); ++h)
+  for (std::size_t h = 0; h < hw_mesh_slot_count(mesh.get(), HW_ELEMENT_KIND_HALFEDGE); ++h)
     n += hw_mesh_he_is_boundary(mesh.get(), hw_halfedge{static_cast<uint32_t>(h)});
   return n;
 }
@@ -96,7 +96,7 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
   hw::mesh ours;
   try {
-    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_STRICT);
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, hw::BuildPolicy::Strict);
   } catch (const hw::error&) {
     return;  // non-finite coordinates, degenerate corners: not a mesh for halfwing
   }
@@ -108,7 +108,7 @@ void compare_stitch(const indexed::Mesh& m, bool comparable) {
   const hw::repair_report report = ours.stitch_borders();
   CHECK(hw_mesh_check(ours.get()) == HW_OK);
   const std::size_t after = our_boundary_halfedges(ours), cgal_after = cgal_boundary_halfedges(theirs);
-  CHECK(report.list(HW_REPAIR_STITCHED_HALFEDGES).size() == before - after);
+  CHECK(report.list(hw::RepairList::StitchedHalfedges).size() == before - after);
   if (!comparable) {
     std::printf("  %-42s not compared: %zu boundary half-edges after stitching, CGAL %zu\n",
                 m.name.c_str(), after, cgal_after);
@@ -154,7 +154,7 @@ void compare_degenerate(const indexed::Mesh& m) {
   if (theirs.is_empty()) return;
   hw::mesh ours;
   try {
-    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_STRICT);
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_POLICY_STRICT);
   } catch (const hw::error&) {
     return;
   }
@@ -169,7 +169,7 @@ void compare_degenerate(const indexed::Mesh& m) {
     std::printf("  %-42s %zu degenerate triangles; after: halfwing %zu (%zu faces, %zu flips), "
                 "CGAL %zu (%zu faces)\n",
                 m.name.c_str(), before, after, ours.n_faces(),
-                report.list(HW_REPAIR_FLIPPED_FACES).size() / 2, cgal_after,
+                report.list(HW_REPAIR_LIST_FLIPPED_FACES).size() / 2, cgal_after,
                 static_cast<std::size_t>(theirs.number_of_faces()));
   ++compared_degenerate;
   models_degenerate += before > 0;
@@ -184,10 +184,10 @@ Soup cgal_of(const hw::soup& soup) {
 void compare_split(const indexed::Mesh& m) {
   hw::soup ours = hw::soup::from_indexed(m.positions, m.face_sizes, m.indices);
   ours.orient_faces();
-  ours.repair_non_manifold_edges(HW_NON_MANIFOLD_EDGES_CUT);
+  ours.repair_non_manifold_edges(hw::NonManifoldEdges::Cut);
   const std::size_t n_before = ours.positions().size() / 3;
   const hw::repair_report split = ours.split_non_manifold_vertices();
-  const std::vector<uint32_t> copies = split.list(HW_REPAIR_VERTEX_COPIES);
+  const std::vector<uint32_t> copies = split.list(hw::RepairList::VertexCopies);
   CHECK(ours.positions().size() / 3 == n_before + copies.size());
   Soup soup = cgal_of(ours);
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return;
@@ -245,7 +245,8 @@ void compare_orientation(const indexed::Mesh& m) {
       if (after_first != before[1]) cgal_turned.push_back(f.idx());
     }
     hw::soup ours = hw::soup::from_indexed(turned.positions, turned.face_sizes, turned.indices);
-    const std::vector<uint32_t> our_turned = ours.orient_faces().list(HW_REPAIR_REORIENTED_FACES);
+    const std::vector<uint32_t> our_turned =
+        ours.orient_faces().list(hw::RepairList::ReorientedFaces);
     if (our_turned != cgal_turned) {
       std::printf("  %-42s differs: %zu faces reversed, CGAL %zu\n",
                   turned.name.c_str(), our_turned.size(), cgal_turned.size());
@@ -312,14 +313,16 @@ void compare(const std::filesystem::path& path) {
   CHECK(static_cast<std::size_t>(std::count(named.begin(), named.end(), true)) ==
         theirs.points.size());
   std::printf("  %-42s merged %zu vertices, %zu faces left, %zu points left\n", m.name.c_str(),
-              merged.list(HW_REPAIR_MERGED_VERTICES).size() / 2, our_faces, theirs.points.size());
+              merged.list(hw::RepairList::MergedVertices).size() / 2, our_faces,
+              theirs.points.size());
   ++compared_soups;
 
   // Whether the welded surface fits a half-edge mesh: no collapsed face, no edge of 3 faces.
   const hw::diagnostic welded = hw::diagnostic::of(after.positions, after.face_sizes, after.indices);
   std::size_t non_manifold_edges = 0;
-  hw::check(hw_diagnostic_edge_count(welded.get(), HW_DIAG_NON_MANIFOLD_EDGES, &non_manifold_edges));
-  const bool comparable = merged.list(HW_REPAIR_REMOVED_FACES).empty() &&
+  hw::check(hw_diagnostic_edge_count(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
+                                     &non_manifold_edges));
+  const bool comparable = merged.list(hw::RepairList::RemovedFaces).empty() &&
                           proper == after.n_faces() && non_manifold_edges == 0;
   compare_stitch(m, comparable);
   if (m.n_faces() <= 20000) compare_stitch(unwelded(m), comparable);

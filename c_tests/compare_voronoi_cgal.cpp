@@ -68,18 +68,19 @@ struct Halfwing {
 
 Halfwing halfwing_structures(const hw::voronoi& v) {
   Halfwing out;
-  const auto tri = v.view(HW_VORONOI_TRIANGLES), tri_vertex = v.view(HW_VORONOI_TRIANGLE_VERTEX);
+  const auto tri = v.view(hw::VoronoiArray::Triangles),
+             tri_vertex = v.view(hw::VoronoiArray::TriangleVertex);
   for (std::size_t e = 0; e < tri.size(); ++e) {
     const uint32_t a = tri[e], b = tri[3 * (e / 3) + (e + 1) % 3];
     out.delaunay_edges.insert(undirected(a, b));
     out.vertex_left_of[{a, b}] = tri_vertex[e / 3];
   }
-  if (v.dimension() == HW_VORONOI_LINE) {
-    const auto chain = v.view(HW_VORONOI_HULL);
+  if (v.dimension() == hw::SiteDimension::Line) {
+    const auto chain = v.view(hw::VoronoiArray::Hull);
     for (std::size_t k = 0; k + 1 < chain.size(); ++k)
       out.delaunay_edges.insert(undirected(chain[k], chain[k + 1]));
   }
-  const auto site = v.view(HW_VORONOI_HALFEDGE_SITE);
+  const auto site = v.view(hw::VoronoiArray::HalfedgeSite);
   for (std::size_t h = 0; h < site.size(); h += 2)
     out.cell_adjacency.insert(undirected(site[h], site[h + 1]));
   return out;
@@ -110,7 +111,7 @@ void compare(const points2d::PointSet& set) {
     return p;
   }();
   const hw::voronoi v(sites);
-  const Dt dt = cgal_triangulation(set, v.view(HW_VORONOI_REPRESENTATIVE));
+  const Dt dt = cgal_triangulation(set, v.view(hw::VoronoiArray::Representative));
   const Halfwing ours = halfwing_structures(v);
   const bool cocircular = has_cocircular_quadruple(dt);
   int failures_before = check_failed;

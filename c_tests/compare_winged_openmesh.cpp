@@ -50,11 +50,12 @@ std::vector<uint32_t> openmesh_ids(const Range& range) {
 bool build_manifold(const models::Indexed& m, hw::winged& out) {
   hw::diagnostic report;
   try {
-    out = hw::winged::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_STRICT, &report);
+    out = hw::winged::from_indexed(m.positions, m.face_sizes, m.indices, hw::BuildPolicy::Strict,
+                                   &report);
   } catch (const hw::error&) {
     return false;
   }
-  return report.ids(HW_DIAG_NON_MANIFOLD_VERTICES).empty();
+  return report.ids(hw::DiagnosticList::NonManifoldVertices).empty();
 }
 
 /// Compares one model; returns false when it is not a manifold model (skipped).

@@ -1,5 +1,6 @@
 # Fails when a function declared in halfwing.h (or defined inline in halfwing_nav.h) has no C++
-# counterpart in halfwing.hpp and is not listed below as an exception with its reason.
+# counterpart in halfwing.hpp and is not listed below as an exception with its reason, or when a
+# constant of a C enumeration is not the value of a scoped enumeration there.
 #
 # A counterpart is recognised by the C function's name appearing in halfwing.hpp's code, comments
 # left out, as a whole identifier: the wrapper calls the function (hw_mesh_split_face(...)) or
@@ -63,5 +64,27 @@ endif()
 if(missing)
   list(LENGTH missing n_missing)
   message(FATAL_ERROR "${n_missing} C functions have no C++ counterpart in halfwing.hpp: ${missing}")
+endif()
+
+# Every constant of a C enumeration is a value of a scoped enumeration of halfwing.hpp. Left out:
+# the limits and version numbers (plain numbers, used as they are), and each family's _FIRST and
+# _COUNT (bounds of C loops; C++ loops over the scoped values).
+set(plain_constants HW_MAX_MESSAGE_SIZE HW_FREED_ADDRESSES_KEPT HW_MAX_THREAD_COUNT
+  HW_VERSION_MAJOR HW_VERSION_MINOR HW_VERSION_PATCH HW_VERSION_NUMBER)
+string(REGEX MATCHALL "#define HW_[A-Z0-9_]+" defines "${header}")
+set(unscoped "")
+foreach(define IN LISTS defines)
+  string(REGEX REPLACE "^#define " "" name "${define}")
+  list(FIND plain_constants "${name}" at)
+  if(NOT at EQUAL -1 OR name MATCHES "_(FIRST|COUNT)$")
+    continue()
+  endif()
+  string(REGEX MATCH "${name}([^A-Z_0-9]|$)" used "${wrapper}")
+  if(NOT used)
+    list(APPEND unscoped "${name}")
+  endif()
+endforeach()
+if(unscoped)
+  message(FATAL_ERROR "C constants with no scoped enumeration value in halfwing.hpp: ${unscoped}")
 endif()
 message(STATUS "all ${count} functions of the headers have a C++ counterpart or a listed reason")

@@ -60,7 +60,7 @@ static void add_face_links_and_refuses(void) {
 
 static void corner_normals_and_uvs(void) {
   hw_mesh *mesh = square();
-  size_t n = hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE);
+  size_t n = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE);
   double normals[30], uvs[20];
   const double *view = NULL;
   size_t len = 0;
@@ -107,13 +107,13 @@ static void corner_normals_and_uvs(void) {
   /* Corner normals are the half-edge attribute "hw:corner_normal": writable in place. */
   {
     void *data = NULL;
-    CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_HALFEDGE, "hw:corner_normal", HW_SCALAR_F64,
-                                 &data, &len) == HW_OK);
+    CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_HALFEDGE, "hw:corner_normal",
+                                 HW_SCALAR_TYPE_F64, &data, &len) == HW_OK);
     CHECK(len == 3 * n);
     ((double *)data)[0] = -1.0;
     CHECK(hw_mesh_corner_normals_view(mesh, &view, &len) == HW_OK && view[0] == -1.0);
   }
-  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_HALFEDGE, "hw:corner_uv") == HW_OK);
+  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_HALFEDGE, "hw:corner_uv") == HW_OK);
   CHECK_STATUS(hw_mesh_corner_uvs_view(mesh, &view, &len), HW_ERR_NOT_FOUND, "texture");
   hw_mesh_free(mesh);
 }
@@ -132,13 +132,16 @@ static void named_attributes(void) {
   hw_face face0;
   static const double middle[3] = {0.5, 0.5, 0.0};
 
-  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, 3) == HW_OK);
-  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_FACE, "label", HW_SCALAR_I32, 1) == HW_OK);
-  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_EDGE, "crease", HW_SCALAR_U32, 1) == HW_OK);
-  CHECK(hw_mesh_attribute_info(mesh, HW_ELEMENT_VERTEX, "colour", &type, &components) == HW_OK);
-  CHECK(type == HW_SCALAR_F32 && components == 3);
-  CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, &data, &len) ==
+  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32, 3) ==
         HW_OK);
+  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_FACE, "label", HW_SCALAR_TYPE_I32, 1) == HW_OK);
+  CHECK(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_EDGE, "crease", HW_SCALAR_TYPE_U32, 1) ==
+        HW_OK);
+  CHECK(hw_mesh_attribute_info(mesh, HW_ELEMENT_KIND_VERTEX, "colour", &type, &components) ==
+        HW_OK);
+  CHECK(type == HW_SCALAR_TYPE_F32 && components == 3);
+  CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32, &data,
+                               &len) == HW_OK);
   CHECK(len == 12);
   colour = (float *)data;
   colour[0] = 1.0f;  /* vertex 0 red */
@@ -149,60 +152,64 @@ static void named_attributes(void) {
   diagonal = hw_mesh_he_edge(
       mesh, hw_mesh_he_next(mesh, hw_mesh_he_next(mesh, hw_mesh_face_halfedge(mesh, face0))));
   CHECK(hw_mesh_split_edge(mesh, diagonal, middle, &w) == HW_OK);
-  CHECK(hw_mesh_attribute_view(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, &view, &len) ==
-        HW_OK);
+  CHECK(hw_mesh_attribute_view(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32, &view,
+                               &len) == HW_OK);
   CHECK(len == 15);
   shade = (const float *)view;
   CHECK(shade[3 * w.idx] == 0.5f && shade[3 * w.idx + 1] == 0.5f && shade[3 * w.idx + 2] == 0.0f);
 
   /* Listing. */
-  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_VERTEX, &count) == HW_OK && count == 1);
-  CHECK(hw_mesh_attribute_name(mesh, HW_ELEMENT_VERTEX, 0, name, sizeof name, &needed) == HW_OK);
+  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_VERTEX, &count) == HW_OK && count == 1);
+  CHECK(hw_mesh_attribute_name(mesh, HW_ELEMENT_KIND_VERTEX, 0, name, sizeof name, &needed) ==
+        HW_OK);
   CHECK(strcmp(name, "colour") == 0 && needed == 7);
-  CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_VERTEX, 0, name, 3, &needed),
+  CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_KIND_VERTEX, 0, name, 3, &needed),
                HW_ERR_BUFFER_TOO_SMALL, "needed");
-  CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_VERTEX, 1, name, sizeof name, &needed),
+  CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_KIND_VERTEX, 1, name, sizeof name, &needed),
                HW_ERR_NOT_FOUND, "does not exist");
 
   /* Bad arguments: each refused with its status, nothing changed. */
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F64, 1),
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F64, 1),
                HW_ERR_INVALID_INPUT, "exists already");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_HALFEDGE, "hw:mine", HW_SCALAR_F64, 1),
-               HW_ERR_INVALID_INPUT, "reserved");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "", HW_SCALAR_F64, 1),
+  CHECK_STATUS(
+      hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_HALFEDGE, "hw:mine", HW_SCALAR_TYPE_F64, 1),
+      HW_ERR_INVALID_INPUT, "reserved");
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "", HW_SCALAR_TYPE_F64, 1),
                HW_ERR_INVALID_INPUT, "empty");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "w", HW_SCALAR_F64, 0),
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "w", HW_SCALAR_TYPE_F64, 0),
                HW_ERR_INVALID_INPUT, "components");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "w", HW_SCALAR_F64, 17),
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "w", HW_SCALAR_TYPE_F64, 17),
                HW_ERR_INVALID_INPUT, "components");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "w", 9, 1), HW_ERR_INVALID_INPUT,
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "w", 9, 1), HW_ERR_INVALID_INPUT,
                "scalar type");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, 7, "w", HW_SCALAR_F64, 1), HW_ERR_INVALID_INPUT,
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, 7, "w", HW_SCALAR_TYPE_F64, 1), HW_ERR_INVALID_INPUT,
                "element kind");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, "\xff", HW_SCALAR_F64, 1),
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, "\xff", HW_SCALAR_TYPE_F64, 1),
                HW_ERR_INVALID_INPUT, "UTF-8");
-  CHECK_STATUS(hw_mesh_attribute_add(NULL, HW_ELEMENT_VERTEX, "w", HW_SCALAR_F64, 1),
+  CHECK_STATUS(hw_mesh_attribute_add(NULL, HW_ELEMENT_KIND_VERTEX, "w", HW_SCALAR_TYPE_F64, 1),
                HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_VERTEX, NULL, HW_SCALAR_F64, 1),
+  CHECK_STATUS(hw_mesh_attribute_add(mesh, HW_ELEMENT_KIND_VERTEX, NULL, HW_SCALAR_TYPE_F64, 1),
                HW_ERR_NULL_ARGUMENT, "name");
   view = NULL;
   len = 99;
-  CHECK_STATUS(hw_mesh_attribute_view(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F64, &view,
-                                      &len),
+  CHECK_STATUS(hw_mesh_attribute_view(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F64,
+                                      &view, &len),
                HW_ERR_INVALID_INPUT, "not f64");
   CHECK(view == NULL && len == 99);
-  CHECK_STATUS(hw_mesh_attribute_view(mesh, HW_ELEMENT_FACE, "colour", HW_SCALAR_F32, &view, &len),
-               HW_ERR_NOT_FOUND, "no face attribute");
-  CHECK_STATUS(hw_mesh_attribute_view(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, NULL,
-                                      &len),
+  CHECK_STATUS(
+      hw_mesh_attribute_view(mesh, HW_ELEMENT_KIND_FACE, "colour", HW_SCALAR_TYPE_F32, &view, &len),
+      HW_ERR_NOT_FOUND, "no face attribute");
+  CHECK_STATUS(hw_mesh_attribute_view(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32,
+                                      NULL, &len),
                HW_ERR_NULL_ARGUMENT, "out_data");
-  CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_EDGE, "crease", HW_SCALAR_I32, &data, &len),
-               HW_ERR_INVALID_INPUT, "not i32");
-  CHECK_STATUS(hw_mesh_attribute_info(mesh, HW_ELEMENT_EDGE, "nothing", &type, &components),
+  CHECK_STATUS(
+      hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_EDGE, "crease", HW_SCALAR_TYPE_I32, &data, &len),
+      HW_ERR_INVALID_INPUT, "not i32");
+  CHECK_STATUS(hw_mesh_attribute_info(mesh, HW_ELEMENT_KIND_EDGE, "nothing", &type, &components),
                HW_ERR_NOT_FOUND, "nothing");
-  CHECK_STATUS(hw_mesh_attribute_count(mesh, HW_ELEMENT_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
                "out_count");
-  CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_FACE, "colour"), HW_ERR_NOT_FOUND,
+  CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_FACE, "colour"), HW_ERR_NOT_FOUND,
                "colour");
   {
     /* NULL mesh or name, unknown kinds, an index past the last and NULL outputs: refused, the
@@ -211,55 +218,55 @@ static void named_attributes(void) {
     size_t unset_components = 4242, unset_len = 4242, unset_needed = 4242;
     void *unset_data = NULL;
     char unset_name[4] = "abc";
-    CHECK_STATUS(hw_mesh_attribute_info(NULL, HW_ELEMENT_VERTEX, "colour", &unset_type,
+    CHECK_STATUS(hw_mesh_attribute_info(NULL, HW_ELEMENT_KIND_VERTEX, "colour", &unset_type,
                                         &unset_components),
                  HW_ERR_NULL_ARGUMENT, "mesh");
-    CHECK_STATUS(hw_mesh_attribute_info(mesh, HW_ELEMENT_VERTEX, NULL, &unset_type,
-                                        &unset_components),
-                 HW_ERR_NULL_ARGUMENT, "name");
+    CHECK_STATUS(
+        hw_mesh_attribute_info(mesh, HW_ELEMENT_KIND_VERTEX, NULL, &unset_type, &unset_components),
+        HW_ERR_NULL_ARGUMENT, "name");
     CHECK_STATUS(hw_mesh_attribute_info(mesh, 7u, "colour", &unset_type, &unset_components),
                  HW_ERR_INVALID_INPUT, "element kind 7");
     CHECK(unset_type == 99 && unset_components == 4242);
-    CHECK_STATUS(hw_mesh_attribute_remove(NULL, HW_ELEMENT_VERTEX, "colour"),
+    CHECK_STATUS(hw_mesh_attribute_remove(NULL, HW_ELEMENT_KIND_VERTEX, "colour"),
                  HW_ERR_NULL_ARGUMENT, "mesh");
-    CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
+    CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
                  "name");
     CHECK_STATUS(hw_mesh_attribute_remove(mesh, 7u, "colour"), HW_ERR_INVALID_INPUT,
                  "element kind 7");
-    CHECK_STATUS(hw_mesh_attribute_name(NULL, HW_ELEMENT_VERTEX, 0, unset_name,
+    CHECK_STATUS(hw_mesh_attribute_name(NULL, HW_ELEMENT_KIND_VERTEX, 0, unset_name,
                                         sizeof unset_name, &unset_needed),
                  HW_ERR_NULL_ARGUMENT, "mesh");
     CHECK_STATUS(hw_mesh_attribute_name(mesh, 7u, 0, unset_name, sizeof unset_name,
                                         &unset_needed),
                  HW_ERR_INVALID_INPUT, "element kind 7");
-    CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_VERTEX, 1, unset_name,
+    CHECK_STATUS(hw_mesh_attribute_name(mesh, HW_ELEMENT_KIND_VERTEX, 1, unset_name,
                                         sizeof unset_name, &unset_needed),
                  HW_ERR_NOT_FOUND, "does not exist");
     CHECK(strcmp(unset_name, "abc") == 0 && unset_needed == 4242);
-    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32, NULL,
-                                        &unset_len),
+    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32,
+                                        NULL, &unset_len),
                  HW_ERR_NULL_ARGUMENT, "out_data");
-    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_VERTEX, "colour", HW_SCALAR_F32,
+    CHECK_STATUS(hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_VERTEX, "colour", HW_SCALAR_TYPE_F32,
                                         &unset_data, NULL),
                  HW_ERR_NULL_ARGUMENT, "out_len");
     CHECK(unset_data == NULL && unset_len == 4242);
-    CHECK(hw_mesh_attribute_info(mesh, HW_ELEMENT_VERTEX, "colour", &unset_type,
+    CHECK(hw_mesh_attribute_info(mesh, HW_ELEMENT_KIND_VERTEX, "colour", &unset_type,
                                  &unset_components) == HW_OK);
-    CHECK(unset_type == HW_SCALAR_F32 && unset_components == 3);
+    CHECK(unset_type == HW_SCALAR_TYPE_F32 && unset_components == 3);
   }
 
   /* Compaction keeps the values with their elements. */
-  CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_FACE, "label", HW_SCALAR_I32, &data, &len) ==
-        HW_OK);
+  CHECK(hw_mesh_attribute_data(mesh, HW_ELEMENT_KIND_FACE, "label", HW_SCALAR_TYPE_I32, &data,
+                               &len) == HW_OK);
   CHECK(len == 2);
   ((int32_t *)data)[1] = -5;
   CHECK(hw_mesh_delete_face(mesh, face0, false) == HW_OK);
   CHECK(hw_mesh_garbage_collect(mesh, NULL) == HW_OK);
-  CHECK(hw_mesh_attribute_view(mesh, HW_ELEMENT_FACE, "label", HW_SCALAR_I32, &view, &len) ==
-        HW_OK);
+  CHECK(hw_mesh_attribute_view(mesh, HW_ELEMENT_KIND_FACE, "label", HW_SCALAR_TYPE_I32, &view,
+                               &len) == HW_OK);
   CHECK(len == 1 && ((const int32_t *)view)[0] == -5);
-  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_FACE, "label") == HW_OK);
-  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_FACE, &count) == HW_OK && count == 0);
+  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_FACE, "label") == HW_OK);
+  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_FACE, &count) == HW_OK && count == 0);
   CHECK(hw_mesh_check(mesh) == HW_OK);
   hw_mesh_free(mesh);
 }
@@ -270,11 +277,11 @@ static void obj_texture_coordinates_round_trip(void) {
   const double *uv = NULL, *uv_again = NULL;
   size_t n = 0, n_again = 0;
   const char *written = TEST_TMP_DIR "/test_attributes_spot.obj";
-  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/closed/c3d_spot.obj", HW_BUILD_STRICT, &mesh,
+  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/closed/c3d_spot.obj", HW_BUILD_POLICY_STRICT, &mesh,
                      NULL) == HW_OK);
   CHECK(hw_mesh_corner_uvs_view(mesh, &uv, &n) == HW_OK && n == 3 * 5856);
   CHECK(hw_mesh_write(mesh, written) == HW_OK);
-  CHECK(hw_mesh_read(written, HW_BUILD_STRICT, &again, NULL) == HW_OK);
+  CHECK(hw_mesh_read(written, HW_BUILD_POLICY_STRICT, &again, NULL) == HW_OK);
   CHECK(hw_mesh_corner_uvs_view(again, &uv_again, &n_again) == HW_OK && n_again == n);
   CHECK(memcmp(uv, uv_again, 2 * n * sizeof(double)) == 0);
   remove(written);

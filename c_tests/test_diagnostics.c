@@ -20,19 +20,20 @@ static void diagnose_without_building(void) {
   char *text;
   CHECK(hw_diagnose_indexed(positions, 7, sizes, 4, indices, 12, &d) == HW_OK);
   CHECK(!hw_diagnostic_is_clean(d));
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 3);
   /* The findings describe the input, not a build: only vertex 6 is in no face (vertex 5 is in
    * the malformed face), and nothing was left out. */
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_ISOLATED_VERTICES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 6);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n) == HW_OK);
   CHECK(n == 0);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 1);
-  CHECK(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, &n_faces) == HW_OK);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
+  CHECK(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, ends, &faces, &n_faces) ==
+        HW_OK);
   CHECK(ends[0] == 0 && ends[1] == 1 && n_faces == 3);
   CHECK(faces[0] == 0 && faces[1] == 1 && faces[2] == 2);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_INCONSISTENT_EDGES, &n) == HW_OK);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_INCONSISTENT, &n) == HW_OK);
 
   /* The summary, with the copy-into-buffer protocol. */
   CHECK(hw_diagnostic_summary(d, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL && needed > 1);
@@ -47,11 +48,11 @@ static void diagnose_without_building(void) {
 
   /* Bad arguments. */
   CHECK_STATUS(hw_diagnostic_ids(d, 99u, &ids, &n), HW_ERR_INVALID_INPUT, "list 99");
-  CHECK_STATUS(hw_diagnostic_ids(NULL, HW_DIAG_SKIPPED_FACES, &ids, &n), HW_ERR_NULL_ARGUMENT,
-               "diagnostic");
-  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, NULL, &n), HW_ERR_NULL_ARGUMENT,
-               "out_ids");
-  CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 5, ends, &faces, &n_faces),
+  CHECK_STATUS(hw_diagnostic_ids(NULL, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n),
+               HW_ERR_NULL_ARGUMENT, "diagnostic");
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, NULL, &n),
+               HW_ERR_NULL_ARGUMENT, "out_ids");
+  CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 5, ends, &faces, &n_faces),
                HW_ERR_INVALID_INPUT, "edge 5");
   CHECK_STATUS(hw_diagnostic_edge(d, 7u, 0, ends, &faces, &n_faces), HW_ERR_INVALID_INPUT,
                "edge list 7");
@@ -62,19 +63,20 @@ static void diagnose_without_building(void) {
     ends[0] = ends[1] = 77;
     faces = sentinel_faces;
     n_faces = 77;
-    CHECK_STATUS(hw_diagnostic_edge(NULL, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, &n_faces),
-                 HW_ERR_NULL_ARGUMENT, "diagnostic");
-    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, NULL, &faces, &n_faces),
+    CHECK_STATUS(
+        hw_diagnostic_edge(NULL, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, ends, &faces, &n_faces),
+        HW_ERR_NULL_ARGUMENT, "diagnostic");
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, NULL, &faces, &n_faces),
                  HW_ERR_NULL_ARGUMENT, "out_vertices");
-    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, NULL, &n_faces),
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, ends, NULL, &n_faces),
                  HW_ERR_NULL_ARGUMENT, "out_faces");
-    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 0, ends, &faces, NULL),
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, ends, &faces, NULL),
                  HW_ERR_NULL_ARGUMENT, "out_n_faces");
-    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAG_NON_MANIFOLD_EDGES, 1, ends, &faces, &n_faces),
+    CHECK_STATUS(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 1, ends, &faces, &n_faces),
                  HW_ERR_INVALID_INPUT, "edge 1 of a list of 1");
     CHECK(ends[0] == 77 && ends[1] == 77 && faces == sentinel_faces && n_faces == 77);
   }
-  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, NULL),
+  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, NULL),
                HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK_STATUS(hw_diagnostic_summary(NULL, NULL, 0, NULL), HW_ERR_NULL_ARGUMENT, "diagnostic");
   CHECK(!hw_diagnostic_is_clean(NULL));
@@ -94,10 +96,10 @@ static void policies_report_what_they_did(void) {
   const uint32_t *ids = NULL;
   size_t n = 0;
   /* Skip: the malformed face and the third face on the edge go; the diagnostic says which. */
-  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_SKIP, &mesh, &d) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_POLICY_SKIP, &mesh,
+                             &d) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 2);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n) == HW_OK);
   CHECK(n == 2 && ids[0] == 2 && ids[1] == 3);
   CHECK(hw_mesh_check(mesh) == HW_OK);
   hw_diagnostic_free(d);
@@ -106,24 +108,24 @@ static void policies_report_what_they_did(void) {
    * and listed, the three faces on the edge are kept by copying the edge's vertices. */
   mesh = NULL;
   d = NULL;
-  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_REPAIR, &mesh, &d) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_POLICY_REPAIR, &mesh,
+                             &d) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 3 && hw_mesh_check(mesh) == HW_OK);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 3);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_REORIENTED_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_REORIENTED_FACES, &ids, &n) == HW_OK);
   hw_diagnostic_free(d);
   hw_mesh_free(mesh);
   /* Strict refuses, and still hands out the refusal's diagnostic. */
   mesh = NULL;
   d = NULL;
-  CHECK_STATUS(hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_STRICT, &mesh,
-                                    &d),
-               HW_ERR_INVALID_INPUT, "repeated vertex");
+  CHECK_STATUS(
+      hw_mesh_from_indexed(positions, 7, sizes, 4, indices, 12, HW_BUILD_POLICY_STRICT, &mesh, &d),
+      HW_ERR_INVALID_INPUT, "repeated vertex");
   CHECK(mesh == NULL && d != NULL);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 3);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 1);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
   hw_diagnostic_free(d);
   /* A cube with five of six faces flipped comes back whole and facing outward. */
   {
@@ -135,11 +137,11 @@ static void policies_report_what_they_did(void) {
     static const uint32_t corners[] = {0, 3, 2, 1, 7, 6, 5, 4, 4, 5, 1, 0,
                                        5, 6, 2, 1, 6, 7, 3, 2, 7, 4, 0, 3};
     double normals[18], volume = 0;
-    CHECK(hw_mesh_from_indexed(cube, 8, quads, 6, corners, 24, HW_BUILD_REPAIR, &mesh, &d) ==
+    CHECK(hw_mesh_from_indexed(cube, 8, quads, 6, corners, 24, HW_BUILD_POLICY_REPAIR, &mesh, &d) ==
           HW_OK);
-    CHECK(hw_diagnostic_ids(d, HW_DIAG_REORIENTED_FACES, &ids, &n) == HW_OK);
+    CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_REORIENTED_FACES, &ids, &n) == HW_OK);
     CHECK(n == 5 && ids[0] == 1 && ids[4] == 5);
-    CHECK(hw_diagnostic_ids(d, HW_DIAG_VERTEX_COPIES, &ids, &n) == HW_OK && n == 0);
+    CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_VERTEX_COPIES, &ids, &n) == HW_OK && n == 0);
     CHECK(hw_mesh_face_normals(mesh, normals, 6, NULL) == HW_OK);
     for (uint32_t f = 0; f < 6; ++f) {
       hw_face face = {f};
@@ -158,10 +160,10 @@ static void policies_report_what_they_did(void) {
     hw_mesh_free(mesh);
   }
   /* Without the malformed face, Repair keeps all three faces by copying the edge's vertices. */
-  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh, &d) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 7, sizes, 3, indices, 9, HW_BUILD_POLICY_REPAIR, &mesh,
+                             &d) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 3 && hw_mesh_check(mesh) == HW_OK);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_VERTEX_COPIES, &ids, &n) == HW_OK && n >= 1);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_VERTEX_COPIES, &ids, &n) == HW_OK && n >= 1);
   CHECK(hw_mesh_n_vertices(mesh) == 7 + n);
   hw_diagnostic_free(d);
   hw_mesh_free(mesh);
@@ -180,9 +182,9 @@ static void remaining_calls(void) {
   uint32_t components[2];
   size_t n = 0, count = 0;
   char path[512];
-  CHECK(hw_mesh_from_indexed(quad_positions, 6, quad_sizes, 2, quad_indices, 8, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
-  CHECK(hw_circ_around_vertex(mesh, v1, HW_CIRC_EDGES, &c) == HW_OK);
+  CHECK(hw_mesh_from_indexed(quad_positions, 6, quad_sizes, 2, quad_indices, 8,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v1, HW_CIRCULATOR_KIND_EDGES, &c) == HW_OK);
   while (hw_circ_next_edge(&c, &e)) {
     if (!hw_mesh_edge_is_boundary(mesh, e)) middle = e;
     ++count;
@@ -208,7 +210,7 @@ static void remaining_calls(void) {
   /* Write, read back, same counts. */
   snprintf(path, sizeof path, "%s/halfwing_test_diagnostics.off", TEST_TMP_DIR);
   CHECK(hw_mesh_write(mesh, path) == HW_OK);
-  CHECK(hw_mesh_read(path, HW_BUILD_STRICT, &again, NULL) == HW_OK);
+  CHECK(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, &again, NULL) == HW_OK);
   CHECK(again != NULL && hw_mesh_n_faces(again) == 2 && hw_mesh_n_vertices(again) == 6);
   hw_mesh_free(again);
   CHECK_STATUS(hw_mesh_write(mesh, NULL), HW_ERR_NULL_ARGUMENT, "path");
@@ -253,7 +255,7 @@ static void long_lists_are_counted_not_listed(void) {
   hw_diagnostic_free(d);
 
   CHECK(hw_mesh_from_indexed(triangle, 3, copy_sizes, N_FACES, copy_indices, 3 * N_FACES,
-                             HW_BUILD_STRICT, &mesh, NULL) == HW_ERR_NON_MANIFOLD);
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_ERR_NON_MANIFOLD);
   CHECK(mesh == NULL);
   CHECK(hw_last_error_message(text, sizeof text, &needed) == HW_OK);
   CHECK(needed <= HW_MAX_MESSAGE_SIZE);
@@ -270,7 +272,7 @@ static void huge_counts_are_refused_before_allocating(void) {
   hw_mesh *mesh = NULL;
   hw_diagnostic *diagnostic = NULL;
   CHECK_STATUS(hw_mesh_from_indexed(positions, 7, sizes, 0xFFFFFFFFu, indices, 12,
-                                    HW_BUILD_SKIP, &mesh, NULL),
+                                    HW_BUILD_POLICY_SKIP, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "4294967295 faces");
   CHECK(mesh == NULL);
   /* The diagnosis describes a list malformed as a whole by its summary alone. */
@@ -293,28 +295,31 @@ static void list_kinds_are_named_and_kept_apart(void) {
   size_t n = 0;
   uint32_t list, other;
   CHECK(hw_diagnose_indexed(positions, 7, sizes, 4, indices, 12, &d) == HW_OK);
-  for (list = HW_DIAG_LIST_FIRST; list < HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT; ++list) {
+  for (list = HW_DIAGNOSTIC_LIST_FIRST; list < HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT;
+       ++list) {
     CHECK(hw_diagnostic_list_name(list) != NULL);
     CHECK(hw_diagnostic_edges_name(list) == NULL && hw_doctor_finding_name(list) == NULL);
     CHECK(hw_diagnostic_ids(d, list, &ids, &n) == HW_OK);
-    for (other = list + 1; other < HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT; ++other)
+    for (other = list + 1; other < HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT; ++other)
       CHECK(strcmp(hw_diagnostic_list_name(list), hw_diagnostic_list_name(other)) != 0);
   }
-  for (list = HW_DIAG_EDGES_FIRST; list < HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT; ++list) {
+  for (list = HW_DIAGNOSTIC_EDGES_FIRST;
+       list < HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT; ++list) {
     CHECK(hw_diagnostic_edges_name(list) != NULL);
     CHECK(hw_diagnostic_list_name(list) == NULL && hw_doctor_finding_name(list) == NULL);
     CHECK(hw_diagnostic_edge_count(d, list, &n) == HW_OK);
   }
-  CHECK(strcmp(hw_diagnostic_list_name(HW_DIAG_ISOLATED_VERTICES), "isolated vertices") == 0);
-  CHECK(strcmp(hw_diagnostic_edges_name(HW_DIAG_NON_MANIFOLD_EDGES),
+  CHECK(strcmp(hw_diagnostic_list_name(HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES),
+               "isolated vertices") == 0);
+  CHECK(strcmp(hw_diagnostic_edges_name(HW_DIAGNOSTIC_EDGES_NON_MANIFOLD),
                "non-manifold edges (3+ faces)") == 0);
-  CHECK(hw_diagnostic_list_name(HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT) == NULL);
-  CHECK(hw_diagnostic_edges_name(HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT) == NULL);
-  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAG_NON_MANIFOLD_EDGES, &ids, &n), HW_ERR_INVALID_INPUT,
-               "unknown diagnostic list");
-  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAG_FACES_TOO_SMALL, &n), HW_ERR_INVALID_INPUT,
-               "unknown diagnostic edge list");
-  CHECK_STATUS(hw_diagnostic_ids(d, HW_DOCTOR_NEEDLES, &ids, &n), HW_ERR_INVALID_INPUT,
+  CHECK(hw_diagnostic_list_name(HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT) == NULL);
+  CHECK(hw_diagnostic_edges_name(HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT) == NULL);
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &ids, &n),
+               HW_ERR_INVALID_INPUT, "unknown diagnostic list");
+  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &n),
+               HW_ERR_INVALID_INPUT, "unknown diagnostic edge list");
+  CHECK_STATUS(hw_diagnostic_ids(d, HW_DOCTOR_FINDING_NEEDLES, &ids, &n), HW_ERR_INVALID_INPUT,
                "unknown diagnostic list");
   hw_diagnostic_free(d);
 }

@@ -40,7 +40,7 @@ static void a_cube_is_a_closed_polyhedron(void) {
   {
     hw_mesh *mesh = NULL;
     CHECK(hw_mesh_from_indexed(cube_positions, 8, cube_sizes, 6, cube_indices, 24,
-                               HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+                               HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
     CHECK(hw_doctor_examine_mesh(mesh, NULL, &report) == HW_OK);
     CHECK(hw_doctor_report_verdict(report, &verdict) == HW_OK && verdict.closed_polyhedron);
     hw_doctor_report_free(report);
@@ -72,23 +72,26 @@ static void defects_are_named(void) {
   CHECK(!verdict.manifold && !verdict.closed && !verdict.closed_polyhedron);
   CHECK(verdict.reason != NULL && strstr(verdict.reason, "manifold") != NULL);
 
-  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_T_VERTICES, &ids, &n, &per_item) == HW_OK);
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_T_VERTICES, &ids, &n, &per_item) ==
+        HW_OK);
   CHECK(n == 1 && per_item == 4);
   CHECK(ids[0] == 6 && ids[1] == 1 && ids[2] == 2 && ids[3] == 0);
-  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_DUPLICATE_POSITIONS, &ids, &n, &per_item) == HW_OK);
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_DUPLICATE_POSITIONS, &ids, &n,
+                                 &per_item) == HW_OK);
   CHECK(n == 1 && per_item == 2 && ids[0] == 10 && ids[1] == 3);
-  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_DUPLICATE_FACES, &ids, &n, &per_item) == HW_OK);
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_DUPLICATE_FACES, &ids, &n, &per_item) ==
+        HW_OK);
   CHECK(n == 1 && ids[0] == 5 && ids[1] == 4);
   /* A face on the same three vertices as another overlaps it entirely; the right square's
    * three triangles touch the left square at the T-vertex 6, which is not a vertex of it. */
-  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_SELF_INTERSECTIONS, &ids, &n, &per_item) ==
-        HW_OK);
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_SELF_INTERSECTIONS, &ids, &n,
+                                 &per_item) == HW_OK);
   CHECK(n == 4 && per_item == 2);
   CHECK(ids[0] == 0 && ids[1] == 1 && ids[2] == 0 && ids[3] == 2 && ids[4] == 0 && ids[5] == 3);
   CHECK(ids[6] == 4 && ids[7] == 5);
-  CHECK(strcmp(hw_doctor_finding_name(HW_DOCTOR_SELF_INTERSECTIONS), "intersecting face pairs") ==
-        0);
-  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_NEEDLES, &ids, &n, &per_item) == HW_OK);
+  CHECK(strcmp(hw_doctor_finding_name(HW_DOCTOR_FINDING_SELF_INTERSECTIONS),
+               "intersecting face pairs") == 0);
+  CHECK(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_NEEDLES, &ids, &n, &per_item) == HW_OK);
   CHECK(n == 0 && ids == NULL && per_item == 1);
   for (hw_doctor_finding kind = HW_DOCTOR_FINDING_FIRST;
        kind < HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT; ++kind) {
@@ -98,16 +101,17 @@ static void defects_are_named(void) {
   CHECK(hw_doctor_finding_name(HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT) == NULL);
   CHECK(hw_doctor_finding_name(HW_DOCTOR_FINDING_FIRST - 1) == NULL);
   /* A diagnostic list is not a finding: refused, not read as another kind. */
-  CHECK_STATUS(hw_doctor_report_finding(report, HW_DIAG_FACES_TOO_SMALL, &ids, &n, &per_item),
-               HW_ERR_INVALID_INPUT, "unknown doctor finding");
+  CHECK_STATUS(
+      hw_doctor_report_finding(report, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &ids, &n, &per_item),
+      HW_ERR_INVALID_INPUT, "unknown doctor finding");
 
   /* Vertex 0, where the triangles touch the left square, has two fans; so have vertices 1 and 2,
    * where the right square's triangles meet the left square at a corner only (the crack). */
   CHECK(hw_doctor_report_vertex_fans_count(report, &n) == HW_OK && n == 3);
   CHECK(hw_doctor_report_vertex_fan(report, 0, 1, &vertex, &n_fans, &ids, &n_faces) == HW_OK);
   CHECK(vertex == 0 && n_fans == 2 && n_faces == 2 && ids[0] == 4 && ids[1] == 5);
-  CHECK(hw_diagnostic_ids(hw_doctor_report_diagnostic(report), HW_DIAG_NON_MANIFOLD_VERTICES,
-                          &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(hw_doctor_report_diagnostic(report),
+                          HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, &ids, &n) == HW_OK);
   CHECK(n == 3 && ids[0] == 0 && ids[1] == 1 && ids[2] == 2);
 
   /* Boundary loops: the two squares' rim, and the triangle pair's. */
@@ -166,9 +170,9 @@ static void bad_arguments_are_refused(void) {
                                   &report) == HW_OK);
   CHECK_STATUS(hw_doctor_report_finding(report, 99u, &ids, &n, &per_item), HW_ERR_INVALID_INPUT,
                "unknown doctor finding 99");
-  CHECK_STATUS(hw_doctor_report_finding(NULL, HW_DOCTOR_NEEDLES, &ids, &n, &per_item),
+  CHECK_STATUS(hw_doctor_report_finding(NULL, HW_DOCTOR_FINDING_NEEDLES, &ids, &n, &per_item),
                HW_ERR_NULL_ARGUMENT, "report");
-  CHECK_STATUS(hw_doctor_report_finding(report, HW_DOCTOR_NEEDLES, NULL, &n, &per_item),
+  CHECK_STATUS(hw_doctor_report_finding(report, HW_DOCTOR_FINDING_NEEDLES, NULL, &n, &per_item),
                HW_ERR_NULL_ARGUMENT, "out_ids");
   CHECK_STATUS(hw_doctor_report_verdict(NULL, &verdict), HW_ERR_NULL_ARGUMENT, "report");
   CHECK_STATUS(hw_doctor_report_verdict(report, NULL), HW_ERR_NULL_ARGUMENT, "out_verdict");
@@ -238,45 +242,48 @@ static void findings_are_drawable(void) {
   float low[3], high[3];
   CHECK(hw_doctor_examine_indexed(broken_positions, 11, broken_sizes, 6, broken_indices, 19,
                                   NULL, &report) == HW_OK);
-  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_SELF_INTERSECTIONS, broken_positions,
-                                       11, broken_sizes, 6, broken_indices, 19,
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_SELF_INTERSECTIONS,
+                                       broken_positions, 11, broken_sizes, 6, broken_indices, 19,
                                        &buffers) == HW_OK);
   /* Faces 0 (a square: 4 corners, 2 triangles) and 1, 2, 3, 4, 5 (triangles). */
   CHECK(hw_render_buffers_n_vertices(buffers) == 4 + 5 * 3);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLE_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_TRIANGLE_FACES, &ids, &n) == HW_OK);
   CHECK(n == 7 && ids[0] == 0 && ids[1] == 0 && ids[2] == 1 && ids[6] == 5);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_POINTS, &floats, &n) == HW_OK && n == 0);
   CHECK(hw_render_buffers_bounds(buffers, low, high) == HW_OK);
   CHECK(low[0] == -1 && low[1] == -1 && high[0] == 2 && high[1] == 1);
   hw_render_buffers_free(buffers);
 
-  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_T_VERTICES, broken_positions, 11,
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_T_VERTICES, broken_positions, 11,
                                        broken_sizes, 6, broken_indices, 19, &buffers) == HW_OK);
   CHECK(hw_render_buffers_n_vertices(buffers) == 0);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 3);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_POINTS, &floats, &n) == HW_OK && n == 3);
   CHECK(floats[0] == 1 && floats[1] == 0.5f && floats[2] == 0);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_POINT_SOURCES, &ids, &n) == HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_POINT_SOURCES, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 0);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_BOUNDARY, &floats, &n) == HW_OK && n == 6);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_BOUNDARY, &floats, &n) == HW_OK &&
+        n == 6);
   CHECK(floats[0] == 1 && floats[1] == 0 && floats[3] == 1 && floats[4] == 1);
   hw_render_buffers_free(buffers);
 
-  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_DUPLICATE_POSITIONS, broken_positions,
-                                       11, broken_sizes, 6, broken_indices, 19,
+  CHECK(hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_DUPLICATE_POSITIONS,
+                                       broken_positions, 11, broken_sizes, 6, broken_indices, 19,
                                        &buffers) == HW_OK);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POINTS, &floats, &n) == HW_OK && n == 3);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_BOUNDARY, &floats, &n) == HW_OK && n == 6);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_POINTS, &floats, &n) == HW_OK && n == 3);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_BOUNDARY, &floats, &n) == HW_OK &&
+        n == 6);
   hw_render_buffers_free(buffers);
 
   buffers = NULL;
-  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DOCTOR_SELF_INTERSECTIONS,
-                                              cube_positions, 8, cube_sizes, 1, cube_indices, 4,
-                                              &buffers),
-               HW_ERR_INVALID_INPUT, "names face 1, but the face list has 1");
-  CHECK_STATUS(hw_render_buffers_from_finding(report, HW_DIAG_ISOLATED_VERTICES, broken_positions,
-                                              11, broken_sizes, 6, broken_indices, 19, &buffers),
-               HW_ERR_INVALID_INPUT, "unknown doctor finding");
-  CHECK_STATUS(hw_render_buffers_from_finding(NULL, HW_DOCTOR_NEEDLES, broken_positions, 11,
+  CHECK_STATUS(
+      hw_render_buffers_from_finding(report, HW_DOCTOR_FINDING_SELF_INTERSECTIONS, cube_positions,
+                                     8, cube_sizes, 1, cube_indices, 4, &buffers),
+      HW_ERR_INVALID_INPUT, "names face 1, but the face list has 1");
+  CHECK_STATUS(
+      hw_render_buffers_from_finding(report, HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES, broken_positions,
+                                     11, broken_sizes, 6, broken_indices, 19, &buffers),
+      HW_ERR_INVALID_INPUT, "unknown doctor finding");
+  CHECK_STATUS(hw_render_buffers_from_finding(NULL, HW_DOCTOR_FINDING_NEEDLES, broken_positions, 11,
                                               broken_sizes, 6, broken_indices, 19, &buffers),
                HW_ERR_NULL_ARGUMENT, "report");
   CHECK(buffers == NULL);

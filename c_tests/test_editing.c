@@ -13,8 +13,8 @@ static const uint32_t cube_faces[] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
 
 static hw_mesh *cube(void) {
   hw_mesh *mesh = NULL;
-  CHECK(hw_mesh_from_indexed(cube_positions, 8, cube_sizes, 6, cube_faces, 24, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(cube_positions, 8, cube_sizes, 6, cube_faces, 24,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   return mesh;
 }
 
@@ -34,7 +34,7 @@ static void normals(void) {
                            faces[3 * f + 2] * (p[2] - 0.5);
     CHECK(fabs(length3(faces + 3 * f) - 1) < 1e-12 && outward > 0);
   }
-  for (w = HW_WEIGHT_UNIFORM; w <= HW_WEIGHT_ANGLE; ++w) {
+  for (w = HW_NORMAL_WEIGHTING_UNIFORM; w <= HW_NORMAL_WEIGHTING_ANGLE; ++w) {
     CHECK(hw_mesh_vertex_normals(mesh, w, vertices, 8, NULL) == HW_OK);
     /* A cube corner's normal points along the diagonal, whatever the weighting. */
     for (v = 0; v < 8; ++v) {
@@ -44,7 +44,8 @@ static void normals(void) {
       CHECK(fabs(vertices[3 * v + 2] - (p[2] - 0.5) * 2 * c) < 1e-12);
     }
   }
-  CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, NULL, vertices, 8, NULL) == HW_OK);
+  CHECK(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, faces, 6, NULL, vertices, 8, NULL) ==
+        HW_OK);
   /* Crease angle 0: every corner takes its face's normal (flat shading). */
   CHECK(hw_mesh_corner_normals(mesh, 0.0, corners, 24, &needed) == HW_OK && needed == 24);
   for (h = 0; h < 24; ++h) {
@@ -57,7 +58,7 @@ static void normals(void) {
   }
   /* Smooth (crease angle pi): the angle-weighted vertex normal. */
   CHECK(hw_mesh_corner_normals(mesh, 3.2, corners, 24, NULL) == HW_OK);
-  CHECK(hw_mesh_vertex_normals(mesh, HW_WEIGHT_ANGLE, vertices, 8, NULL) == HW_OK);
+  CHECK(hw_mesh_vertex_normals(mesh, HW_NORMAL_WEIGHTING_ANGLE, vertices, 8, NULL) == HW_OK);
   for (h = 0; h < 24; ++h) {
     hw_halfedge he = {(uint32_t)h};
     hw_vertex origin = hw_mesh_he_origin(mesh, he);
@@ -78,15 +79,15 @@ static void normals(void) {
                  "argument `out_normals` is misaligned");
     CHECK_STATUS(hw_mesh_corner_normals(mesh, 0.0, misaligned, 24, &needed),
                  HW_ERR_INVALID_INPUT, "argument `out_normals` is misaligned");
-    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, &face_needed, misaligned, 8,
-                                 &vertex_needed),
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, faces, 6, &face_needed,
+                                 misaligned, 8, &vertex_needed),
                  HW_ERR_INVALID_INPUT, "argument `out_vertex_normals` is misaligned");
     CHECK(face_needed == 6 && vertex_needed == 8);
     for (h = 0; h < 3 * 24 + 1; ++h) CHECK(storage[h] == 0);
   }
   CHECK_STATUS(hw_mesh_vertex_normals(mesh, 9u, vertices, 8, NULL), HW_ERR_INVALID_INPUT,
                "weighting 9");
-  CHECK_STATUS(hw_mesh_vertex_normals(NULL, HW_WEIGHT_UNIFORM, vertices, 8, NULL),
+  CHECK_STATUS(hw_mesh_vertex_normals(NULL, HW_NORMAL_WEIGHTING_UNIFORM, vertices, 8, NULL),
                HW_ERR_NULL_ARGUMENT, "mesh");
   {
     /* Too small: both needed sizes come back, whichever array is short, and neither array is
@@ -94,17 +95,17 @@ static void normals(void) {
     size_t face_needed = 0, vertex_needed = 0;
     memset(faces, 0, sizeof faces);
     memset(vertices, 0, sizeof vertices);
-    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 6, &face_needed, vertices, 7,
-                                 &vertex_needed),
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, faces, 6, &face_needed,
+                                 vertices, 7, &vertex_needed),
                  HW_ERR_BUFFER_TOO_SMALL, "8 are needed");
     CHECK(face_needed == 6 && vertex_needed == 8);
     face_needed = vertex_needed = 0;
-    CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, faces, 5, &face_needed, vertices, 8,
-                                 &vertex_needed),
+    CHECK_STATUS(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, faces, 5, &face_needed,
+                                 vertices, 8, &vertex_needed),
                  HW_ERR_BUFFER_TOO_SMALL, "6 are needed");
     CHECK(face_needed == 6 && vertex_needed == 8);
     face_needed = vertex_needed = 0;
-    CHECK(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, NULL, 0, &face_needed, NULL, 0,
+    CHECK(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, NULL, 0, &face_needed, NULL, 0,
                           &vertex_needed) == HW_ERR_BUFFER_TOO_SMALL);
     CHECK(face_needed == 6 && vertex_needed == 8);
     for (f = 0; f < 18; ++f) CHECK(faces[f] == 0);
@@ -112,7 +113,7 @@ static void normals(void) {
   }
   CHECK_STATUS(hw_mesh_corner_normals(mesh, -1.0, corners, 24, NULL), HW_ERR_INVALID_INPUT,
                "crease");
-  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE) == 24);
+  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE) == 24);
   CHECK(hw_mesh_slot_count(mesh, 17u) == 0 && last_error_contains("kind 17"));
   hw_mesh_free(mesh);
 }
@@ -163,19 +164,19 @@ static void editing(void) {
   CHECK(hw_mesh_face_halfedge(mesh, deleted).idx == HW_INVALID_INDEX);
   CHECK(last_error_contains("face 0 is deleted"));
   CHECK(hw_mesh_garbage_collect(mesh, &maps) == HW_OK);
-  CHECK(hw_index_maps_view(maps, HW_ELEMENT_FACE, &map, &len) == HW_OK);
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_KIND_FACE, &map, &len) == HW_OK);
   CHECK(len >= 1 && map[0] == HW_INVALID_INDEX);
-  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_FACE) == hw_mesh_n_faces(mesh));
+  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE) == hw_mesh_n_faces(mesh));
   CHECK_STATUS(hw_index_maps_view(maps, 8u, &map, &len), HW_ERR_INVALID_INPUT, "kind 8");
   {
     /* NULL maps or outputs: refused, nothing written. */
     const uint32_t *unset = NULL;
     size_t unset_len = 4242;
-    CHECK_STATUS(hw_index_maps_view(NULL, HW_ELEMENT_FACE, &unset, &unset_len),
+    CHECK_STATUS(hw_index_maps_view(NULL, HW_ELEMENT_KIND_FACE, &unset, &unset_len),
                  HW_ERR_NULL_ARGUMENT, "maps");
-    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_FACE, NULL, &unset_len),
+    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_KIND_FACE, NULL, &unset_len),
                  HW_ERR_NULL_ARGUMENT, "out_map");
-    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_FACE, &unset, NULL), HW_ERR_NULL_ARGUMENT,
+    CHECK_STATUS(hw_index_maps_view(maps, HW_ELEMENT_KIND_FACE, &unset, NULL), HW_ERR_NULL_ARGUMENT,
                  "out_len");
     CHECK(unset == NULL && unset_len == 4242);
   }
@@ -205,16 +206,16 @@ static void collapse(void) {
   hw_halfedge h = {0};
   hw_vertex kept, target, inner = {3};
   hw_circulator c;
-  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_faces, 12, HW_BUILD_STRICT,
+  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_faces, 12, HW_BUILD_POLICY_STRICT,
                              &mesh, NULL) == HW_OK);
   CHECK_STATUS(hw_mesh_collapse_halfedge(mesh, h, &kept), HW_ERR_REFUSED, "collapse");
   CHECK(hw_mesh_n_faces(mesh) == 4 && hw_mesh_check(mesh) == HW_OK);
   hw_mesh_free(mesh);
 
-  CHECK(hw_mesh_from_indexed(fan_positions, 7, fan_sizes, 6, fan_faces, 18, HW_BUILD_STRICT,
+  CHECK(hw_mesh_from_indexed(fan_positions, 7, fan_sizes, 6, fan_faces, 18, HW_BUILD_POLICY_STRICT,
                              &mesh, NULL) == HW_OK);
   /* The inner vertex v4 (index 3) merges into one of its boundary neighbours. */
-  CHECK(hw_circ_around_vertex(mesh, inner, HW_CIRC_HALFEDGES, &c) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, inner, HW_CIRCULATOR_KIND_HALFEDGES, &c) == HW_OK);
   CHECK(hw_circ_next_halfedge(&c, &h));
   target = hw_mesh_he_target(mesh, h);
   CHECK(hw_mesh_collapse_halfedge(mesh, h, &kept) == HW_OK);
@@ -275,10 +276,10 @@ static void deleted_elements_and_null_outputs(void) {
   CHECK_STATUS(hw_mesh_set_vertex_position(mesh, v0, point), HW_ERR_INVALID_HANDLE, "deleted");
   memset(&c, 0xA5, sizeof c);
   c_before = c;
-  CHECK_STATUS(hw_circ_around_vertex(mesh, v0, HW_CIRC_VERTICES, &c), HW_ERR_INVALID_HANDLE,
-               "deleted");
-  CHECK_STATUS(hw_circ_around_face(mesh, f0, HW_CIRC_VERTICES, &c), HW_ERR_INVALID_HANDLE,
-               "deleted");
+  CHECK_STATUS(hw_circ_around_vertex(mesh, v0, HW_CIRCULATOR_KIND_VERTICES, &c),
+               HW_ERR_INVALID_HANDLE, "deleted");
+  CHECK_STATUS(hw_circ_around_face(mesh, f0, HW_CIRCULATOR_KIND_VERTICES, &c),
+               HW_ERR_INVALID_HANDLE, "deleted");
   CHECK_STATUS(hw_circ_along_loop(mesh, h, &c), HW_ERR_INVALID_HANDLE, "deleted");
   CHECK(memcmp(&c, &c_before, sizeof c) == 0);
 
@@ -368,8 +369,8 @@ static hw_mesh *pillow(uint32_t start) {
   uint32_t k;
   hw_mesh *mesh = NULL;
   for (k = 0; k < 4; ++k) faces[k] = (start + k) % 4;
-  CHECK(hw_mesh_from_indexed(positions, 4, sizes, 3, faces, 10, HW_BUILD_STRICT, &mesh, NULL) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 4, sizes, 3, faces, 10, HW_BUILD_POLICY_STRICT, &mesh,
+                             NULL) == HW_OK);
   return mesh;
 }
 

@@ -24,7 +24,7 @@ static void last_error_buffer_protocol(void) {
   hw_mesh *mesh = NULL;
   /* Make a failure with a known message. */
   CHECK_STATUS(hw_last_error_message(NULL, 0, NULL), HW_ERR_BUFFER_TOO_SMALL, "");
-  CHECK(hw_mesh_from_indexed(NULL, 1, NULL, 0, NULL, 0, HW_BUILD_STRICT, &mesh, NULL) ==
+  CHECK(hw_mesh_from_indexed(NULL, 1, NULL, 0, NULL, 0, HW_BUILD_POLICY_STRICT, &mesh, NULL) ==
         HW_ERR_NULL_ARGUMENT);
   CHECK(mesh == NULL);
   /* Asking for the size writes nothing and reports it. */
@@ -61,7 +61,7 @@ static void long_messages_are_cut(void) {
   }
   memset(name, 'a', NAME_LENGTH);
   name[NAME_LENGTH] = '\0';
-  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_VERTEX, name) != HW_OK);
+  CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_VERTEX, name) != HW_OK);
   CHECK(hw_last_error_message(NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL);
   CHECK(needed <= HW_MAX_MESSAGE_SIZE);
   CHECK(hw_last_error_message(message, sizeof message, NULL) == HW_OK);

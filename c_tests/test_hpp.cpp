@@ -17,7 +17,7 @@ static void exceptions_carry_status_and_message() {
     hw::mesh::from_indexed({}, {3}, {0, 1, 2});
   } catch (const hw::error& e) {
     thrown = true;
-    CHECK(e.status() == HW_ERR_INVALID_INPUT);
+    CHECK(e.status() == hw::Status::InvalidInput);
     CHECK(std::string(e.what()).find("out-of-range") != std::string::npos);
   }
   CHECK(thrown);
@@ -25,7 +25,7 @@ static void exceptions_carry_status_and_message() {
   try {
     hw::mesh::read("no/such/file.off");
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_IO;
+    thrown = e.status() == hw::Status::Io;
   }
   CHECK(thrown);
 }
@@ -44,12 +44,12 @@ static void ownership_moves() {
 static void circulation_and_normals() {
   const std::string path = std::string(HALFWING_DATA_DIR) + "/meshes/closed/lapy_icosahedron.off";
   hw::diagnostic report;
-  hw::mesh m = hw::mesh::read(path, HW_BUILD_STRICT, &report);
+  hw::mesh m = hw::mesh::read(path, hw::BuildPolicy::Strict, &report);
   CHECK(report && report.is_clean());
   CHECK(report.summary() == "no defects found");
   const hw::diagnostic empty;
   CHECK(!empty && empty.is_clean() && empty.summary().empty() &&
-        empty.ids(HW_DIAG_ISOLATED_VERTICES).empty());
+        empty.ids(hw::DiagnosticList::IsolatedVertices).empty());
   m.check_invariants();
   std::size_t ring_total = 0;
   for (uint32_t i = 0; i < m.n_vertices(); ++i) {
@@ -72,7 +72,7 @@ static void circulation_and_normals() {
     CHECK(sides == 3 && across == 3);
   }
   CHECK(m.boundary_loops().empty() && m.n_components() == 1);
-  const std::vector<double> normals = m.vertex_normals(HW_WEIGHT_ANGLE);
+  const std::vector<double> normals = m.vertex_normals(hw::NormalWeighting::Angle);
   for (uint32_t i = 0; i < m.n_vertices(); ++i) {
     // An icosahedron centred at the origin (coordinates rounded in the file): the normal points
     // along the position.
@@ -89,11 +89,11 @@ static void visits() {
   const std::string path = std::string(HALFWING_DATA_DIR) + "/meshes/closed/lapy_icosahedron.off";
   hw::mesh m = hw::mesh::read(path);
   std::size_t valence_sum = 0;
-  CHECK(m.visit(HW_ELEMENT_VERTEX, [&](uint32_t v) { valence_sum += m.valence(hw_vertex{v}); }) ==
-        m.n_vertices());
+  CHECK(m.visit(hw::ElementKind::Vertex,
+                [&](uint32_t v) { valence_sum += m.valence(hw_vertex{v}); }) == m.n_vertices());
   CHECK(valence_sum == 2 * m.n_edges());
   std::vector<uint32_t> faces;
-  CHECK(m.visit(HW_ELEMENT_FACE, [&](uint32_t f) {
+  CHECK(m.visit(hw::ElementKind::Face, [&](uint32_t f) {
     faces.push_back(f);
     return faces.size() < 4;
   }) == 4);
@@ -101,7 +101,7 @@ static void visits() {
   std::size_t calls = 0;
   bool thrown = false;
   try {
-    m.visit(HW_ELEMENT_EDGE, [&](uint32_t e) {
+    m.visit(hw::ElementKind::Edge, [&](uint32_t e) {
       ++calls;
       if (e == 2) throw std::runtime_error("edge 2");
     });
@@ -111,9 +111,9 @@ static void visits() {
   CHECK(thrown && calls == 3);
   bool refused = false;
   try {
-    m.visit(99, [](uint32_t) {});
+    m.visit(static_cast<hw::ElementKind>(99), [](uint32_t) {});
   } catch (const hw::error& e) {
-    refused = e.status() == HW_ERR_INVALID_INPUT;
+    refused = e.status() == hw::Status::InvalidInput;
   }
   CHECK(refused);
 }
@@ -130,7 +130,7 @@ static void editing() {
   try {
     m.flip_edge(hw_edge{0});  // a boundary edge
   } catch (const hw::error& e) {
-    refused = e.status() == HW_ERR_REFUSED;
+    refused = e.status() == hw::Status::Refused;
   }
   CHECK(refused);
   const hw_vertex middle = m.split_edge(diagonal, {0.5, 0.5, 0});
@@ -150,34 +150,34 @@ static void faces_and_attributes() {
   try {
     m.add_face({a, b, c});
   } catch (const hw::error& e) {
-    refused = e.status() == HW_ERR_REFUSED;
+    refused = e.status() == hw::Status::Refused;
   }
   CHECK(refused && m.n_faces() == 1);
 
-  m.add_attribute<float>(HW_ELEMENT_VERTEX, "colour", 3);
-  m.add_attribute<uint32_t>(HW_ELEMENT_FACE, "group");
-  auto colour = m.attribute_data<float>(HW_ELEMENT_VERTEX, "colour");
+  m.add_attribute<float>(hw::ElementKind::Vertex, "colour", 3);
+  m.add_attribute<uint32_t>(hw::ElementKind::Face, "group");
+  auto colour = m.attribute_data<float>(hw::ElementKind::Vertex, "colour");
   CHECK(colour.size() == 9);
   colour[4] = 2.5f;
-  CHECK(m.attribute<float>(HW_ELEMENT_VERTEX, "colour")[4] == 2.5f);
-  CHECK(m.attribute_names(HW_ELEMENT_FACE) == std::vector<std::string>{"group"});
+  CHECK(m.attribute<float>(hw::ElementKind::Vertex, "colour")[4] == 2.5f);
+  CHECK(m.attribute_names(hw::ElementKind::Face) == std::vector<std::string>{"group"});
   bool wrong_type = false;
   try {
-    m.attribute<double>(HW_ELEMENT_VERTEX, "colour");
+    m.attribute<double>(hw::ElementKind::Vertex, "colour");
   } catch (const hw::error& e) {
-    wrong_type = e.status() == HW_ERR_INVALID_INPUT;
+    wrong_type = e.status() == hw::Status::InvalidInput;
   }
   CHECK(wrong_type);
 
   std::vector<double> uv(2 * m.n_halfedges(), 0.5);
   m.set_corner_uvs(uv);
   CHECK(m.corner_uvs().size() == uv.size() && m.corner_uvs()[3] == 0.5);
-  m.remove_attribute(HW_ELEMENT_HALFEDGE, "hw:corner_uv");
+  m.remove_attribute(hw::ElementKind::Halfedge, "hw:corner_uv");
   bool missing = false;
   try {
     m.corner_uvs();
   } catch (const hw::error& e) {
-    missing = e.status() == HW_ERR_NOT_FOUND;
+    missing = e.status() == hw::Status::NotFound;
   }
   CHECK(missing);
 }
@@ -211,7 +211,7 @@ static void winged_kernel() {
   try {
     w.mef(f0, v1, v1);
   } catch (const hw::error& e) {
-    refused = e.status() == HW_ERR_REFUSED &&
+    refused = e.status() == hw::Status::Refused &&
               std::string(e.what()).find("itself") != std::string::npos;
   }
   CHECK(refused);
@@ -220,15 +220,16 @@ static void winged_kernel() {
   try {
     w.vertex_edge(hw_wvertex{99});
   } catch (const hw::error& e) {
-    invalid = e.status() == HW_ERR_INVALID_HANDLE;
+    invalid = e.status() == hw::Status::InvalidHandle;
   }
   CHECK(invalid);
 
   hw::mesh m = w.to_mesh();
   CHECK(m.n_faces() == 2 && m.n_halfedges() == 8);
   hw::winged back = hw::winged::from_mesh(m);
-  CHECK(back.n_edges() == 4 && back.table(HW_WTABLE_EDGES) == w.table(HW_WTABLE_EDGES));
-  const std::string faces_csv = w.table(HW_WTABLE_FACES, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_CSV);
+  CHECK(back.n_edges() == 4 && back.table(hw::WTable::Edges) == w.table(hw::WTable::Edges));
+  const std::string faces_csv =
+      w.table(hw::WTable::Faces, hw::WNaming::DirectInverse, hw::TableFormat::Csv);
   CHECK(faces_csv.rfind("Id,Arista\n0,", 0) == 0 && faces_csv.find("\n1,3\n") != std::string::npos);
   hw::winged moved = std::move(back);
   CHECK(!back && moved.n_faces() == 2);
@@ -241,19 +242,19 @@ static void voronoi_classes() {
   const std::vector<hw::point2> sites = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 2}, {4, 0}};
   const hw::voronoi diagram(sites);
   CHECK(diagram.n_sites() == 6 && diagram.n_unique_sites() == 5);
-  CHECK(diagram.dimension() == HW_VORONOI_PLANE && diagram.n_triangles() == 4);
-  CHECK(diagram.view(HW_VORONOI_REPRESENTATIVE)[5] == 1);
+  CHECK(diagram.dimension() == hw::SiteDimension::Plane && diagram.n_triangles() == 4);
+  CHECK(diagram.view(hw::VoronoiArray::Representative)[5] == 1);
   CHECK(diagram.sites().size() == 6 && diagram.vertices().size() == diagram.n_vertices());
   CHECK(diagram.nearest_site({1.2, 2.1}) == 4 && diagram.neighbours(4).size() == 4);
   const uint32_t h = diagram.edge_between(0, 4);
   CHECK(diagram.edge(h).site == 0 && diagram.edge(h).opposite_site == 4);
   CHECK(diagram.delaunay_mesh().n_faces() == 4);
   const hw::delaunay triangulation(sites);
-  CHECK(triangulation.dimension() == HW_VORONOI_PLANE && triangulation.n_triangles() == 4);
-  const auto triangles = triangulation.view(HW_VORONOI_TRIANGLES);
-  const auto dual_triangles = diagram.view(HW_VORONOI_TRIANGLES);
+  CHECK(triangulation.dimension() == hw::SiteDimension::Plane && triangulation.n_triangles() == 4);
+  const auto triangles = triangulation.view(hw::VoronoiArray::Triangles);
+  const auto dual_triangles = diagram.view(hw::VoronoiArray::Triangles);
   CHECK(std::equal(triangles.begin(), triangles.end(), dual_triangles.begin(), dual_triangles.end()));
-  CHECK(triangulation.view(HW_VORONOI_HULL).size() == 4);
+  CHECK(triangulation.view(hw::VoronoiArray::Hull).size() == 4);
 
   const hw::voronoi_cells cells = diagram.clip({-1, -1}, {5, 5});
   double total = 0;
@@ -264,15 +265,17 @@ static void voronoi_classes() {
   CHECK(c[0] > 0 && c[0] < 4 && c[1] > 0 && c[1] < 4);
   CHECK(cells.to_mesh().n_faces() == 5 && cells.face_sites().size() == 5);
   const hw::render_buffers drawn = hw::render_buffers::cells(cells);
-  CHECK(drawn.indices(HW_RENDER_TRIANGLE_FACES).size() ==
-        drawn.indices(HW_RENDER_TRIANGLES).size() / 3);
-  CHECK(drawn.indices(HW_RENDER_WIREFRAME_SOURCES).size() ==
-        drawn.floats(HW_RENDER_WIREFRAME).size() / 6);
-  CHECK(drawn.n_vertices() == drawn.floats(HW_RENDER_POSITIONS).size() / 3 && drawn.n_vertices() > 0);
+  CHECK(drawn.indices(hw::RenderIndices::TriangleFaces).size() ==
+        drawn.indices(hw::RenderIndices::Triangles).size() / 3);
+  CHECK(drawn.indices(hw::RenderIndices::WireframeSources).size() ==
+        drawn.floats(hw::RenderFloats::Wireframe).size() / 6);
+  CHECK(drawn.n_vertices() == drawn.floats(hw::RenderFloats::Positions).size() / 3 &&
+        drawn.n_vertices() > 0);
   const hw::voronoi_cells diamond = diagram.clip({{2, -1}, {5, 2}, {2, 5}, {-1, 2}});
   CHECK(diamond.positions().size() >= 4);
 
-  const std::vector<uint32_t> labels = diagram.label_image(HW_METRIC_CHEBYSHEV, {0, 0}, {4, 4}, 8, 8);
+  const std::vector<uint32_t> labels =
+      diagram.label_image(hw::Metric::Chebyshev, {0, 0}, {4, 4}, 8, 8);
   CHECK(labels.size() == 64 && labels.front() == 3);
   const std::string svg = diagram.svg(cells);
   CHECK(svg.rfind("<svg", 0) == 0 && svg.find('\0') == std::string::npos);
@@ -285,14 +288,14 @@ static void voronoi_classes() {
   try {
     diagram.edge_between(0, 2);
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_NOT_FOUND;
+    thrown = e.status() == hw::Status::NotFound;
   }
   CHECK(thrown);
   thrown = false;
   try {
     hw::voronoi({{0, 0}, {NAN, 1}});
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_INVALID_INPUT &&
+    thrown = e.status() == hw::Status::InvalidInput &&
              std::string(e.what()).find("site 1") != std::string::npos;
   }
   CHECK(thrown);
@@ -304,9 +307,9 @@ static void doctor() {
   bool thrown = false;
   try {
     hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3, 3}, {0, 1, 2, 0, 1, 2},
-                           HW_BUILD_STRICT, &refused);
+                           hw::BuildPolicy::Strict, &refused);
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_NON_MANIFOLD;
+    thrown = e.status() == hw::Status::NonManifold;
   }
   CHECK(thrown && refused && !refused.is_clean());
   CHECK(refused.summary().find("inconsistently oriented") != std::string::npos);
@@ -327,7 +330,8 @@ static void doctor() {
   const hw::doctor_report broken =
       hw::doctor_report::of({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 1, 0}, {3, 3, 3},
                             {0, 1, 2, 0, 2, 3, 1, 4, 2});
-  const hw::doctor_report::finding_view duplicates = broken.finding(HW_DOCTOR_DUPLICATE_POSITIONS);
+  const hw::doctor_report::finding_view duplicates =
+      broken.finding(hw::DoctorFinding::DuplicatePositions);
   CHECK(duplicates.n_items == 1 && duplicates.ids_per_item == 2);
   CHECK(duplicates.ids[0] == 4 && duplicates.ids[1] == 2);
   CHECK(broken.boundary_loops().size() == 1 && !broken.verdict().closed);
@@ -344,19 +348,19 @@ static void repair_pipeline() {
   CHECK(c.kept_vertices + c.merged_vertices + c.removed_vertices == n_input);
   CHECK(c.kept_vertices + c.added_vertices == m.n_vertices());
   CHECK(c.kept_faces + c.removed_faces == input.face_sizes().size());
-  CHECK(repaired.second.list(HW_FATES_VERTEX_KINDS).size() == n_input);
+  CHECK(repaired.second.list(HW_FATES_LIST_VERTEX_KINDS).size() == n_input);
 
   // A cap flips with the triangle across its long edge; a T-vertex splits the edge under it.
   hw::mesh cap = hw::mesh::from_indexed({0, 0, 0, 2, 0, 0, 1, 0, 0, 1, -1, 0}, {3, 3},
                                         {0, 1, 2, 1, 0, 3});
   const hw::repair_report flipped = cap.remove_degenerate_faces();
-  CHECK(flipped.list(HW_REPAIR_FLIPPED_FACES) == std::vector<uint32_t>({0, 1}));
-  CHECK(cap.n_faces() == 2 && cap.remove_degenerate_faces().list(HW_REPAIR_FLIPPED_FACES).empty());
+  CHECK(flipped.list(hw::RepairList::FlippedFaces) == std::vector<uint32_t>({0, 1}));
+  CHECK(cap.n_faces() == 2 && cap.remove_degenerate_faces().list(hw::RepairList::FlippedFaces).empty());
   hw::mesh crack = hw::mesh::from_indexed(
       {0, 0, 0, 2, 0, 0, 1, -1, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, 3, 0, 0}, {3, 3, 3, 3, 3, 3, 3},
       {0, 2, 1, 0, 3, 4, 3, 1, 4, 2, 0, 5, 5, 0, 4, 1, 2, 6, 4, 1, 6});
-  CHECK(crack.remove_t_vertices().list(HW_REPAIR_VERTEX_COPIES) == std::vector<uint32_t>({3}));
-  CHECK(crack.stitch_borders().list(HW_REPAIR_STITCHED_HALFEDGES).size() == 4);
+  CHECK(crack.remove_t_vertices().list(hw::RepairList::VertexCopies) == std::vector<uint32_t>({3}));
+  CHECK(crack.stitch_borders().list(hw::RepairList::StitchedHalfedges).size() == 4);
   CHECK(crack.n_vertices() == 7 && hw_mesh_check(crack.get()) == HW_OK);
   hw_repair_options bad = hw_repair_options_default();
   bad.merge_tolerance = -1;
@@ -364,7 +368,7 @@ static void repair_pipeline() {
   try {
     hw::repair_mesh(input, bad);
   } catch (const hw::error& e) {
-    threw = e.status() == HW_ERR_INVALID_INPUT;
+    threw = e.status() == hw::Status::InvalidInput;
   }
   CHECK(threw);
 }
@@ -407,9 +411,9 @@ static hw_circulator around(const hw::mesh& m, hw_face f, hw_circulator_kind kin
 /// number of walks compared.
 static std::size_t ranges_match_checked(const hw::mesh& m) {
   const hw::nav_view nav = m.nav();
-  CHECK(nav.n_vertex_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_VERTEX));
-  CHECK(nav.n_halfedge_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_HALFEDGE));
-  CHECK(nav.n_face_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_FACE));
+  CHECK(nav.n_vertex_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_VERTEX));
+  CHECK(nav.n_halfedge_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_HALFEDGE));
+  CHECK(nav.n_face_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_FACE));
   CHECK(nav.raw().origin != nullptr || nav.n_halfedge_slots() == 0);
   std::size_t walks = 0;
   auto same = [&](const std::vector<uint32_t>& want, const std::vector<uint32_t>& got) {
@@ -423,26 +427,28 @@ static std::size_t ranges_match_checked(const hw::mesh& m) {
       try {
         m.vertices_around(v);
       } catch (const hw::error& e) {
-        thrown = e.status() == HW_ERR_INVALID_HANDLE;
+        thrown = e.status() == hw::Status::InvalidHandle;
       }
       CHECK(thrown);
       CHECK(range_walk(nav.outgoing(v)).empty());
       continue;
     }
     CHECK(nav.halfedge(v).idx == m.halfedge(v).idx);
-    const auto outgoing = checked_walk(around(m, v, HW_CIRC_HALFEDGES), hw_circ_next_halfedge);
+    const auto outgoing =
+        checked_walk(around(m, v, HW_CIRCULATOR_KIND_HALFEDGES), hw_circ_next_halfedge);
     same(outgoing, range_walk(m.outgoing(v)));
     same(outgoing, range_walk(nav.outgoing(v)));
-    const auto incoming = checked_walk(around(m, v, HW_CIRC_INCOMING), hw_circ_next_halfedge);
+    const auto incoming =
+        checked_walk(around(m, v, HW_CIRCULATOR_KIND_INCOMING), hw_circ_next_halfedge);
     same(incoming, range_walk(m.incoming(v)));
     same(incoming, range_walk(nav.incoming(v)));
-    const auto ring = checked_walk(around(m, v, HW_CIRC_VERTICES), hw_circ_next_vertex);
+    const auto ring = checked_walk(around(m, v, HW_CIRCULATOR_KIND_VERTICES), hw_circ_next_vertex);
     same(ring, range_walk(m.vertices_around(v)));
     same(ring, range_walk(nav.vertices_around(v)));
-    const auto edges = checked_walk(around(m, v, HW_CIRC_EDGES), hw_circ_next_edge);
+    const auto edges = checked_walk(around(m, v, HW_CIRCULATOR_KIND_EDGES), hw_circ_next_edge);
     same(edges, range_walk(m.edges_around(v)));
     same(edges, range_walk(nav.edges_around(v)));
-    const auto faces = checked_walk(around(m, v, HW_CIRC_FACES), hw_circ_next_face);
+    const auto faces = checked_walk(around(m, v, HW_CIRCULATOR_KIND_FACES), hw_circ_next_face);
     same(faces, range_walk(m.faces_around(v)));
     same(faces, range_walk(nav.faces_around(v)));
     if (!outgoing.empty()) {
@@ -456,16 +462,18 @@ static std::size_t ranges_match_checked(const hw::mesh& m) {
     const hw_face f{i};
     if (nav.is_deleted(f)) continue;
     CHECK(nav.halfedge(f).idx == m.halfedge(f).idx);
-    const auto sides = checked_walk(around(m, f, HW_CIRC_HALFEDGES), hw_circ_next_halfedge);
+    const auto sides =
+        checked_walk(around(m, f, HW_CIRCULATOR_KIND_HALFEDGES), hw_circ_next_halfedge);
     same(sides, range_walk(m.halfedges_of(f)));
     same(sides, range_walk(nav.halfedges_of(f)));
-    const auto corners = checked_walk(around(m, f, HW_CIRC_VERTICES), hw_circ_next_vertex);
+    const auto corners =
+        checked_walk(around(m, f, HW_CIRCULATOR_KIND_VERTICES), hw_circ_next_vertex);
     same(corners, range_walk(m.vertices_of(f)));
     same(corners, range_walk(nav.vertices_of(f)));
-    const auto edges = checked_walk(around(m, f, HW_CIRC_EDGES), hw_circ_next_edge);
+    const auto edges = checked_walk(around(m, f, HW_CIRCULATOR_KIND_EDGES), hw_circ_next_edge);
     same(edges, range_walk(m.edges_of(f)));
     same(edges, range_walk(nav.edges_of(f)));
-    const auto across = checked_walk(around(m, f, HW_CIRC_FACES), hw_circ_next_face);
+    const auto across = checked_walk(around(m, f, HW_CIRCULATOR_KIND_FACES), hw_circ_next_face);
     same(across, range_walk(m.faces_across(f)));
     same(across, range_walk(nav.faces_across(f)));
   }
@@ -524,7 +532,7 @@ static void hole_filling() {
   try {
     box.fill_hole(hw_halfedge{0});
   } catch (const hw::error& e) {
-    refused = e.status() == HW_ERR_REFUSED;
+    refused = e.status() == hw::Status::Refused;
   }
   CHECK(refused && box.n_faces() == 12);
   // A flat square: its cap would lie on it facing the other way, a fold, so it is refused.

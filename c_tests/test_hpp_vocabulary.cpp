@@ -1,10 +1,12 @@
 // The C++ wrapper speaks the C vocabulary: the counterparts of the C functions that had none
 // (editing, views, one-pass normals, index maps, diagnostic edges, the doctor's vertex fans, the
-// winged kernel's bulk calls), the kind names, and ids usable as keys of the standard containers.
+// winged kernel's bulk calls), the scoped enumerations and their names, and ids usable as keys of
+// the standard containers.
 #include <cmath>
 #include <map>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <unordered_set>
 #include <vector>
 
@@ -16,7 +18,7 @@ static hw::mesh square() {
   return hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {3, 3}, {0, 1, 2, 0, 2, 3});
 }
 
-static bool refused_with(hw_status status, void (*call)()) {
+static bool refused_with(hw::Status status, void (*call)()) {
   try {
     call();
   } catch (const hw::error& e) {
@@ -54,16 +56,23 @@ static void library_wide_calls() {
                                     EXPECTED_VERSION_PATCH);
   hw::set_thread_count(1);
   hw::set_thread_count(0);
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::set_thread_count(HW_MAX_THREAD_COUNT + 1); }));
+  CHECK(refused_with(hw::Status::InvalidInput,
+                     [] { hw::set_thread_count(HW_MAX_THREAD_COUNT + 1); }));
 
-  CHECK(hw::diagnostic_list_name(HW_DIAG_ISOLATED_VERTICES) == "isolated vertices");
-  CHECK(hw::diagnostic_edges_name(HW_DIAG_INCONSISTENT_EDGES) == "inconsistently oriented edges");
-  CHECK(hw::doctor_finding_name(HW_DOCTOR_T_VERTICES) == "T-vertices");
-  // The three families have disjoint values: a value of one is unknown to the others.
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::doctor_finding_name(HW_DIAG_SKIPPED_FACES); }));
-  CHECK(refused_with(HW_ERR_INVALID_INPUT,
-                     [] { hw::diagnostic_list_name(HW_DIAG_NON_MANIFOLD_EDGES); }));
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] { hw::diagnostic_edges_name(HW_DOCTOR_CAPS); }));
+  CHECK(hw::name(hw::DiagnosticList::IsolatedVertices) == "isolated vertices");
+  CHECK(hw::name(hw::DiagnosticEdges::Inconsistent) == "inconsistently oriented edges");
+  CHECK(hw::name(hw::DoctorFinding::TVertices) == "T-vertices");
+  CHECK(hw::name(hw::Status::OutOfMemory) == hw_status_str(HW_ERR_OUT_OF_MEMORY));
+  // The three families have disjoint values: a value of one, cast to another, is unknown there.
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
+    hw::name(static_cast<hw::DoctorFinding>(hw::to_c(hw::DiagnosticList::SkippedFaces)));
+  }));
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
+    hw::name(static_cast<hw::DiagnosticList>(hw::to_c(hw::DiagnosticEdges::NonManifold)));
+  }));
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
+    hw::name(static_cast<hw::DiagnosticEdges>(hw::to_c(hw::DoctorFinding::Caps)));
+  }));
 }
 
 static void mesh_editing() {
@@ -77,7 +86,7 @@ static void mesh_editing() {
   const hw_halfedge diagonal = m.split_face(to_0, to_2);
   CHECK(m.n_faces() == 2 && m.n_edges() == 5);
   CHECK(m.origin(diagonal).idx == 0 && m.target(diagonal).idx == 2);
-  CHECK(refused_with(HW_ERR_REFUSED, [] {
+  CHECK(refused_with(hw::Status::Refused, [] {
     hw::mesh t = hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2});
     t.split_face(hw_halfedge{0}, t.next(hw_halfedge{0}));  // a side would have 2 corners
   }));
@@ -86,7 +95,7 @@ static void mesh_editing() {
   m.set_vertex_position(hw_vertex{2}, {2, 2, 0});
   CHECK(m.position(hw_vertex{2})[0] == 2);
   CHECK(m.view_positions()[6] == 2 && m.view_positions().size() == 12);
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::mesh t = square();
     t.set_vertex_position(hw_vertex{0}, {NAN, 0, 0});
   }));
@@ -117,18 +126,19 @@ static void deleting_and_index_maps() {
   m.delete_edge(diagonal, false);  // takes both faces, keeps the vertices
   CHECK(m.n_faces() == 0 && m.n_vertices() == 4);
   hw::index_maps maps = m.garbage_collect();
-  CHECK(maps.view(HW_ELEMENT_VERTEX).size() == 4 && maps.view(HW_ELEMENT_FACE).size() == 2);
-  CHECK(maps.view(HW_ELEMENT_FACE)[0] == HW_INVALID_INDEX);
-  CHECK(maps.view(HW_ELEMENT_VERTEX)[3] == 3);
+  CHECK(maps.view(hw::ElementKind::Vertex).size() == 4 &&
+        maps.view(hw::ElementKind::Face).size() == 2);
+  CHECK(maps.view(hw::ElementKind::Face)[0] == HW_INVALID_INDEX);
+  CHECK(maps.view(hw::ElementKind::Vertex)[3] == 3);
 
   hw::mesh n = square();
   n.delete_vertex(hw_vertex{1});  // only in the first triangle
   CHECK(n.n_faces() == 1 && n.n_vertices() == 3);
   const hw::index_maps compacted = n.garbage_collect();
-  const auto vertices = compacted.view(HW_ELEMENT_VERTEX);
+  const auto vertices = compacted.view(hw::ElementKind::Vertex);
   CHECK(vertices[0] == 0 && vertices[1] == HW_INVALID_INDEX && vertices[2] == 1 &&
         vertices[3] == 2);
-  CHECK(refused_with(HW_ERR_INVALID_HANDLE, [] { square().delete_vertex(hw_vertex{9}); }));
+  CHECK(refused_with(hw::Status::InvalidHandle, [] { square().delete_vertex(hw_vertex{9}); }));
 }
 
 static bool close(const std::vector<double>& a, const std::vector<double>& b) {
@@ -147,35 +157,37 @@ static void topology_views_and_normals() {
   CHECK(std::set<uint32_t>(components.begin(), components.end()).size() == m.n_components());
 
   // The connectivity views hold the arrays the navigation reads.
-  const auto next = m.view(HW_ARRAY_HALFEDGE_NEXT);
+  const auto next = m.view(hw::MeshArray::HalfedgeNext);
   CHECK(next.size() == m.n_halfedges());
   for (uint32_t h = 0; h < next.size(); h += 97) CHECK(next[h] == m.next(hw_halfedge{h}).idx);
 
   // One pass gives what the two separate calls give.
-  const auto both = m.normals(HW_WEIGHT_AREA);
+  const auto both = m.normals(hw::NormalWeighting::Area);
   CHECK(close(both.faces, m.face_normals()));
-  CHECK(close(both.vertices, m.vertex_normals(HW_WEIGHT_AREA)));
+  CHECK(close(both.vertices, m.vertex_normals(hw::NormalWeighting::Area)));
 }
 
 static void attribute_info() {
   hw::mesh m = square();
-  m.add_attribute<float>(HW_ELEMENT_VERTEX, "uv", 2);
-  const auto info = m.attribute_info(HW_ELEMENT_VERTEX, "uv");
-  CHECK(info.first == HW_SCALAR_F32 && info.second == 2);
-  CHECK(refused_with(HW_ERR_NOT_FOUND, [] { square().attribute_info(HW_ELEMENT_FACE, "none"); }));
+  m.add_attribute<float>(hw::ElementKind::Vertex, "uv", 2);
+  const auto info = m.attribute_info(hw::ElementKind::Vertex, "uv");
+  CHECK(info.first == hw::ScalarType::F32 && info.second == 2);
+  CHECK(refused_with(hw::Status::NotFound,
+                     [] { square().attribute_info(hw::ElementKind::Face, "none"); }));
 }
 
 static void diagnostic_edges_and_vertex_fans() {
   // Three triangles on edge 0-1.
   const std::vector<double> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
   const hw::diagnostic d = hw::diagnostic::of(positions, {3, 3, 3}, {0, 1, 2, 1, 0, 3, 0, 1, 4});
-  CHECK(d.edge_count(HW_DIAG_NON_MANIFOLD_EDGES) == 1);
-  const hw::diagnostic::edge_report edge = d.edge(HW_DIAG_NON_MANIFOLD_EDGES, 0);
+  CHECK(d.edge_count(hw::DiagnosticEdges::NonManifold) == 1);
+  const hw::diagnostic::edge_report edge = d.edge(hw::DiagnosticEdges::NonManifold, 0);
   CHECK(edge.vertices[0] == 0 && edge.vertices[1] == 1);
   CHECK((edge.faces == std::vector<uint32_t>{0, 1, 2}));
-  CHECK(hw::diagnostic().edge_count(HW_DIAG_NON_MANIFOLD_EDGES) == 0);
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
-    hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2}).edge(HW_DIAG_NON_MANIFOLD_EDGES, 0);
+  CHECK(hw::diagnostic().edge_count(hw::DiagnosticEdges::NonManifold) == 0);
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
+    hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2})
+        .edge(hw::DiagnosticEdges::NonManifold, 0);
   }));
 
   // Two triangles meeting at their corner 0 only: two fans there.
@@ -186,7 +198,7 @@ static void diagnostic_edges_and_vertex_fans() {
   const hw::doctor_report::vertex_fan_view second = report.vertex_fan(0, 1);
   CHECK(first.vertex == 0 && first.n_fans == 2 && second.vertex == 0);
   CHECK((first.faces == std::vector<uint32_t>{0} && second.faces == std::vector<uint32_t>{1}));
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::doctor_report::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2}).vertex_fan(0, 0);
   }));
 }
@@ -205,19 +217,19 @@ static void winged_bulk_calls() {
     CHECK(records[e].start.idx == order[2 * e] && records[e].end.idx == order[2 * e + 1]);
     CHECK(w.edge(hw_wedge{e}).start == records[e].start);
   }
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::winged::from_indexed_ordered({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2}, {0, 1, 1, 2});
   }));
 
-  const std::vector<double> faces = w.normals(HW_WNORMALS_FACES);
-  const std::vector<double> vertices = w.normals(HW_WNORMALS_VERTICES);
+  const std::vector<double> faces = w.normals(hw::WNormals::Faces);
+  const std::vector<double> vertices = w.normals(hw::WNormals::Vertices);
   CHECK(faces.size() == 12 && vertices.size() == 12);
   for (uint32_t f = 0; f < 4; ++f)
     for (int k = 0; k < 3; ++k) CHECK(faces[3 * f + k] == w.face_normal(hw_wface{f})[k]);
 
   w.set_position(hw_wvertex{3}, {0, 0, 2});
   CHECK(w.position(hw_wvertex{3})[2] == 2);
-  CHECK(refused_with(HW_ERR_INVALID_INPUT, [] {
+  CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::winged t = hw::winged::from_indexed({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2});
     t.set_position(hw_wvertex{0}, {INFINITY, 0, 0});
   }));
@@ -228,7 +240,55 @@ static void winged_bulk_calls() {
   const auto edge = k.mev(made.second, made.first, {1, 0, 0});
   k.kev(edge.first, edge.second);
   const hw::index_maps maps = k.garbage_collect();
-  CHECK(maps.view(HW_ELEMENT_VERTEX).size() == 2 && maps.view(HW_ELEMENT_VERTEX)[1] == HW_INVALID_INDEX);
+  CHECK(maps.view(hw::ElementKind::Vertex).size() == 2 &&
+        maps.view(hw::ElementKind::Vertex)[1] == HW_INVALID_INDEX);
+}
+
+// Each scoped enumeration is its C family: the same values, one family kept from another and from
+// plain integers by the compiler, and accepted or returned wherever the wrapper takes or gives one.
+static_assert(hw::to_c(hw::NormalWeighting::Angle) == HW_NORMAL_WEIGHTING_ANGLE);
+static_assert(hw::to_c(hw::Status::Ok) == HW_OK && hw::to_c(hw::Status::Io) == HW_ERR_IO);
+static_assert(hw::to_c(hw::DoctorFinding::SmallComponents) == HW_DOCTOR_FINDING_FIRST);
+static_assert(hw::to_c(hw::DiagnosticList::FacesTooSmall) == HW_DIAGNOSTIC_LIST_FIRST);
+static_assert(hw::to_c(hw::DiagnosticEdges::NonManifold) == HW_DIAGNOSTIC_EDGES_FIRST);
+static_assert(hw::to_c(hw::VoronoiEdgeKind::Line) == HW_VORONOI_EDGE_KIND_LINE);
+static_assert(hw::to_c(hw::WCirculatorKind::Faces) == HW_WCIRCULATOR_KIND_FACES);
+static_assert(!std::is_convertible_v<hw::DiagnosticList, hw::DoctorFinding>);
+static_assert(!std::is_convertible_v<hw_normal_weighting, hw::NormalWeighting>);
+static_assert(!std::is_convertible_v<hw::Shading, hw_shading>);
+
+static void scoped_enumerations() {
+  // A C value converts explicitly and comes back unchanged.
+  CHECK(static_cast<hw::Shading>(HW_SHADING_CREASE) == hw::Shading::Crease);
+  CHECK(hw::to_c(static_cast<hw::RenderFloats>(HW_RENDER_FLOATS_WIREFRAME)) ==
+        HW_RENDER_FLOATS_WIREFRAME);
+
+  // The wrapper's call with the scoped value is the C call with the C value.
+  const hw::mesh m = square();
+  std::vector<double> by_c(3 * hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_VERTEX));
+  CHECK(hw_mesh_vertex_normals(m.get(), HW_NORMAL_WEIGHTING_ANGLE, by_c.data(), by_c.size() / 3,
+                               nullptr) == HW_OK);
+  CHECK(m.vertex_normals(hw::NormalWeighting::Angle) == by_c);
+  CHECK(m.visit(hw::ElementKind::Face, [](uint32_t) {}) == m.n_faces());
+
+  // Returned values are scoped too.
+  const hw::voronoi line({{0, 0}, {1, 0}, {2, 0}});
+  CHECK(line.dimension() == hw::SiteDimension::Line);
+  bool thrown = false;
+  try {
+    hw::mesh::read("no such file.obj", hw::BuildPolicy::Skip);
+  } catch (const hw::error& e) {
+    thrown = e.status() == hw::Status::Io && hw::name(e.status()) == hw_status_str(HW_ERR_IO);
+  }
+  CHECK(thrown);
+
+  // A value outside its family, forced in by a cast, is refused by the library as in C.
+  CHECK(refused_with(hw::Status::InvalidInput,
+                     [] { square().vertex_normals(static_cast<hw::NormalWeighting>(7)); }));
+  // Every doctor finding has a name; a C loop over the family reads the same names.
+  for (hw_doctor_finding kind = HW_DOCTOR_FINDING_FIRST;
+       kind < HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT; ++kind)
+    CHECK(hw::name(static_cast<hw::DoctorFinding>(kind)) == hw_doctor_finding_name(kind));
 }
 
 int main() {
@@ -240,5 +300,6 @@ int main() {
   attribute_info();
   diagnostic_edges_and_vertex_fans();
   winged_bulk_calls();
+  scoped_enumerations();
   return check_summary("test_hpp_vocabulary");
 }

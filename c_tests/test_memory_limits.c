@@ -40,15 +40,15 @@ static void builds_larger_than_memory(const double *zeros) {
   const uint32_t triangle[3] = {0, 1, 2};
   const size_t n_vertices = 500000000; /* 12 GB of positions, 20 GB to build */
 
-  CHECK_STATUS(hw_surface_grid(1.0, 1.0, 20000, 20000, HW_CELLS_QUADS, &mesh),
+  CHECK_STATUS(hw_surface_grid(1.0, 1.0, 20000, 20000, HW_CELL_FACES_QUADS, &mesh),
                HW_ERR_OUT_OF_MEMORY, "cannot allocate 9.6 GB for 400040001 vertices");
   CHECK(mesh == NULL);
-  CHECK_STATUS(hw_mesh_from_indexed(zeros, n_vertices, sizes, 1, triangle, 3, HW_BUILD_REPAIR,
-                                    &mesh, &diagnostic),
+  CHECK_STATUS(hw_mesh_from_indexed(zeros, n_vertices, sizes, 1, triangle, 3,
+                                    HW_BUILD_POLICY_REPAIR, &mesh, &diagnostic),
                HW_ERR_OUT_OF_MEMORY, "cannot allocate 20.0 GB for 500000000 vertices");
   CHECK(mesh == NULL && diagnostic == NULL);
-  CHECK_STATUS(hw_winged_from_indexed(zeros, n_vertices, sizes, 1, triangle, 3, HW_BUILD_STRICT,
-                                      &winged, NULL),
+  CHECK_STATUS(hw_winged_from_indexed(zeros, n_vertices, sizes, 1, triangle, 3,
+                                      HW_BUILD_POLICY_STRICT, &winged, NULL),
                HW_ERR_OUT_OF_MEMORY, "cannot allocate");
   CHECK(winged == NULL);
   CHECK_STATUS(hw_doctor_examine_indexed(zeros, n_vertices, sizes, 1, triangle, 3, NULL, &report),
@@ -97,7 +97,7 @@ static void lying_header(void) {
   /* A billion vertices declared (24 GB), three given. */
   fputs("OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", file);
   fclose(file);
-  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_PARSE, "vertices");
+  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, &mesh, NULL), HW_ERR_PARSE, "vertices");
   CHECK(mesh == NULL);
 }
 
@@ -118,7 +118,7 @@ static int child(void) {
   lying_header();
 
   /* Still usable under the same limit. */
-  CHECK(hw_surface_grid(1.0, 1.0, 8, 8, HW_CELLS_TRIANGLES, &mesh) == HW_OK);
+  CHECK(hw_surface_grid(1.0, 1.0, 8, 8, HW_CELL_FACES_TRIANGLES, &mesh) == HW_OK);
   CHECK(mesh != NULL && hw_mesh_n_faces(mesh) == 128);
   hw_mesh_free(mesh);
   return check_summary("test_memory_limits (child)");

@@ -13,8 +13,8 @@ static const uint32_t tet_indices[] = {0, 1, 3, 1, 2, 3, 0, 3, 2, 0, 2, 1};
 
 static hw_mesh *build_tetrahedron(void) {
   hw_mesh *mesh = NULL;
-  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   return mesh;
 }
 
@@ -40,12 +40,13 @@ static void empty_mesh(void) {
     size_t n = 7;
     CHECK(hw_mesh_view_positions(mesh, &xyz, &n) == HW_OK && xyz == NULL && n == 0);
     n = 7;
-    CHECK(hw_mesh_view(mesh, HW_ARRAY_HALFEDGE_ORIGIN, &origins, &n) == HW_OK && origins == NULL &&
-          n == 0);
+    CHECK(hw_mesh_view(mesh, HW_MESH_ARRAY_HALFEDGE_ORIGIN, &origins, &n) == HW_OK &&
+          origins == NULL && n == 0);
   }
   hw_mesh_free(mesh);
   /* An empty face list is an empty mesh, not an error; NULL arrays are fine with zero counts. */
-  CHECK(hw_mesh_from_indexed(NULL, 0, NULL, 0, NULL, 0, HW_BUILD_STRICT, &built, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(NULL, 0, NULL, 0, NULL, 0, HW_BUILD_POLICY_STRICT, &built, NULL) ==
+        HW_OK);
   CHECK(built != NULL && hw_mesh_n_faces(built) == 0);
   hw_mesh_free(built);
 }
@@ -56,16 +57,16 @@ static void empty_mesh(void) {
 static void null_arguments(void) {
   hw_mesh *mesh = SENTINEL;
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12,
-                                    HW_BUILD_STRICT, NULL, NULL),
+                                    HW_BUILD_POLICY_STRICT, NULL, NULL),
                HW_ERR_NULL_ARGUMENT, "out_mesh");
-  CHECK_STATUS(hw_mesh_from_indexed(NULL, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_STRICT,
+  CHECK_STATUS(hw_mesh_from_indexed(NULL, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_POLICY_STRICT,
                                     &mesh, NULL),
                HW_ERR_NULL_ARGUMENT, "positions");
-  CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, NULL, 4, tet_indices, 12, HW_BUILD_STRICT,
-                                    &mesh, NULL),
+  CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, NULL, 4, tet_indices, 12,
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_NULL_ARGUMENT, "face_sizes");
-  CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, NULL, 12, HW_BUILD_STRICT,
-                                    &mesh, NULL),
+  CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, NULL, 12,
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_NULL_ARGUMENT, "indices");
   CHECK(mesh == SENTINEL);
   CHECK(hw_mesh_n_vertices(NULL) == 0);
@@ -86,25 +87,25 @@ static void malformed_face_data(void) {
   nan_positions[4] = nan("");
 
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, out_of_range, 12,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "out-of-range vertex indices: f1");
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, repeated, 12,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "repeated vertex: f0");
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, short_sizes, 4, tet_indices, 12,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "fewer than 3 corners: f2");
   CHECK_STATUS(hw_mesh_from_indexed(nan_positions, 4, tet_sizes, 4, tet_indices, 12,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "coordinates: v1");
   /* Sizes that do not add up to the number of indices. */
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 11,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "11");
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 99u, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "policy");
   CHECK_STATUS(hw_mesh_from_indexed(tet_positions, SIZE_MAX, tet_sizes, 4, tet_indices, 12,
-                                    HW_BUILD_STRICT, &mesh, NULL),
+                                    HW_BUILD_POLICY_STRICT, &mesh, NULL),
                HW_ERR_INVALID_INPUT, "n_vertices");
   CHECK(mesh == SENTINEL);
 }
@@ -115,16 +116,18 @@ static void non_manifold_edge_policies(void) {
   static const uint32_t sizes[] = {3, 3, 3};
   static const uint32_t indices[] = {0, 1, 2, 1, 0, 3, 0, 1, 4};
   hw_mesh *mesh = SENTINEL;
-  CHECK_STATUS(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_STRICT, &mesh, NULL),
-               HW_ERR_NON_MANIFOLD, "non-manifold");
+  CHECK_STATUS(
+      hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_POLICY_STRICT, &mesh, NULL),
+      HW_ERR_NON_MANIFOLD, "non-manifold");
   CHECK(mesh == SENTINEL);
   mesh = NULL;
-  CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_SKIP, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_POLICY_SKIP, &mesh,
+                             NULL) == HW_OK);
   CHECK(mesh != NULL && hw_mesh_n_faces(mesh) == 2);
   hw_mesh_free(mesh);
   mesh = NULL;
-  CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh, NULL) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_POLICY_REPAIR, &mesh,
+                             NULL) == HW_OK);
   CHECK(mesh != NULL && hw_mesh_n_faces(mesh) == 3);
   hw_mesh_free(mesh);
 }

@@ -36,9 +36,18 @@ static size_t read_checked(hw_circulator *c, hw_circulator_kind kind, walks *w) 
     int more;
     uint32_t id;
     switch (kind) {
-      case HW_CIRC_VERTICES: more = hw_circ_next_vertex(c, &v); id = v.idx; break;
-      case HW_CIRC_EDGES: more = hw_circ_next_edge(c, &e); id = e.idx; break;
-      case HW_CIRC_FACES: more = hw_circ_next_face(c, &f); id = f.idx; break;
+      case HW_CIRCULATOR_KIND_VERTICES:
+        more = hw_circ_next_vertex(c, &v);
+        id = v.idx;
+        break;
+      case HW_CIRCULATOR_KIND_EDGES:
+        more = hw_circ_next_edge(c, &e);
+        id = e.idx;
+        break;
+      case HW_CIRCULATOR_KIND_FACES:
+        more = hw_circ_next_face(c, &f);
+        id = f.idx;
+        break;
       default: more = hw_circ_next_halfedge(c, &h); id = h.idx; break;
     }
     if (!more || n == w->capacity) return n;
@@ -57,10 +66,22 @@ static size_t read_inline(hw_nav_circ c, hw_circulator_kind kind, walks *w) {
     int more;
     uint32_t id;
     switch (kind) {
-      case HW_CIRC_INCOMING: more = hw_nav_circ_next_incoming(&c, &h); id = h.idx; break;
-      case HW_CIRC_VERTICES: more = hw_nav_circ_next_vertex(&c, &v); id = v.idx; break;
-      case HW_CIRC_EDGES: more = hw_nav_circ_next_edge(&c, &e); id = e.idx; break;
-      case HW_CIRC_FACES: more = hw_nav_circ_next_face(&c, &f); id = f.idx; break;
+      case HW_CIRCULATOR_KIND_INCOMING:
+        more = hw_nav_circ_next_incoming(&c, &h);
+        id = h.idx;
+        break;
+      case HW_CIRCULATOR_KIND_VERTICES:
+        more = hw_nav_circ_next_vertex(&c, &v);
+        id = v.idx;
+        break;
+      case HW_CIRCULATOR_KIND_EDGES:
+        more = hw_nav_circ_next_edge(&c, &e);
+        id = e.idx;
+        break;
+      case HW_CIRCULATOR_KIND_FACES:
+        more = hw_nav_circ_next_face(&c, &f);
+        id = f.idx;
+        break;
       default: more = hw_nav_circ_next_halfedge(&c, &h); id = h.idx; break;
     }
     if (!more || n == w->capacity) return n;
@@ -88,21 +109,21 @@ static void vertices_walk_alike(const hw_mesh *mesh, const hw_nav *nav, walks *w
     hw_vertex vertex = {v};
     hw_circulator c;
     size_t n_ring, i;
-    if (hw_circ_around_vertex(mesh, vertex, HW_CIRC_HALFEDGES, &c) != HW_OK) {
+    if (hw_circ_around_vertex(mesh, vertex, HW_CIRCULATOR_KIND_HALFEDGES, &c) != HW_OK) {
       CHECK(hw_nav_vertex_is_deleted(nav, vertex));
-      CHECK(read_inline(hw_nav_around_vertex(nav, vertex), HW_CIRC_HALFEDGES, w) == 0);
+      CHECK(read_inline(hw_nav_around_vertex(nav, vertex), HW_CIRCULATOR_KIND_HALFEDGES, w) == 0);
       continue;
     }
     CHECK(!hw_nav_vertex_is_deleted(nav, vertex));
     CHECK(hw_nav_vertex_halfedge(nav, vertex).idx == hw_mesh_vertex_halfedge(mesh, vertex).idx);
-    for (kind = HW_CIRC_HALFEDGES; kind <= HW_CIRC_FACES; ++kind) {
+    for (kind = HW_CIRCULATOR_KIND_HALFEDGES; kind <= HW_CIRCULATOR_KIND_FACES; ++kind) {
       CHECK(hw_circ_around_vertex(mesh, vertex, kind, &c) == HW_OK);
       n_ring = read_checked(&c, kind, w);
       CHECK(same_walk(w, n_ring, read_inline(hw_nav_around_vertex(nav, vertex), kind, w)));
     }
     /* The next/twin loop of the textbooks, written by hand over the inline steps. */
-    CHECK(hw_circ_around_vertex(mesh, vertex, HW_CIRC_HALFEDGES, &c) == HW_OK);
-    n_ring = read_checked(&c, HW_CIRC_HALFEDGES, w);
+    CHECK(hw_circ_around_vertex(mesh, vertex, HW_CIRCULATOR_KIND_HALFEDGES, &c) == HW_OK);
+    n_ring = read_checked(&c, HW_CIRCULATOR_KIND_HALFEDGES, w);
     {
       hw_halfedge start = hw_nav_vertex_halfedge(nav, vertex), h = start;
       size_t n = 0;
@@ -116,7 +137,7 @@ static void vertices_walk_alike(const hw_mesh *mesh, const hw_nav *nav, walks *w
     /* From each of its outgoing half-edges: the same ring, rotated to start there. */
     for (i = 0; i < n_ring; ++i) {
       hw_halfedge from = {w->checked[i]};
-      size_t k, n = read_inline(hw_nav_around_origin(nav, from), HW_CIRC_HALFEDGES, w);
+      size_t k, n = read_inline(hw_nav_around_origin(nav, from), HW_CIRCULATOR_KIND_HALFEDGES, w);
       int rotated = n == n_ring;
       for (k = 0; rotated && k < n; ++k) rotated = w->inline_[k] == w->checked[(i + k) % n_ring];
       CHECK(rotated);
@@ -131,14 +152,14 @@ static void faces_walk_alike(const hw_mesh *mesh, const hw_nav *nav, walks *w) {
   for (f = 0; f < nav->n_face_slots; ++f) {
     hw_face face = {f};
     hw_circulator c;
-    if (hw_circ_around_face(mesh, face, HW_CIRC_HALFEDGES, &c) != HW_OK) {
+    if (hw_circ_around_face(mesh, face, HW_CIRCULATOR_KIND_HALFEDGES, &c) != HW_OK) {
       CHECK(hw_nav_face_is_deleted(nav, face));
       continue;
     }
     CHECK(!hw_nav_face_is_deleted(nav, face));
     CHECK(hw_nav_face_halfedge(nav, face).idx == hw_mesh_face_halfedge(mesh, face).idx);
-    for (kind = HW_CIRC_HALFEDGES; kind <= HW_CIRC_FACES; ++kind) {
-      if (kind == HW_CIRC_INCOMING) continue; /* a vertex-only kind */
+    for (kind = HW_CIRCULATOR_KIND_HALFEDGES; kind <= HW_CIRCULATOR_KIND_FACES; ++kind) {
+      if (kind == HW_CIRCULATOR_KIND_INCOMING) continue; /* a vertex-only kind */
       CHECK(hw_circ_around_face(mesh, face, kind, &c) == HW_OK);
       {
         size_t n = read_checked(&c, kind, w);
@@ -170,8 +191,9 @@ static void halfedges_step_alike(const hw_mesh *mesh, const hw_nav *nav, walks *
     CHECK(hw_nav_is_boundary(nav, h) == hw_mesh_he_is_boundary(mesh, h));
     CHECK(hw_circ_along_loop(mesh, h, &c) == HW_OK);
     {
-      size_t n = read_checked(&c, HW_CIRC_HALFEDGES, w);
-      CHECK(same_walk(w, n, read_inline(hw_nav_along_loop(nav, h), HW_CIRC_HALFEDGES, w)));
+      size_t n = read_checked(&c, HW_CIRCULATOR_KIND_HALFEDGES, w);
+      CHECK(
+          same_walk(w, n, read_inline(hw_nav_along_loop(nav, h), HW_CIRCULATOR_KIND_HALFEDGES, w)));
     }
   }
 }
@@ -184,9 +206,9 @@ static size_t inline_matches_checked(const hw_mesh *mesh) {
   size_t boundary = 0;
   uint32_t h;
   CHECK(hw_mesh_nav(mesh, &nav) == HW_OK);
-  CHECK(nav.n_vertex_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_VERTEX));
-  CHECK(nav.n_halfedge_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE));
-  CHECK(nav.n_face_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_FACE));
+  CHECK(nav.n_vertex_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX));
+  CHECK(nav.n_halfedge_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE));
+  CHECK(nav.n_face_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE));
   w = walks_new(nav.n_halfedge_slots);
   vertices_walk_alike(mesh, &nav, &w);
   faces_walk_alike(mesh, &nav, &w);
@@ -204,7 +226,7 @@ static hw_mesh *read_model(const char *relative) {
   char path[1024];
   hw_mesh *mesh = NULL;
   snprintf(path, sizeof path, "%s/meshes/%s", HALFWING_DATA_DIR, relative);
-  CHECK(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   return mesh;
 }
 
@@ -242,7 +264,7 @@ static void after_edits_and_garbage_collection(void) {
   hw_vertex isolated;
   const double xyz[3] = {0.25, 0.5, 0.75};
   if (!mesh) return;
-  n_faces = (uint32_t)hw_mesh_slot_count(mesh, HW_ELEMENT_FACE);
+  n_faces = (uint32_t)hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE);
   /* Holes: every 37th face, dropping the vertices they isolate. */
   for (f = 0; f < n_faces; f += 37) {
     hw_face face = {f};

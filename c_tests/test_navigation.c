@@ -33,8 +33,8 @@ static void seed_half_edge_table(void) {
   hw_vertex v;
   uint32_t cycle[8];
   size_t n = 0, needed = 0, f;
-  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   CHECK(hw_mesh_n_vertices(mesh) == 7 && hw_mesh_n_faces(mesh) == 6);
   CHECK(hw_mesh_n_halfedges(mesh) == 24); /* 18 inside + 6 on the boundary, as in the table */
   CHECK(hw_mesh_check(mesh) == HW_OK);
@@ -43,7 +43,7 @@ static void seed_half_edge_table(void) {
   for (f = 0; f < 6; ++f) {
     hw_face face = {(uint32_t)f};
     n = 0;
-    CHECK(hw_circ_around_face(mesh, face, HW_CIRC_VERTICES, &c) == HW_OK);
+    CHECK(hw_circ_around_face(mesh, face, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
     while (n < 8 && hw_circ_next_vertex(&c, &v)) cycle[n++] = v.idx;
     CHECK(n == 3 && same_cycle(cycle, seed_faces + 3 * f, 3));
   }
@@ -131,7 +131,7 @@ static void seed_loops_on(const char *relative) {
   CHECK(hw_soup_read(path, &soup) == HW_OK);
   CHECK(hw_soup_view(soup, &xyz, &n_vertices, &sizes, &n_faces, &corners, &n_corners) == HW_OK);
   CHECK(hw_mesh_from_indexed(xyz, n_vertices, sizes, n_faces, corners, n_corners,
-                             HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   if (mesh == NULL) {
     fprintf(stderr, "  %s did not build\n", relative);
     hw_soup_free(soup);
@@ -148,7 +148,7 @@ static void seed_loops_on(const char *relative) {
     hw_face g;
     CHECK(count_sides(mesh, i) == sizes[f]);
     CHECK(hw_mesh_face_degree(mesh, face) == sizes[f]);
-    CHECK(hw_circ_around_face(mesh, face, HW_CIRC_FACES, &c) == HW_OK);
+    CHECK(hw_circ_around_face(mesh, face, HW_CIRCULATOR_KIND_FACES, &c) == HW_OK);
     while (hw_circ_next_face(&c, &g)) expected_adjacent++;
     CHECK(adjacent == expected_adjacent);
   }
@@ -210,9 +210,9 @@ static void views_walk_like_circulators(void) {
   const double *xyz;
   size_t n_halfedges, n_vertices, n_positions, v, from_views = 0, from_circulators = 0;
   snprintf(path, sizeof path, "%s/meshes/open/cgal_elephant-with-holes.off", HALFWING_DATA_DIR);
-  CHECK(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
-  CHECK(hw_mesh_view(mesh, HW_ARRAY_HALFEDGE_PREV, &prev, &n_halfedges) == HW_OK);
-  CHECK(hw_mesh_view(mesh, HW_ARRAY_VERTEX_HALFEDGE, &vertex_halfedge, &n_vertices) == HW_OK);
+  CHECK(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_view(mesh, HW_MESH_ARRAY_HALFEDGE_PREV, &prev, &n_halfedges) == HW_OK);
+  CHECK(hw_mesh_view(mesh, HW_MESH_ARRAY_VERTEX_HALFEDGE, &vertex_halfedge, &n_vertices) == HW_OK);
   CHECK(hw_mesh_view_positions(mesh, &xyz, &n_positions) == HW_OK);
   CHECK(n_halfedges == hw_mesh_n_halfedges(mesh) && n_vertices == n_positions);
   for (v = 0; v < n_vertices; ++v) {
@@ -224,7 +224,7 @@ static void views_walk_like_circulators(void) {
         from_views++;
         h = prev[h] ^ 1u;
       } while (h != start);
-    CHECK(hw_circ_around_vertex(mesh, vertex, HW_CIRC_HALFEDGES, &c) == HW_OK);
+    CHECK(hw_circ_around_vertex(mesh, vertex, HW_CIRCULATOR_KIND_HALFEDGES, &c) == HW_OK);
     while (hw_circ_next_halfedge(&c, &out)) from_circulators++;
   }
   CHECK(from_views == from_circulators && from_views == n_halfedges);
@@ -246,8 +246,8 @@ static void bad_arguments(void) {
   size_t len = 0, count = 0;
   double xyz[3];
   const double nan_xyz[3] = {0.0, 0.0, 0.0 / 0.0 * 0.0};
-  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   CHECK(hw_mesh_he_next(mesh, bad).idx == HW_INVALID_INDEX);
   CHECK(last_error_contains("half-edge id 99 is out of range"));
   CHECK(hw_mesh_he_origin(mesh, invalid).idx == HW_INVALID_INDEX);
@@ -261,14 +261,14 @@ static void bad_arguments(void) {
   CHECK(!hw_mesh_he_is_boundary(mesh, bad) && !hw_mesh_vertex_is_boundary(mesh, bad_vertex));
   CHECK(hw_mesh_vertex_valence(mesh, bad_vertex) == 0 && hw_mesh_face_degree(mesh, bad_face) == 0);
 
-  CHECK_STATUS(hw_circ_around_vertex(mesh, bad_vertex, HW_CIRC_VERTICES, &c),
+  CHECK_STATUS(hw_circ_around_vertex(mesh, bad_vertex, HW_CIRCULATOR_KIND_VERTICES, &c),
                HW_ERR_INVALID_HANDLE, "vertex id 7");
   CHECK_STATUS(hw_circ_around_vertex(mesh, v, 77u, &c), HW_ERR_INVALID_INPUT, "kind 77");
-  CHECK_STATUS(hw_circ_around_face(mesh, face0, HW_CIRC_INCOMING, &c),
+  CHECK_STATUS(hw_circ_around_face(mesh, face0, HW_CIRCULATOR_KIND_INCOMING, &c),
                HW_ERR_INVALID_INPUT, "does not apply");
-  CHECK_STATUS(hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, NULL), HW_ERR_NULL_ARGUMENT,
-               "out");
-  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, &c) == HW_OK);
+  CHECK_STATUS(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, NULL),
+               HW_ERR_NULL_ARGUMENT, "out");
+  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   CHECK(!hw_circ_next_face(&c, &out_face)); /* wrong kind */
   CHECK(last_error_contains("read as kind"));
   CHECK(!hw_circ_next_vertex(NULL, &out_vertex));
@@ -278,7 +278,7 @@ static void bad_arguments(void) {
   CHECK(!hw_circ_next_vertex(&c, &out_vertex));
 
   CHECK_STATUS(hw_mesh_view(mesh, 42u, &data, &len), HW_ERR_INVALID_INPUT, "array 42");
-  CHECK_STATUS(hw_mesh_view(mesh, HW_ARRAY_HALFEDGE_NEXT, NULL, &len), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_mesh_view(mesh, HW_MESH_ARRAY_HALFEDGE_NEXT, NULL, &len), HW_ERR_NULL_ARGUMENT,
                "out_data");
   CHECK_STATUS(hw_mesh_n_boundary_loops(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_boundary_loops(mesh, NULL, 0, &count), HW_ERR_BUFFER_TOO_SMALL, "needed");
@@ -300,21 +300,21 @@ static void circulator_bad_arguments(void) {
   hw_edge out_e = {4242};
   hw_face out_f = {4242};
   hw_circulator c, before, by_edge, by_face, by_halfedge;
-  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   memset(&c, 0xab, sizeof c);
   before = c;
   CHECK_STATUS(hw_circ_along_loop(NULL, h0, &c), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_circ_along_loop(mesh, h0, NULL), HW_ERR_NULL_ARGUMENT, "out");
-  CHECK_STATUS(hw_circ_around_face(NULL, face0, HW_CIRC_VERTICES, &c), HW_ERR_NULL_ARGUMENT,
-               "mesh");
-  CHECK_STATUS(hw_circ_around_face(mesh, face0, HW_CIRC_VERTICES, NULL), HW_ERR_NULL_ARGUMENT,
-               "out");
+  CHECK_STATUS(hw_circ_around_face(NULL, face0, HW_CIRCULATOR_KIND_VERTICES, &c),
+               HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_circ_around_face(mesh, face0, HW_CIRCULATOR_KIND_VERTICES, NULL),
+               HW_ERR_NULL_ARGUMENT, "out");
   CHECK(memcmp(&c, &before, sizeof c) == 0);
 
-  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_EDGES, &by_edge) == HW_OK);
-  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_FACES, &by_face) == HW_OK);
-  CHECK(hw_circ_around_face(mesh, face0, HW_CIRC_HALFEDGES, &by_halfedge) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRCULATOR_KIND_EDGES, &by_edge) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRCULATOR_KIND_FACES, &by_face) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, face0, HW_CIRCULATOR_KIND_HALFEDGES, &by_halfedge) == HW_OK);
   CHECK(!hw_circ_next_edge(NULL, &out_e) && last_error_contains("circulator"));
   CHECK(!hw_circ_next_face(NULL, &out_f) && last_error_contains("circulator"));
   CHECK(!hw_circ_next_halfedge(NULL, &out_h) && last_error_contains("circulator"));
@@ -342,8 +342,8 @@ static void whole_mesh_query_bad_arguments(void) {
   double normals[3 * 24];
   const double *xyz = NULL;
   size_t needed = 4242, count = 4242, face_needed = 4242, vertex_needed = 4242, corner_slots, i;
-  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(seed_positions, 7, seed_sizes, 6, seed_faces, 18,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   memset(normals, 0, sizeof normals);
   CHECK_STATUS(hw_mesh_boundary_loops(NULL, loops, 2, &needed), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK(loops[0].idx == 4242 && needed == 4242);
@@ -353,7 +353,7 @@ static void whole_mesh_query_bad_arguments(void) {
   CHECK_STATUS(hw_mesh_face_components(NULL, components, 8, &needed), HW_ERR_NULL_ARGUMENT,
                "mesh");
   CHECK(components[0] == 77 && needed == 4242);
-  CHECK(hw_mesh_slot_count(NULL, HW_ELEMENT_VERTEX) == 0 && last_error_contains("mesh"));
+  CHECK(hw_mesh_slot_count(NULL, HW_ELEMENT_KIND_VERTEX) == 0 && last_error_contains("mesh"));
   CHECK(hw_mesh_slot_count(mesh, 9u) == 0 && last_error_contains("kind 9"));
   CHECK_STATUS(hw_mesh_view_positions(NULL, &xyz, &count), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_view_positions(mesh, NULL, &count), HW_ERR_NULL_ARGUMENT, "out_xyz");
@@ -362,19 +362,19 @@ static void whole_mesh_query_bad_arguments(void) {
   CHECK(xyz == NULL && count == 4242);
 
   CHECK_STATUS(hw_mesh_face_normals(NULL, normals, 6, &needed), HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_normals(NULL, HW_WEIGHT_UNIFORM, normals, 6, &face_needed, normals + 18,
-                               7, &vertex_needed),
+  CHECK_STATUS(hw_mesh_normals(NULL, HW_NORMAL_WEIGHTING_UNIFORM, normals, 6, &face_needed,
+                               normals + 18, 7, &vertex_needed),
                HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_normals(mesh, 5u, normals, 6, &face_needed, normals + 18, 7,
                                &vertex_needed),
                HW_ERR_INVALID_INPUT, "unknown normal weighting 5");
   CHECK(needed == 4242 && face_needed == 4242 && vertex_needed == 4242);
   /* Too small: the needed sizes come back, the arrays stay untouched. */
-  CHECK_STATUS(hw_mesh_normals(mesh, HW_WEIGHT_UNIFORM, normals, 6, &face_needed, normals + 18,
-                               6, &vertex_needed),
+  CHECK_STATUS(hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_UNIFORM, normals, 6, &face_needed,
+                               normals + 18, 6, &vertex_needed),
                HW_ERR_BUFFER_TOO_SMALL, "7 are needed");
   CHECK(face_needed == 6 && vertex_needed == 7);
-  corner_slots = hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE);
+  corner_slots = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE);
   CHECK(corner_slots == 24);
   CHECK_STATUS(hw_mesh_corner_normals(mesh, 0.5, normals, corner_slots - 1, &needed),
                HW_ERR_BUFFER_TOO_SMALL, "24 are needed");
@@ -392,15 +392,16 @@ static void bad_files(void) {
                "cannot open '/nonexistent/file.off'");
   CHECK_STATUS(hw_soup_read("model.xyz", &soup), HW_ERR_INVALID_INPUT, "xyz");
   snprintf(path, sizeof path, "%s/meshes/broken/tobj_invalid_index.obj", HALFWING_DATA_DIR);
-  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_PARSE, "line 12");
+  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, &mesh, NULL), HW_ERR_PARSE, "line 12");
   CHECK(soup == NULL && mesh == NULL);
   hw_soup_free(NULL);
 
   /* NULL for each pointer of the file calls; a bad policy; a soup freed twice. */
   snprintf(path, sizeof path, "%s/meshes/closed/lapy_torus.off", HALFWING_DATA_DIR);
   CHECK_STATUS(hw_soup_read(path, NULL), HW_ERR_NULL_ARGUMENT, "out_soup");
-  CHECK_STATUS(hw_mesh_read(NULL, HW_BUILD_STRICT, &mesh, NULL), HW_ERR_NULL_ARGUMENT, "path");
-  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_STRICT, NULL, NULL), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_mesh_read(NULL, HW_BUILD_POLICY_STRICT, &mesh, NULL), HW_ERR_NULL_ARGUMENT,
+               "path");
+  CHECK_STATUS(hw_mesh_read(path, HW_BUILD_POLICY_STRICT, NULL, NULL), HW_ERR_NULL_ARGUMENT,
                "out_mesh");
   CHECK_STATUS(hw_mesh_read(path, 7u, &mesh, NULL), HW_ERR_INVALID_INPUT, "policy 7");
   CHECK(mesh == NULL);

@@ -44,22 +44,22 @@ static void shading_modes_split_vertices(void) {
   CHECK(options.shading == HW_SHADING_CORNER_NORMALS && options.corner_normals == NULL);
   buffers = build(mesh, NULL); /* NULL options: the defaults (no corner normals: smooth) */
   CHECK(hw_render_buffers_n_vertices(buffers) == 8);
-  CHECK(float_count(buffers, HW_RENDER_POSITIONS) == 24);
-  CHECK(float_count(buffers, HW_RENDER_NORMALS) == 24);
-  CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
-  CHECK(float_count(buffers, HW_RENDER_INTERLEAVED) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_POSITIONS) == 24);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_NORMALS) == 24);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_UVS) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_INTERLEAVED) == 0);
   CHECK(hw_render_buffers_stride(buffers) == 0);
-  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 36);
-  CHECK(index_count(buffers, HW_RENDER_TRIANGLE_FACES) == 12);
-  CHECK(index_count(buffers, HW_RENDER_VERTEX_SOURCES) == 8);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_TRIANGLES) == 36);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_TRIANGLE_FACES) == 12);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_VERTEX_SOURCES) == 8);
   /* Lines: 12 edges, no boundary, no diagnostic given; glyphs for 8 vertices and 6 faces. */
-  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 12 * 6);
-  CHECK(index_count(buffers, HW_RENDER_WIREFRAME_SOURCES) == 12);
-  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 0);
-  CHECK(index_count(buffers, HW_RENDER_BOUNDARY_SOURCES) == 0);
-  CHECK(float_count(buffers, HW_RENDER_NON_MANIFOLD) == 0);
-  CHECK(float_count(buffers, HW_RENDER_VERTEX_NORMALS) == 8 * 6);
-  CHECK(float_count(buffers, HW_RENDER_FACE_NORMALS) == 6 * 6);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_WIREFRAME) == 12 * 6);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_WIREFRAME_SOURCES) == 12);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_BOUNDARY) == 0);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_BOUNDARY_SOURCES) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_NON_MANIFOLD) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_VERTEX_NORMALS) == 8 * 6);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_FACE_NORMALS) == 6 * 6);
   hw_render_buffers_free(buffers);
 
   options.shading = HW_SHADING_FLAT;
@@ -82,7 +82,7 @@ static void shading_modes_split_vertices(void) {
 static void interleaved_layout_with_corner_attributes(void) {
   hw_mesh *mesh = unit_cube();
   hw_render_options options = hw_render_options_default();
-  size_t slots = hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE), h;
+  size_t slots = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE), h;
   double normals[24 * 3], uvs[24 * 2];
   const float *data = NULL;
   size_t n = 0, r;
@@ -102,8 +102,9 @@ static void interleaved_layout_with_corner_attributes(void) {
   buffers = build(mesh, &options);
   CHECK(hw_render_buffers_stride(buffers) == 8);
   CHECK(hw_render_buffers_n_vertices(buffers) == 24);
-  CHECK(float_count(buffers, HW_RENDER_POSITIONS) == 0);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_INTERLEAVED, &data, &n) == HW_OK && n == 24 * 8);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_POSITIONS) == 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_INTERLEAVED, &data, &n) == HW_OK &&
+        n == 24 * 8);
   for (r = 0; data != NULL && r < 24; ++r) {
     CHECK(data[8 * r + 5] == 1.0f && data[8 * r + 7] == 0.25f);
     CHECK(fabsf(data[8 * r]) == 0.5f); /* the unit cube spans -0.5 .. 0.5 */
@@ -132,9 +133,9 @@ static void mesh_corner_attributes_are_honoured(void) {
   /* One normal and one uv for every corner: a vertex per mesh vertex, all facing +x. */
   buffers = build(mesh, &options);
   CHECK(hw_render_buffers_n_vertices(buffers) == 8);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, &n) == HW_OK && n == 24);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NORMALS, &data, &n) == HW_OK && n == 24);
   CHECK(data != NULL && data[0] == 1.0f && data[1] == 0.0f && data[23] == 0.0f);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_UVS, &data, &n) == HW_OK && n == 16);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_UVS, &data, &n) == HW_OK && n == 16);
   CHECK(data != NULL && data[0] == 0.5f && data[15] == 0.75f);
   hw_render_buffers_free(buffers);
 
@@ -142,7 +143,7 @@ static void mesh_corner_attributes_are_honoured(void) {
   options.shading = HW_SHADING_FLAT;
   buffers = build(mesh, &options);
   CHECK(hw_render_buffers_n_vertices(buffers) == 24);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, &n) == HW_OK && n == 72);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NORMALS, &data, &n) == HW_OK && n == 72);
   for (h = 0; data != NULL && h < 24; ++h)
     CHECK(fabsf(data[3 * h]) + fabsf(data[3 * h + 1]) + fabsf(data[3 * h + 2]) == 1.0f);
   hw_render_buffers_free(buffers);
@@ -153,7 +154,7 @@ static void mesh_corner_attributes_are_honoured(void) {
   options.shading = HW_SHADING_FLAT;
   buffers = build(mesh, &options);
   CHECK(hw_render_buffers_n_vertices(buffers) == 24);
-  CHECK(float_count(buffers, HW_RENDER_UVS) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_UVS) == 0);
   hw_render_buffers_free(buffers);
   hw_mesh_free(mesh);
 }
@@ -167,7 +168,7 @@ static float *normals_of(const hw_mesh *mesh, hw_shading shading, size_t *n) {
   options.shading = shading;
   buffers = build(mesh, &options);
   *n = 0;
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &data, n) == HW_OK && *n > 0);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NORMALS, &data, n) == HW_OK && *n > 0);
   copy = (float *)malloc(*n * sizeof *copy);
   if (copy != NULL && data != NULL) memcpy(copy, data, *n * sizeof *copy);
   hw_render_buffers_free(buffers);
@@ -184,10 +185,11 @@ static void explicit_shadings_win_over_a_files_normals(void) {
   size_t n[4], i, j;
   const double *file_normals = NULL;
   size_t n_file_normals = 0;
-  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/polygonal/pmp_suzanne.obj", HW_BUILD_REPAIR, &mesh,
-                     NULL) == HW_OK);
+  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/polygonal/pmp_suzanne.obj", HW_BUILD_POLICY_REPAIR,
+                     &mesh, NULL) == HW_OK);
   CHECK(hw_mesh_corner_normals_view(mesh, &file_normals, &n_file_normals) == HW_OK);
-  CHECK(file_normals != NULL && n_file_normals == hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE));
+  CHECK(file_normals != NULL &&
+        n_file_normals == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE));
   for (i = 0; i < 4; ++i) normals[i] = normals_of(mesh, shadings[i], &n[i]);
   for (i = 0; i < 4; ++i)
     for (j = i + 1; j < 4; ++j)
@@ -202,11 +204,11 @@ static void boundary_bounds_and_non_manifold_edges(void) {
   hw_mesh *mesh = NULL;
   hw_render_buffers *buffers;
   float lo[3], hi[3];
-  CHECK(hw_surface_grid(2.0, 1.0, 2, 1, HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_surface_grid(2.0, 1.0, 2, 1, HW_CELL_FACES_QUADS, &mesh) == HW_OK);
   buffers = build(mesh, NULL);
-  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 12);
-  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 6 * 6);
-  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 7 * 6);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_TRIANGLES) == 12);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_BOUNDARY) == 6 * 6);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_WIREFRAME) == 7 * 6);
   CHECK(hw_render_buffers_bounds(buffers, lo, hi) == HW_OK);
   CHECK(lo[0] == -1.0f && hi[0] == 1.0f && lo[1] == -0.5f && hi[1] == 0.5f && hi[2] == 0.0f);
   hw_render_buffers_free(buffers);
@@ -220,10 +222,11 @@ static void boundary_bounds_and_non_manifold_edges(void) {
     hw_diagnostic *diagnostic = NULL;
     const float *line = NULL;
     size_t n = 0;
-    CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_REPAIR, &mesh,
+    CHECK(hw_mesh_from_indexed(positions, 5, sizes, 3, indices, 9, HW_BUILD_POLICY_REPAIR, &mesh,
                                &diagnostic) == HW_OK);
     CHECK(hw_render_buffers_build(mesh, diagnostic, NULL, &buffers) == HW_OK);
-    CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NON_MANIFOLD, &line, &n) == HW_OK && n == 6);
+    CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NON_MANIFOLD, &line, &n) == HW_OK &&
+          n == 6);
     CHECK(line != NULL && line[2] == 0.0f && line[5] == 1.0f);
     hw_render_buffers_free(buffers);
     hw_diagnostic_free(diagnostic);
@@ -243,16 +246,18 @@ static void polygon_lists(void) {
   size_t n = 0;
   CHECK(hw_render_buffers_from_polygons(planar, 2, 7, sizes, 2, &buffers) == HW_OK);
   CHECK(hw_render_buffers_n_vertices(buffers) == 7);
-  CHECK(index_count(buffers, HW_RENDER_TRIANGLES) == 9);
-  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 7 * 6);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_VERTEX_SOURCES, &polygon_of, &n) == HW_OK);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_TRIANGLES) == 9);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_WIREFRAME) == 7 * 6);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_VERTEX_SOURCES, &polygon_of, &n) ==
+        HW_OK);
   CHECK(n == 7 && polygon_of[3] == 0 && polygon_of[4] == 1);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &normals, &n) == HW_OK && n == 21);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NORMALS, &normals, &n) == HW_OK &&
+        n == 21);
   CHECK(normals[2] == 1.0f && normals[20] == 1.0f);
-  CHECK(float_count(buffers, HW_RENDER_BOUNDARY) == 0);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_BOUNDARY) == 0);
   hw_render_buffers_free(buffers);
   CHECK(hw_render_buffers_from_polygons(spatial, 3, 7, sizes, 2, &buffers) == HW_OK);
-  CHECK(index_count(buffers, HW_RENDER_TRIANGLE_FACES) == 3);
+  CHECK(index_count(buffers, HW_RENDER_INDICES_TRIANGLE_FACES) == 3);
   hw_render_buffers_free(buffers);
 
   buffers = BUFFERS_SENTINEL;
@@ -318,18 +323,19 @@ static void voronoi_cell_buffers(void) {
   hw_voronoi_cells_free(cells);
 
   CHECK(hw_render_buffers_n_vertices(buffers) == 16);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_POSITIONS, &xyz, &n_xyz) == HW_OK);
-  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_NORMALS, &normals, &n_normals) == HW_OK);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_POSITIONS, &xyz, &n_xyz) == HW_OK);
+  CHECK(hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_NORMALS, &normals, &n_normals) == HW_OK);
   CHECK(n_xyz == 16 * 3 && n_normals == 16 * 3);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLES, &triangles, &n_triangles) == HW_OK);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLE_FACES, &triangle_sites,
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_TRIANGLES, &triangles, &n_triangles) ==
+        HW_OK);
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_TRIANGLE_FACES, &triangle_sites,
                                   &n_triangle_sites) == HW_OK);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_VERTEX_SOURCES, &vertex_sites,
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_VERTEX_SOURCES, &vertex_sites,
                                   &n_vertex_sites) == HW_OK);
-  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_WIREFRAME_SOURCES, &segment_sites,
+  CHECK(hw_render_buffers_indices(buffers, HW_RENDER_INDICES_WIREFRAME_SOURCES, &segment_sites,
                                   &n_segment_sites) == HW_OK);
   CHECK(n_triangles == 8 * 3 && n_triangle_sites == 8 && n_vertex_sites == 16);
-  CHECK(float_count(buffers, HW_RENDER_WIREFRAME) == 16 * 6 && n_segment_sites == 16);
+  CHECK(float_count(buffers, HW_RENDER_FLOATS_WIREFRAME) == 16 * 6 && n_segment_sites == 16);
   for (k = 0; k < 16; ++k) {
     CHECK(xyz[3 * k + 2] == 0.0f && normals[3 * k + 2] == 1.0f);
     CHECK(vertex_sites[k] < 4 && segment_sites[k] < 4);
@@ -406,14 +412,20 @@ static void bad_render_arguments(void) {
   CHECK_STATUS(hw_render_buffers_build(mesh, NULL, &options, &buffers), HW_ERR_INVALID_INPUT, "uvs");
   CHECK(buffers == BUFFERS_SENTINEL);
 
-  CHECK_STATUS(hw_render_buffers_floats(NULL, HW_RENDER_POSITIONS, &floats, &n), HW_ERR_NULL_ARGUMENT, "buffers");
+  CHECK_STATUS(hw_render_buffers_floats(NULL, HW_RENDER_FLOATS_POSITIONS, &floats, &n),
+               HW_ERR_NULL_ARGUMENT, "buffers");
   CHECK_STATUS(hw_render_buffers_floats(good, 99, &floats, &n), HW_ERR_INVALID_INPUT, "99");
-  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_POSITIONS, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_data");
-  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_POSITIONS, &floats, NULL), HW_ERR_NULL_ARGUMENT, "out_len");
-  CHECK_STATUS(hw_render_buffers_indices(NULL, HW_RENDER_TRIANGLES, &indices, &n), HW_ERR_NULL_ARGUMENT, "buffers");
+  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_FLOATS_POSITIONS, NULL, &n),
+               HW_ERR_NULL_ARGUMENT, "out_data");
+  CHECK_STATUS(hw_render_buffers_floats(good, HW_RENDER_FLOATS_POSITIONS, &floats, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_len");
+  CHECK_STATUS(hw_render_buffers_indices(NULL, HW_RENDER_INDICES_TRIANGLES, &indices, &n),
+               HW_ERR_NULL_ARGUMENT, "buffers");
   CHECK_STATUS(hw_render_buffers_indices(good, 99, &indices, &n), HW_ERR_INVALID_INPUT, "99");
-  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_TRIANGLES, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_data");
-  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_TRIANGLES, &indices, NULL), HW_ERR_NULL_ARGUMENT, "out_len");
+  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_INDICES_TRIANGLES, NULL, &n),
+               HW_ERR_NULL_ARGUMENT, "out_data");
+  CHECK_STATUS(hw_render_buffers_indices(good, HW_RENDER_INDICES_TRIANGLES, &indices, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_len");
   CHECK(hw_render_buffers_n_vertices(NULL) == 0 && last_error_contains("buffers"));
   CHECK(hw_render_buffers_stride(NULL) == 0 && last_error_contains("buffers"));
   CHECK_STATUS(hw_render_buffers_bounds(NULL, lo, hi), HW_ERR_NULL_ARGUMENT, "buffers");
@@ -455,22 +467,22 @@ static void generators(void) {
   CHECK(hw_surface_icosphere(1.0, 2, &mesh) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 20 * 16);
   check_topology(mesh, 2, 0);
-  CHECK(hw_surface_torus(2.0, 0.5, 12, 8, HW_CELLS_TRIANGLES, &mesh) == HW_OK);
+  CHECK(hw_surface_torus(2.0, 0.5, 12, 8, HW_CELL_FACES_TRIANGLES, &mesh) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 2 * 12 * 8);
   check_topology(mesh, 0, 0);
-  CHECK(hw_surface_grid(1.0, 1.0, 3, 2, HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_surface_grid(1.0, 1.0, 3, 2, HW_CELL_FACES_QUADS, &mesh) == HW_OK);
   check_topology(mesh, 1, 1);
-  CHECK(hw_surface_sweep(square, 4, true, up, 2, HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_surface_sweep(square, 4, true, up, 2, HW_CELL_FACES_QUADS, &mesh) == HW_OK);
   CHECK(hw_mesh_n_faces(mesh) == 8);
   check_topology(mesh, 0, 2);
   CHECK(hw_surface_revolution(half_circle, 3, false, origin, up, true, 0.0, 6, HW_CAPS_NONE,
-                              HW_CELLS_QUADS, &mesh) == HW_OK);
+                              HW_CELL_FACES_QUADS, &mesh) == HW_OK);
   CHECK(hw_mesh_n_vertices(mesh) == 2 + 6);
   check_topology(mesh, 2, 0);
   CHECK(hw_surface_revolution(square, 2, false, origin, up, false, 1.5, 4, HW_CAPS_NONE,
-                              HW_CELLS_TRIANGLES, &mesh) == HW_OK);
+                              HW_CELL_FACES_TRIANGLES, &mesh) == HW_OK);
   check_topology(mesh, 1, 1);
-  CHECK(hw_surface_ruled(square, lifted, 4, true, 1, HW_CELLS_QUADS, &mesh) == HW_OK);
+  CHECK(hw_surface_ruled(square, lifted, 4, true, 1, HW_CELL_FACES_QUADS, &mesh) == HW_OK);
   check_topology(mesh, 0, 2);
 }
 
@@ -486,34 +498,55 @@ static void bad_generator_parameters(void) {
   CHECK_STATUS(hw_surface_cube(1.0, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
   CHECK_STATUS(hw_surface_icosphere(0.0, 1, &mesh), HW_ERR_INVALID_INPUT, "radius");
   CHECK_STATUS(hw_surface_icosphere(1.0, 99, &mesh), HW_ERR_INVALID_INPUT, "level");
-  CHECK_STATUS(hw_surface_torus(1.0, 2.0, 8, 8, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "minor radius");
-  CHECK_STATUS(hw_surface_torus(2.0, 1.0, 2, 8, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "major_steps");
+  CHECK_STATUS(hw_surface_torus(1.0, 2.0, 8, 8, HW_CELL_FACES_QUADS, &mesh), HW_ERR_INVALID_INPUT,
+               "minor radius");
+  CHECK_STATUS(hw_surface_torus(2.0, 1.0, 2, 8, HW_CELL_FACES_QUADS, &mesh), HW_ERR_INVALID_INPUT,
+               "major_steps");
   CHECK_STATUS(hw_surface_torus(2.0, 1.0, 8, 8, 5, &mesh), HW_ERR_INVALID_INPUT, "cell faces");
-  CHECK_STATUS(hw_surface_grid(1.0, 1.0, 0, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "cells_x");
-  CHECK_STATUS(hw_surface_grid(1.0, -1.0, 1, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "height");
-  CHECK_STATUS(hw_surface_sweep(NULL, 3, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "profile");
-  CHECK_STATUS(hw_surface_sweep(line, 3, false, NULL, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "direction");
-  CHECK_STATUS(hw_surface_sweep(line, 3, false, zero, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "zero length");
-  CHECK_STATUS(hw_surface_sweep(line, 3, false, along_x, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "parallel");
-  CHECK_STATUS(hw_surface_sweep(line, 1, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "at least 2");
-  CHECK_STATUS(hw_surface_sweep(nan_line, 2, false, up, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "non-finite");
-  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 0, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "steps");
-  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 1, HW_CELLS_QUADS, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, along_x, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
-               HW_ERR_INVALID_INPUT, "lies on the axis");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, false, 7.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
-               HW_ERR_INVALID_INPUT, "outside (0, 2");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 2, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+  CHECK_STATUS(hw_surface_grid(1.0, 1.0, 0, 1, HW_CELL_FACES_QUADS, &mesh), HW_ERR_INVALID_INPUT,
+               "cells_x");
+  CHECK_STATUS(hw_surface_grid(1.0, -1.0, 1, 1, HW_CELL_FACES_QUADS, &mesh), HW_ERR_INVALID_INPUT,
+               "height");
+  CHECK_STATUS(hw_surface_sweep(NULL, 3, false, up, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_NULL_ARGUMENT, "profile");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, NULL, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_NULL_ARGUMENT, "direction");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, zero, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "zero length");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, along_x, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "parallel");
+  CHECK_STATUS(hw_surface_sweep(line, 1, false, up, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "at least 2");
+  CHECK_STATUS(hw_surface_sweep(nan_line, 2, false, up, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "non-finite");
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 0, HW_CELL_FACES_QUADS, &mesh),
                HW_ERR_INVALID_INPUT, "steps");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 8, 9, HW_CELLS_QUADS, &mesh),
-               HW_ERR_INVALID_INPUT, "caps");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, NULL, up, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+  CHECK_STATUS(hw_surface_sweep(line, 3, false, up, 1, HW_CELL_FACES_QUADS, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_mesh");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, along_x, true, 0.0, 8, HW_CAPS_NONE,
+                                     HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "lies on the axis");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, false, 7.0, 8, HW_CAPS_NONE,
+                                     HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "outside (0, 2");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 2, HW_CAPS_NONE,
+                                     HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "steps");
+  CHECK_STATUS(
+      hw_surface_revolution(line, 3, false, zero, up, true, 0.0, 8, 9, HW_CELL_FACES_QUADS, &mesh),
+      HW_ERR_INVALID_INPUT, "caps");
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, NULL, up, true, 0.0, 8, HW_CAPS_NONE,
+                                     HW_CELL_FACES_QUADS, &mesh),
                HW_ERR_NULL_ARGUMENT, "axis_origin");
-  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, NULL, true, 0.0, 8, HW_CAPS_NONE, HW_CELLS_QUADS, &mesh),
+  CHECK_STATUS(hw_surface_revolution(line, 3, false, zero, NULL, true, 0.0, 8, HW_CAPS_NONE,
+                                     HW_CELL_FACES_QUADS, &mesh),
                HW_ERR_NULL_ARGUMENT, "axis_direction");
-  CHECK_STATUS(hw_surface_ruled(line, NULL, 3, false, 1, HW_CELLS_QUADS, &mesh), HW_ERR_NULL_ARGUMENT, "second");
-  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 1, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "collapses");
-  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 0, HW_CELLS_QUADS, &mesh), HW_ERR_INVALID_INPUT, "steps");
+  CHECK_STATUS(hw_surface_ruled(line, NULL, 3, false, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_NULL_ARGUMENT, "second");
+  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 1, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "collapses");
+  CHECK_STATUS(hw_surface_ruled(line, line, 3, false, 0, HW_CELL_FACES_QUADS, &mesh),
+               HW_ERR_INVALID_INPUT, "steps");
   CHECK(mesh == MESH_SENTINEL);
 }
 

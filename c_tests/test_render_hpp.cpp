@@ -13,21 +13,22 @@ static void generated_meshes_render() {
   options.interleaved = true;
   hw::render_buffers buffers(torus, options);
   CHECK(buffers.stride() == 6);
-  CHECK(buffers.indices(HW_RENDER_TRIANGLES).size() == 3 * 2 * 16 * 8);
-  CHECK(buffers.floats(HW_RENDER_INTERLEAVED).size() == 6 * buffers.n_vertices());
-  CHECK(buffers.floats(HW_RENDER_INTERLEAVED).size_bytes() ==
+  CHECK(buffers.indices(hw::RenderIndices::Triangles).size() == 3 * 2 * 16 * 8);
+  CHECK(buffers.floats(hw::RenderFloats::Interleaved).size() == 6 * buffers.n_vertices());
+  CHECK(buffers.floats(hw::RenderFloats::Interleaved).size_bytes() ==
         sizeof(float) * 6 * buffers.n_vertices());
-  CHECK(buffers.floats(HW_RENDER_BOUNDARY).empty());
+  CHECK(buffers.floats(hw::RenderFloats::Boundary).empty());
   // Every triangle index names a vertex.
   bool in_range = true;
-  for (uint32_t v : buffers.indices(HW_RENDER_TRIANGLES)) in_range = in_range && v < buffers.n_vertices();
+  for (uint32_t v : buffers.indices(hw::RenderIndices::Triangles))
+    in_range = in_range && v < buffers.n_vertices();
   CHECK(in_range);
   auto box = buffers.bounds();
   CHECK(std::fabs(box.second[0] - 2.5f) < 1e-5f && std::fabs(box.first[2] + 0.5f) < 1e-5f);
 
   hw::mesh disc = hw::surface::revolution({{0, 0, 0}, {1, 0, 0}}, false, {0, 0, 0}, {0, 0, 1}, 12);
   hw::render_buffers disc_buffers(disc);
-  CHECK(disc_buffers.floats(HW_RENDER_BOUNDARY).size() == 12 * 6);
+  CHECK(disc_buffers.floats(hw::RenderFloats::Boundary).size() == 12 * 6);
 
   hw::mesh band = hw::surface::ruled({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, 1, 0}}, false, 2);
   CHECK(band.n_faces() == 2);
@@ -40,13 +41,13 @@ static void generated_meshes_render() {
 
 static void polygons_and_errors() {
   hw::render_buffers cells = hw::render_buffers::polygons({0, 0, 1, 0, 1, 1, 0, 1}, 2, {4});
-  CHECK(cells.n_vertices() == 4 && cells.indices(HW_RENDER_TRIANGLES).size() == 6);
-  CHECK(cells.floats(HW_RENDER_WIREFRAME).size() == 4 * 6);
+  CHECK(cells.n_vertices() == 4 && cells.indices(hw::RenderIndices::Triangles).size() == 6);
+  CHECK(cells.floats(hw::RenderFloats::Wireframe).size() == 4 * 6);
   bool thrown = false;
   try {
     hw::surface::cube(-1.0);
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_INVALID_INPUT &&
+    thrown = e.status() == hw::Status::InvalidInput &&
              std::string(e.what()).find("side") != std::string::npos;
   }
   CHECK(thrown);
@@ -54,7 +55,7 @@ static void polygons_and_errors() {
   try {
     hw::render_buffers::polygons({0, 0, 1}, 2, {1});
   } catch (const hw::error& e) {
-    thrown = e.status() == HW_ERR_INVALID_INPUT;
+    thrown = e.status() == hw::Status::InvalidInput;
   }
   CHECK(thrown);
   thrown = false;

@@ -28,17 +28,17 @@ static void merge_vertices(void) {
   hw_repair_report *report = NULL;
   CHECK(hw_soup_merge_vertices(soup, 0.0, false, &report) == HW_OK);
   const uint32_t *ids = NULL;
-  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 4);
+  CHECK(list_len(report, HW_REPAIR_LIST_MERGED_VERTICES, &ids) == 4);
   CHECK(ids[0] == 3 && ids[1] == 1 && ids[2] == 4 && ids[3] == 2);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 2);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0 && ids == NULL);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_VERTICES, &ids) == 2);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 0 && ids == NULL);
   const hw_index_maps *maps = NULL;
   size_t removed_corners = 99;
   CHECK(hw_repair_report_maps(report, &maps, &removed_corners) == HW_OK);
   CHECK(removed_corners == 0);
   const uint32_t *map = NULL;
   size_t n = 0;
-  CHECK(hw_index_maps_view(maps, HW_ELEMENT_VERTEX, &map, &n) == HW_OK);
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_KIND_VERTEX, &map, &n) == HW_OK);
   CHECK(n == 7 && map[3] == HW_INVALID_INDEX && map[5] == 3 && map[6] == 4);
   /* The maps belong to the report: freeing them is refused. */
   hw_index_maps_free((hw_index_maps *)maps);
@@ -53,10 +53,10 @@ static void merge_vertices(void) {
 
   /* Then the duplicate face and the unreferenced vertex. */
   CHECK(hw_soup_remove_duplicate_faces(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_DUPLICATE_FACES, &ids) == 2 && ids[0] == 2 && ids[1] == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_DUPLICATE_FACES, &ids) == 2 && ids[0] == 2 && ids[1] == 0);
   hw_repair_report_free(report);
   CHECK(hw_soup_remove_unreferenced_vertices(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 1 && ids[0] == 3);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_VERTICES, &ids) == 1 && ids[0] == 3);
   hw_repair_report_free(report);
   /* A report is optional. */
   CHECK(hw_soup_remove_unreferenced_vertices(soup, NULL) == HW_OK);
@@ -74,19 +74,20 @@ static void refusals_change_nothing(void) {
                "finite");
   CHECK_STATUS(hw_soup_merge_vertices(soup, 2.0, true, &report), HW_ERR_INVALID_INPUT,
                "between 0 and 1");
-  CHECK_STATUS(hw_soup_remove_small_components(soup, HW_SMALL_BY_FACE_COUNT, 1.5, &report),
-               HW_ERR_INVALID_INPUT, "whole number");
+  CHECK_STATUS(
+      hw_soup_remove_small_components(soup, HW_SMALL_COMPONENTS_BY_FACE_COUNT, 1.5, &report),
+      HW_ERR_INVALID_INPUT, "whole number");
   CHECK_STATUS(hw_soup_remove_small_components(soup, 7, 1.0, &report), HW_ERR_INVALID_INPUT,
                "rule");
-  CHECK_STATUS(
-      hw_soup_remove_small_components(soup, HW_SMALL_BY_RELATIVE_DIAMETER, -0.5, &report),
-      HW_ERR_INVALID_INPUT, "between 0 and 1");
+  CHECK_STATUS(hw_soup_remove_small_components(soup, HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER, -0.5,
+                                               &report),
+               HW_ERR_INVALID_INPUT, "between 0 and 1");
   CHECK(report == untouched);
   size_t n_vertices = 0;
   CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, NULL, NULL) == HW_OK);
   CHECK(n_vertices == 7);
   CHECK_STATUS(hw_soup_merge_vertices(NULL, 0.0, false, NULL), HW_ERR_NULL_ARGUMENT, "soup");
-  CHECK_STATUS(hw_repair_report_list(NULL, HW_REPAIR_REMOVED_FACES, NULL, NULL),
+  CHECK_STATUS(hw_repair_report_list(NULL, HW_REPAIR_LIST_REMOVED_FACES, NULL, NULL),
                HW_ERR_NULL_ARGUMENT, "");
   CHECK_STATUS(hw_repair_report_maps(NULL, NULL, NULL), HW_ERR_NULL_ARGUMENT, "out_maps");
   hw_soup_free(soup);
@@ -109,14 +110,15 @@ static void small_components(void) {
   hw_soup *soup = NULL;
   CHECK(hw_soup_from_indexed(p, 7, s, 3, ix, 9, &soup) == HW_OK);
   hw_repair_report *report = NULL;
-  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_BY_RELATIVE_DIAMETER, 0.1, &report) ==
-        HW_OK);
+  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER, 0.1,
+                                        &report) == HW_OK);
   const uint32_t *ids = NULL;
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 1 && ids[0] == 2);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_VERTICES, &ids) == 3 && ids[0] == 4);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 1 && ids[0] == 2);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_VERTICES, &ids) == 3 && ids[0] == 4);
   hw_repair_report_free(report);
-  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_BY_FACE_COUNT, 1.0, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  CHECK(hw_soup_remove_small_components(soup, HW_SMALL_COMPONENTS_BY_FACE_COUNT, 1.0, &report) ==
+        HW_OK);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 0);
   hw_repair_report_free(report);
   hw_soup_free(soup);
 }
@@ -127,7 +129,7 @@ static void stitch_borders(void) {
   const uint32_t s[] = {3, 3};
   const uint32_t ix[] = {0, 1, 2, 3, 4, 5};
   hw_mesh *mesh = NULL;
-  CHECK(hw_mesh_from_indexed(p, 6, s, 2, ix, 6, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(p, 6, s, 2, ix, 6, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   CHECK(hw_mesh_n_edges(mesh) == 6);
   hw_repair_report *report = NULL;
   CHECK_STATUS(hw_mesh_stitch_borders(mesh, -1.0, false, &report), HW_ERR_INVALID_INPUT,
@@ -135,13 +137,13 @@ static void stitch_borders(void) {
   CHECK(report == NULL && hw_mesh_n_edges(mesh) == 6);
   CHECK(hw_mesh_stitch_borders(mesh, 0.0, false, &report) == HW_OK);
   const uint32_t *ids = NULL;
-  CHECK(list_len(report, HW_REPAIR_STITCHED_HALFEDGES, &ids) == 2);
-  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 4);
+  CHECK(list_len(report, HW_REPAIR_LIST_STITCHED_HALFEDGES, &ids) == 2);
+  CHECK(list_len(report, HW_REPAIR_LIST_MERGED_VERTICES, &ids) == 4);
   const hw_index_maps *maps = NULL;
   CHECK(hw_repair_report_maps(report, &maps, NULL) == HW_OK);
   const uint32_t *map = NULL;
   size_t n = 0;
-  CHECK(hw_index_maps_view(maps, HW_ELEMENT_EDGE, &map, &n) == HW_OK && n == 6);
+  CHECK(hw_index_maps_view(maps, HW_ELEMENT_KIND_EDGE, &map, &n) == HW_OK && n == 6);
   CHECK_STATUS(hw_repair_report_list(report, 42, &ids, &n), HW_ERR_INVALID_INPUT, "42");
   hw_repair_report_free(report);
   CHECK(hw_mesh_n_edges(mesh) == 5 && hw_mesh_n_vertices(mesh) == 4);
@@ -161,7 +163,7 @@ static void degenerate_faces_and_t_vertices(void) {
   const uint32_t s[] = {3, 3};
   const uint32_t ix[] = {0, 1, 2, 1, 0, 3};
   hw_mesh *mesh = NULL;
-  CHECK(hw_mesh_from_indexed(p, 4, s, 2, ix, 6, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(p, 4, s, 2, ix, 6, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   hw_repair_report *report = NULL;
   CHECK_STATUS(hw_mesh_remove_degenerate_faces(mesh, -1.0, false, &report), HW_ERR_INVALID_INPUT,
                "0 or more");
@@ -173,30 +175,30 @@ static void degenerate_faces_and_t_vertices(void) {
   /* The cap 0 1 2 flips with 1 0 3 across its long edge: 3 2 0 and 2 3 1, both kept. */
   CHECK(hw_mesh_remove_degenerate_faces(mesh, 0.0, false, &report) == HW_OK);
   const uint32_t *ids = NULL;
-  CHECK(list_len(report, HW_REPAIR_FLIPPED_FACES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_FLIPPED_FACES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 0);
   hw_repair_report_free(report);
   CHECK(hw_mesh_n_faces(mesh) == 2 && hw_mesh_check(mesh) == HW_OK);
   /* A second run changes nothing. */
   CHECK(hw_mesh_remove_degenerate_faces(mesh, 0.0, false, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_FLIPPED_FACES, &ids) == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_FLIPPED_FACES, &ids) == 0);
   hw_repair_report_free(report);
   hw_mesh_free(mesh);
 
   /* The T-vertex 3 splits the edge 0-1 under it; stitching then closes the crack. */
   report = NULL;
-  CHECK(hw_mesh_from_indexed(crack, 7, crack_sizes, 7, crack_indices, 21, HW_BUILD_STRICT, &mesh,
+  CHECK(hw_mesh_from_indexed(crack, 7, crack_sizes, 7, crack_indices, 21, HW_BUILD_POLICY_STRICT, &mesh,
                              NULL) == HW_OK);
   CHECK_STATUS(hw_mesh_remove_t_vertices(mesh, INFINITY, false, &report), HW_ERR_INVALID_INPUT,
                "finite");
   CHECK(report == NULL && hw_mesh_n_vertices(mesh) == 7);
   CHECK(hw_mesh_remove_t_vertices(mesh, 0.0, false, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 1 && ids[0] == 3);
+  CHECK(list_len(report, HW_REPAIR_LIST_VERTEX_COPIES, &ids) == 1 && ids[0] == 3);
   hw_repair_report_free(report);
   CHECK(hw_mesh_n_vertices(mesh) == 8 && hw_mesh_check(mesh) == HW_OK);
   CHECK(hw_mesh_stitch_borders(mesh, 0.0, false, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_STITCHED_HALFEDGES, &ids) == 4);
-  CHECK(list_len(report, HW_REPAIR_MERGED_VERTICES, &ids) == 2 && ids[0] == 7 && ids[1] == 3);
+  CHECK(list_len(report, HW_REPAIR_LIST_STITCHED_HALFEDGES, &ids) == 4);
+  CHECK(list_len(report, HW_REPAIR_LIST_MERGED_VERTICES, &ids) == 2 && ids[0] == 7 && ids[1] == 3);
   hw_repair_report_free(report);
   CHECK(hw_mesh_n_vertices(mesh) == 7 && hw_mesh_check(mesh) == HW_OK);
   CHECK(hw_mesh_remove_t_vertices(mesh, 1e-3, true, NULL) == HW_OK);
@@ -224,8 +226,8 @@ static void topology(void) {
   hw_repair_report *report = NULL;
   CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, &report) == HW_OK);
   const uint32_t *ids = NULL;
-  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 0);
   hw_repair_report_free(report);
   const double *xyz = NULL;
   const uint32_t *corners = NULL;
@@ -235,7 +237,7 @@ static void topology(void) {
   CHECK(corners[12] == 6 && corners[13] == 4 && corners[14] == 7);
   /* Nothing non-manifold is left: a second run and splitting vertices change nothing. */
   CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_VERTEX_COPIES, &ids) == 0);
   hw_repair_report_free(report);
   CHECK(hw_soup_split_non_manifold_vertices(soup, NULL) == HW_OK);
   CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, NULL, NULL) == HW_OK && n_vertices == 8);
@@ -245,11 +247,11 @@ static void topology(void) {
   soup = make_tetrahedra();
   CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_REMOVE_FACES, &report) ==
         HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REMOVED_FACES, &ids) == 2 && ids[0] == 4 && ids[1] == 5);
+  CHECK(list_len(report, HW_REPAIR_LIST_REMOVED_FACES, &ids) == 2 && ids[0] == 4 && ids[1] == 5);
   hw_repair_report_free(report);
   /* The two tetrahedra still touch at vertices 0 and 1: one fan each for the second. */
   CHECK(hw_soup_split_non_manifold_vertices(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
+  CHECK(list_len(report, HW_REPAIR_LIST_VERTEX_COPIES, &ids) == 2 && ids[0] == 0 && ids[1] == 1);
   hw_repair_report_free(report);
   CHECK_STATUS(hw_soup_repair_non_manifold_edges(soup, 9, &report), HW_ERR_INVALID_INPUT,
                "unknown non-manifold edge repair 9");
@@ -270,11 +272,11 @@ static void topology(void) {
   }
   CHECK(hw_soup_from_indexed(tetrahedra, 6, tetrahedra_sizes, 8, turned, 24, &soup) == HW_OK);
   CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 1 && ids[0] == 1);
+  CHECK(list_len(report, HW_REPAIR_LIST_REORIENTED_FACES, &ids) == 1 && ids[0] == 1);
   hw_repair_report_free(report);
   CHECK(hw_soup_repair_non_manifold_edges(soup, HW_NON_MANIFOLD_EDGES_CUT, NULL) == HW_OK);
   CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 4);
+  CHECK(list_len(report, HW_REPAIR_LIST_REORIENTED_FACES, &ids) == 4);
   CHECK(ids[0] == 4 && ids[3] == 7);
   hw_repair_report_free(report);
   CHECK(hw_soup_view(soup, NULL, NULL, NULL, NULL, &corners, &n_corners) == HW_OK);
@@ -282,7 +284,7 @@ static void topology(void) {
     CHECK(corners[c] == tetrahedra_indices[c]);
   }
   CHECK(hw_soup_orient_faces(soup, &report) == HW_OK);
-  CHECK(list_len(report, HW_REPAIR_REORIENTED_FACES, &ids) == 0);
+  CHECK(list_len(report, HW_REPAIR_LIST_REORIENTED_FACES, &ids) == 0);
   hw_repair_report_free(report);
   CHECK_STATUS(hw_soup_orient_faces(NULL, NULL), HW_ERR_NULL_ARGUMENT, "soup");
   hw_soup_free(soup);
@@ -305,7 +307,7 @@ static void fill_holes(void) {
   const uint32_t ix[] = {0, 2, 1, 0, 3, 2, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
                          2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
   hw_mesh *mesh = NULL;
-  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   hw_halfedge hole;
   size_t n = 0;
   CHECK(hw_mesh_boundary_loops(mesh, &hole, 1, &n) == HW_OK && n == 1);
@@ -319,7 +321,7 @@ static void fill_holes(void) {
   CHECK(hw_mesh_n_boundary_loops(mesh, &n) == HW_OK && n == 0);
   hw_mesh_free(mesh);
 
-  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   hw_fill_hole_options options = hw_fill_hole_options_default();
   options.max_perimeter = -1.0;
   CHECK_STATUS(hw_mesh_fill_holes(mesh, &options, NULL, NULL, NULL), HW_ERR_INVALID_INPUT,

@@ -29,8 +29,8 @@ static void every_fate_of_a_small_soup(void) {
   CHECK(hw_mesh_n_vertices(mesh) == 4 && hw_mesh_n_faces(mesh) == 2);
 
   const uint32_t *kinds = NULL, *ids = NULL;
-  CHECK(fates_list(fates, HW_FATES_VERTEX_KINDS, &kinds) == 7);
-  CHECK(fates_list(fates, HW_FATES_VERTEX_IDS, &ids) == 7);
+  CHECK(fates_list(fates, HW_FATES_LIST_VERTEX_KINDS, &kinds) == 7);
+  CHECK(fates_list(fates, HW_FATES_LIST_VERTEX_IDS, &ids) == 7);
   const uint32_t want_vertex_kinds[] = {HW_FATE_KEPT,   HW_FATE_KEPT,         HW_FATE_KEPT,
                                         HW_FATE_MERGED, HW_FATE_MERGED,       HW_FATE_UNREFERENCED,
                                         HW_FATE_KEPT};
@@ -38,11 +38,11 @@ static void every_fate_of_a_small_soup(void) {
   for (int v = 0; v < 7; v++) {
     CHECK(kinds[v] == want_vertex_kinds[v] && ids[v] == want_vertex_ids[v]);
   }
-  CHECK(fates_list(fates, HW_FATES_FACE_KINDS, &kinds) == 3);
-  CHECK(fates_list(fates, HW_FATES_FACE_IDS, &ids) == 3);
+  CHECK(fates_list(fates, HW_FATES_LIST_FACE_KINDS, &kinds) == 3);
+  CHECK(fates_list(fates, HW_FATES_LIST_FACE_IDS, &ids) == 3);
   CHECK(kinds[0] == HW_FATE_KEPT && ids[0] == 0 && kinds[1] == HW_FATE_KEPT && ids[1] == 1);
   CHECK(kinds[2] == HW_FATE_DUPLICATE && ids[2] == 0);
-  CHECK(fates_list(fates, HW_FATES_ADDED_VERTICES, &ids) == 0 && ids == NULL);
+  CHECK(fates_list(fates, HW_FATES_LIST_ADDED_VERTICES, &ids) == 0 && ids == NULL);
 
   hw_repair_fate_counts counts;
   CHECK(hw_repair_fates_counts(fates, &counts) == HW_OK);
@@ -69,7 +69,7 @@ static void a_model_accounts_for_every_element(void) {
   CHECK(hw_soup_view(soup, NULL, &n_vertices, NULL, NULL, &corners, &n_corners) == HW_OK);
   hw_repair_options options = hw_repair_options_default();
   options.remove_small_components = true;
-  options.small_rule = HW_SMALL_BY_RELATIVE_DIAMETER;
+  options.small_rule = HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER;
   options.small_value = 0.01;
   hw_mesh *mesh = NULL;
   hw_repair_fates *fates = NULL;
@@ -84,7 +84,7 @@ static void a_model_accounts_for_every_element(void) {
   /* Two cubes sharing an edge: cutting the edge gives each its own copies of its two ends. */
   CHECK(c.added_vertices == 2);
   const uint32_t *pairs = NULL;
-  CHECK(fates_list(fates, HW_FATES_ADDED_VERTICES, &pairs) == 4);
+  CHECK(fates_list(fates, HW_FATES_LIST_ADDED_VERTICES, &pairs) == 4);
   CHECK(pairs[0] == 14 && pairs[2] == 15 && pairs[1] < 14 && pairs[3] < 14);
   hw_repair_fates_free(fates);
   hw_mesh_free(mesh);
@@ -108,7 +108,7 @@ static void refusals_write_nothing(void) {
   options.remove_small_components = true;
   options.small_rule = 9;
   CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "rule");
-  options.small_rule = HW_SMALL_BY_FACE_COUNT;
+  options.small_rule = HW_SMALL_COMPONENTS_BY_FACE_COUNT;
   options.small_value = 0.5;
   CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "whole number");
   CHECK(mesh == untouched);
@@ -194,10 +194,10 @@ static void t_vertices_and_degenerate_faces(void) {
   CHECK(counts.merged_vertices == 1 && counts.removed_faces == 2);
   const uint32_t *kinds = NULL;
   const uint32_t *ids = NULL;
-  CHECK(fates_list(fates, HW_FATES_FACE_KINDS, &kinds) == 10);
+  CHECK(fates_list(fates, HW_FATES_LIST_FACE_KINDS, &kinds) == 10);
   CHECK(kinds[4] == HW_FATE_DEGENERATE && kinds[5] == HW_FATE_DEGENERATE);
-  CHECK(fates_list(fates, HW_FATES_VERTEX_KINDS, &kinds) == 7);
-  CHECK(fates_list(fates, HW_FATES_VERTEX_IDS, &ids) == 7);
+  CHECK(fates_list(fates, HW_FATES_LIST_VERTEX_KINDS, &kinds) == 7);
+  CHECK(fates_list(fates, HW_FATES_LIST_VERTEX_IDS, &ids) == 7);
   CHECK(kinds[6] == HW_FATE_MERGED && ids[6] == 0);
   hw_repair_fates_free(fates);
   hw_mesh_free(mesh);

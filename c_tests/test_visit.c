@@ -62,12 +62,12 @@ static void every_live_element(void) {
   uint32_t *ids = (uint32_t *)malloc(capacity * sizeof *ids);
   size_t visited = 0;
   seen_ids seen;
-  hw_element_kind kinds[4] = {HW_ELEMENT_VERTEX, HW_ELEMENT_HALFEDGE, HW_ELEMENT_EDGE,
-                              HW_ELEMENT_FACE};
+  hw_element_kind kinds[4] = {HW_ELEMENT_KIND_VERTEX, HW_ELEMENT_KIND_HALFEDGE,
+                              HW_ELEMENT_KIND_EDGE, HW_ELEMENT_KIND_FACE};
   int k;
   CHECK(ids != NULL);
   CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/open/cgal_elephant-with-holes.off",
-                     HW_BUILD_STRICT, &mesh, NULL) == HW_OK);
+                     HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   if (mesh == NULL || ids == NULL) {
     free(ids);
     return;
@@ -81,13 +81,13 @@ static void every_live_element(void) {
   }
 
   seen = fresh(mesh, ids, capacity, (size_t)-1);
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_VERTEX, add_valence, &seen, NULL) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_VERTEX, add_valence, &seen, NULL) == HW_OK);
   CHECK(seen.n == hw_mesh_n_vertices(mesh));
   CHECK(seen.valence_sum == 2 * hw_mesh_n_edges(mesh));
 
   seen = fresh(mesh, ids, capacity, 3);
   visited = 0;
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_FACE, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_FACE, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == 3 && seen.n == 3 && ids[0] == 0 && ids[1] == 1 && ids[2] == 2);
 
   hw_mesh_free(mesh);
@@ -105,29 +105,29 @@ static void deleted_elements_are_skipped(void) {
   uint32_t ids[8];
   size_t visited = 0;
   seen_ids seen;
-  CHECK(hw_mesh_from_indexed(positions, 4, sizes, 2, corners, 6, HW_BUILD_STRICT, &mesh, NULL) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 4, sizes, 2, corners, 6, HW_BUILD_POLICY_STRICT, &mesh,
+                             NULL) == HW_OK);
   CHECK(hw_mesh_delete_face(mesh, first, true) == HW_OK);
   seen = fresh(mesh, ids, 8, (size_t)-1);
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_FACE, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_FACE, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == 1 && ids[0] == 1);
   seen = fresh(mesh, ids, 8, (size_t)-1);
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_VERTEX, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_VERTEX, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == hw_mesh_n_vertices(mesh) && visited == 3 && seen.increasing);
   CHECK(ids[0] != 0 && ids[1] != 0 && ids[2] != 0); /* vertex 0 went with its only face */
   seen = fresh(mesh, ids, 8, (size_t)-1);
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_EDGE, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_EDGE, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == hw_mesh_n_edges(mesh) && visited == 3);
 
   CHECK(hw_mesh_garbage_collect(mesh, NULL) == HW_OK);
   seen = fresh(mesh, ids, 8, (size_t)-1);
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_FACE, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_FACE, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == 1 && ids[0] == 0);
   hw_mesh_free(mesh);
 
   mesh = hw_mesh_new();
   visited = 7;
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_VERTEX, record_id, &seen, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_VERTEX, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == 0); /* an empty mesh makes no call */
   hw_mesh_free(mesh);
 }
@@ -142,27 +142,27 @@ static void circulator_visits(void) {
   uint32_t by_loop[64], by_visit[64];
   size_t n_loop = 0, visited = 0;
   seen_ids seen;
-  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/closed/cgal_elephant.off", HW_BUILD_STRICT, &mesh,
-                     NULL) == HW_OK);
+  CHECK(hw_mesh_read(HALFWING_DATA_DIR "/meshes/closed/cgal_elephant.off", HW_BUILD_POLICY_STRICT,
+                     &mesh, NULL) == HW_OK);
   if (mesh == NULL) return;
-  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, &c) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   while (n_loop < 64 && hw_circ_next_vertex(&c, &w)) by_loop[n_loop++] = w.idx;
   CHECK(n_loop >= 3 && n_loop == hw_mesh_vertex_valence(mesh, v));
 
-  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, &c) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   seen = fresh(mesh, by_visit, 64, (size_t)-1);
   CHECK(hw_circ_visit(&c, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == n_loop && memcmp(by_loop, by_visit, n_loop * sizeof *by_loop) == 0);
   CHECK(!hw_circ_next_vertex(&c, &w)); /* drained */
 
-  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, &c) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   seen = fresh(mesh, by_visit, 64, 2);
   CHECK(hw_circ_visit(&c, record_id, &seen, &visited) == HW_OK);
   CHECK(visited == 2 && hw_circ_next_vertex(&c, &w) && w.idx == by_loop[2]);
 
   /* Faces around a face: a kind whose walk skips steps (none here: the model is closed). */
   f.idx = 0;
-  CHECK(hw_circ_around_face(mesh, f, HW_CIRC_FACES, &c) == HW_OK);
+  CHECK(hw_circ_around_face(mesh, f, HW_CIRCULATOR_KIND_FACES, &c) == HW_OK);
   seen = fresh(mesh, by_visit, 64, (size_t)-1);
   CHECK(hw_circ_visit(&c, record_id, &seen, NULL) == HW_OK);
   CHECK(seen.n == hw_mesh_face_degree(mesh, f));
@@ -179,27 +179,27 @@ static void bad_arguments(void) {
   static const double positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   static const uint32_t sizes[] = {3};
   static const uint32_t corners[] = {0, 1, 2};
-  CHECK(hw_mesh_from_indexed(positions, 3, sizes, 1, corners, 3, HW_BUILD_STRICT, &mesh, NULL) ==
-        HW_OK);
+  CHECK(hw_mesh_from_indexed(positions, 3, sizes, 1, corners, 3, HW_BUILD_POLICY_STRICT, &mesh,
+                             NULL) == HW_OK);
 
-  CHECK_STATUS(hw_mesh_visit(NULL, HW_ELEMENT_FACE, never_called, &called, &visited),
+  CHECK_STATUS(hw_mesh_visit(NULL, HW_ELEMENT_KIND_FACE, never_called, &called, &visited),
                HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_visit(mesh, HW_ELEMENT_FACE, NULL, &called, &visited),
+  CHECK_STATUS(hw_mesh_visit(mesh, HW_ELEMENT_KIND_FACE, NULL, &called, &visited),
                HW_ERR_NULL_ARGUMENT, "visit");
   CHECK_STATUS(hw_mesh_visit(mesh, 99, never_called, &called, &visited), HW_ERR_INVALID_INPUT,
                "kind 99");
   CHECK(called == 0 && visited == 42);
 
-  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRC_EDGES, &c) == HW_OK);
+  CHECK(hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_EDGES, &c) == HW_OK);
   CHECK_STATUS(hw_circ_visit(NULL, never_called, &called, &visited), HW_ERR_NULL_ARGUMENT,
                "circulator");
   CHECK_STATUS(hw_circ_visit(&c, NULL, &called, &visited), HW_ERR_NULL_ARGUMENT, "visit");
   CHECK(called == 0 && visited == 42);
 
   /* A NULL count is allowed, and userdata is the caller's business (NULL here). */
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_FACE, stop_at_once, NULL, NULL) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_FACE, stop_at_once, NULL, NULL) == HW_OK);
   visited = 0;
-  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_VERTEX, stop_at_once, NULL, &visited) == HW_OK);
+  CHECK(hw_mesh_visit(mesh, HW_ELEMENT_KIND_VERTEX, stop_at_once, NULL, &visited) == HW_OK);
   CHECK(visited == 1);
   hw_mesh_free(mesh);
 }

@@ -28,15 +28,15 @@ static void counts_and_views(void) {
 
   CHECK(hw_voronoi_n_sites(v) == N_SITES);
   CHECK(hw_voronoi_n_unique_sites(v) == N_SITES - 1);
-  CHECK(hw_voronoi_dimension(v) == HW_VORONOI_PLANE);
+  CHECK(hw_voronoi_dimension(v) == HW_SITE_DIMENSION_PLANE);
   /* Five distinct sites, four on the hull: 2n - 2 - h = 4 triangles, 8 edges. */
   CHECK(hw_voronoi_n_triangles(v) == 4);
   CHECK(hw_voronoi_n_halfedges(v) == 16);
 
-  CHECK(hw_voronoi_view(v, HW_VORONOI_REPRESENTATIVE, &rep, &n) == HW_OK && n == N_SITES);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_REPRESENTATIVE, &rep, &n) == HW_OK && n == N_SITES);
   CHECK(rep[DUPLICATE] == 1 && rep[1] == 1 && rep[CENTRE] == CENTRE);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_TRIANGLES, &tri, &n_tri) == HW_OK && n_tri == 12);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_TRIANGLE_TWINS, &twins, &n) == HW_OK && n == 12);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_TRIANGLES, &tri, &n_tri) == HW_OK && n_tri == 12);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_TRIANGLE_TWINS, &twins, &n) == HW_OK && n == 12);
   /* The four hull edges have no twin; interior ones pair up with opposite directions. */
   for (n = 0, i = 0; i < 12; ++i) {
     if (twins[i] == HW_INVALID_INDEX) {
@@ -46,18 +46,20 @@ static void counts_and_views(void) {
     }
   }
   CHECK(n == 4);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HULL, &hull, &n) == HW_OK && n == 4);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HULL, &hull, &n) == HW_OK && n == 4);
   for (i = 0; i < 4; ++i) CHECK(hull[i] < 4);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_TRIANGLE_VERTEX, &tri_vertex, &n) == HW_OK && n == 4);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HALFEDGE_ORIGIN, &origin, &n_half) == HW_OK && n_half == 16);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HALFEDGE_NEXT, &next, &n) == HW_OK && n == 16);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HALFEDGE_PREV, &prev, &n) == HW_OK && n == 16);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HALFEDGE_SITE, &site, &n) == HW_OK && n == 16);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_CELL_HALFEDGE, &cell, &n) == HW_OK && n == N_SITES);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_TRIANGLE_VERTEX, &tri_vertex, &n) == HW_OK && n == 4);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HALFEDGE_ORIGIN, &origin, &n_half) == HW_OK &&
+        n_half == 16);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HALFEDGE_NEXT, &next, &n) == HW_OK && n == 16);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HALFEDGE_PREV, &prev, &n) == HW_OK && n == 16);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HALFEDGE_SITE, &site, &n) == HW_OK && n == 16);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_CELL_HALFEDGE, &cell, &n) == HW_OK && n == N_SITES);
   CHECK(cell[DUPLICATE] == HW_INVALID_INDEX);
   CHECK(hw_voronoi_sites(v, &sites, &n) == HW_OK && n == N_SITES && sites[2 * DUPLICATE] == 4);
   CHECK(hw_voronoi_vertices(v, &vertices, &n_vert) == HW_OK && n_vert == hw_voronoi_n_vertices(v));
-  CHECK(hw_voronoi_view(v, HW_VORONOI_VERTEX_HALFEDGE, &vertex_edge, &n) == HW_OK && n == n_vert);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_VERTEX_HALFEDGE, &vertex_edge, &n) == HW_OK &&
+        n == n_vert);
 
   /* Every cell walk closes, every half-edge bounds its site's cell, and next/prev agree; every
    * finite half-edge start is equidistant from the sites on both sides. */
@@ -84,14 +86,16 @@ static void counts_and_views(void) {
   CHECK(origin[vertex_edge[0]] == 0);
 
   CHECK_STATUS(hw_voronoi_view(v, 99, &rep, &n), HW_ERR_INVALID_INPUT, "unknown Voronoi array");
-  CHECK_STATUS(hw_voronoi_view(v, HW_VORONOI_HULL, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_data");
-  CHECK_STATUS(hw_voronoi_view(NULL, HW_VORONOI_HULL, &rep, &n), HW_ERR_NULL_ARGUMENT, "voronoi");
+  CHECK_STATUS(hw_voronoi_view(v, HW_VORONOI_ARRAY_HULL, NULL, &n), HW_ERR_NULL_ARGUMENT,
+               "out_data");
+  CHECK_STATUS(hw_voronoi_view(NULL, HW_VORONOI_ARRAY_HULL, &rep, &n), HW_ERR_NULL_ARGUMENT,
+               "voronoi");
   CHECK_STATUS(hw_voronoi_sites(v, &sites, NULL), HW_ERR_NULL_ARGUMENT, "out_n_sites");
   CHECK_STATUS(hw_voronoi_vertices(NULL, &vertices, &n), HW_ERR_NULL_ARGUMENT, "voronoi");
   CHECK(hw_voronoi_n_sites(NULL) == 0 && last_error_contains("voronoi"));
   CHECK(hw_voronoi_n_unique_sites(NULL) == 0 && hw_voronoi_n_triangles(NULL) == 0);
   CHECK(hw_voronoi_n_vertices(NULL) == 0 && hw_voronoi_n_halfedges(NULL) == 0);
-  CHECK(hw_voronoi_dimension(NULL) == HW_VORONOI_EMPTY);
+  CHECK(hw_voronoi_dimension(NULL) == HW_SITE_DIMENSION_EMPTY);
   hw_voronoi_free(v);
 }
 
@@ -101,13 +105,13 @@ static void edges(void) {
   uint32_t h, rays = 0, segments = 0;
   for (h = 0; h < hw_voronoi_n_halfedges(v); ++h) {
     CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK);
-    if (e.kind == HW_VORONOI_SEGMENT) {
+    if (e.kind == HW_VORONOI_EDGE_KIND_SEGMENT) {
       segments++;
       CHECK(e.origin != HW_INVALID_INDEX && e.target != HW_INVALID_INDEX);
       CHECK(e.direction[0] == e.end[0] - e.point[0] && e.direction[1] == e.end[1] - e.point[1]);
     } else {
       rays++;
-      CHECK(e.kind == HW_VORONOI_RAY);
+      CHECK(e.kind == HW_VORONOI_EDGE_KIND_RAY);
       /* A ray is perpendicular to the hull edge joining its two sites. */
       CHECK(fabs(e.direction[0] * (five_and_a_copy[2 * e.site] - five_and_a_copy[2 * e.opposite_site]) +
                  e.direction[1] * (five_and_a_copy[2 * e.site + 1] -
@@ -288,32 +292,32 @@ static void degenerate_inputs(void) {
   uint32_t h, u;
 
   v = build(NULL, 0);
-  CHECK(hw_voronoi_dimension(v) == HW_VORONOI_EMPTY && hw_voronoi_n_halfedges(v) == 0);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HULL, &hull, &n) == HW_OK && n == 0 && hull == NULL);
+  CHECK(hw_voronoi_dimension(v) == HW_SITE_DIMENSION_EMPTY && hw_voronoi_n_halfedges(v) == 0);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HULL, &hull, &n) == HW_OK && n == 0 && hull == NULL);
   hw_voronoi_free(v);
 
   v = build(same, 3);
-  CHECK(hw_voronoi_dimension(v) == HW_VORONOI_POINT && hw_voronoi_n_unique_sites(v) == 1);
+  CHECK(hw_voronoi_dimension(v) == HW_SITE_DIMENSION_POINT && hw_voronoi_n_unique_sites(v) == 1);
   CHECK(hw_voronoi_clip_rect(v, 0, 0, 2, 3, &cells) == HW_OK);
   CHECK(hw_voronoi_cells_area_centroid(cells, 0, &area, NULL) == HW_OK && area == 6);
   hw_voronoi_cells_free(cells);
   hw_voronoi_free(v);
 
   v = build(line, 4);
-  CHECK(hw_voronoi_dimension(v) == HW_VORONOI_LINE && hw_voronoi_n_triangles(v) == 0);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HULL, &hull, &n) == HW_OK && n == 4);
+  CHECK(hw_voronoi_dimension(v) == HW_SITE_DIMENSION_LINE && hw_voronoi_n_triangles(v) == 0);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HULL, &hull, &n) == HW_OK && n == 4);
   CHECK(hull[0] == 0 && hull[1] == 1 && hull[2] == 3 && hull[3] == 2);
   CHECK(hw_voronoi_n_halfedges(v) == 6);
   for (h = 0; h < 6; ++h)
-    CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.kind == HW_VORONOI_LINE_EDGE);
+    CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.kind == HW_VORONOI_EDGE_KIND_LINE);
   hw_voronoi_free(v);
 
   /* 3 × 3 grid: each unit square's four corners are cocircular, so its centre is one Voronoi
    * vertex of degree 4 and no edge has zero length. */
   v = build(grid, 9);
   CHECK(hw_voronoi_n_vertices(v) == 4 && hw_voronoi_n_halfedges(v) == 2 * 12);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_VERTEX_HALFEDGE, &vertex_edge, &n) == HW_OK);
-  CHECK(hw_voronoi_view(v, HW_VORONOI_HALFEDGE_PREV, &next_prev, &n) == HW_OK);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_VERTEX_HALFEDGE, &vertex_edge, &n) == HW_OK);
+  CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HALFEDGE_PREV, &next_prev, &n) == HW_OK);
   for (u = 0; u < 4; ++u) {
     uint32_t start = vertex_edge[u], degree = 0;
     h = start;
@@ -336,8 +340,8 @@ static void degenerate_inputs(void) {
     v = build(scaled, 4);
     CHECK(hw_voronoi_n_triangles(v) == 3);
     CHECK(hw_voronoi_vertices(v, &vertices, &n) == HW_OK && n == 3);
-    CHECK(hw_voronoi_view(v, HW_VORONOI_TRIANGLES, &tri, &n) == HW_OK);
-    CHECK(hw_voronoi_view(v, HW_VORONOI_TRIANGLE_VERTEX, &tri_vertex, &n) == HW_OK);
+    CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_TRIANGLES, &tri, &n) == HW_OK);
+    CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_TRIANGLE_VERTEX, &tri_vertex, &n) == HW_OK);
     for (k = 0; k < 3; ++k) {
       const double *c = vertices + 2 * tri_vertex[k];
       const double r = distance(c, scaled + 2 * tri[3 * k]);
@@ -369,17 +373,17 @@ static void bad_construction(void) {
  * on the square with a centre and a copy, on collinear sites, and on a random cloud. */
 static void delaunay_alone(void) {
   static const double collinear[] = {0, 0, 2, 2, 1, 1, 2, 2};
-  const hw_voronoi_array arrays[] = {HW_VORONOI_REPRESENTATIVE, HW_VORONOI_TRIANGLES,
-                                     HW_VORONOI_TRIANGLE_TWINS, HW_VORONOI_HULL};
+  const hw_voronoi_array arrays[] = {HW_VORONOI_ARRAY_REPRESENTATIVE, HW_VORONOI_ARRAY_TRIANGLES,
+                                     HW_VORONOI_ARRAY_TRIANGLE_TWINS, HW_VORONOI_ARRAY_HULL};
   double cloud[2 * 500];
   const struct {
     const double *xy;
     size_t n;
     hw_site_dimension dimension;
-  } inputs[] = {{five_and_a_copy, N_SITES, HW_VORONOI_PLANE},
-                {collinear, 4, HW_VORONOI_LINE},
-                {cloud, 500, HW_VORONOI_PLANE},
-                {NULL, 0, HW_VORONOI_EMPTY}};
+  } inputs[] = {{five_and_a_copy, N_SITES, HW_SITE_DIMENSION_PLANE},
+                {collinear, 4, HW_SITE_DIMENSION_LINE},
+                {cloud, 500, HW_SITE_DIMENSION_PLANE},
+                {NULL, 0, HW_SITE_DIMENSION_EMPTY}};
   const uint32_t *data = NULL, *expected = NULL;
   size_t i, k, n = 0, n_expected = 0;
   uint32_t state = 12345;
@@ -405,22 +409,22 @@ static void delaunay_alone(void) {
   /* The square: four triangles, the hull's four edges without a twin. */
   CHECK(hw_delaunay_build(five_and_a_copy, N_SITES, &d) == HW_OK);
   CHECK(hw_delaunay_n_triangles(d) == 4);
-  CHECK(hw_delaunay_view(d, HW_VORONOI_TRIANGLE_TWINS, &data, &n) == HW_OK && n == 12);
+  CHECK(hw_delaunay_view(d, HW_VORONOI_ARRAY_TRIANGLE_TWINS, &data, &n) == HW_OK && n == 12);
   for (n = 0, i = 0; i < 12; ++i) n += data[i] == HW_INVALID_INDEX;
   CHECK(n == 4);
   /* The Voronoi diagram's arrays are not the triangulation's. */
-  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_HALFEDGE_NEXT, &data, &n), HW_ERR_INVALID_INPUT,
+  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_ARRAY_HALFEDGE_NEXT, &data, &n), HW_ERR_INVALID_INPUT,
                "not an array of the Delaunay triangulation");
-  CHECK_STATUS(hw_delaunay_view(NULL, HW_VORONOI_TRIANGLES, &data, &n), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_delaunay_view(NULL, HW_VORONOI_ARRAY_TRIANGLES, &data, &n), HW_ERR_NULL_ARGUMENT,
                "delaunay");
-  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_TRIANGLES, NULL, &n), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_delaunay_view(d, HW_VORONOI_ARRAY_TRIANGLES, NULL, &n), HW_ERR_NULL_ARGUMENT,
                "out_data");
   hw_delaunay_free(d);
   hw_delaunay_free(d);
   CHECK(last_error_contains("already freed"));
   hw_delaunay_free(NULL);
   CHECK(hw_delaunay_n_triangles(NULL) == 0 && last_error_contains("delaunay"));
-  CHECK(hw_delaunay_dimension(NULL) == HW_VORONOI_EMPTY);
+  CHECK(hw_delaunay_dimension(NULL) == HW_SITE_DIMENSION_EMPTY);
   d = NULL;
   CHECK_STATUS(hw_delaunay_build(five_and_a_copy + 1, 3, NULL), HW_ERR_NULL_ARGUMENT,
                "out_delaunay");

@@ -58,10 +58,10 @@ static char *table(const hw_winged *w, hw_wtable which, hw_wnaming naming,
 
 static void seed_cube_tables(void) {
   hw_winged *w = seed_cube();
-  char *edges = table(w, HW_WTABLE_EDGES, HW_WNAMING_CW_CCW, HW_TABLE_CSV);
-  char *faces = table(w, HW_WTABLE_FACES, HW_WNAMING_CW_CCW, HW_TABLE_CSV);
-  char *granada = table(w, HW_WTABLE_EDGES, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_TEXT);
-  char *all = table(w, HW_WTABLE_ALL, HW_WNAMING_LEFT_RIGHT, HW_TABLE_MARKDOWN);
+  char* edges = table(w, HW_WTABLE_EDGES, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_CSV);
+  char* faces = table(w, HW_WTABLE_FACES, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_CSV);
+  char* granada = table(w, HW_WTABLE_EDGES, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_FORMAT_TEXT);
+  char* all = table(w, HW_WTABLE_ALL, HW_WNAMING_LEFT_RIGHT, HW_TABLE_FORMAT_MARKDOWN);
   printf("%s", edges);
   CHECK(strcmp(edges, cube_edge_table) == 0);
   CHECK(strcmp(faces, cube_face_table) == 0);
@@ -117,29 +117,29 @@ static void walks(void) {
   uint32_t got[8];
   size_t n = 0;
   /* F3 = V3 V8 V7 V4, from its ESTART E11 (V3 -> V8). */
-  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRC_VERTICES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   while (hw_wcirc_next_vertex(&c, &v) && n < 8) got[n++] = v.idx;
   CHECK(n == 4 && got[0] == 2 && got[1] == 7 && got[2] == 6 && got[3] == 3);
   n = 0;
-  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRC_EDGES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRCULATOR_KIND_EDGES, &c) == HW_OK);
   while (hw_wcirc_next_edge(&c, &e) && n < 8) got[n++] = e.idx;
   CHECK(n == 4 && got[0] == 10 && got[1] == 6 && got[2] == 11 && got[3] == 2);
   n = 0;
-  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRC_FACES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRCULATOR_KIND_FACES, &c) == HW_OK);
   while (hw_wcirc_next_face(&c, &f) && n < 8) got[n++] = f.idx;
   CHECK(n == 4); /* F3 touches the four side faces: F6, F2, F5, F1 */
   CHECK(got[0] == 5 && got[1] == 1 && got[2] == 4 && got[3] == 0);
   /* V1 has the three neighbours V2, V4, V6 and the three faces F1, F4, F5. */
   n = 0;
-  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRC_VERTICES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRCULATOR_KIND_VERTICES, &c) == HW_OK);
   while (hw_wcirc_next_vertex(&c, &v) && n < 8) got[n++] = v.idx;
   CHECK(n == 3 && got[0] + got[1] + got[2] == 1 + 3 + 5);
   n = 0;
-  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRC_FACES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRCULATOR_KIND_FACES, &c) == HW_OK);
   while (hw_wcirc_next_face(&c, &f) && n < 8) got[n++] = f.idx;
   CHECK(n == 3 && got[0] + got[1] + got[2] == 0 + 3 + 4);
   n = 0;
-  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRC_EDGES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_vertex(w, v1, HW_WCIRCULATOR_KIND_EDGES, &c) == HW_OK);
   while (hw_wcirc_next_edge(&c, &e) && n < 8) got[n++] = e.idx;
   CHECK(n == 3 && got[0] == 0); /* from its stored edge E1 */
   /* A finished walk stays finished. */
@@ -147,19 +147,20 @@ static void walks(void) {
 
   /* Bad arguments. */
   CHECK_STATUS(hw_wcirc_around_face(w, f3, 7, &c), HW_ERR_INVALID_INPUT, "kind 7");
-  CHECK_STATUS(hw_wcirc_around_face(NULL, f3, HW_WCIRC_EDGES, &c), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_wcirc_around_face(NULL, f3, HW_WCIRCULATOR_KIND_EDGES, &c), HW_ERR_NULL_ARGUMENT,
                "winged");
-  CHECK_STATUS(hw_wcirc_around_face(w, f3, HW_WCIRC_EDGES, NULL), HW_ERR_NULL_ARGUMENT, "out");
+  CHECK_STATUS(hw_wcirc_around_face(w, f3, HW_WCIRCULATOR_KIND_EDGES, NULL), HW_ERR_NULL_ARGUMENT,
+               "out");
   {
     hw_wface missing = {6};
     hw_wvertex nowhere = {HW_INVALID_INDEX};
     /* Messages name elements as C sees them ("face 6"), not as Rust debug output. */
-    CHECK_STATUS(hw_wcirc_around_face(w, missing, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
-                 "face 6 does not exist");
-    CHECK_STATUS(hw_wcirc_around_vertex(w, nowhere, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
-                 "vertex 4294967295 (the invalid id) does not exist");
+    CHECK_STATUS(hw_wcirc_around_face(w, missing, HW_WCIRCULATOR_KIND_EDGES, &c),
+                 HW_ERR_INVALID_HANDLE, "face 6 does not exist");
+    CHECK_STATUS(hw_wcirc_around_vertex(w, nowhere, HW_WCIRCULATOR_KIND_EDGES, &c),
+                 HW_ERR_INVALID_HANDLE, "vertex 4294967295 (the invalid id) does not exist");
   }
-  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRC_EDGES, &c) == HW_OK);
+  CHECK(hw_wcirc_around_face(w, f3, HW_WCIRCULATOR_KIND_EDGES, &c) == HW_OK);
   CHECK(!hw_wcirc_next_vertex(&c, &v));
   CHECK(last_error_contains("read as kind"));
   CHECK(!hw_wcirc_next_edge(NULL, &e));
@@ -218,8 +219,8 @@ static void conversions(void) {
   uint32_t corners[12];
   size_t n = 0;
   uint32_t f;
-  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_STRICT,
-                             &mesh, NULL) == HW_OK);
+  CHECK(hw_mesh_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
   CHECK(hw_winged_from_mesh(mesh, &w) == HW_OK);
   CHECK(hw_winged_n_edges(w) == 6 && hw_winged_check(w) == HW_OK);
   CHECK(hw_winged_to_mesh(w, &back) == HW_OK);
@@ -228,7 +229,7 @@ static void conversions(void) {
   for (f = 0; f < 4; f++) {
     hw_face face;
     face.idx = f;
-    CHECK(hw_circ_around_face(back, face, HW_CIRC_VERTICES, &c) == HW_OK);
+    CHECK(hw_circ_around_face(back, face, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK);
     while (hw_circ_next_vertex(&c, &v) && n < 12) corners[n++] = v.idx;
   }
   CHECK(n == 12 && memcmp(corners, tet_indices, sizeof corners) == 0);
@@ -258,49 +259,49 @@ static void bad_face_lists(void) {
 
   /* A refusal hands out its diagnostic (and no structure). */
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, out_of_range, 12,
-                                      HW_BUILD_STRICT, &w, &d),
+                                      HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_INVALID_INPUT, "out-of-range vertex indices: f1");
   CHECK(w == SENTINEL && d != NULL);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_FACES_OUT_OF_RANGE, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 1);
   hw_diagnostic_free(d);
   d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12,
-                                      HW_BUILD_STRICT, &w, &d),
+                                      HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NON_MANIFOLD, "not an oriented manifold");
   CHECK(w == SENTINEL && d != NULL);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAG_NON_MANIFOLD_EDGES, &n) == HW_OK && n == 2);
+  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
   hw_diagnostic_free(d);
   d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 9, &w, &d),
                HW_ERR_INVALID_INPUT, "unknown build policy 9");
-  CHECK_STATUS(hw_winged_from_indexed(NULL, 4, tet_sizes, 4, tet_indices, 12, HW_BUILD_STRICT,
-                                      &w, &d),
+  CHECK_STATUS(hw_winged_from_indexed(NULL, 4, tet_sizes, 4, tet_indices, 12,
+                                      HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NULL_ARGUMENT, "positions");
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, NULL, 4, tet_indices, 12,
-                                      HW_BUILD_STRICT, &w, &d),
+                                      HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NULL_ARGUMENT, "face_sizes");
-  CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, NULL, 12, HW_BUILD_STRICT,
-                                      &w, &d),
+  CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, NULL, 12,
+                                      HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NULL_ARGUMENT, "indices");
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12,
-                                      HW_BUILD_STRICT, NULL, &d),
+                                      HW_BUILD_POLICY_STRICT, NULL, &d),
                HW_ERR_NULL_ARGUMENT, "out_winged");
   CHECK(w == SENTINEL && d == NULL);
 
   /* Skip leaves out the face that cannot be placed and says which. */
   w = NULL;
-  CHECK(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12, HW_BUILD_SKIP, &w,
-                               &d) == HW_OK);
+  CHECK(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12, HW_BUILD_POLICY_SKIP,
+                               &w, &d) == HW_OK);
   CHECK(hw_winged_n_faces(w) == 3 && hw_winged_check(w) == HW_OK);
-  CHECK(hw_diagnostic_ids(d, HW_DIAG_SKIPPED_FACES, &ids, &n) == HW_OK);
+  CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 2);
   hw_diagnostic_free(d);
   hw_winged_free(w);
   /* Repair keeps every face. */
   w = NULL;
-  CHECK(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12, HW_BUILD_REPAIR, &w,
-                               NULL) == HW_OK);
+  CHECK(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, flipped, 12, HW_BUILD_POLICY_REPAIR,
+                               &w, NULL) == HW_OK);
   CHECK(hw_winged_n_faces(w) == 4 && hw_winged_check(w) == HW_OK);
   hw_winged_free(w);
 
@@ -352,7 +353,7 @@ static void euler_cube(void) {
 
   {
     /* Refusals change nothing: the tables print the same before and after. */
-    char *before = table(w, HW_WTABLE_ALL, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_CSV);
+    char* before = table(w, HW_WTABLE_ALL, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_FORMAT_CSV);
     char *after;
     const double nowhere[3] = {NAN, 0, 0};
     const double origin[3] = {0, 0, 0};
@@ -366,7 +367,7 @@ static void euler_cube(void) {
     hw_wcirculator c;
     size_t n_on = 0;
     uint32_t id;
-    CHECK(hw_wcirc_around_face(w, f0, HW_WCIRC_VERTICES, &c) == HW_OK);
+    CHECK(hw_wcirc_around_face(w, f0, HW_WCIRCULATOR_KIND_VERTICES, &c) == HW_OK);
     while (hw_wcirc_next_vertex(&c, &v) && n_on < 8) on_f0[n_on++] = v;
     CHECK(n_on == 4);
     for (id = 0; id < 8 && far.idx == HW_INVALID_INDEX; id++) {
@@ -392,7 +393,7 @@ static void euler_cube(void) {
                  "edge 500 does not exist");
     CHECK(v_out.idx == HW_INVALID_INDEX && f_out.idx == HW_INVALID_INDEX &&
           e_out.idx == HW_INVALID_INDEX);
-    after = table(w, HW_WTABLE_ALL, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_CSV);
+    after = table(w, HW_WTABLE_ALL, HW_WNAMING_DIRECT_INVERSE, HW_TABLE_FORMAT_CSV);
     CHECK(strcmp(before, after) == 0);
     free(before);
     free(after);
@@ -410,7 +411,7 @@ static void euler_cube(void) {
     const double moved[3] = {0.25, 0.25, 0.25}, nowhere[3] = {0.0, 1.0 / 0.0 * 0.0, 0.0};
     double at[3];
     CHECK(hw_winged_garbage_collect(w, &maps) == HW_OK);
-    CHECK(hw_index_maps_view(maps, HW_ELEMENT_EDGE, &edge_map, &n_map) == HW_OK);
+    CHECK(hw_index_maps_view(maps, HW_ELEMENT_KIND_EDGE, &edge_map, &n_map) == HW_OK);
     /* The killed edge maps to nothing; the other eleven keep their order. */
     CHECK(n_map == 12 && edge_map[made_edge.idx] == HW_INVALID_INDEX);
     hw_index_maps_free(maps);
@@ -450,8 +451,9 @@ static void null_and_freed_handles(void) {
   CHECK_STATUS(hw_winged_normals(NULL, HW_WNORMALS_FACES, p, 3, NULL), HW_ERR_NULL_ARGUMENT,
                "winged");
   CHECK_STATUS(hw_winged_check(NULL), HW_ERR_NULL_ARGUMENT, "winged");
-  CHECK_STATUS(hw_winged_table(NULL, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_TEXT, buf, 8, NULL),
-               HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(
+      hw_winged_table(NULL, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, buf, 8, NULL),
+      HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_mvfs(NULL, p, &made_vertex, &made_face), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_mev(NULL, f, v, p, &made_edge, &made_vertex), HW_ERR_NULL_ARGUMENT,
                "winged");
@@ -484,16 +486,17 @@ static void null_and_freed_handles(void) {
     CHECK(last_error_contains("does not exist"));
   }
   /* Tables: unknown enum values, a buffer too small (nothing written, size reported). */
-  CHECK_STATUS(hw_winged_table(w, 4, HW_WNAMING_CW_CCW, HW_TABLE_TEXT, buf, 8, NULL),
+  CHECK_STATUS(hw_winged_table(w, 4, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, buf, 8, NULL),
                HW_ERR_INVALID_INPUT, "unknown table 4");
-  CHECK_STATUS(hw_winged_table(w, HW_WTABLE_ALL, 3, HW_TABLE_TEXT, buf, 8, NULL),
+  CHECK_STATUS(hw_winged_table(w, HW_WTABLE_ALL, 3, HW_TABLE_FORMAT_TEXT, buf, 8, NULL),
                HW_ERR_INVALID_INPUT, "unknown naming 3");
   CHECK_STATUS(hw_winged_table(w, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, 3, buf, 8, NULL),
                HW_ERR_INVALID_INPUT, "unknown table format 3");
   memset(buf, 'x', sizeof buf);
   n = 0;
-  CHECK_STATUS(hw_winged_table(w, HW_WTABLE_FACES, HW_WNAMING_CW_CCW, HW_TABLE_CSV, buf, 8, &n),
-               HW_ERR_BUFFER_TOO_SMALL, "are needed");
+  CHECK_STATUS(
+      hw_winged_table(w, HW_WTABLE_FACES, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_CSV, buf, 8, &n),
+      HW_ERR_BUFFER_TOO_SMALL, "are needed");
   CHECK(n == strlen(cube_face_table) + 1 && buf[0] == 'x');
 
   /* Freeing twice is detected and refused; NULL is a no-op. */
@@ -531,7 +534,7 @@ static void killed_ids(void) {
   CHECK_STATUS(hw_winged_set_position(w, v1, p0), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(hw_winged_vertex_edge(w, v1).idx == HW_INVALID_INDEX);
   CHECK(last_error_contains("does not exist"));
-  CHECK_STATUS(hw_wcirc_around_vertex(w, v1, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
+  CHECK_STATUS(hw_wcirc_around_vertex(w, v1, HW_WCIRCULATOR_KIND_EDGES, &c), HW_ERR_INVALID_HANDLE,
                "does not exist");
   CHECK_STATUS(hw_winged_kev(w, e1, v1), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK_STATUS(hw_winged_kef(w, e1, f0), HW_ERR_INVALID_HANDLE, "does not exist");
@@ -546,7 +549,7 @@ static void killed_ids(void) {
   CHECK_STATUS(hw_winged_face_normal(w, f0, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(hw_winged_face_edge(w, f0).idx == HW_INVALID_INDEX);
   CHECK(last_error_contains("does not exist"));
-  CHECK_STATUS(hw_wcirc_around_face(w, f0, HW_WCIRC_EDGES, &c), HW_ERR_INVALID_HANDLE,
+  CHECK_STATUS(hw_wcirc_around_face(w, f0, HW_WCIRCULATOR_KIND_EDGES, &c), HW_ERR_INVALID_HANDLE,
                "does not exist");
   CHECK_STATUS(hw_winged_mev(w, f0, v0, p1, &out_e, &out_v), HW_ERR_INVALID_HANDLE,
                "does not exist");

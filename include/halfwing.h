@@ -149,7 +149,7 @@
  * Minor version: added functionality.
  * \ingroup errors
  */
-#define HW_VERSION_MINOR 1
+#define HW_VERSION_MINOR 2
 
 /**
  * Patch version: bug fixes.
@@ -180,11 +180,11 @@ typedef struct hw_delaunay hw_delaunay;
  * hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
  *
  * Two kinds of lists: the findings describe the input as it is, whatever the policy (they are
- * the same for a build and for hw_diagnose_indexed()); ::HW_DIAG_SKIPPED_FACES,
- * ::HW_DIAG_REORIENTED_FACES and ::HW_DIAG_VERTEX_COPIES list what the policy changed. Face
- * indices refer to the input face list, vertex indices to the input positions. Faces with fewer
- * than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
- * the edge, fan and area findings. Every list is sorted ascending.
+ * the same for a build and for hw_diagnose_indexed()); ::HW_DIAGNOSTIC_LIST_SKIPPED_FACES,
+ * ::HW_DIAGNOSTIC_LIST_REORIENTED_FACES and ::HW_DIAGNOSTIC_LIST_VERTEX_COPIES list what the
+ * policy changed. Face indices refer to the input face list, vertex indices to the input
+ * positions. Faces with fewer than 3 corners, an out-of-range index or a repeated vertex are
+ * listed as such and left out of the edge, fan and area findings. Every list is sorted ascending.
  * \ingroup mesh
  */
 typedef struct hw_diagnostic hw_diagnostic;
@@ -224,8 +224,9 @@ typedef struct hw_mesh hw_mesh;
 
 /**
  * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
- * hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
- * views stay valid until it is freed, also after the mesh it came from changes or is freed.
+ * hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with
+ * hw_render_buffers_free(). Immutable: its views stay valid until it is freed, also after the mesh
+ * it came from changes or is freed.
  * \ingroup render
  */
 typedef struct hw_render_buffers hw_render_buffers;
@@ -260,9 +261,10 @@ typedef struct hw_soup hw_soup;
  * taking a `const hw_voronoi *` may run concurrently.
  *
  * Numbering: sites keep their input index. A duplicated site is represented by the smallest
- * index of its group (::HW_VORONOI_REPRESENTATIVE); the other copies have no cell, no incident
- * Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs (`twin = h ^ 1`);
- * half-edge `h` bounds the cell of `site[h]` (on its left) and separates it from `site[h ^ 1]`.
+ * index of its group (::HW_VORONOI_ARRAY_REPRESENTATIVE); the other copies have no cell, no
+ * incident Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs
+ * (`twin = h ^ 1`); half-edge `h` bounds the cell of `site[h]` (on its left) and separates it
+ * from `site[h ^ 1]`.
  * \ingroup voronoi
  */
 typedef struct hw_voronoi hw_voronoi;
@@ -292,7 +294,10 @@ typedef struct hw_winged hw_winged;
  * details `hw_last_error_message` gives.
  *
  * A plain integer type with named constants, not a Rust enum, so that a value coming back from C
- * (as in `hw_status_str`) can never be an invalid enum discriminant.
+ * (as in `hw_status_str`) can never be an invalid enum discriminant. Every other enumeration's
+ * constants start with its type's name (`hw_normal_weighting`: `HW_NORMAL_WEIGHTING_*`); status
+ * codes keep the short `HW_OK` / `HW_ERR_*` that C libraries give them, success told from
+ * failure at a glance.
  * \ingroup errors
  */
 typedef uint32_t hw_status;
@@ -406,17 +411,19 @@ typedef uint32_t hw_voronoi_array;
 
 /**
  * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
- * ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
- * lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
- * one family passed where another is expected is refused, never read as a different list.
+ * ::HW_DIAGNOSTIC_LIST_FIRST to `HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT - 1`, apart
+ * from the edge lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding),
+ * so a value of one family passed where another is expected is refused, never read as a different
+ * list.
  * \ingroup mesh
  */
 typedef uint32_t hw_diagnostic_list;
 
 /**
  * One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
- * ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
- * lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
+ * ::HW_DIAGNOSTIC_EDGES_FIRST to `HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT - 1`,
+ * apart from the id lists' (::hw_diagnostic_list) and the doctor's findings'
+ * (::hw_doctor_finding).
  * \ingroup mesh
  */
 typedef uint32_t hw_diagnostic_edges;
@@ -657,7 +664,8 @@ typedef struct {
   hw_shading shading;
   /**
    * Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
-   * the vertex-normal glyphs (::HW_WEIGHT_UNIFORM, ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+   * the vertex-normal glyphs (::HW_NORMAL_WEIGHTING_UNIFORM, ::HW_NORMAL_WEIGHTING_AREA,
+   * ::HW_NORMAL_WEIGHTING_ANGLE).
    */
   hw_normal_weighting weighting;
   /**
@@ -665,8 +673,9 @@ typedef struct {
    */
   double crease_angle;
   /**
-   * `true`: one ::HW_RENDER_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
-   * separate ::HW_RENDER_POSITIONS, ::HW_RENDER_NORMALS and ::HW_RENDER_UVS arrays.
+   * `true`: one ::HW_RENDER_FLOATS_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
+   * separate ::HW_RENDER_FLOATS_POSITIONS, ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_FLOATS_UVS
+   * arrays.
    */
   bool interleaved;
   /**
@@ -698,7 +707,7 @@ typedef struct {
   const double *corner_uvs;
   /**
    * Half-edge slots in `corner_normals` and `corner_uvs`: must be
-   * `hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE)` when either is given.
+   * `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
    */
   size_t n_corners;
 } hw_render_options;
@@ -779,7 +788,7 @@ typedef struct {
    */
   bool remove_small_components;
   /**
-   * ::HW_SMALL_BY_FACE_COUNT or ::HW_SMALL_BY_RELATIVE_DIAMETER.
+   * ::HW_SMALL_COMPONENTS_BY_FACE_COUNT or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER.
    */
   hw_small_components small_rule;
   /**
@@ -906,7 +915,7 @@ typedef uint32_t hw_voronoi_edge_kind;
  */
 typedef struct {
   /**
-   * ::HW_VORONOI_SEGMENT, ::HW_VORONOI_RAY or ::HW_VORONOI_LINE_EDGE.
+   * ::HW_VORONOI_EDGE_KIND_SEGMENT, ::HW_VORONOI_EDGE_KIND_RAY or ::HW_VORONOI_EDGE_KIND_LINE.
    */
   hw_voronoi_edge_kind kind;
   /**
@@ -1146,157 +1155,158 @@ typedef uint32_t hw_fate;
  * `double`.
  * \ingroup attributes
  */
-#define HW_SCALAR_F64 0
+#define HW_SCALAR_TYPE_F64 0
 
 /**
  * `float`.
  * \ingroup attributes
  */
-#define HW_SCALAR_F32 1
+#define HW_SCALAR_TYPE_F32 1
 
 /**
  * `int32_t`.
  * \ingroup attributes
  */
-#define HW_SCALAR_I32 2
+#define HW_SCALAR_TYPE_I32 2
 
 /**
  * `uint32_t`.
  * \ingroup attributes
  */
-#define HW_SCALAR_U32 3
+#define HW_SCALAR_TYPE_U32 3
 
 /**
  * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
  * \ingroup navigation
  */
-#define HW_CIRC_HALFEDGES 0
+#define HW_CIRCULATOR_KIND_HALFEDGES 0
 
 /**
  * Around a vertex only: the incoming half-edges (twins of the outgoing ones).
  * \ingroup navigation
  */
-#define HW_CIRC_INCOMING 1
+#define HW_CIRCULATOR_KIND_INCOMING 1
 
 /**
  * Vertices: a vertex's neighbours, a face's corners.
  * \ingroup navigation
  */
-#define HW_CIRC_VERTICES 2
+#define HW_CIRCULATOR_KIND_VERTICES 2
 
 /**
  * Edges: at a vertex, or the sides of a face.
  * \ingroup navigation
  */
-#define HW_CIRC_EDGES 3
+#define HW_CIRCULATOR_KIND_EDGES 3
 
 /**
  * Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
  * \ingroup navigation
  */
-#define HW_CIRC_FACES 4
+#define HW_CIRCULATOR_KIND_FACES 4
 
 /**
  * The first id list.
  * \ingroup mesh
  */
-#define HW_DIAG_LIST_FIRST 16
+#define HW_DIAGNOSTIC_LIST_FIRST 16
 
 /**
  * Faces with fewer than 3 corners.
  * \ingroup mesh
  */
-#define HW_DIAG_FACES_TOO_SMALL 16
+#define HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL 16
 
 /**
  * Faces with a vertex index beyond the positions.
  * \ingroup mesh
  */
-#define HW_DIAG_FACES_OUT_OF_RANGE 17
+#define HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE 17
 
 /**
  * Faces naming one vertex more than once.
  * \ingroup mesh
  */
-#define HW_DIAG_FACES_REPEATED_VERTEX 18
+#define HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX 18
 
 /**
  * Vertices with a NaN or infinite coordinate.
  * \ingroup mesh
  */
-#define HW_DIAG_NON_FINITE_VERTICES 19
+#define HW_DIAGNOSTIC_LIST_NON_FINITE_VERTICES 19
 
 /**
  * Vertices whose faces form more than one fan, faces being in one fan when they share an edge
- * at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
- * ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
+ * at the vertex (two cones touching at their tips). ::HW_BUILD_POLICY_STRICT refuses them;
+ * ::HW_BUILD_POLICY_SKIP and ::HW_BUILD_POLICY_REPAIR give every fan but the first a copy of the
+ * vertex.
  * \ingroup mesh
  */
-#define HW_DIAG_NON_MANIFOLD_VERTICES 20
+#define HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES 20
 
 /**
  * Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
  * face, but not listed here).
  * \ingroup mesh
  */
-#define HW_DIAG_ISOLATED_VERTICES 21
+#define HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES 21
 
 /**
  * Faces with zero area.
  * \ingroup mesh
  */
-#define HW_DIAG_DEGENERATE_FACES 22
+#define HW_DIAGNOSTIC_LIST_DEGENERATE_FACES 22
 
 /**
- * Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
- * `i`-th input face not listed here.
+ * Faces left out of the mesh by ::HW_BUILD_POLICY_SKIP or ::HW_BUILD_POLICY_REPAIR: mesh face `i`
+ * is the `i`-th input face not listed here.
  * \ingroup mesh
  */
-#define HW_DIAG_SKIPPED_FACES 23
+#define HW_DIAGNOSTIC_LIST_SKIPPED_FACES 23
 
 /**
- * Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
- * copies input vertex `ids[i]` (same position).
+ * Vertices added by ::HW_BUILD_POLICY_SKIP or ::HW_BUILD_POLICY_REPAIR: mesh vertex
+ * `n_input_vertices + i` copies input vertex `ids[i]` (same position).
  * \ingroup mesh
  */
-#define HW_DIAG_VERTEX_COPIES 24
+#define HW_DIAGNOSTIC_LIST_VERTEX_COPIES 24
 
 /**
- * Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
+ * Faces ::HW_BUILD_POLICY_REPAIR built the other way round from the input (to agree with their
  * neighbours, or to turn a closed component outward).
  * \ingroup mesh
  */
-#define HW_DIAG_REORIENTED_FACES 25
+#define HW_DIAGNOSTIC_LIST_REORIENTED_FACES 25
 
 /**
  * The number of id lists.
  * \ingroup mesh
  */
-#define HW_DIAG_LIST_COUNT 10
+#define HW_DIAGNOSTIC_LIST_COUNT 10
 
 /**
  * The first edge list.
  * \ingroup mesh
  */
-#define HW_DIAG_EDGES_FIRST 32
+#define HW_DIAGNOSTIC_EDGES_FIRST 32
 
 /**
  * Edges used by three or more faces.
  * \ingroup mesh
  */
-#define HW_DIAG_NON_MANIFOLD_EDGES 32
+#define HW_DIAGNOSTIC_EDGES_NON_MANIFOLD 32
 
 /**
  * Edges whose two faces traverse them in the same direction.
  * \ingroup mesh
  */
-#define HW_DIAG_INCONSISTENT_EDGES 33
+#define HW_DIAGNOSTIC_EDGES_INCONSISTENT 33
 
 /**
  * The number of edge lists.
  * \ingroup mesh
  */
-#define HW_DIAG_EDGES_COUNT 2
+#define HW_DIAGNOSTIC_EDGES_COUNT 2
 
 /**
  * The first finding kind.
@@ -1308,81 +1318,82 @@ typedef uint32_t hw_fate;
  * Indices of small components (into hw_doctor_report_component()); one id per item.
  * \ingroup doctor
  */
-#define HW_DOCTOR_SMALL_COMPONENTS 64
+#define HW_DOCTOR_FINDING_SMALL_COMPONENTS 64
 
 /**
  * Faces of a closed path along which the orientation flips (the surface is not orientable),
  * each sharing an edge with the next and the last with the first; one id per item.
  * \ingroup doctor
  */
-#define HW_DOCTOR_NON_ORIENTABLE_WITNESS 65
+#define HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS 65
 
 /**
  * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
  * \ingroup doctor
  */
-#define HW_DOCTOR_ZERO_LENGTH_EDGES 66
+#define HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES 66
 
 /**
  * Triangles with an angle below the needle threshold; one id per item.
  * \ingroup doctor
  */
-#define HW_DOCTOR_NEEDLES 67
+#define HW_DOCTOR_FINDING_NEEDLES 67
 
 /**
  * Triangles with an angle above the cap threshold; one id per item.
  * \ingroup doctor
  */
-#define HW_DOCTOR_CAPS 68
+#define HW_DOCTOR_FINDING_CAPS 68
 
 /**
  * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
  * first, then the two faces, ascending).
  * \ingroup doctor
  */
-#define HW_DOCTOR_FOLDED_EDGES 69
+#define HW_DOCTOR_FINDING_FOLDED_EDGES 69
 
 /**
  * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
  * \ingroup doctor
  */
-#define HW_DOCTOR_LONG_EDGES 70
+#define HW_DOCTOR_FINDING_LONG_EDGES 70
 
 /**
  * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
  * lowest vertex at that position).
  * \ingroup doctor
  */
-#define HW_DOCTOR_DUPLICATE_POSITIONS 71
+#define HW_DOCTOR_FINDING_DUPLICATE_POSITIONS 71
 
 /**
  * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
  * vertex, then the first vertex of its group).
  * \ingroup doctor
  */
-#define HW_DOCTOR_NEAR_DUPLICATE_VERTICES 72
+#define HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES 72
 
 /**
  * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
  * then the lowest such face).
  * \ingroup doctor
  */
-#define HW_DOCTOR_DUPLICATE_FACES 73
+#define HW_DOCTOR_FINDING_DUPLICATE_FACES 73
 
 /**
  * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
  * the edge's two ends, smaller first, and the edge's face).
  * \ingroup doctor
  */
-#define HW_DOCTOR_T_VERTICES 74
+#define HW_DOCTOR_FINDING_T_VERTICES 74
 
 /**
  * Pairs of faces that intersect other than along the vertices and edges they share, decided
  * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
- * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+ * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first),
+ * sorted.
  * \ingroup doctor
  */
-#define HW_DOCTOR_SELF_INTERSECTIONS 75
+#define HW_DOCTOR_FINDING_SELF_INTERSECTIONS 75
 
 /**
  * The number of finding kinds.
@@ -1394,25 +1405,25 @@ typedef uint32_t hw_fate;
  * Vertices.
  * \ingroup ids
  */
-#define HW_ELEMENT_VERTEX 0
+#define HW_ELEMENT_KIND_VERTEX 0
 
 /**
  * Half-edges.
  * \ingroup ids
  */
-#define HW_ELEMENT_HALFEDGE 1
+#define HW_ELEMENT_KIND_HALFEDGE 1
 
 /**
  * Edges.
  * \ingroup ids
  */
-#define HW_ELEMENT_EDGE 2
+#define HW_ELEMENT_KIND_EDGE 2
 
 /**
  * Faces.
  * \ingroup ids
  */
-#define HW_ELEMENT_FACE 3
+#define HW_ELEMENT_KIND_FACE 3
 
 /**
  * Build the input exactly as it is, or refuse it whole: `HW_ERR_INVALID_INPUT` for a malformed
@@ -1421,44 +1432,45 @@ typedef uint32_t hw_fate;
  * vertices.
  * \ingroup mesh
  */
-#define HW_BUILD_STRICT 0
+#define HW_BUILD_POLICY_STRICT 0
 
 /**
- * Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
- * faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
- * direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
+ * Leave out what cannot be placed, and list it (::HW_DIAGNOSTIC_LIST_SKIPPED_FACES): malformed
+ * faces, faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used
+ * in its direction; split non-manifold vertices (one vertex per fan,
+ * ::HW_DIAGNOSTIC_LIST_VERTEX_COPIES).
  * \ingroup mesh
  */
-#define HW_BUILD_SKIP 1
+#define HW_BUILD_POLICY_SKIP 1
 
 /**
  * Keep every face that can be kept, and make it fit: collapse repeated corners, reverse faces so
- * neighbours agree (::HW_DIAG_REORIENTED_FACES), cut the surface along edges still non-manifold
- * or inconsistent and give each fan its own vertex, split non-manifold vertices, and turn every
- * closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
- * an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
- * (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
+ * neighbours agree (::HW_DIAGNOSTIC_LIST_REORIENTED_FACES), cut the surface along edges still
+ * non-manifold or inconsistent and give each fan its own vertex, split non-manifold vertices, and
+ * turn every closed component to face outward. Faces that cannot be kept (fewer than 3 distinct
+ * corners, an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
+ * (::HW_DIAGNOSTIC_LIST_SKIPPED_FACES). Accepts every input ::HW_BUILD_POLICY_SKIP accepts.
  * \ingroup mesh
  */
-#define HW_BUILD_REPAIR 2
+#define HW_BUILD_POLICY_REPAIR 2
 
 /**
  * Unit face normals summed: OpenMesh's default, the textbook average.
  * \ingroup normals
  */
-#define HW_WEIGHT_UNIFORM 0
+#define HW_NORMAL_WEIGHTING_UNIFORM 0
 
 /**
  * Face normals weighted by face area.
  * \ingroup normals
  */
-#define HW_WEIGHT_AREA 1
+#define HW_NORMAL_WEIGHTING_AREA 1
 
 /**
  * Unit face normals weighted by the face's angle at the vertex: pmp's default.
  * \ingroup normals
  */
-#define HW_WEIGHT_ANGLE 2
+#define HW_NORMAL_WEIGHTING_ANGLE 2
 
 /**
  * Face normals: faceted; every vertex is split per face.
@@ -1494,160 +1506,160 @@ typedef uint32_t hw_fate;
  * x y z per vertex (separate layout; empty when interleaved).
  * \ingroup render
  */
-#define HW_RENDER_POSITIONS 0
+#define HW_RENDER_FLOATS_POSITIONS 0
 
 /**
  * Unit nx ny nz per vertex (separate layout; empty when interleaved).
  * \ingroup render
  */
-#define HW_RENDER_NORMALS 1
+#define HW_RENDER_FLOATS_NORMALS 1
 
 /**
  * u v per vertex (separate layout with corner uvs; empty otherwise).
  * \ingroup render
  */
-#define HW_RENDER_UVS 2
+#define HW_RENDER_FLOATS_UVS 2
 
 /**
  * hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
  * \ingroup render
  */
-#define HW_RENDER_INTERLEAVED 3
+#define HW_RENDER_FLOATS_INTERLEAVED 3
 
 /**
  * `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
  * \ingroup render
  */
-#define HW_RENDER_WIREFRAME 4
+#define HW_RENDER_FLOATS_WIREFRAME 4
 
 /**
  * `GL_LINES` points of the boundary edges (edges with a face on one side only).
  * \ingroup render
  */
-#define HW_RENDER_BOUNDARY 5
+#define HW_RENDER_FLOATS_BOUNDARY 5
 
 /**
  * `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
  * \ingroup render
  */
-#define HW_RENDER_NON_MANIFOLD 6
+#define HW_RENDER_FLOATS_NON_MANIFOLD 6
 
 /**
  * `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
  * \ingroup render
  */
-#define HW_RENDER_VERTEX_NORMALS 7
+#define HW_RENDER_FLOATS_VERTEX_NORMALS 7
 
 /**
  * `GL_LINES` glyphs of the face normals, from each face's centroid.
  * \ingroup render
  */
-#define HW_RENDER_FACE_NORMALS 8
+#define HW_RENDER_FLOATS_FACE_NORMALS 8
 
 /**
  * `GL_POINTS` points, x y z: the vertices a doctor's finding names
  * (hw_render_buffers_from_finding(); empty otherwise).
  * \ingroup render
  */
-#define HW_RENDER_POINTS 9
+#define HW_RENDER_FLOATS_POINTS 9
 
 /**
  * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
  * \ingroup render
  */
-#define HW_RENDER_TRIANGLES 0
+#define HW_RENDER_INDICES_TRIANGLES 0
 
 /**
  * Per triangle, the mesh face (or polygon) it comes from.
  * \ingroup render
  */
-#define HW_RENDER_TRIANGLE_FACES 1
+#define HW_RENDER_INDICES_TRIANGLE_FACES 1
 
 /**
  * Per vertex, the mesh vertex (or polygon) it shows.
  * \ingroup render
  */
-#define HW_RENDER_VERTEX_SOURCES 2
+#define HW_RENDER_INDICES_VERTEX_SOURCES 2
 
 /**
- * Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+ * Per ::HW_RENDER_FLOATS_WIREFRAME segment, its edge id (or polygon).
  * \ingroup render
  */
-#define HW_RENDER_WIREFRAME_SOURCES 3
+#define HW_RENDER_INDICES_WIREFRAME_SOURCES 3
 
 /**
- * Per ::HW_RENDER_BOUNDARY segment, its edge id.
+ * Per ::HW_RENDER_FLOATS_BOUNDARY segment, its edge id.
  * \ingroup render
  */
-#define HW_RENDER_BOUNDARY_SOURCES 4
+#define HW_RENDER_INDICES_BOUNDARY_SOURCES 4
 
 /**
- * Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+ * Per ::HW_RENDER_FLOATS_POINTS point, the item of the finding it shows.
  * \ingroup render
  */
-#define HW_RENDER_POINT_SOURCES 5
+#define HW_RENDER_INDICES_POINT_SOURCES 5
 
 /**
  * Pairs `removed, kept` (2 values each) of vertices merged into another.
  * \ingroup repair
  */
-#define HW_REPAIR_MERGED_VERTICES 0
+#define HW_REPAIR_LIST_MERGED_VERTICES 0
 
 /**
  * Vertices removed (merged ones included).
  * \ingroup repair
  */
-#define HW_REPAIR_REMOVED_VERTICES 1
+#define HW_REPAIR_LIST_REMOVED_VERTICES 1
 
 /**
  * Faces removed.
  * \ingroup repair
  */
-#define HW_REPAIR_REMOVED_FACES 2
+#define HW_REPAIR_LIST_REMOVED_FACES 2
 
 /**
  * Pairs `removed, kept` (2 values each) of duplicate faces.
  * \ingroup repair
  */
-#define HW_REPAIR_DUPLICATE_FACES 3
+#define HW_REPAIR_LIST_DUPLICATE_FACES 3
 
 /**
  * Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
  * \ingroup repair
  */
-#define HW_REPAIR_STITCHED_HALFEDGES 4
+#define HW_REPAIR_LIST_STITCHED_HALFEDGES 4
 
 /**
  * The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
  * count before the repair) copies vertex `ids[i]`.
  * \ingroup repair
  */
-#define HW_REPAIR_VERTEX_COPIES 5
+#define HW_REPAIR_LIST_VERTEX_COPIES 5
 
 /**
  * Faces whose corner order was reversed.
  * \ingroup repair
  */
-#define HW_REPAIR_REORIENTED_FACES 6
+#define HW_REPAIR_LIST_REORIENTED_FACES 6
 
 /**
  * Pairs `cap, across` (2 values each) of triangles whose shared edge
  * hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
  * \ingroup repair
  */
-#define HW_REPAIR_FLIPPED_FACES 7
+#define HW_REPAIR_LIST_FLIPPED_FACES 7
 
 /**
  * Components of at most `value` faces.
  * \ingroup repair
  */
-#define HW_SMALL_BY_FACE_COUNT 0
+#define HW_SMALL_COMPONENTS_BY_FACE_COUNT 0
 
 /**
  * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
  * \ingroup repair
  */
-#define HW_SMALL_BY_RELATIVE_DIAMETER 1
+#define HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER 1
 
 /**
  * Keep every face and cut the surface along the edge (copies of its ends).
@@ -1721,32 +1733,32 @@ typedef uint32_t hw_fate;
  * The ::hw_fate of every input vertex.
  * \ingroup repair
  */
-#define HW_FATES_VERTEX_KINDS 0
+#define HW_FATES_LIST_VERTEX_KINDS 0
 
 /**
  * The id that goes with every input vertex's fate.
  * \ingroup repair
  */
-#define HW_FATES_VERTEX_IDS 1
+#define HW_FATES_LIST_VERTEX_IDS 1
 
 /**
  * The ::hw_fate of every input face.
  * \ingroup repair
  */
-#define HW_FATES_FACE_KINDS 2
+#define HW_FATES_LIST_FACE_KINDS 2
 
 /**
  * The id that goes with every input face's fate.
  * \ingroup repair
  */
-#define HW_FATES_FACE_IDS 3
+#define HW_FATES_LIST_FACE_IDS 3
 
 /**
  * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
  * vertex, by output id.
  * \ingroup repair
  */
-#define HW_FATES_ADDED_VERTICES 4
+#define HW_FATES_LIST_ADDED_VERTICES 4
 
 /**
  * Success.
@@ -1829,13 +1841,13 @@ typedef uint32_t hw_fate;
  * One quadrilateral per cell (a triangle where a pole collapses a side).
  * \ingroup surfaces
  */
-#define HW_CELLS_QUADS 0
+#define HW_CELL_FACES_QUADS 0
 
 /**
  * Two triangles per cell.
  * \ingroup surfaces
  */
-#define HW_CELLS_TRIANGLES 1
+#define HW_CELL_FACES_TRIANGLES 1
 
 /**
  * Leave them open.
@@ -1859,150 +1871,150 @@ typedef uint32_t hw_fate;
  * Per half-edge: the vertex it leaves.
  * \ingroup navigation
  */
-#define HW_ARRAY_HALFEDGE_ORIGIN 0
+#define HW_MESH_ARRAY_HALFEDGE_ORIGIN 0
 
 /**
  * Per half-edge: the next half-edge around its face or boundary loop.
  * \ingroup navigation
  */
-#define HW_ARRAY_HALFEDGE_NEXT 1
+#define HW_MESH_ARRAY_HALFEDGE_NEXT 1
 
 /**
  * Per half-edge: the previous half-edge around its face or boundary loop.
  * \ingroup navigation
  */
-#define HW_ARRAY_HALFEDGE_PREV 2
+#define HW_MESH_ARRAY_HALFEDGE_PREV 2
 
 /**
  * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
  * \ingroup navigation
  */
-#define HW_ARRAY_HALFEDGE_FACE 3
+#define HW_MESH_ARRAY_HALFEDGE_FACE 3
 
 /**
  * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
  * \ingroup navigation
  */
-#define HW_ARRAY_VERTEX_HALFEDGE 4
+#define HW_MESH_ARRAY_VERTEX_HALFEDGE 4
 
 /**
  * Per face: one of its half-edges.
  * \ingroup navigation
  */
-#define HW_ARRAY_FACE_HALFEDGE 5
+#define HW_MESH_ARRAY_FACE_HALFEDGE 5
 
 /**
  * No sites.
  * \ingroup voronoi
  */
-#define HW_VORONOI_EMPTY 0
+#define HW_SITE_DIMENSION_EMPTY 0
 
 /**
  * One distinct site (possibly repeated): one cell, the whole plane.
  * \ingroup voronoi
  */
-#define HW_VORONOI_POINT 1
+#define HW_SITE_DIMENSION_POINT 1
 
 /**
  * Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
  * bisectors, and the hull lists the sites in order along their line.
  * \ingroup voronoi
  */
-#define HW_VORONOI_LINE 2
+#define HW_SITE_DIMENSION_LINE 2
 
 /**
  * The sites span the plane: at least one triangle.
  * \ingroup voronoi
  */
-#define HW_VORONOI_PLANE 3
+#define HW_SITE_DIMENSION_PLANE 3
 
 /**
  * Per site: the site representing it (itself unless it duplicates a smaller index).
  * \ingroup voronoi
  */
-#define HW_VORONOI_REPRESENTATIVE 0
+#define HW_VORONOI_ARRAY_REPRESENTATIVE 0
 
 /**
  * Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
  * Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
  * \ingroup voronoi
  */
-#define HW_VORONOI_TRIANGLES 1
+#define HW_VORONOI_ARRAY_TRIANGLES 1
 
 /**
  * Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
  * \ingroup voronoi
  */
-#define HW_VORONOI_TRIANGLE_TWINS 2
+#define HW_VORONOI_ARRAY_TRIANGLE_TWINS 2
 
 /**
  * The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
  * line; for one distinct site: that site).
  * \ingroup voronoi
  */
-#define HW_VORONOI_HULL 3
+#define HW_VORONOI_ARRAY_HULL 3
 
 /**
  * Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
  * \ingroup voronoi
  */
-#define HW_VORONOI_TRIANGLE_VERTEX 4
+#define HW_VORONOI_ARRAY_TRIANGLE_VERTEX 4
 
 /**
  * Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
  * \ingroup voronoi
  */
-#define HW_VORONOI_HALFEDGE_ORIGIN 5
+#define HW_VORONOI_ARRAY_HALFEDGE_ORIGIN 5
 
 /**
  * Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
  * out to infinity is followed by the one coming back).
  * \ingroup voronoi
  */
-#define HW_VORONOI_HALFEDGE_NEXT 6
+#define HW_VORONOI_ARRAY_HALFEDGE_NEXT 6
 
 /**
  * Per Voronoi half-edge: the previous half-edge around its cell.
  * \ingroup voronoi
  */
-#define HW_VORONOI_HALFEDGE_PREV 7
+#define HW_VORONOI_ARRAY_HALFEDGE_PREV 7
 
 /**
  * Per Voronoi half-edge: the site whose cell it bounds (on its left).
  * \ingroup voronoi
  */
-#define HW_VORONOI_HALFEDGE_SITE 8
+#define HW_VORONOI_ARRAY_HALFEDGE_SITE 8
 
 /**
  * Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
  * `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
  * \ingroup voronoi
  */
-#define HW_VORONOI_CELL_HALFEDGE 9
+#define HW_VORONOI_ARRAY_CELL_HALFEDGE 9
 
 /**
  * Per Voronoi vertex: one outgoing half-edge.
  * \ingroup voronoi
  */
-#define HW_VORONOI_VERTEX_HALFEDGE 10
+#define HW_VORONOI_ARRAY_VERTEX_HALFEDGE 10
 
 /**
  * Both ends are Voronoi vertices: from `point` to `end`.
  * \ingroup voronoi
  */
-#define HW_VORONOI_SEGMENT 0
+#define HW_VORONOI_EDGE_KIND_SEGMENT 0
 
 /**
  * One end at infinity: the points `point + t * direction`, `t >= 0`.
  * \ingroup voronoi
  */
-#define HW_VORONOI_RAY 1
+#define HW_VORONOI_EDGE_KIND_RAY 1
 
 /**
  * Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
  * \ingroup voronoi
  */
-#define HW_VORONOI_LINE_EDGE 2
+#define HW_VORONOI_EDGE_KIND_LINE 2
 
 /**
  * Euclidean distance (the diagram's own metric).
@@ -2081,37 +2093,37 @@ typedef uint32_t hw_fate;
  * Columns aligned with spaces; a hole is `∅` (UTF-8).
  * \ingroup winged
  */
-#define HW_TABLE_TEXT 0
+#define HW_TABLE_FORMAT_TEXT 0
 
 /**
  * A Markdown table; a hole is `∅`.
  * \ingroup winged
  */
-#define HW_TABLE_MARKDOWN 1
+#define HW_TABLE_FORMAT_MARKDOWN 1
 
 /**
  * Comma-separated values with a header row; a hole is an empty field.
  * \ingroup winged
  */
-#define HW_TABLE_CSV 2
+#define HW_TABLE_FORMAT_CSV 2
 
 /**
  * Edges: the edges of a face's loop, or the edges at a vertex.
  * \ingroup winged
  */
-#define HW_WCIRC_EDGES 0
+#define HW_WCIRCULATOR_KIND_EDGES 0
 
 /**
  * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
  * \ingroup winged
  */
-#define HW_WCIRC_VERTICES 1
+#define HW_WCIRCULATOR_KIND_VERTICES 1
 
 /**
  * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
  * \ingroup winged
  */
-#define HW_WCIRC_FACES 2
+#define HW_WCIRCULATOR_KIND_FACES 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -2294,7 +2306,7 @@ hw_status hw_circ_around_face(const hw_mesh *mesh,
 
 /**
  * Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
- * boundary half-edge. Yields half-edges (`kind` is ::HW_CIRC_HALFEDGES).
+ * boundary half-edge. Yields half-edges (`kind` is ::HW_CIRCULATOR_KIND_HALFEDGES).
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out` writable.
@@ -2303,7 +2315,7 @@ hw_status hw_circ_around_face(const hw_mesh *mesh,
 hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *out);
 
 /**
- * Next half-edge of a ::HW_CIRC_HALFEDGES or ::HW_CIRC_INCOMING circulator.
+ * Next half-edge of a ::HW_CIRCULATOR_KIND_HALFEDGES or ::HW_CIRCULATOR_KIND_INCOMING circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -2312,7 +2324,7 @@ hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *
 bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
 
 /**
- * Next vertex of a ::HW_CIRC_VERTICES circulator.
+ * Next vertex of a ::HW_CIRCULATOR_KIND_VERTICES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -2321,7 +2333,7 @@ bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
 bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
 
 /**
- * Next edge of a ::HW_CIRC_EDGES circulator.
+ * Next edge of a ::HW_CIRCULATOR_KIND_EDGES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -2330,7 +2342,7 @@ bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
 bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
 
 /**
- * Next face of a ::HW_CIRC_FACES circulator.
+ * Next face of a ::HW_CIRCULATOR_KIND_FACES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -2344,8 +2356,8 @@ bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
  * only the triangles, it takes less time and memory.
  *
  * Input as for hw_voronoi_build(): any finite sites, duplicates merged (see
- * ::HW_VORONOI_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite coordinate
- * gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+ * ::HW_VORONOI_ARRAY_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite
+ * coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
  *
  * On success `*out_delaunay` receives a new triangulation to release with hw_delaunay_free().
  *
@@ -2376,8 +2388,8 @@ void hw_delaunay_free(hw_delaunay *delaunay);
 size_t hw_delaunay_n_triangles(const hw_delaunay *delaunay);
 
 /**
- * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL triangulation, with the error
- * recorded).
+ * The dimension of the site set (::HW_SITE_DIMENSION_EMPTY for a NULL triangulation, with the
+ * error recorded).
  *
  * # Safety
  * `delaunay` must be NULL or a live triangulation.
@@ -2387,10 +2399,10 @@ hw_site_dimension hw_delaunay_dimension(const hw_delaunay *delaunay);
 
 /**
  * A read-only view of one index array of the triangulation: `which` is one of
- * ::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES, ::HW_VORONOI_TRIANGLE_TWINS and
- * ::HW_VORONOI_HULL (the other arrays belong to the Voronoi diagram: `HW_ERR_INVALID_INPUT`).
- * `*out_data` (NULL when empty) and its length `*out_len` are valid as long as the
- * triangulation.
+ * ::HW_VORONOI_ARRAY_REPRESENTATIVE, ::HW_VORONOI_ARRAY_TRIANGLES,
+ * ::HW_VORONOI_ARRAY_TRIANGLE_TWINS and ::HW_VORONOI_ARRAY_HULL (the other arrays belong to the
+ * Voronoi diagram: `HW_ERR_INVALID_INPUT`). `*out_data` (NULL when empty) and its length
+ * `*out_len` are valid as long as the triangulation.
  *
  * # Safety
  * `delaunay` must be NULL or a live triangulation; `out_data` and `out_len` writable.
@@ -2648,7 +2660,7 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
 
 /**
  * The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
- * ::HW_DIAG_NON_MANIFOLD_VERTICES, in the same order.
+ * ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order.
  *
  * # Safety
  * `report` must be NULL or live; `out_count` writable.
@@ -2657,8 +2669,8 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
 hw_status hw_doctor_report_vertex_fans_count(const hw_doctor_report *report, size_t *out_count);
 
 /**
- * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex, its
- * number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
+ * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex,
+ * its number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
  * lowest face), valid as long as the report.
  *
  * # Safety
@@ -2949,9 +2961,10 @@ hw_mesh *hw_mesh_new(void);
  * counter-clockwise seen from outside. Pairing is done in bulk by sorting edge keys.
  *
  * `policy` decides what happens to faces that do not fit a half-edge structure (see
- * ::HW_BUILD_STRICT, ::HW_BUILD_SKIP, ::HW_BUILD_REPAIR). Malformed data — sizes below 3 or not
- * summing to `n_indices`, indices out of range, NaN or infinite coordinates — give
- * `HW_ERR_INVALID_INPUT` under ::HW_BUILD_STRICT; the message names the faces and vertices.
+ * ::HW_BUILD_POLICY_STRICT, ::HW_BUILD_POLICY_SKIP, ::HW_BUILD_POLICY_REPAIR). Malformed data —
+ * sizes below 3 or not summing to `n_indices`, indices out of range, NaN or infinite coordinates —
+ * give `HW_ERR_INVALID_INPUT` under ::HW_BUILD_POLICY_STRICT; the message names the faces and
+ * vertices.
  *
  * Whatever the policy, the mesh holds no NaN or infinite coordinate (such a vertex is there as a
  * deleted vertex, its id kept) and no non-manifold vertex: every vertex query (valence,
@@ -3290,13 +3303,13 @@ hw_render_options hw_render_options_default(void);
  * boundary, the non-manifold edges of `diagnostic` and the normal glyphs.
  *
  * `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
- * mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
- * edges of a file). `options` may be NULL for hw_render_options_default(). Bad options (an
- * unknown shading or weighting, a negative or non-finite crease angle or glyph length, corner
- * arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
+ * mesh's build returned (load with ::HW_BUILD_POLICY_REPAIR or ::HW_BUILD_POLICY_SKIP to see the
+ * non-manifold edges of a file). `options` may be NULL for hw_render_options_default(). Bad
+ * options (an unknown shading or weighting, a negative or non-finite crease angle or glyph length,
+ * corner arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
  *
  * Draw the surface with `glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, 0)` after uploading
- * ::HW_RENDER_TRIANGLES as the element buffer, and each line set with
+ * ::HW_RENDER_INDICES_TRIANGLES as the element buffer, and each line set with
  * `glDrawArrays(GL_LINES, 0, len / 3)`.
  *
  * # Safety
@@ -3311,11 +3324,12 @@ hw_status hw_render_buffers_build(const hw_mesh *mesh,
 
 /**
  * Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
- * ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
- * coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
- * ::HW_RENDER_TRIANGLES (every polygon triangulated) with ::HW_RENDER_TRIANGLE_FACES and
- * ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
- * other arrays are empty, and the layout is always separate.
+ * ::HW_RENDER_FLOATS_POSITIONS and ::HW_RENDER_FLOATS_NORMALS (each polygon's own corners, so
+ * polygons can be coloured apart; normals are the polygons' unit normals, +z for counter-clockwise
+ * 2D input), ::HW_RENDER_INDICES_TRIANGLES (every polygon triangulated) with
+ * ::HW_RENDER_INDICES_TRIANGLE_FACES and ::HW_RENDER_INDICES_VERTEX_SOURCES naming polygons, and
+ * the outlines as ::HW_RENDER_FLOATS_WIREFRAME. The other arrays are empty, and the layout is
+ * always separate.
  *
  * `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
  * 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
@@ -3338,10 +3352,11 @@ hw_status hw_render_buffers_from_polygons(const double *corners,
 /**
  * Builds fill and outline buffers of the clipped cells of a Voronoi diagram, as
  * hw_render_buffers_from_polygons() would from its cells: polygon `i` is the cell of site `i`,
- * so ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
- * name sites (colour a cell by its site). Each cell gets its own copies of its corners (z = 0,
- * normals +z); an empty cell (a duplicate site, or a cell outside the clip region) has no
- * triangle and no outline. The buffers do not depend on `cells` afterwards.
+ * so ::HW_RENDER_INDICES_TRIANGLE_FACES, ::HW_RENDER_INDICES_VERTEX_SOURCES and
+ * ::HW_RENDER_INDICES_WIREFRAME_SOURCES name sites (colour a cell by its site). Each cell gets its
+ * own copies of its corners (z = 0, normals +z); an empty cell (a duplicate site, or a cell
+ * outside the clip region) has no triangle and no outline. The buffers do not depend on `cells`
+ * afterwards.
  *
  * # Safety
  * `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
@@ -3353,14 +3368,16 @@ hw_status hw_render_buffers_from_voronoi_cells(const hw_voronoi_cells *cells,
 /**
  * Builds the buffers that draw one kind of finding of a doctor's report over the face list it
  * examined (the same arrays as given to hw_doctor_examine_indexed()):
- * - the faces it names, each once with its own corners, as ::HW_RENDER_POSITIONS,
- *   ::HW_RENDER_NORMALS and ::HW_RENDER_TRIANGLES, outlined by ::HW_RENDER_WIREFRAME;
- *   ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
- *   name faces of the list;
+ * - the faces it names, each once with its own corners, as ::HW_RENDER_FLOATS_POSITIONS,
+ *   ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_INDICES_TRIANGLES, outlined by
+ *   ::HW_RENDER_FLOATS_WIREFRAME; ::HW_RENDER_INDICES_TRIANGLE_FACES,
+ *   ::HW_RENDER_INDICES_VERTEX_SOURCES and ::HW_RENDER_INDICES_WIREFRAME_SOURCES name faces of the
+ *   list;
  * - the edges it names, and the 12 edges of the bounding box of each small component, as
- *   ::HW_RENDER_BOUNDARY segments, whose ::HW_RENDER_BOUNDARY_SOURCES are item indices of the
- *   finding;
- * - the vertices it names as ::HW_RENDER_POINTS, with ::HW_RENDER_POINT_SOURCES (items).
+ *   ::HW_RENDER_FLOATS_BOUNDARY segments, whose ::HW_RENDER_INDICES_BOUNDARY_SOURCES are item
+ *   indices of the finding;
+ * - the vertices it names as ::HW_RENDER_FLOATS_POINTS, with ::HW_RENDER_INDICES_POINT_SOURCES
+ *   (items).
  *
  * What each kind names: faces for the orientation witness, needles, caps, duplicate faces and
  * intersecting face pairs; the edge and its two faces for folded edges; the edge for long
@@ -3410,7 +3427,7 @@ hw_status hw_render_buffers_floats(const hw_render_buffers *buffers,
 
 /**
  * A zero-copy view of one `uint32_t` array: `*out_data` (NULL when empty) and its length
- * `*out_len` in elements (three per triangle for ::HW_RENDER_TRIANGLES).
+ * `*out_len` in elements (three per triangle for ::HW_RENDER_INDICES_TRIANGLES).
  *
  * # Safety
  * `buffers` must be NULL or live; `out_data` and `out_len` writable.
@@ -3431,7 +3448,7 @@ hw_status hw_render_buffers_indices(const hw_render_buffers *buffers,
 size_t hw_render_buffers_n_vertices(const hw_render_buffers *buffers);
 
 /**
- * Floats per vertex of ::HW_RENDER_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
+ * Floats per vertex of ::HW_RENDER_FLOATS_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
  * arrays are separate; 0 for NULL. The byte stride of `glVertexAttribPointer` is this times
  * `sizeof(float)`; normals start at float 3 and uvs at float 6.
  *
@@ -3477,7 +3494,7 @@ hw_status hw_soup_from_indexed(const double *positions,
  * vertices) into the lowest of each cluster, which keeps its position. Exact duplicates always
  * merge; near ones greedily, in index order, into the first lower kept vertex within the
  * tolerance (not transitively). Faces naming a merged vertex drop corners that repeat the one
- * before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_REMOVED_FACES).
+ * before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_LIST_REMOVED_FACES).
  * Corner normals and texture coordinates follow their corners. `HW_ERR_INVALID_INPUT`, the
  * soup unchanged, for a tolerance negative, NaN, infinite, relative above 1 or positive below
  * 2^-48 of the positions' extent, and for a malformed soup (index out of range, sizes not
@@ -3494,7 +3511,7 @@ hw_status hw_soup_merge_vertices(hw_soup *soup,
 
 /**
  * Removes every face whose vertex set is that of a lower face (either orientation, any
- * starting corner), keeping the lowest (::HW_REPAIR_DUPLICATE_FACES pairs each removed face
+ * starting corner), keeping the lowest (::HW_REPAIR_LIST_DUPLICATE_FACES pairs each removed face
  * with the one kept). Vertices are untouched. Refusals and report as for
  * hw_soup_merge_vertices().
  *
@@ -3516,9 +3533,9 @@ hw_status hw_soup_remove_unreferenced_vertices(hw_soup *soup, hw_repair_report *
 
 /**
  * Removes the faces of the small components (faces joined through shared edges) and the
- * vertices only they named: by ::HW_SMALL_BY_FACE_COUNT (at most `value` faces, a whole
- * number) or ::HW_SMALL_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the largest).
- * `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
+ * vertices only they named: by ::HW_SMALL_COMPONENTS_BY_FACE_COUNT (at most `value` faces, a whole
+ * number) or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the
+ * largest). `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
  * hw_soup_merge_vertices().
  *
  * # Safety
@@ -3532,10 +3549,10 @@ hw_status hw_soup_remove_small_components(hw_soup *soup,
 
 /**
  * Reverses faces so that neighbours agree in orientation (in each connected part the smaller
- * side turns) and every closed component faces outward, as a build's `HW_POLICY_REPAIR` does;
- * a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their corners'
- * normals and texture coordinates, in reverse order (::HW_REPAIR_REORIENTED_FACES); vertices
- * are untouched. Refusals and report as for hw_soup_merge_vertices().
+ * side turns) and every closed component faces outward, as a build's `HW_BUILD_POLICY_REPAIR`
+ * does; a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their
+ * corners' normals and texture coordinates, in reverse order (::HW_REPAIR_LIST_REORIENTED_FACES);
+ * vertices are untouched. Refusals and report as for hw_soup_merge_vertices().
  *
  * # Safety
  * `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
@@ -3546,9 +3563,9 @@ hw_status hw_soup_orient_faces(hw_soup *soup, hw_repair_report **out_report);
 /**
  * Makes every edge shared by at most two faces: ::HW_NON_MANIFOLD_EDGES_CUT keeps every face
  * and gives the groups of faces around the edge's ends copies of them (appended,
- * ::HW_REPAIR_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
+ * ::HW_REPAIR_LIST_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
  * the edge has at most one face running each way and removes the others
- * (::HW_REPAIR_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
+ * (::HW_REPAIR_LIST_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
  * soup unchanged, for an unknown `how`; otherwise as hw_soup_merge_vertices().
  *
  * # Safety
@@ -3561,7 +3578,7 @@ hw_status hw_soup_repair_non_manifold_edges(hw_soup *soup,
 
 /**
  * Gives every fan of faces around a non-manifold vertex but the first a copy of the vertex
- * (appended, ::HW_REPAIR_VERTEX_COPIES), as builds do; corners keep their normals and texture
+ * (appended, ::HW_REPAIR_LIST_VERTEX_COPIES), as builds do; corners keep their normals and texture
  * coordinates. Refusals and report as for hw_soup_merge_vertices().
  *
  * # Safety
@@ -3574,11 +3591,11 @@ hw_status hw_soup_split_non_manifold_vertices(hw_soup *soup, hw_repair_report **
  * Mends the mesh's degenerate triangles: those whose corners lie exactly on one line (decided
  * exactly), or within `tolerance` of it (absolute, or when `relative` a fraction of the live
  * vertices' bounding-box diagonal). A triangle with an edge at most the tolerance long (zero
- * when exact) has the edge collapsed into its lower end (::HW_REPAIR_MERGED_VERTICES), which
+ * when exact) has the edge collapsed into its lower end (::HW_REPAIR_LIST_MERGED_VERTICES), which
  * removes the two triangles beside it and keeps the surface closed; a cap (its corner opposite
  * its longest edge on that edge) has that edge flipped with the triangle across it
- * (::HW_REPAIR_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
- * leaving a boundary. Every removed face is in ::HW_REPAIR_REMOVED_FACES. Faces of more than 3
+ * (::HW_REPAIR_LIST_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
+ * leaving a boundary. Every removed face is in ::HW_REPAIR_LIST_REMOVED_FACES. Faces of more than 3
  * corners are left as they are; vertices only removed faces named stay, isolated. Corners keep
  * their normals and texture coordinates (a corner at a merged vertex keeps its own). The mesh
  * is then compacted (the report's maps; the identity when nothing changed, the mesh then
@@ -3599,7 +3616,7 @@ hw_status hw_mesh_remove_degenerate_faces(hw_mesh *mesh,
  * within `tolerance` as for hw_mesh_remove_degenerate_faces()) with a new vertex at the
  * T-vertex's position, so that hw_mesh_stitch_borders() can then close the crack. The `i`-th
  * new vertex (id `n + i`, `n` the vertex count before) copies T-vertex `ids[i]` of
- * ::HW_REPAIR_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
+ * ::HW_REPAIR_LIST_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
  * are interpolated along the edge. Edges whose face has a corner at the T-vertex's position
  * are left. Nothing is removed; the mesh is compacted (the report's maps cover the elements
  * there were before; the identity when nothing was split). Afterwards no boundary vertex lies
@@ -3718,12 +3735,12 @@ hw_repair_options hw_repair_options_default(void);
 
 /**
  * Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
- * tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
+ * tolerance), removes duplicate faces, builds under ::HW_BUILD_POLICY_REPAIR (non-manifold vertices
  * split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
  * that cannot be kept left out), mends degenerate triangles and splits boundary edges at
  * T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
  * unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
- * faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
+ * faces build again under ::HW_BUILD_POLICY_STRICT. `*out_fates` (when not NULL) says what became of
  * every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
  * malformed soup; `HW_ERR_OUT_OF_MEMORY` when memory ran out.
  *
@@ -4023,7 +4040,7 @@ uint32_t hw_version_number(void);
 
 /**
  * The version of the library actually linked, as a static NUL-terminated string such as
- * `"0.1.0"`. Never NULL; must not be freed.
+ * `"0.2.0"`. Never NULL; must not be freed.
  * \ingroup errors
  */
 const char *hw_version_string(void);
@@ -4055,10 +4072,11 @@ hw_status hw_mesh_view_positions(const hw_mesh *mesh,
 
 /**
  * Calls `visit(id, userdata)` for every live (not deleted) element of `kind`
- * (::HW_ELEMENT_VERTEX, ::HW_ELEMENT_HALFEDGE, ::HW_ELEMENT_EDGE or ::HW_ELEMENT_FACE), in
- * increasing id order, until `visit` returns `false`. `*out_visited`, when `out_visited` is not
- * NULL, receives the number of calls made. `visit` may read the mesh but must not free it, and
- * must not throw or `longjmp` through this call. An empty mesh makes no call.
+ * (::HW_ELEMENT_KIND_VERTEX, ::HW_ELEMENT_KIND_HALFEDGE, ::HW_ELEMENT_KIND_EDGE or
+ * ::HW_ELEMENT_KIND_FACE), in increasing id order, until `visit` returns `false`. `*out_visited`,
+ * when `out_visited` is not NULL, receives the number of calls made. `visit` may read the mesh but
+ * must not free it, and must not throw or `longjmp` through this call. An empty mesh makes no
+ * call.
  *
  * Returns `HW_ERR_NULL_ARGUMENT` for a NULL mesh or `visit`, `HW_ERR_INVALID_INPUT` for an
  * unknown kind (no call is made then).
@@ -4097,9 +4115,9 @@ hw_status hw_circ_visit(hw_circulator *circulator,
  * doubles (x, y per site).
  *
  * Predicates are exact, so the result is correct for any finite input: duplicates are merged
- * (see ::HW_VORONOI_REPRESENTATIVE), collinear sites give parallel bisectors and no triangles,
- * cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid input.
- * A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+ * (see ::HW_VORONOI_ARRAY_REPRESENTATIVE), collinear sites give parallel bisectors and no
+ * triangles, cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid
+ * input. A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
  *
  * On success `*out_voronoi` receives a new diagram to release with hw_voronoi_free().
  *
@@ -4167,7 +4185,8 @@ size_t hw_voronoi_n_vertices(const hw_voronoi *voronoi);
 size_t hw_voronoi_n_halfedges(const hw_voronoi *voronoi);
 
 /**
- * The dimension of the site set (::HW_VORONOI_EMPTY for a NULL diagram, with the error recorded).
+ * The dimension of the site set (::HW_SITE_DIMENSION_EMPTY for a NULL diagram, with the error
+ * recorded).
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram.
@@ -4233,7 +4252,7 @@ hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
 /**
  * The Delaunay triangulation as a new half-edge mesh (z = 0): vertex `i` is site `i` (duplicates
  * are isolated vertices), one triangle per Delaunay triangle, in the order of
- * ::HW_VORONOI_TRIANGLES. Collinear input gives a mesh without faces. Release it with
+ * ::HW_VORONOI_ARRAY_TRIANGLES. Collinear input gives a mesh without faces. Release it with
  * hw_mesh_free().
  *
  * # Safety
@@ -4749,17 +4768,15 @@ hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
 /**
- * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit normals of
- * the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
- * NULL gives `HW_ERR_NULL_ARGUMENT`).
+ * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
+ * normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
+ * (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  * \ingroup winged
  */
-hw_status hw_winged_vertex_normal(const hw_winged *winged,
-                                  hw_wvertex v,
-                                  double *out_normal);
+hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
 
 /**
  * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
@@ -4792,10 +4809,10 @@ hw_status hw_winged_check(const hw_winged *winged);
 
 /**
  * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
- * ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_TEXT, ...) into `buf` (`len`
- * bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL) always
- * receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or
- * shorter (call with `buf = NULL` to learn the size). Unknown enum values give
+ * ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `buf`
+ * (`len` bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL)
+ * always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is
+ * NULL or shorter (call with `buf = NULL` to learn the size). Unknown enum values give
  * `HW_ERR_INVALID_INPUT`.
  *
  * # Safety
@@ -4838,7 +4855,7 @@ hw_status hw_wcirc_around_vertex(const hw_winged *winged,
                                  hw_wcirculator *out);
 
 /**
- * Next edge of a ::HW_WCIRC_EDGES circulator.
+ * Next edge of a ::HW_WCIRCULATOR_KIND_EDGES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
@@ -4847,7 +4864,7 @@ hw_status hw_wcirc_around_vertex(const hw_winged *winged,
 bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
 
 /**
- * Next vertex of a ::HW_WCIRC_VERTICES circulator.
+ * Next vertex of a ::HW_WCIRCULATOR_KIND_VERTICES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
@@ -4856,7 +4873,7 @@ bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
 bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
 
 /**
- * Next face of a ::HW_WCIRC_FACES circulator.
+ * Next face of a ::HW_WCIRCULATOR_KIND_FACES circulator.
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.

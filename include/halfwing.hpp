@@ -14,12 +14,16 @@
 // work as keys of std::map, std::set and the unordered containers. Voronoi sites, triangles and
 // half-edges are plain `uint32_t` indices, as in C.
 //
-// Enumerations: the wrapper takes the C types and constants as they are (hw_element_kind with
-// HW_ELEMENT_FACE, hw_doctor_finding with HW_DOCTOR_NEEDLES...), not enum class copies, so C and
-// C++ code spell each value the same way. The C types are integers, not C enums, so a value
-// coming back from C is never an invalid enumerator; a value of the wrong family (an
-// HW_DIAG_* list passed as an hw_doctor_finding) is refused with HW_ERR_INVALID_INPUT, the
-// families having disjoint values.
+// Enumerations: every C enumeration has a scoped C++ counterpart with the same values
+// (hw_normal_weighting is hw::NormalWeighting, HW_NORMAL_WEIGHTING_ANGLE is
+// hw::NormalWeighting::Angle), and the wrapper's functions take and return only these. The C
+// types are all plain `uint32_t`, so C++ could not overload on them or stop a value of one family
+// from reaching a function of another; the enum classes can (an hw::DiagnosticList passed where
+// an hw::DoctorFinding is wanted does not compile), and one spelling per call keeps the wrapper
+// single. Crossing over is explicit: hw::to_c(hw::Shading::Flat) is HW_SHADING_FLAT (for the C
+// option structs, which stay C), static_cast<hw::Shading>(HW_SHADING_FLAT) the other way.
+// hw::name() gives the name of the values that have one in C (statuses, diagnostic lists,
+// doctor findings).
 #ifndef HALFWING_HPP
 #define HALFWING_HPP
 
@@ -64,7 +68,263 @@ HALFWING_ID_OPERATORS(hw_wedge)
 HALFWING_ID_OPERATORS(hw_wface)
 #undef HALFWING_ID_OPERATORS
 
+/// The C++ wrapper: owning classes that throw hw::error, range-for walks, and a scoped
+/// enumeration for each C one.
 namespace hw {
+
+/// ::hw_status, scoped: each value is the C constant it names.
+enum class Status : uint32_t {
+  Ok = HW_OK,                                ///< ::HW_OK
+  NullArgument = HW_ERR_NULL_ARGUMENT,       ///< ::HW_ERR_NULL_ARGUMENT
+  InvalidHandle = HW_ERR_INVALID_HANDLE,     ///< ::HW_ERR_INVALID_HANDLE
+  InvalidInput = HW_ERR_INVALID_INPUT,       ///< ::HW_ERR_INVALID_INPUT
+  NonManifold = HW_ERR_NON_MANIFOLD,         ///< ::HW_ERR_NON_MANIFOLD
+  BufferTooSmall = HW_ERR_BUFFER_TOO_SMALL,  ///< ::HW_ERR_BUFFER_TOO_SMALL
+  Io = HW_ERR_IO,                            ///< ::HW_ERR_IO
+  Parse = HW_ERR_PARSE,                      ///< ::HW_ERR_PARSE
+  Refused = HW_ERR_REFUSED,                  ///< ::HW_ERR_REFUSED
+  Panic = HW_ERR_PANIC,                      ///< ::HW_ERR_PANIC
+  NotFound = HW_ERR_NOT_FOUND,               ///< ::HW_ERR_NOT_FOUND
+  OutOfMemory = HW_ERR_OUT_OF_MEMORY,        ///< ::HW_ERR_OUT_OF_MEMORY
+};
+/// ::hw_element_kind, scoped: each value is the C constant it names.
+enum class ElementKind : uint32_t {
+  Vertex = HW_ELEMENT_KIND_VERTEX,      ///< ::HW_ELEMENT_KIND_VERTEX
+  Halfedge = HW_ELEMENT_KIND_HALFEDGE,  ///< ::HW_ELEMENT_KIND_HALFEDGE
+  Edge = HW_ELEMENT_KIND_EDGE,          ///< ::HW_ELEMENT_KIND_EDGE
+  Face = HW_ELEMENT_KIND_FACE,          ///< ::HW_ELEMENT_KIND_FACE
+};
+/// ::hw_scalar_type, scoped: each value is the C constant it names.
+enum class ScalarType : uint32_t {
+  F64 = HW_SCALAR_TYPE_F64,  ///< ::HW_SCALAR_TYPE_F64
+  F32 = HW_SCALAR_TYPE_F32,  ///< ::HW_SCALAR_TYPE_F32
+  I32 = HW_SCALAR_TYPE_I32,  ///< ::HW_SCALAR_TYPE_I32
+  U32 = HW_SCALAR_TYPE_U32,  ///< ::HW_SCALAR_TYPE_U32
+};
+/// ::hw_build_policy, scoped: each value is the C constant it names.
+enum class BuildPolicy : uint32_t {
+  Strict = HW_BUILD_POLICY_STRICT,  ///< ::HW_BUILD_POLICY_STRICT
+  Skip = HW_BUILD_POLICY_SKIP,      ///< ::HW_BUILD_POLICY_SKIP
+  Repair = HW_BUILD_POLICY_REPAIR,  ///< ::HW_BUILD_POLICY_REPAIR
+};
+/// ::hw_diagnostic_list, scoped: each value is the C constant it names.
+enum class DiagnosticList : uint32_t {
+  FacesTooSmall = HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL,  ///< ::HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL
+  /// ::HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE
+  FacesOutOfRange = HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE,
+  /// ::HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX
+  FacesRepeatedVertex = HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX,
+  /// ::HW_DIAGNOSTIC_LIST_NON_FINITE_VERTICES
+  NonFiniteVertices = HW_DIAGNOSTIC_LIST_NON_FINITE_VERTICES,
+  /// ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES
+  NonManifoldVertices = HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES,
+  /// ::HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES
+  IsolatedVertices = HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES,
+  DegenerateFaces = HW_DIAGNOSTIC_LIST_DEGENERATE_FACES,  ///< ::HW_DIAGNOSTIC_LIST_DEGENERATE_FACES
+  SkippedFaces = HW_DIAGNOSTIC_LIST_SKIPPED_FACES,        ///< ::HW_DIAGNOSTIC_LIST_SKIPPED_FACES
+  VertexCopies = HW_DIAGNOSTIC_LIST_VERTEX_COPIES,        ///< ::HW_DIAGNOSTIC_LIST_VERTEX_COPIES
+  ReorientedFaces = HW_DIAGNOSTIC_LIST_REORIENTED_FACES,  ///< ::HW_DIAGNOSTIC_LIST_REORIENTED_FACES
+};
+/// ::hw_diagnostic_edges, scoped: each value is the C constant it names.
+enum class DiagnosticEdges : uint32_t {
+  NonManifold = HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,   ///< ::HW_DIAGNOSTIC_EDGES_NON_MANIFOLD
+  Inconsistent = HW_DIAGNOSTIC_EDGES_INCONSISTENT,  ///< ::HW_DIAGNOSTIC_EDGES_INCONSISTENT
+};
+/// ::hw_circulator_kind, scoped: each value is the C constant it names.
+enum class CirculatorKind : uint32_t {
+  Halfedges = HW_CIRCULATOR_KIND_HALFEDGES,  ///< ::HW_CIRCULATOR_KIND_HALFEDGES
+  Incoming = HW_CIRCULATOR_KIND_INCOMING,    ///< ::HW_CIRCULATOR_KIND_INCOMING
+  Vertices = HW_CIRCULATOR_KIND_VERTICES,    ///< ::HW_CIRCULATOR_KIND_VERTICES
+  Edges = HW_CIRCULATOR_KIND_EDGES,          ///< ::HW_CIRCULATOR_KIND_EDGES
+  Faces = HW_CIRCULATOR_KIND_FACES,          ///< ::HW_CIRCULATOR_KIND_FACES
+};
+/// ::hw_mesh_array, scoped: each value is the C constant it names.
+enum class MeshArray : uint32_t {
+  HalfedgeOrigin = HW_MESH_ARRAY_HALFEDGE_ORIGIN,  ///< ::HW_MESH_ARRAY_HALFEDGE_ORIGIN
+  HalfedgeNext = HW_MESH_ARRAY_HALFEDGE_NEXT,      ///< ::HW_MESH_ARRAY_HALFEDGE_NEXT
+  HalfedgePrev = HW_MESH_ARRAY_HALFEDGE_PREV,      ///< ::HW_MESH_ARRAY_HALFEDGE_PREV
+  HalfedgeFace = HW_MESH_ARRAY_HALFEDGE_FACE,      ///< ::HW_MESH_ARRAY_HALFEDGE_FACE
+  VertexHalfedge = HW_MESH_ARRAY_VERTEX_HALFEDGE,  ///< ::HW_MESH_ARRAY_VERTEX_HALFEDGE
+  FaceHalfedge = HW_MESH_ARRAY_FACE_HALFEDGE,      ///< ::HW_MESH_ARRAY_FACE_HALFEDGE
+};
+/// ::hw_normal_weighting, scoped: each value is the C constant it names.
+enum class NormalWeighting : uint32_t {
+  Uniform = HW_NORMAL_WEIGHTING_UNIFORM,  ///< ::HW_NORMAL_WEIGHTING_UNIFORM
+  Area = HW_NORMAL_WEIGHTING_AREA,        ///< ::HW_NORMAL_WEIGHTING_AREA
+  Angle = HW_NORMAL_WEIGHTING_ANGLE,      ///< ::HW_NORMAL_WEIGHTING_ANGLE
+};
+/// ::hw_doctor_finding, scoped: each value is the C constant it names.
+enum class DoctorFinding : uint32_t {
+  SmallComponents = HW_DOCTOR_FINDING_SMALL_COMPONENTS,  ///< ::HW_DOCTOR_FINDING_SMALL_COMPONENTS
+  /// ::HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS
+  NonOrientableWitness = HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS,
+  ZeroLengthEdges = HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES,  ///< ::HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES
+  Needles = HW_DOCTOR_FINDING_NEEDLES,                    ///< ::HW_DOCTOR_FINDING_NEEDLES
+  Caps = HW_DOCTOR_FINDING_CAPS,                          ///< ::HW_DOCTOR_FINDING_CAPS
+  FoldedEdges = HW_DOCTOR_FINDING_FOLDED_EDGES,           ///< ::HW_DOCTOR_FINDING_FOLDED_EDGES
+  LongEdges = HW_DOCTOR_FINDING_LONG_EDGES,               ///< ::HW_DOCTOR_FINDING_LONG_EDGES
+  /// ::HW_DOCTOR_FINDING_DUPLICATE_POSITIONS
+  DuplicatePositions = HW_DOCTOR_FINDING_DUPLICATE_POSITIONS,
+  /// ::HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES
+  NearDuplicateVertices = HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES,
+  DuplicateFaces = HW_DOCTOR_FINDING_DUPLICATE_FACES,  ///< ::HW_DOCTOR_FINDING_DUPLICATE_FACES
+  TVertices = HW_DOCTOR_FINDING_T_VERTICES,            ///< ::HW_DOCTOR_FINDING_T_VERTICES
+  /// ::HW_DOCTOR_FINDING_SELF_INTERSECTIONS
+  SelfIntersections = HW_DOCTOR_FINDING_SELF_INTERSECTIONS,
+};
+/// ::hw_repair_list, scoped: each value is the C constant it names.
+enum class RepairList : uint32_t {
+  MergedVertices = HW_REPAIR_LIST_MERGED_VERTICES,        ///< ::HW_REPAIR_LIST_MERGED_VERTICES
+  RemovedVertices = HW_REPAIR_LIST_REMOVED_VERTICES,      ///< ::HW_REPAIR_LIST_REMOVED_VERTICES
+  RemovedFaces = HW_REPAIR_LIST_REMOVED_FACES,            ///< ::HW_REPAIR_LIST_REMOVED_FACES
+  DuplicateFaces = HW_REPAIR_LIST_DUPLICATE_FACES,        ///< ::HW_REPAIR_LIST_DUPLICATE_FACES
+  StitchedHalfedges = HW_REPAIR_LIST_STITCHED_HALFEDGES,  ///< ::HW_REPAIR_LIST_STITCHED_HALFEDGES
+  VertexCopies = HW_REPAIR_LIST_VERTEX_COPIES,            ///< ::HW_REPAIR_LIST_VERTEX_COPIES
+  ReorientedFaces = HW_REPAIR_LIST_REORIENTED_FACES,      ///< ::HW_REPAIR_LIST_REORIENTED_FACES
+  FlippedFaces = HW_REPAIR_LIST_FLIPPED_FACES,            ///< ::HW_REPAIR_LIST_FLIPPED_FACES
+};
+/// ::hw_small_components, scoped: each value is the C constant it names.
+enum class SmallComponents : uint32_t {
+  ByFaceCount = HW_SMALL_COMPONENTS_BY_FACE_COUNT,  ///< ::HW_SMALL_COMPONENTS_BY_FACE_COUNT
+  /// ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER
+  ByRelativeDiameter = HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER,
+};
+/// ::hw_non_manifold_edges, scoped: each value is the C constant it names.
+enum class NonManifoldEdges : uint32_t {
+  Cut = HW_NON_MANIFOLD_EDGES_CUT,                   ///< ::HW_NON_MANIFOLD_EDGES_CUT
+  RemoveFaces = HW_NON_MANIFOLD_EDGES_REMOVE_FACES,  ///< ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES
+};
+/// ::hw_fate, scoped: each value is the C constant it names.
+enum class Fate : uint32_t {
+  Kept = HW_FATE_KEPT,                       ///< ::HW_FATE_KEPT
+  Merged = HW_FATE_MERGED,                   ///< ::HW_FATE_MERGED
+  Reversed = HW_FATE_REVERSED,               ///< ::HW_FATE_REVERSED
+  Collapsed = HW_FATE_COLLAPSED,             ///< ::HW_FATE_COLLAPSED
+  Duplicate = HW_FATE_DUPLICATE,             ///< ::HW_FATE_DUPLICATE
+  Unbuildable = HW_FATE_UNBUILDABLE,         ///< ::HW_FATE_UNBUILDABLE
+  SmallComponent = HW_FATE_SMALL_COMPONENT,  ///< ::HW_FATE_SMALL_COMPONENT
+  Unreferenced = HW_FATE_UNREFERENCED,       ///< ::HW_FATE_UNREFERENCED
+  Degenerate = HW_FATE_DEGENERATE,           ///< ::HW_FATE_DEGENERATE
+};
+/// ::hw_fates_list, scoped: each value is the C constant it names.
+enum class FatesList : uint32_t {
+  VertexKinds = HW_FATES_LIST_VERTEX_KINDS,      ///< ::HW_FATES_LIST_VERTEX_KINDS
+  VertexIds = HW_FATES_LIST_VERTEX_IDS,          ///< ::HW_FATES_LIST_VERTEX_IDS
+  FaceKinds = HW_FATES_LIST_FACE_KINDS,          ///< ::HW_FATES_LIST_FACE_KINDS
+  FaceIds = HW_FATES_LIST_FACE_IDS,              ///< ::HW_FATES_LIST_FACE_IDS
+  AddedVertices = HW_FATES_LIST_ADDED_VERTICES,  ///< ::HW_FATES_LIST_ADDED_VERTICES
+};
+/// ::hw_cell_faces, scoped: each value is the C constant it names.
+enum class CellFaces : uint32_t {
+  Quads = HW_CELL_FACES_QUADS,          ///< ::HW_CELL_FACES_QUADS
+  Triangles = HW_CELL_FACES_TRIANGLES,  ///< ::HW_CELL_FACES_TRIANGLES
+};
+/// ::hw_caps, scoped: each value is the C constant it names.
+enum class Caps : uint32_t {
+  None = HW_CAPS_NONE,        ///< ::HW_CAPS_NONE
+  Polygon = HW_CAPS_POLYGON,  ///< ::HW_CAPS_POLYGON
+  Fan = HW_CAPS_FAN,          ///< ::HW_CAPS_FAN
+};
+/// ::hw_shading, scoped: each value is the C constant it names.
+enum class Shading : uint32_t {
+  Flat = HW_SHADING_FLAT,                     ///< ::HW_SHADING_FLAT
+  Smooth = HW_SHADING_SMOOTH,                 ///< ::HW_SHADING_SMOOTH
+  Crease = HW_SHADING_CREASE,                 ///< ::HW_SHADING_CREASE
+  CornerNormals = HW_SHADING_CORNER_NORMALS,  ///< ::HW_SHADING_CORNER_NORMALS
+};
+/// ::hw_render_floats, scoped: each value is the C constant it names.
+enum class RenderFloats : uint32_t {
+  Positions = HW_RENDER_FLOATS_POSITIONS,           ///< ::HW_RENDER_FLOATS_POSITIONS
+  Normals = HW_RENDER_FLOATS_NORMALS,               ///< ::HW_RENDER_FLOATS_NORMALS
+  Uvs = HW_RENDER_FLOATS_UVS,                       ///< ::HW_RENDER_FLOATS_UVS
+  Interleaved = HW_RENDER_FLOATS_INTERLEAVED,       ///< ::HW_RENDER_FLOATS_INTERLEAVED
+  Wireframe = HW_RENDER_FLOATS_WIREFRAME,           ///< ::HW_RENDER_FLOATS_WIREFRAME
+  Boundary = HW_RENDER_FLOATS_BOUNDARY,             ///< ::HW_RENDER_FLOATS_BOUNDARY
+  NonManifold = HW_RENDER_FLOATS_NON_MANIFOLD,      ///< ::HW_RENDER_FLOATS_NON_MANIFOLD
+  VertexNormals = HW_RENDER_FLOATS_VERTEX_NORMALS,  ///< ::HW_RENDER_FLOATS_VERTEX_NORMALS
+  FaceNormals = HW_RENDER_FLOATS_FACE_NORMALS,      ///< ::HW_RENDER_FLOATS_FACE_NORMALS
+  Points = HW_RENDER_FLOATS_POINTS,                 ///< ::HW_RENDER_FLOATS_POINTS
+};
+/// ::hw_render_indices, scoped: each value is the C constant it names.
+enum class RenderIndices : uint32_t {
+  Triangles = HW_RENDER_INDICES_TRIANGLES,           ///< ::HW_RENDER_INDICES_TRIANGLES
+  TriangleFaces = HW_RENDER_INDICES_TRIANGLE_FACES,  ///< ::HW_RENDER_INDICES_TRIANGLE_FACES
+  VertexSources = HW_RENDER_INDICES_VERTEX_SOURCES,  ///< ::HW_RENDER_INDICES_VERTEX_SOURCES
+  /// ::HW_RENDER_INDICES_WIREFRAME_SOURCES
+  WireframeSources = HW_RENDER_INDICES_WIREFRAME_SOURCES,
+  BoundarySources = HW_RENDER_INDICES_BOUNDARY_SOURCES,  ///< ::HW_RENDER_INDICES_BOUNDARY_SOURCES
+  PointSources = HW_RENDER_INDICES_POINT_SOURCES,        ///< ::HW_RENDER_INDICES_POINT_SOURCES
+};
+/// ::hw_wnormals, scoped: each value is the C constant it names.
+enum class WNormals : uint32_t {
+  Faces = HW_WNORMALS_FACES,        ///< ::HW_WNORMALS_FACES
+  Vertices = HW_WNORMALS_VERTICES,  ///< ::HW_WNORMALS_VERTICES
+};
+/// ::hw_wtable, scoped: each value is the C constant it names.
+enum class WTable : uint32_t {
+  Vertices = HW_WTABLE_VERTICES,  ///< ::HW_WTABLE_VERTICES
+  Faces = HW_WTABLE_FACES,        ///< ::HW_WTABLE_FACES
+  Edges = HW_WTABLE_EDGES,        ///< ::HW_WTABLE_EDGES
+  All = HW_WTABLE_ALL,            ///< ::HW_WTABLE_ALL
+};
+/// ::hw_wnaming, scoped: each value is the C constant it names.
+enum class WNaming : uint32_t {
+  CwCcw = HW_WNAMING_CW_CCW,                  ///< ::HW_WNAMING_CW_CCW
+  DirectInverse = HW_WNAMING_DIRECT_INVERSE,  ///< ::HW_WNAMING_DIRECT_INVERSE
+  LeftRight = HW_WNAMING_LEFT_RIGHT,          ///< ::HW_WNAMING_LEFT_RIGHT
+};
+/// ::hw_table_format, scoped: each value is the C constant it names.
+enum class TableFormat : uint32_t {
+  Text = HW_TABLE_FORMAT_TEXT,          ///< ::HW_TABLE_FORMAT_TEXT
+  Markdown = HW_TABLE_FORMAT_MARKDOWN,  ///< ::HW_TABLE_FORMAT_MARKDOWN
+  Csv = HW_TABLE_FORMAT_CSV,            ///< ::HW_TABLE_FORMAT_CSV
+};
+/// ::hw_wcirculator_kind, scoped: each value is the C constant it names.
+enum class WCirculatorKind : uint32_t {
+  Edges = HW_WCIRCULATOR_KIND_EDGES,        ///< ::HW_WCIRCULATOR_KIND_EDGES
+  Vertices = HW_WCIRCULATOR_KIND_VERTICES,  ///< ::HW_WCIRCULATOR_KIND_VERTICES
+  Faces = HW_WCIRCULATOR_KIND_FACES,        ///< ::HW_WCIRCULATOR_KIND_FACES
+};
+/// ::hw_site_dimension, scoped: each value is the C constant it names.
+enum class SiteDimension : uint32_t {
+  Empty = HW_SITE_DIMENSION_EMPTY,  ///< ::HW_SITE_DIMENSION_EMPTY
+  Point = HW_SITE_DIMENSION_POINT,  ///< ::HW_SITE_DIMENSION_POINT
+  Line = HW_SITE_DIMENSION_LINE,    ///< ::HW_SITE_DIMENSION_LINE
+  Plane = HW_SITE_DIMENSION_PLANE,  ///< ::HW_SITE_DIMENSION_PLANE
+};
+/// ::hw_voronoi_array, scoped: each value is the C constant it names.
+enum class VoronoiArray : uint32_t {
+  Representative = HW_VORONOI_ARRAY_REPRESENTATIVE,   ///< ::HW_VORONOI_ARRAY_REPRESENTATIVE
+  Triangles = HW_VORONOI_ARRAY_TRIANGLES,             ///< ::HW_VORONOI_ARRAY_TRIANGLES
+  TriangleTwins = HW_VORONOI_ARRAY_TRIANGLE_TWINS,    ///< ::HW_VORONOI_ARRAY_TRIANGLE_TWINS
+  Hull = HW_VORONOI_ARRAY_HULL,                       ///< ::HW_VORONOI_ARRAY_HULL
+  TriangleVertex = HW_VORONOI_ARRAY_TRIANGLE_VERTEX,  ///< ::HW_VORONOI_ARRAY_TRIANGLE_VERTEX
+  HalfedgeOrigin = HW_VORONOI_ARRAY_HALFEDGE_ORIGIN,  ///< ::HW_VORONOI_ARRAY_HALFEDGE_ORIGIN
+  HalfedgeNext = HW_VORONOI_ARRAY_HALFEDGE_NEXT,      ///< ::HW_VORONOI_ARRAY_HALFEDGE_NEXT
+  HalfedgePrev = HW_VORONOI_ARRAY_HALFEDGE_PREV,      ///< ::HW_VORONOI_ARRAY_HALFEDGE_PREV
+  HalfedgeSite = HW_VORONOI_ARRAY_HALFEDGE_SITE,      ///< ::HW_VORONOI_ARRAY_HALFEDGE_SITE
+  CellHalfedge = HW_VORONOI_ARRAY_CELL_HALFEDGE,      ///< ::HW_VORONOI_ARRAY_CELL_HALFEDGE
+  VertexHalfedge = HW_VORONOI_ARRAY_VERTEX_HALFEDGE,  ///< ::HW_VORONOI_ARRAY_VERTEX_HALFEDGE
+};
+/// ::hw_voronoi_edge_kind, scoped: each value is the C constant it names.
+enum class VoronoiEdgeKind : uint32_t {
+  Segment = HW_VORONOI_EDGE_KIND_SEGMENT,  ///< ::HW_VORONOI_EDGE_KIND_SEGMENT
+  Ray = HW_VORONOI_EDGE_KIND_RAY,          ///< ::HW_VORONOI_EDGE_KIND_RAY
+  Line = HW_VORONOI_EDGE_KIND_LINE,        ///< ::HW_VORONOI_EDGE_KIND_LINE
+};
+/// ::hw_metric, scoped: each value is the C constant it names.
+enum class Metric : uint32_t {
+  Euclidean = HW_METRIC_EUCLIDEAN,  ///< ::HW_METRIC_EUCLIDEAN
+  Manhattan = HW_METRIC_MANHATTAN,  ///< ::HW_METRIC_MANHATTAN
+  Chebyshev = HW_METRIC_CHEBYSHEV,  ///< ::HW_METRIC_CHEBYSHEV
+};
+
+/// The C value of a scoped enumeration value, for the C API and its option structs:
+/// `hw::to_c(hw::Shading::Flat) == HW_SHADING_FLAT`.
+template <class Enum, class = std::enable_if_t<std::is_enum_v<Enum>>>
+constexpr std::underlying_type_t<Enum> to_c(Enum value) noexcept {
+  return static_cast<std::underlying_type_t<Enum>>(value);
+}
 
 /// A failed halfwing call: the status code and the detailed message of the failure. Every
 /// status is thrown as this class, HW_ERR_OUT_OF_MEMORY included (memory the library could not
@@ -73,13 +333,12 @@ namespace hw {
 class error : public std::runtime_error {
  public:
   /// An error with its status and message.
-  error(hw_status status, const std::string& message)
-      : std::runtime_error(message), status_(status) {}
-  /// The C status code (never HW_OK).
-  hw_status status() const noexcept { return status_; }
+  error(Status status, const std::string& message) : std::runtime_error(message), status_(status) {}
+  /// The status (never Status::Ok).
+  Status status() const noexcept { return status_; }
 
  private:
-  hw_status status_;
+  Status status_;
 };
 
 /// The message of the last failed call on this thread (empty if none failed).
@@ -92,16 +351,16 @@ inline std::string last_error_message() {
   return message;
 }
 
-/// Throws hw::error when `status` is not HW_OK.
+/// Throws hw::error when `status` (a C status) is not HW_OK.
 inline void check(hw_status status) {
   if (status != HW_OK) {
     std::string message = last_error_message();
     if (message.empty()) message = hw_status_str(status);
-    throw error(status, message);
+    throw error(static_cast<Status>(status), message);
   }
 }
 
-/// The version of the linked library, e.g. "0.1.0".
+/// The version of the linked library, e.g. "0.2.0".
 inline std::string version() { return hw_version_string(); }
 /// The version of the linked library as one number (see hw_version_number()).
 inline uint32_t version_number() { return hw_version_number(); }
@@ -110,23 +369,28 @@ inline uint32_t version_number() { return hw_version_number(); }
 /// hw_set_thread_count()).
 inline void set_thread_count(std::size_t count) { check(hw_set_thread_count(count)); }
 
+/// The description of a status ("null argument", ...); see hw_status_str().
+inline std::string name(Status status) { return hw_status_str(to_c(status)); }
 /// The name of a diagnostic id list ("isolated vertices", ...); see hw_diagnostic_list_name().
-inline std::string diagnostic_list_name(hw_diagnostic_list list) {
-  const char* name = hw_diagnostic_list_name(list);
-  if (!name) throw error(HW_ERR_INVALID_INPUT, "unknown diagnostic list " + std::to_string(list));
+inline std::string name(DiagnosticList list) {
+  const char* name = hw_diagnostic_list_name(to_c(list));
+  if (!name)
+    throw error(Status::InvalidInput, "unknown diagnostic list " + std::to_string(to_c(list)));
   return name;
 }
 /// The name of a diagnostic edge list; see hw_diagnostic_edges_name().
-inline std::string diagnostic_edges_name(hw_diagnostic_edges edges) {
-  const char* name = hw_diagnostic_edges_name(edges);
+inline std::string name(DiagnosticEdges edges) {
+  const char* name = hw_diagnostic_edges_name(to_c(edges));
   if (!name)
-    throw error(HW_ERR_INVALID_INPUT, "unknown diagnostic edge list " + std::to_string(edges));
+    throw error(Status::InvalidInput,
+                "unknown diagnostic edge list " + std::to_string(to_c(edges)));
   return name;
 }
 /// The name of a doctor finding kind ("needles", ...); see hw_doctor_finding_name().
-inline std::string doctor_finding_name(hw_doctor_finding kind) {
-  const char* name = hw_doctor_finding_name(kind);
-  if (!name) throw error(HW_ERR_INVALID_INPUT, "unknown doctor finding " + std::to_string(kind));
+inline std::string name(DoctorFinding kind) {
+  const char* name = hw_doctor_finding_name(to_c(kind));
+  if (!name)
+    throw error(Status::InvalidInput, "unknown doctor finding " + std::to_string(to_c(kind)));
   return name;
 }
 
@@ -181,13 +445,13 @@ std::string copied_text(Copy copy) {
 template <class T>
 struct scalar_type;
 template <>
-struct scalar_type<double> : std::integral_constant<hw_scalar_type, HW_SCALAR_F64> {};
+struct scalar_type<double> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_F64> {};
 template <>
-struct scalar_type<float> : std::integral_constant<hw_scalar_type, HW_SCALAR_F32> {};
+struct scalar_type<float> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_F32> {};
 template <>
-struct scalar_type<int32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_I32> {};
+struct scalar_type<int32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_I32> {};
 template <>
-struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_U32> {};
+struct scalar_type<uint32_t> : std::integral_constant<hw_scalar_type, HW_SCALAR_TYPE_U32> {};
 
 }  // namespace detail
 
@@ -273,10 +537,15 @@ class circulation_of {
 template <class Id, bool (*Next)(hw_nav_circ*, Id*)>
 using circulation = circulation_of<hw_nav_circ, Id, Next>;
 
+/// Half-edges, by hw_nav_circ_next_halfedge().
 using halfedge_circulation = circulation<hw_halfedge, hw_nav_circ_next_halfedge>;
+/// Incoming half-edges of a vertex, by hw_nav_circ_next_incoming().
 using incoming_circulation = circulation<hw_halfedge, hw_nav_circ_next_incoming>;
+/// Vertices, by hw_nav_circ_next_vertex().
 using vertex_circulation = circulation<hw_vertex, hw_nav_circ_next_vertex>;
+/// Edges, by hw_nav_circ_next_edge().
 using edge_circulation = circulation<hw_edge, hw_nav_circ_next_edge>;
+/// Faces, by hw_nav_circ_next_face().
 using face_circulation = circulation<hw_face, hw_nav_circ_next_face>;
 
 /// The inline navigation of a mesh (hw_nav, see halfwing.h / halfwing_nav.h), from
@@ -357,11 +626,11 @@ class diagnostic {
   /// True when nothing is wrong; an empty (default-constructed) diagnostic is clean.
   bool is_clean() const { return !raw_ || hw_diagnostic_is_clean(raw_.get()); }
   /// One id list (faces or vertices, per `list`); empty for an empty diagnostic.
-  std::vector<uint32_t> ids(hw_diagnostic_list list) const {
+  std::vector<uint32_t> ids(DiagnosticList list) const {
     if (!raw_) return {};
     const uint32_t* data = nullptr;
     std::size_t n = 0;
-    check(hw_diagnostic_ids(raw_.get(), list, &data, &n));
+    check(hw_diagnostic_ids(raw_.get(), to_c(list), &data, &n));
     return std::vector<uint32_t>(data, data + n);
   }
   /// An edge of an edge list: its two input vertices (smaller first) and the input faces using
@@ -371,18 +640,19 @@ class diagnostic {
     std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
   };
   /// The number of edges in one edge list; 0 for an empty diagnostic.
-  std::size_t edge_count(hw_diagnostic_edges edges) const {
+  std::size_t edge_count(DiagnosticEdges edges) const {
     if (!raw_) return 0;
     std::size_t n = 0;
-    check(hw_diagnostic_edge_count(raw_.get(), edges, &n));
+    check(hw_diagnostic_edge_count(raw_.get(), to_c(edges), &n));
     return n;
   }
   /// Edge `index` of an edge list (see hw_diagnostic_edge()).
-  edge_report edge(hw_diagnostic_edges edges, std::size_t index) const {
+  edge_report edge(DiagnosticEdges edges, std::size_t index) const {
     edge_report report;
     const uint32_t* faces = nullptr;
     std::size_t n_faces = 0;
-    check(hw_diagnostic_edge(raw_.get(), edges, index, report.vertices.data(), &faces, &n_faces));
+    check(hw_diagnostic_edge(raw_.get(), to_c(edges), index, report.vertices.data(), &faces,
+                             &n_faces));
     report.faces.assign(faces, faces + n_faces);
     return report;
   }
@@ -436,7 +706,7 @@ class doctor_report {
                           const std::vector<uint32_t>& indices,
                           const hw_doctor_options& options = hw_doctor_options_default()) {
     if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+      throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
     hw_doctor_report* raw = nullptr;
     check(hw_doctor_examine_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
                                     face_sizes.size(), indices.data(), indices.size(), &options,
@@ -451,9 +721,9 @@ class doctor_report {
     return verdict;
   }
   /// One finding's elements (see hw_doctor_report_finding()).
-  finding_view finding(hw_doctor_finding kind) const {
+  finding_view finding(DoctorFinding kind) const {
     finding_view view;
-    check(hw_doctor_report_finding(raw_.get(), kind, &view.ids, &view.n_items,
+    check(hw_doctor_report_finding(raw_.get(), to_c(kind), &view.ids, &view.n_items,
                                    &view.ids_per_item));
     return view;
   }
@@ -533,7 +803,7 @@ inline std::vector<std::array<uint32_t, 2>> self_intersections(
     const std::vector<double>& positions, const std::vector<uint32_t>& face_sizes,
     const std::vector<uint32_t>& indices) {
   if (positions.size() % 3 != 0)
-    throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
   hw_face_pairs* raw = nullptr;
   check(hw_self_intersections_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
                                       face_sizes.size(), indices.data(), indices.size(), &raw));
@@ -556,10 +826,10 @@ class index_maps {
   explicit index_maps(hw_index_maps* raw) : raw_(raw) {}
   /// The old-to-new map of one element kind (HW_INVALID_INDEX for removed elements), valid as
   /// long as the maps.
-  values_view<const uint32_t> view(hw_element_kind kind) const {
+  values_view<const uint32_t> view(ElementKind kind) const {
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
-    check(hw_index_maps_view(raw_.get(), kind, &ids, &n));
+    check(hw_index_maps_view(raw_.get(), to_c(kind), &ids, &n));
     return values_view<const uint32_t>(ids, n);
   }
   /// The C object, still owned by these maps.
@@ -577,19 +847,19 @@ class repair_report {
   explicit repair_report(hw_repair_report* raw) : raw_(raw) {}
 
   /// One list (pair lists hold 2 ids per pair; see ::hw_repair_list).
-  std::vector<uint32_t> list(hw_repair_list which) const {
+  std::vector<uint32_t> list(RepairList which) const {
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
-    check(hw_repair_report_list(raw_.get(), which, &ids, &n));
+    check(hw_repair_report_list(raw_.get(), to_c(which), &ids, &n));
     return std::vector<uint32_t>(ids, ids + n);
   }
   /// The old-to-new map of one element kind (HW_INVALID_INDEX for removed elements).
-  std::vector<uint32_t> map(hw_element_kind kind) const {
+  std::vector<uint32_t> map(ElementKind kind) const {
     const hw_index_maps* maps = nullptr;
     check(hw_repair_report_maps(raw_.get(), &maps, nullptr));
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
-    check(hw_index_maps_view(maps, kind, &ids, &n));
+    check(hw_index_maps_view(maps, to_c(kind), &ids, &n));
     return std::vector<uint32_t>(ids, ids + n);
   }
   /// Corners dropped from kept faces.
@@ -619,10 +889,10 @@ class repair_fates {
 
   /// One list (see ::hw_fates_list): fates (::hw_fate) and ids of the input vertices and
   /// faces, or the added vertices' pairs.
-  std::vector<uint32_t> list(hw_fates_list which) const {
+  std::vector<uint32_t> list(FatesList which) const {
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
-    check(hw_repair_fates_list(raw_.get(), which, &ids, &n));
+    check(hw_repair_fates_list(raw_.get(), to_c(which), &ids, &n));
     return std::vector<uint32_t>(ids, ids + n);
   }
   /// How many elements met each fate.
@@ -657,7 +927,7 @@ class soup {
                            const std::vector<uint32_t>& face_sizes,
                            const std::vector<uint32_t>& indices) {
     if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+      throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
     hw_soup* raw = nullptr;
     check(hw_soup_from_indexed(positions.data(), positions.size() / 3, face_sizes.data(),
                                face_sizes.size(), indices.data(), indices.size(), &raw));
@@ -709,9 +979,9 @@ class soup {
         [&](hw_repair_report** out) { return hw_soup_remove_unreferenced_vertices(get(), out); });
   }
   /// See hw_soup_remove_small_components().
-  repair_report remove_small_components(hw_small_components rule, double value) {
+  repair_report remove_small_components(SmallComponents rule, double value) {
     return run([&](hw_repair_report** out) {
-      return hw_soup_remove_small_components(get(), rule, value, out);
+      return hw_soup_remove_small_components(get(), to_c(rule), value, out);
     });
   }
   /// See hw_soup_orient_faces().
@@ -719,9 +989,9 @@ class soup {
     return run([&](hw_repair_report** out) { return hw_soup_orient_faces(get(), out); });
   }
   /// See hw_soup_repair_non_manifold_edges().
-  repair_report repair_non_manifold_edges(hw_non_manifold_edges how = HW_NON_MANIFOLD_EDGES_CUT) {
+  repair_report repair_non_manifold_edges(NonManifoldEdges how = NonManifoldEdges::Cut) {
     return run([&](hw_repair_report** out) {
-      return hw_soup_repair_non_manifold_edges(get(), how, out);
+      return hw_soup_repair_non_manifold_edges(get(), to_c(how), out);
     });
   }
   /// See hw_soup_split_non_manifold_vertices().
@@ -755,14 +1025,14 @@ namespace detail {
 template <class T, class Builder>
 T* build_indexed(Builder build, const std::vector<double>& positions,
                  const std::vector<uint32_t>& face_sizes, const std::vector<uint32_t>& indices,
-                 hw_build_policy policy, diagnostic* report) {
+                 BuildPolicy policy, diagnostic* report) {
   if (positions.size() % 3 != 0)
-    throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+    throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
   T* raw = nullptr;
   hw_diagnostic* found = nullptr;
   const hw_status status =
       build(positions.data(), positions.size() / 3, face_sizes.data(), face_sizes.size(),
-            indices.data(), indices.size(), policy, &raw, report ? &found : nullptr);
+            indices.data(), indices.size(), to_c(policy), &raw, report ? &found : nullptr);
   // A refused build gives its diagnostic too: take it before throwing.
   if (report) *report = diagnostic(found);
   check(status);
@@ -808,19 +1078,19 @@ class mesh {
   static mesh from_indexed(const std::vector<double>& positions,
                            const std::vector<uint32_t>& face_sizes,
                            const std::vector<uint32_t>& indices,
-                           hw_build_policy policy = HW_BUILD_STRICT,
-                           diagnostic* report = nullptr) {
+                           BuildPolicy policy = BuildPolicy::Strict, diagnostic* report = nullptr) {
     return mesh(detail::build_indexed<hw_mesh>(hw_mesh_from_indexed, positions, face_sizes,
                                                indices, policy, report));
   }
 
   /// Reads an OBJ, OFF or PLY file; see hw_mesh_read(). `report`, when given, receives the
   /// diagnostic, also of a refused file.
-  static mesh read(const std::string& path, hw_build_policy policy = HW_BUILD_STRICT,
+  static mesh read(const std::string& path, BuildPolicy policy = BuildPolicy::Strict,
                    diagnostic* report = nullptr) {
     hw_mesh* raw = nullptr;
     hw_diagnostic* found = nullptr;
-    const hw_status status = hw_mesh_read(path.c_str(), policy, &raw, report ? &found : nullptr);
+    const hw_status status =
+        hw_mesh_read(path.c_str(), to_c(policy), &raw, report ? &found : nullptr);
     if (report) *report = diagnostic(found);
     check(status);
     return mesh(raw);
@@ -895,15 +1165,14 @@ class mesh {
     return nav().loop(h);
   }
 
-  /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` (HW_ELEMENT_VERTEX,
-  /// HW_ELEMENT_HALFEDGE, HW_ELEMENT_EDGE, HW_ELEMENT_FACE) in increasing id order; an `f` that
-  /// returns bool stops the visit by returning false. Returns the number of calls. An exception
-  /// thrown by `f` ends the visit and is rethrown here. See hw_mesh_visit().
+  /// Calls `f(id)` (a `uint32_t`) for every live element of `kind` in increasing id order; an
+  /// `f` that returns bool stops the visit by returning false. Returns the number of calls. An
+  /// exception thrown by `f` ends the visit and is rethrown here. See hw_mesh_visit().
   template <class F>
-  std::size_t visit(hw_element_kind kind, F&& f) const {
+  std::size_t visit(ElementKind kind, F&& f) const {
     detail::visitor<std::remove_reference_t<F>> v{f, nullptr};
     std::size_t visited = 0;
-    check(hw_mesh_visit(get(), kind, &decltype(v)::call, &v, &visited));
+    check(hw_mesh_visit(get(), to_c(kind), &decltype(v)::call, &v, &visited));
     if (v.thrown) std::rethrow_exception(v.thrown);
     return visited;
   }
@@ -933,7 +1202,7 @@ class mesh {
   }
   /// The component of every face slot (see hw_mesh_face_components()).
   std::vector<uint32_t> face_components() const {
-    std::vector<uint32_t> out(slots(HW_ELEMENT_FACE));
+    std::vector<uint32_t> out(slots(ElementKind::Face));
     std::size_t n = 0;
     check(hw_mesh_face_components(get(), out.data(), out.size(), &n));
     out.resize(n);
@@ -946,10 +1215,10 @@ class mesh {
 
   /// A zero-copy view of one connectivity array (see hw_mesh_view()), valid until the next call
   /// that modifies the mesh.
-  values_view<const uint32_t> view(hw_mesh_array which) const {
+  values_view<const uint32_t> view(MeshArray which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
-    check(hw_mesh_view(get(), which, &data, &n));
+    check(hw_mesh_view(get(), to_c(which), &data, &n));
     return values_view<const uint32_t>(data, n);
   }
   /// A zero-copy view of the positions, x y z per vertex slot (see hw_mesh_view_positions()).
@@ -963,19 +1232,19 @@ class mesh {
   // Normals, x y z per element slot.
   /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_FACE));
+    std::vector<double> out(3 * slots(ElementKind::Face));
     check(hw_mesh_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Vertex normals with this weighting, x y z per vertex slot.
-  std::vector<double> vertex_normals(hw_normal_weighting weighting = HW_WEIGHT_UNIFORM) const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_VERTEX));
-    check(hw_mesh_vertex_normals(get(), weighting, out.data(), out.size() / 3, nullptr));
+  std::vector<double> vertex_normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
+    std::vector<double> out(3 * slots(ElementKind::Vertex));
+    check(hw_mesh_vertex_normals(get(), to_c(weighting), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Normals per corner (x y z per half-edge slot), split at edges sharper than `crease_angle` radians (see hw_mesh_corner_normals()).
   std::vector<double> corner_normals(double crease_angle) const {
-    std::vector<double> out(3 * slots(HW_ELEMENT_HALFEDGE));
+    std::vector<double> out(3 * slots(ElementKind::Halfedge));
     check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
     return out;
   }
@@ -985,16 +1254,16 @@ class mesh {
     std::vector<double> vertices;  ///< x y z per vertex slot
   };
   /// Face and vertex normals in one pass (see hw_mesh_normals()).
-  face_and_vertex_normals normals(hw_normal_weighting weighting_kind) const {
+  face_and_vertex_normals normals(NormalWeighting weighting_kind) const {
     face_and_vertex_normals out;
-    out.faces.resize(3 * slots(HW_ELEMENT_FACE));
-    out.vertices.resize(3 * slots(HW_ELEMENT_VERTEX));
-    check(hw_mesh_normals(get(), weighting_kind, out.faces.data(), out.faces.size() / 3, nullptr,
-                          out.vertices.data(), out.vertices.size() / 3, nullptr));
+    out.faces.resize(3 * slots(ElementKind::Face));
+    out.vertices.resize(3 * slots(ElementKind::Vertex));
+    check(hw_mesh_normals(get(), to_c(weighting_kind), out.faces.data(), out.faces.size() / 3,
+                          nullptr, out.vertices.data(), out.vertices.size() / 3, nullptr));
     return out;
   }
 
-  // Editing; a refused operation throws hw::error (HW_ERR_REFUSED) and changes nothing.
+  // Editing; a refused operation throws hw::error (Status::Refused) and changes nothing.
   /// Adds an isolated vertex at `p`.
   hw_vertex add_vertex(const std::array<double, 3>& p) {
     hw_vertex v;
@@ -1075,7 +1344,7 @@ class mesh {
     return repair_report(raw);
   }
   /// Fills the hole whose boundary loop holds `h` (see hw_mesh_fill_hole()); returns the
-  /// triangles added. Throws hw::error (HW_ERR_REFUSED, mesh unchanged) when it cannot.
+  /// triangles added. Throws hw::error (Status::Refused, mesh unchanged) when it cannot.
   size_t fill_hole(hw_halfedge h) {
     size_t faces = 0;
     check(hw_mesh_fill_hole(get(), h, &faces));
@@ -1098,7 +1367,7 @@ class mesh {
   /// Adds an isolated vertex.
   hw_vertex add_vertex(double x, double y, double z) { return add_vertex({x, y, z}); }
 
-  /// Adds the face with these corners (counter-clockwise); throws hw::error (HW_ERR_REFUSED,
+  /// Adds the face with these corners (counter-clockwise); throws hw::error (Status::Refused,
   /// mesh unchanged) for a complex edge or vertex, repeated or too few corners.
   hw_face add_face(const std::vector<hw_vertex>& corners) {
     hw_face f;
@@ -1109,60 +1378,61 @@ class mesh {
   /// Adds a zero-filled attribute of `components` values of type `T` (double, float, int32_t,
   /// uint32_t) per element of `kind`.
   template <class T>
-  void add_attribute(hw_element_kind kind, const std::string& name, std::size_t components = 1) {
-    check(hw_mesh_attribute_add(get(), kind, name.c_str(), detail::scalar_type<T>::value,
+  void add_attribute(ElementKind kind, const std::string& name, std::size_t components = 1) {
+    check(hw_mesh_attribute_add(get(), to_c(kind), name.c_str(), detail::scalar_type<T>::value,
                                 components));
   }
 
   /// The values of attribute `name` (element `i` owns `components` values from `i *
   /// components`); throws when it does not exist or holds another type.
   template <class T>
-  values_view<const T> attribute(hw_element_kind kind, const std::string& name) const {
+  values_view<const T> attribute(ElementKind kind, const std::string& name) const {
     const void* data = nullptr;
     std::size_t size = 0;
-    check(hw_mesh_attribute_view(get(), kind, name.c_str(), detail::scalar_type<T>::value, &data,
+    check(hw_mesh_attribute_view(get(), to_c(kind), name.c_str(), detail::scalar_type<T>::value, &data,
                                  &size));
     return values_view<const T>(static_cast<const T*>(data), size);
   }
 
   /// The values of attribute `name`, writable.
   template <class T>
-  values_view<T> attribute_data(hw_element_kind kind, const std::string& name) {
+  values_view<T> attribute_data(ElementKind kind, const std::string& name) {
     void* data = nullptr;
     std::size_t size = 0;
-    check(hw_mesh_attribute_data(get(), kind, name.c_str(), detail::scalar_type<T>::value, &data,
+    check(hw_mesh_attribute_data(get(), to_c(kind), name.c_str(), detail::scalar_type<T>::value, &data,
                                  &size));
     return values_view<T>(static_cast<T*>(data), size);
   }
 
   /// The scalar type and the components per element of attribute `name` (see
   /// hw_mesh_attribute_info()).
-  std::pair<hw_scalar_type, std::size_t> attribute_info(hw_element_kind kind,
-                                                         const std::string& name) const {
-    std::pair<hw_scalar_type, std::size_t> info{};
-    check(hw_mesh_attribute_info(get(), kind, name.c_str(), &info.first, &info.second));
-    return info;
+  std::pair<ScalarType, std::size_t> attribute_info(ElementKind kind,
+                                                    const std::string& name) const {
+    hw_scalar_type type = 0;
+    std::size_t components = 0;
+    check(hw_mesh_attribute_info(get(), to_c(kind), name.c_str(), &type, &components));
+    return {static_cast<ScalarType>(type), components};
   }
 
   /// Removes attribute `name` of `kind`.
-  void remove_attribute(hw_element_kind kind, const std::string& name) {
-    check(hw_mesh_attribute_remove(get(), kind, name.c_str()));
+  void remove_attribute(ElementKind kind, const std::string& name) {
+    check(hw_mesh_attribute_remove(get(), to_c(kind), name.c_str()));
   }
 
   /// Names of the attributes of `kind`, in the order they were added.
-  std::vector<std::string> attribute_names(hw_element_kind kind) const {
+  std::vector<std::string> attribute_names(ElementKind kind) const {
     std::size_t count = 0;
-    check(hw_mesh_attribute_count(get(), kind, &count));
+    check(hw_mesh_attribute_count(get(), to_c(kind), &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
       names.push_back(detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-        return hw_mesh_attribute_name(get(), kind, i, buf, len, needed);
+        return hw_mesh_attribute_name(get(), to_c(kind), i, buf, len, needed);
       }));
     }
     return names;
   }
 
-  /// Corner normals, x y z per half-edge slot; throws HW_ERR_NOT_FOUND when there are none.
+  /// Corner normals, x y z per half-edge slot; throws Status::NotFound when there are none.
   values_view<const double> corner_normals() const {
     const double* xyz = nullptr;
     std::size_t n = 0;
@@ -1173,11 +1443,11 @@ class mesh {
   /// Sets the corner normals from x y z per half-edge slot.
   void set_corner_normals(const std::vector<double>& xyz) {
     if (xyz.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "corner normals: size is not a multiple of 3 (x, y, z)");
+      throw error(Status::InvalidInput, "corner normals: size is not a multiple of 3 (x, y, z)");
     check(hw_mesh_corner_normals_set(get(), xyz.data(), xyz.size() / 3));
   }
 
-  /// Corner texture coordinates, u v per half-edge slot; throws HW_ERR_NOT_FOUND when none.
+  /// Corner texture coordinates, u v per half-edge slot; throws Status::NotFound when none.
   values_view<const double> corner_uvs() const {
     const double* uv = nullptr;
     std::size_t n = 0;
@@ -1188,7 +1458,7 @@ class mesh {
   /// Sets the corner texture coordinates from u v per half-edge slot.
   void set_corner_uvs(const std::vector<double>& uv) {
     if (uv.size() % 2 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "corner uvs: size is not a multiple of 2 (u, v)");
+      throw error(Status::InvalidInput, "corner uvs: size is not a multiple of 2 (u, v)");
     check(hw_mesh_corner_uvs_set(get(), uv.data(), uv.size() / 2));
   }
 
@@ -1211,15 +1481,15 @@ class mesh {
   // throws hw::error with the library's message otherwise.
   nav_view checked_nav(hw_vertex v) const {
     hw_circulator c;
-    check(hw_circ_around_vertex(get(), v, HW_CIRC_HALFEDGES, &c));
+    check(hw_circ_around_vertex(get(), v, HW_CIRCULATOR_KIND_HALFEDGES, &c));
     return nav();
   }
   nav_view checked_nav(hw_face f) const {
     hw_circulator c;
-    check(hw_circ_around_face(get(), f, HW_CIRC_HALFEDGES, &c));
+    check(hw_circ_around_face(get(), f, HW_CIRCULATOR_KIND_HALFEDGES, &c));
     return nav();
   }
-  std::size_t slots(hw_element_kind kind) const { return hw_mesh_slot_count(get(), kind); }
+  std::size_t slots(ElementKind kind) const { return hw_mesh_slot_count(get(), to_c(kind)); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
 };
 
@@ -1236,7 +1506,7 @@ inline std::pair<mesh, repair_fates> repair_mesh(const soup& input,
 
 /// A winged-edge (Baumgart) polygon mesh (owns an hw_winged). Ids are hw_wvertex, hw_wedge and
 /// hw_wface; the walks are ranges (`for (hw_wedge e : w.face_edges(f))`); the Euler operators
-/// throw hw::error (status HW_ERR_REFUSED when a precondition does not hold) and leave the
+/// throw hw::error (Status::Refused when a precondition does not hold) and leave the
 /// structure unchanged when they refuse.
 class winged {
  public:
@@ -1259,7 +1529,7 @@ class winged {
   static winged from_indexed(const std::vector<double>& positions,
                              const std::vector<uint32_t>& face_sizes,
                              const std::vector<uint32_t>& indices,
-                             hw_build_policy policy = HW_BUILD_STRICT,
+                             BuildPolicy policy = BuildPolicy::Strict,
                              diagnostic* report = nullptr) {
     return winged(detail::build_indexed<hw_winged>(hw_winged_from_indexed, positions, face_sizes,
                                                    indices, policy, report));
@@ -1272,9 +1542,9 @@ class winged {
                                      const std::vector<uint32_t>& indices,
                                      const std::vector<uint32_t>& edge_order) {
     if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+      throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
     if (edge_order.size() % 2 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "edge_order: size is not a multiple of 2 (from, to)");
+      throw error(Status::InvalidInput, "edge_order: size is not a multiple of 2 (from, to)");
     hw_winged* raw = nullptr;
     check(hw_winged_from_indexed_ordered(positions.data(), positions.size() / 3,
                                          face_sizes.data(), face_sizes.size(), indices.data(),
@@ -1350,17 +1620,17 @@ class winged {
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
   /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
   point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
-  /// The unit normals of all faces or all vertices (HW_WNORMALS_FACES, HW_WNORMALS_VERTICES), x
+  /// The unit normals of all faces or all vertices (WNormals::Faces, WNormals::Vertices), x
   /// y z per id (see hw_winged_normals()).
-  std::vector<double> normals(hw_wnormals which) const {
+  std::vector<double> normals(WNormals which) const {
     std::size_t needed = 0;
-    const hw_status sized = hw_winged_normals(get(), which, nullptr, 0, &needed);
+    const hw_status sized = hw_winged_normals(get(), to_c(which), nullptr, 0, &needed);
     if (needed == 0) {
       check(sized);
       return {};
     }
     std::vector<double> xyz(needed);
-    check(hw_winged_normals(get(), which, xyz.data(), xyz.size(), &needed));
+    check(hw_winged_normals(get(), to_c(which), xyz.data(), xyz.size(), &needed));
     return xyz;
   }
   /// Moves vertex `v` to `p` (finite).
@@ -1369,21 +1639,25 @@ class winged {
   }
 
   /// The edges of `f`'s loop, counter-clockwise from its stored edge.
-  edge_range face_edges(hw_wface f) const { return edge_range(around(f, HW_WCIRC_EDGES)); }
+  edge_range face_edges(hw_wface f) const { return edge_range(around(f, WCirculatorKind::Edges)); }
   /// The corners of `f`, counter-clockwise from its first corner.
   vertex_range face_vertices(hw_wface f) const {
-    return vertex_range(around(f, HW_WCIRC_VERTICES));
+    return vertex_range(around(f, WCirculatorKind::Vertices));
   }
   /// The faces across `f`'s edges (holes skipped).
-  face_range face_faces(hw_wface f) const { return face_range(around(f, HW_WCIRC_FACES)); }
+  face_range face_faces(hw_wface f) const { return face_range(around(f, WCirculatorKind::Faces)); }
   /// The edges at `v`, counter-clockwise.
-  edge_range vertex_edges(hw_wvertex v) const { return edge_range(around(v, HW_WCIRC_EDGES)); }
+  edge_range vertex_edges(hw_wvertex v) const {
+    return edge_range(around(v, WCirculatorKind::Edges));
+  }
   /// The neighbours of `v`, counter-clockwise.
   vertex_range vertex_vertices(hw_wvertex v) const {
-    return vertex_range(around(v, HW_WCIRC_VERTICES));
+    return vertex_range(around(v, WCirculatorKind::Vertices));
   }
   /// The faces around `v`, counter-clockwise (holes skipped).
-  face_range vertex_faces(hw_wvertex v) const { return face_range(around(v, HW_WCIRC_FACES)); }
+  face_range vertex_faces(hw_wvertex v) const {
+    return face_range(around(v, WCirculatorKind::Faces));
+  }
 
   /// Make vertex, face, solid: returns the new vertex and (point) face.
   std::pair<hw_wvertex, hw_wface> mvfs(const point& p) {
@@ -1420,10 +1694,10 @@ class winged {
   void check_invariants() const { check(hw_winged_check(get())); }
 
   /// A table in a textbook layout; see hw_winged_table().
-  std::string table(hw_wtable which, hw_wnaming naming = HW_WNAMING_CW_CCW,
-                    hw_table_format format = HW_TABLE_TEXT) const {
+  std::string table(WTable which, WNaming naming = WNaming::CwCcw,
+                    TableFormat format = TableFormat::Text) const {
     return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_winged_table(get(), which, naming, format, buf, len, needed);
+      return hw_winged_table(get(), to_c(which), to_c(naming), to_c(format), buf, len, needed);
     });
   }
 
@@ -1435,14 +1709,14 @@ class winged {
  private:
   explicit winged(hw_winged* raw) : raw_(raw) {}
 
-  hw_wcirculator around(hw_wface f, hw_wcirculator_kind kind) const {
+  hw_wcirculator around(hw_wface f, WCirculatorKind kind) const {
     hw_wcirculator c;
-    check(hw_wcirc_around_face(get(), f, kind, &c));
+    check(hw_wcirc_around_face(get(), f, to_c(kind), &c));
     return c;
   }
-  hw_wcirculator around(hw_wvertex v, hw_wcirculator_kind kind) const {
+  hw_wcirculator around(hw_wvertex v, WCirculatorKind kind) const {
     hw_wcirculator c;
-    check(hw_wcirc_around_vertex(get(), v, kind, &c));
+    check(hw_wcirc_around_vertex(get(), v, to_c(kind), &c));
     return c;
   }
 
@@ -1499,7 +1773,7 @@ class voronoi_cells {
     return a;
   }
 
-  /// Centroid of the cell of `site`; throws (HW_ERR_NOT_FOUND) for an empty cell.
+  /// Centroid of the cell of `site`; throws (Status::NotFound) for an empty cell.
   point2 centroid(uint32_t site) const {
     point2 c{};
     check(hw_voronoi_cells_area_centroid(get(), site, nullptr, c.data()));
@@ -1545,14 +1819,16 @@ class delaunay {
   /// The number of triangles (see hw_delaunay_n_triangles()).
   std::size_t n_triangles() const { return hw_delaunay_n_triangles(get()); }
   /// Whether the sites span a plane, a line, a point or nothing (see hw_delaunay_dimension()).
-  hw_site_dimension dimension() const { return hw_delaunay_dimension(get()); }
+  SiteDimension dimension() const {
+    return static_cast<SiteDimension>(hw_delaunay_dimension(get()));
+  }
 
-  /// One index array of the triangulation (::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES,
-  /// ::HW_VORONOI_TRIANGLE_TWINS, ::HW_VORONOI_HULL); see hw_delaunay_view().
-  values_view<const uint32_t> view(hw_voronoi_array which) const {
+  /// One index array of the triangulation (VoronoiArray::Representative, Triangles,
+  /// TriangleTwins or Hull); see hw_delaunay_view().
+  values_view<const uint32_t> view(VoronoiArray which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
-    check(hw_delaunay_view(get(), which, &data, &n));
+    check(hw_delaunay_view(get(), to_c(which), &data, &n));
     return {data, n};
   }
 
@@ -1585,13 +1861,15 @@ class voronoi {
   /// The number of Voronoi half-edges.
   std::size_t n_halfedges() const { return hw_voronoi_n_halfedges(get()); }
   /// The dimension the sites span (see ::hw_site_dimension).
-  hw_site_dimension dimension() const { return hw_voronoi_dimension(get()); }
+  SiteDimension dimension() const {
+    return static_cast<SiteDimension>(hw_voronoi_dimension(get()));
+  }
 
   /// One index array of the diagram; see hw_voronoi_view() and ::hw_voronoi_array.
-  values_view<const uint32_t> view(hw_voronoi_array which) const {
+  values_view<const uint32_t> view(VoronoiArray which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
-    check(hw_voronoi_view(get(), which, &data, &n));
+    check(hw_voronoi_view(get(), to_c(which), &data, &n));
     return {data, n};
   }
 
@@ -1641,7 +1919,7 @@ class voronoi {
     return out;
   }
 
-  /// The half-edge of the cell of `a` facing the cell of `b`; throws HW_ERR_NOT_FOUND when the
+  /// The half-edge of the cell of `a` facing the cell of `b`; throws Status::NotFound when the
   /// cells are not adjacent.
   uint32_t edge_between(uint32_t a, uint32_t b) const {
     uint32_t h = HW_INVALID_INDEX;
@@ -1666,10 +1944,10 @@ class voronoi {
 
   /// Nearest-site labels of a width × height raster of [min, max] under `metric`, row-major,
   /// row 0 at the top.
-  std::vector<uint32_t> label_image(hw_metric metric, point2 min, point2 max, uint32_t width,
+  std::vector<uint32_t> label_image(Metric metric, point2 min, point2 max, uint32_t width,
                                     uint32_t height) const {
     std::vector<uint32_t> labels(static_cast<std::size_t>(width) * height);
-    check(hw_voronoi_label_image(get(), metric, min[0], min[1], max[0], max[1], width, height,
+    check(hw_voronoi_label_image(get(), to_c(metric), min[0], min[1], max[0], max[1], width, height,
                                  labels.data(), labels.size(), nullptr));
     return labels;
   }
@@ -1742,7 +2020,7 @@ class render_buffers {
   static render_buffers polygons(const std::vector<double>& corners, uint32_t dimension,
                                  const std::vector<uint32_t>& sizes) {
     if (dimension == 0 || corners.size() % dimension != 0)
-      throw error(HW_ERR_INVALID_INPUT, "corners: size is not a multiple of the dimension");
+      throw error(Status::InvalidInput, "corners: size is not a multiple of the dimension");
     hw_render_buffers* raw = nullptr;
     check(hw_render_buffers_from_polygons(corners.data(), dimension, corners.size() / dimension,
                                           sizes.data(), sizes.size(), &raw));
@@ -1759,31 +2037,31 @@ class render_buffers {
 
   /// One kind of a doctor's findings over the face list it examined; see
   /// hw_render_buffers_from_finding().
-  static render_buffers finding(const doctor_report& report, hw_doctor_finding kind,
+  static render_buffers finding(const doctor_report& report, DoctorFinding kind,
                                 const std::vector<double>& positions,
                                 const std::vector<uint32_t>& face_sizes,
                                 const std::vector<uint32_t>& indices) {
     if (positions.size() % 3 != 0)
-      throw error(HW_ERR_INVALID_INPUT, "positions: size is not a multiple of 3 (x, y, z)");
+      throw error(Status::InvalidInput, "positions: size is not a multiple of 3 (x, y, z)");
     hw_render_buffers* raw = nullptr;
-    check(hw_render_buffers_from_finding(report.get(), kind, positions.data(),
-                                         positions.size() / 3, face_sizes.data(),
-                                         face_sizes.size(), indices.data(), indices.size(), &raw));
+    check(hw_render_buffers_from_finding(report.get(), to_c(kind), positions.data(),
+                                         positions.size() / 3, face_sizes.data(), face_sizes.size(),
+                                         indices.data(), indices.size(), &raw));
     return render_buffers(raw);
   }
 
   /// One float array (see hw_render_buffers_floats()), valid while this object lives.
-  values_view<const float> floats(hw_render_floats which) const {
+  values_view<const float> floats(RenderFloats which) const {
     const float* data = nullptr;
     std::size_t n = 0;
-    check(hw_render_buffers_floats(get(), which, &data, &n));
+    check(hw_render_buffers_floats(get(), to_c(which), &data, &n));
     return values_view<const float>(data, n);
   }
   /// One index array (see hw_render_buffers_indices()), valid while this object lives.
-  values_view<const uint32_t> indices(hw_render_indices which) const {
+  values_view<const uint32_t> indices(RenderIndices which) const {
     const uint32_t* data = nullptr;
     std::size_t n = 0;
-    check(hw_render_buffers_indices(get(), which, &data, &n));
+    check(hw_render_buffers_indices(get(), to_c(which), &data, &n));
     return values_view<const uint32_t>(data, n);
   }
   /// The number of vertices in the buffers.
@@ -1839,44 +2117,44 @@ inline mesh icosphere(double radius, uint32_t level) {
 }
 /// A closed torus about the z axis (see hw_surface_torus()).
 inline mesh torus(double major_radius, double minor_radius, uint32_t major_steps,
-                  uint32_t minor_steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t minor_steps, CellFaces faces = CellFaces::Quads) {
   return detail::generate([&](hw_mesh** out) {
-    return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, faces, out);
+    return hw_surface_torus(major_radius, minor_radius, major_steps, minor_steps, to_c(faces), out);
   });
 }
 /// A flat grid in the plane z = 0 (see hw_surface_grid()).
 inline mesh grid(double width, double height, uint32_t cells_x, uint32_t cells_y,
-                 hw_cell_faces faces = HW_CELLS_QUADS) {
+                 CellFaces faces = CellFaces::Quads) {
   return detail::generate([&](hw_mesh** out) {
-    return hw_surface_grid(width, height, cells_x, cells_y, faces, out);
+    return hw_surface_grid(width, height, cells_x, cells_y, to_c(faces), out);
   });
 }
 /// `profile` swept along `direction` in `steps` rows.
 inline mesh sweep(const std::vector<point>& profile, bool closed, const point& direction,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t steps, CellFaces faces = CellFaces::Quads) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_sweep(detail::flat(profile), profile.size(), closed, direction.data(), steps,
-                            faces, out);
+                            to_c(faces), out);
   });
 }
 /// `profile` turned about an axis; `angle` in radians, or a full turn when `angle` is omitted.
 inline mesh revolution(const std::vector<point>& profile, bool closed, const point& axis_origin,
                        const point& axis_direction, uint32_t steps, double angle = 0.0,
-                       hw_caps caps = HW_CAPS_NONE, hw_cell_faces faces = HW_CELLS_QUADS) {
+                       Caps caps = Caps::None, CellFaces faces = CellFaces::Quads) {
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_revolution(detail::flat(profile), profile.size(), closed, axis_origin.data(),
-                                 axis_direction.data(), angle == 0.0, angle, steps, caps, faces,
-                                 out);
+                                 axis_direction.data(), angle == 0.0, angle, steps, to_c(caps),
+                                 to_c(faces), out);
   });
 }
 /// Straight rulings from `first[i]` to `second[i]`.
 inline mesh ruled(const std::vector<point>& first, const std::vector<point>& second, bool closed,
-                  uint32_t steps, hw_cell_faces faces = HW_CELLS_QUADS) {
+                  uint32_t steps, CellFaces faces = CellFaces::Quads) {
   if (first.size() != second.size())
-    throw error(HW_ERR_INVALID_INPUT, "ruled surface polylines differ in length");
+    throw error(Status::InvalidInput, "ruled surface polylines differ in length");
   return detail::generate([&](hw_mesh** out) {
     return hw_surface_ruled(detail::flat(first), detail::flat(second), first.size(), closed, steps,
-                            faces, out);
+                            to_c(faces), out);
   });
 }
 

@@ -29,3 +29,13 @@ if stray=$(grep -E '^#define [A-Za-z_]+|^typedef [a-z_0-9]+ ([A-Za-z_]+ )?[A-Za-
   echo "$stray" >&2
   exit 1
 fi
+# Each enumeration's constants carry its type's name (hw_normal_weighting:
+# HW_NORMAL_WEIGHTING_ANGLE), so a value and its family are found from either. The one exception
+# is hw_status: HW_OK and HW_ERR_*, the spelling C libraries give status codes.
+if misnamed=$(grep -rhoE 'pub const HW_[A-Z0-9_]+: hw_[a-z0-9_]+' src/ffi |
+  awk '{ name = $3; sub(/:$/, "", name); type = toupper($4)
+         if ($4 != "hw_status" && index(name, type "_") != 1) print name " (" $4 ")" }' | grep .); then
+  echo "gen-header: enumeration constants not prefixed by their type's name:" >&2
+  echo "$misnamed" >&2
+  exit 1
+fi

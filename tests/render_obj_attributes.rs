@@ -6,10 +6,11 @@
 use std::ffi::CString;
 
 use halfwing::ffi::{
-    HW_BUILD_STRICT, HW_OK, HW_RENDER_NORMALS, HW_RENDER_UVS, HW_SHADING_CORNER_NORMALS,
-    HW_SHADING_CREASE, HW_SHADING_FLAT, HW_SHADING_SMOOTH, hw_mesh, hw_mesh_free, hw_mesh_read,
-    hw_render_buffers, hw_render_buffers_build, hw_render_buffers_floats, hw_render_buffers_free,
-    hw_render_buffers_n_vertices, hw_render_options, hw_render_options_default,
+    HW_BUILD_POLICY_STRICT, HW_OK, HW_RENDER_FLOATS_NORMALS, HW_RENDER_FLOATS_UVS,
+    HW_SHADING_CORNER_NORMALS, HW_SHADING_CREASE, HW_SHADING_FLAT, HW_SHADING_SMOOTH, hw_mesh,
+    hw_mesh_free, hw_mesh_read, hw_render_buffers, hw_render_buffers_build,
+    hw_render_buffers_floats, hw_render_buffers_free, hw_render_buffers_n_vertices,
+    hw_render_options, hw_render_options_default,
 };
 use halfwing::geom::{VertexNormalWeighting, face_normals, vertex_normals};
 use halfwing::io::read_obj_bytes;
@@ -210,7 +211,7 @@ impl CMesh {
         let status = unsafe {
             hw_mesh_read(
                 c_path.as_ptr(),
-                HW_BUILD_STRICT,
+                HW_BUILD_POLICY_STRICT,
                 &mut mesh,
                 std::ptr::null_mut(),
             )
@@ -246,8 +247,8 @@ impl CMesh {
         let result = unsafe {
             (
                 hw_render_buffers_n_vertices(buffers),
-                floats(HW_RENDER_NORMALS),
-                floats(HW_RENDER_UVS),
+                floats(HW_RENDER_FLOATS_NORMALS),
+                floats(HW_RENDER_FLOATS_UVS),
             )
         };
         // SAFETY: as above.

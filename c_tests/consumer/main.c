@@ -21,8 +21,8 @@ int main(void) {
     fprintf(stderr, "header %d and library %u disagree\n", HW_VERSION_NUMBER, hw_version_number());
     return 1;
   }
-  status =
-      hw_mesh_from_indexed(positions, 4, sizes, 4, indices, 12, HW_BUILD_STRICT, &mesh, NULL);
+  status = hw_mesh_from_indexed(positions, 4, sizes, 4, indices, 12, HW_BUILD_POLICY_STRICT, &mesh,
+                                NULL);
   if (status != HW_OK) {
     fprintf(stderr, "hw_mesh_from_indexed: %s\n", hw_status_str(status));
     return 1;

@@ -48,9 +48,12 @@ static int upload_surface(gpu_surface *gpu, const hw_render_buffers *buffers) {
     const uint32_t *triangles = NULL;
     size_t n_floats = 0, n_indices = 0;
     size_t stride = hw_render_buffers_stride(buffers) * sizeof(float);
-    if (hw_render_buffers_floats(buffers, HW_RENDER_INTERLEAVED, &vertices, &n_floats) != HW_OK ||
-        hw_render_buffers_indices(buffers, HW_RENDER_TRIANGLES, &triangles, &n_indices) != HW_OK || stride == 0)
-        return -1;
+    if (hw_render_buffers_floats(buffers, HW_RENDER_FLOATS_INTERLEAVED, &vertices, &n_floats) !=
+            HW_OK ||
+        hw_render_buffers_indices(buffers, HW_RENDER_INDICES_TRIANGLES, &triangles, &n_indices) !=
+            HW_OK ||
+        stride == 0)
+      return -1;
     glGenVertexArrays(1, &gpu->vao);
     glBindVertexArray(gpu->vao);
     glGenBuffers(1, &gpu->vertices);
@@ -153,7 +156,7 @@ static int load(view_state *s, const char *path) {
     hw_render_buffers *buffers = NULL;
     hw_render_options options = hw_render_options_default();
     float lo[3], hi[3];
-    hw_status status = hw_mesh_read(path, HW_BUILD_REPAIR, &mesh, NULL);
+    hw_status status = hw_mesh_read(path, HW_BUILD_POLICY_REPAIR, &mesh, NULL);
     if (status != HW_OK) return report(path, status);
     options.shading = HW_SHADING_CREASE; /* smooth, but keep edges sharper than 30 degrees */
     options.interleaved = true;
@@ -164,8 +167,9 @@ static int load(view_state *s, const char *path) {
     }
     printf("glfw_view: %s: %zu vertices, %zu faces -> %zu render vertices\n", path, hw_mesh_n_vertices(mesh),
            hw_mesh_n_faces(mesh), hw_render_buffers_n_vertices(buffers));
-    int rc = upload_surface(&s->surface, buffers) == 0 && upload_lines(&s->wireframe, buffers, HW_RENDER_WIREFRAME) == 0 &&
-                     upload_lines(&s->boundary, buffers, HW_RENDER_BOUNDARY) == 0 &&
+    int rc = upload_surface(&s->surface, buffers) == 0 &&
+                     upload_lines(&s->wireframe, buffers, HW_RENDER_FLOATS_WIREFRAME) == 0 &&
+                     upload_lines(&s->boundary, buffers, HW_RENDER_FLOATS_BOUNDARY) == 0 &&
                      hw_render_buffers_bounds(buffers, lo, hi) == HW_OK
                  ? 0
                  : -1;

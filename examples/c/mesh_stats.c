@@ -54,7 +54,8 @@ static void print_loops(const hw_mesh *mesh) {
 
 static void print_valences(const hw_mesh *mesh) {
     uint32_t min = UINT32_MAX, max = 0;
-    size_t total = 0, n = hw_mesh_slot_count(mesh, HW_ELEMENT_VERTEX); /* ids run 0 .. slots-1 */
+    size_t total = 0,
+           n = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX); /* ids run 0 .. slots-1 */
     for (uint32_t v = 0; v < n; ++v) {
         hw_vertex vertex = {v};
         uint32_t valence = hw_mesh_vertex_valence(mesh, vertex);
@@ -67,16 +68,20 @@ static void print_valences(const hw_mesh *mesh) {
 
 /* The normals of the first few faces and vertices (arrays are indexed by element id). */
 static int print_normals(const hw_mesh *mesh) {
-    size_t n_faces = hw_mesh_slot_count(mesh, HW_ELEMENT_FACE), n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_VERTEX);
-    double *faces = malloc(3 * n_faces * sizeof *faces), *vertices = malloc(3 * n_vertices * sizeof *vertices);
-    hw_status status = faces && vertices ? hw_mesh_normals(mesh, HW_WEIGHT_ANGLE, faces, n_faces, NULL, vertices, n_vertices, NULL)
-                                         : HW_ERR_INVALID_INPUT;
-    if (status == HW_OK) {
-        for (size_t f = 0; f < 3 && f < n_faces; ++f)
-            printf("face %zu normal: (%.4f, %.4f, %.4f)\n", f, faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]);
-        for (size_t v = 0; v < 3 && v < n_vertices; ++v)
-            printf("vertex %zu normal (angle-weighted): (%.4f, %.4f, %.4f)\n", v, vertices[3 * v], vertices[3 * v + 1],
-                   vertices[3 * v + 2]);
+  size_t n_faces = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE),
+         n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX);
+  double *faces = malloc(3 * n_faces * sizeof *faces),
+         *vertices = malloc(3 * n_vertices * sizeof *vertices);
+  hw_status status = faces && vertices ? hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_ANGLE, faces,
+                                                         n_faces, NULL, vertices, n_vertices, NULL)
+                                       : HW_ERR_INVALID_INPUT;
+  if (status == HW_OK) {
+    for (size_t f = 0; f < 3 && f < n_faces; ++f)
+      printf("face %zu normal: (%.4f, %.4f, %.4f)\n", f, faces[3 * f], faces[3 * f + 1],
+             faces[3 * f + 2]);
+    for (size_t v = 0; v < 3 && v < n_vertices; ++v)
+      printf("vertex %zu normal (angle-weighted): (%.4f, %.4f, %.4f)\n", v, vertices[3 * v],
+             vertices[3 * v + 1], vertices[3 * v + 2]);
     }
     free(faces);
     free(vertices);
@@ -91,7 +96,7 @@ int main(int argc, char **argv) {
     char *summary;
 
     /* REPAIR keeps every face of a broken file (and the diagnostic says what it changed). */
-    hw_status status = hw_mesh_read(path, HW_BUILD_REPAIR, &mesh, &diagnostic);
+    hw_status status = hw_mesh_read(path, HW_BUILD_POLICY_REPAIR, &mesh, &diagnostic);
     if (status != HW_OK) return fail(path, status);
 
     size_t v = hw_mesh_n_vertices(mesh), e = hw_mesh_n_edges(mesh), f = hw_mesh_n_faces(mesh);

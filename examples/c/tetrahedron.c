@@ -33,7 +33,7 @@ int main(void) {
   size_t v, e, f;
 
   hw_status status = hw_mesh_from_indexed(positions, 4, face_sizes, 4, indices, 12,
-                                          HW_BUILD_STRICT, &mesh, NULL);
+                                          HW_BUILD_POLICY_STRICT, &mesh, NULL);
   if (status != HW_OK) return fail("hw_mesh_from_indexed", status);
 
   v = hw_mesh_n_vertices(mesh);

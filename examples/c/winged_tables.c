@@ -34,11 +34,11 @@ int main(void) {
   if (status != HW_OK) return fail("hw_winged_from_indexed_ordered", status);
 
   /* Ask for the size first, then print into a buffer of that size. */
-  hw_winged_table(cube, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_TEXT, NULL, 0, &needed);
+  hw_winged_table(cube, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, NULL, 0, &needed);
   text = (char *)malloc(needed);
   if (text == NULL) return 1;
-  status = hw_winged_table(cube, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_TEXT, text, needed,
-                           NULL);
+  status = hw_winged_table(cube, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, text,
+                           needed, NULL);
   if (status != HW_OK) return fail("hw_winged_table", status);
   printf("V = %zu, E = %zu, F = %zu\n\n%s", hw_winged_n_vertices(cube), hw_winged_n_edges(cube),
          hw_winged_n_faces(cube), text);

@@ -16,7 +16,7 @@
 int main(int argc, char** argv) try {
   const std::string path = argc > 1 ? argv[1] : HALFWING_EXAMPLE_MODEL;
   hw::diagnostic report;
-  const hw::mesh mesh = hw::mesh::read(path, HW_BUILD_REPAIR, &report);
+  const hw::mesh mesh = hw::mesh::read(path, hw::BuildPolicy::Repair, &report);
 
   const std::size_t v = mesh.n_vertices(), e = mesh.n_edges(), f = mesh.n_faces();
   std::printf("%s\nV = %zu, E = %zu, F = %zu, half-edges = %zu\n", path.c_str(), v, e, f,
@@ -52,7 +52,7 @@ int main(int argc, char** argv) try {
   std::printf("diagnostic: %s\n", report.is_clean() ? "clean" : report.summary().c_str());
 
   const auto face_normals = mesh.face_normals();
-  const auto vertex_normals = mesh.vertex_normals(HW_WEIGHT_ANGLE);
+  const auto vertex_normals = mesh.vertex_normals(hw::NormalWeighting::Angle);
   for (std::size_t i = 0; i < 3 && 3 * i < face_normals.size(); ++i)
     std::printf("face %zu normal: (%.4f, %.4f, %.4f)\n", i, face_normals[3 * i],
                 face_normals[3 * i + 1], face_normals[3 * i + 2]);

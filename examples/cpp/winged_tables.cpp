@@ -11,7 +11,7 @@ int main() {
         {0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 0, 1, 1, 1, 1},
         {4, 4, 4, 4, 4, 4},
         {0, 1, 2, 3, 4, 5, 6, 7, 2, 7, 6, 3, 0, 5, 4, 1, 0, 3, 6, 5, 4, 7, 2, 1});
-    std::printf("%s\n", cube.table(HW_WTABLE_EDGES, HW_WNAMING_DIRECT_INVERSE).c_str());
+    std::printf("%s\n", cube.table(hw::WTable::Edges, hw::WNaming::DirectInverse).c_str());
 
     for (uint32_t f = 0; f < cube.n_faces(); ++f) {
       std::printf("face %u:", f);

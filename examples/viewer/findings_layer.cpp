@@ -94,13 +94,14 @@ findings_layer::findings_layer(const std::string& path) {
        kind < HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT; ++kind) {
     kind_layer layer;
     layer.kind = kind;
-    layer.n_items = report_.finding(kind).n_items;
+    const auto finding = static_cast<hw::DoctorFinding>(kind);
+    layer.n_items = report_.finding(finding).n_items;
     if (layer.n_items > 0) {
-      const auto buffers = hw::render_buffers::finding(report_, kind, list.positions,
+      const auto buffers = hw::render_buffers::finding(report_, finding, list.positions,
                                                        list.face_sizes, list.indices);
-      layer.outlines = std::make_unique<gpu_lines>(buffers, HW_RENDER_WIREFRAME);
-      layer.lines = std::make_unique<gpu_lines>(buffers, HW_RENDER_BOUNDARY);
-      const std::vector<float> marks = crosses(buffers.floats(HW_RENDER_POINTS), size);
+      layer.outlines = std::make_unique<gpu_lines>(buffers, hw::RenderFloats::Wireframe);
+      layer.lines = std::make_unique<gpu_lines>(buffers, hw::RenderFloats::Boundary);
+      const std::vector<float> marks = crosses(buffers.floats(hw::RenderFloats::Points), size);
       layer.crosses = std::make_unique<gpu_lines>(hw::values_view<const float>(marks.data(), marks.size()));
     }
     kinds_.push_back(std::move(layer));

@@ -52,9 +52,9 @@ class gpu_surface {
  public:
   explicit gpu_surface(const hw::render_buffers& buffers) {
     glBindVertexArray(vao_.get());
-    upload_attribute(positions_, buffers.floats(HW_RENDER_POSITIONS), 0, 3);
-    upload_attribute(normals_, buffers.floats(HW_RENDER_NORMALS), 1, 3);
-    const auto triangles = buffers.indices(HW_RENDER_TRIANGLES);
+    upload_attribute(positions_, buffers.floats(hw::RenderFloats::Positions), 0, 3);
+    upload_attribute(normals_, buffers.floats(hw::RenderFloats::Normals), 1, 3);
+    const auto triangles = buffers.indices(hw::RenderIndices::Triangles);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get());  // recorded in the VAO
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size_bytes()),
                  triangles.data(), GL_STATIC_DRAW);
@@ -75,7 +75,7 @@ class gpu_surface {
 /// One line set of a render-buffer object, for glDrawArrays(GL_LINES).
 class gpu_lines {
  public:
-  gpu_lines(const hw::render_buffers& buffers, hw_render_floats which)
+  gpu_lines(const hw::render_buffers& buffers, hw::RenderFloats which)
       : gpu_lines(buffers.floats(which)) {}
   /// x y z of two points per segment.
   explicit gpu_lines(const hw::values_view<const float>& points) {

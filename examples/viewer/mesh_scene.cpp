@@ -21,8 +21,10 @@ const char* shading_name(hw_shading shading) {
 
 const char* weighting_name(hw_normal_weighting weighting) {
   switch (weighting) {
-    case HW_WEIGHT_UNIFORM: return "uniform";
-    case HW_WEIGHT_AREA: return "area";
+    case HW_NORMAL_WEIGHTING_UNIFORM:
+      return "uniform";
+    case HW_NORMAL_WEIGHTING_AREA:
+      return "area";
     default: return "angle";
   }
 }
@@ -36,7 +38,7 @@ void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines)
 }  // namespace
 
 mesh_scene::mesh_scene(const std::string& path)
-    : path_(path), mesh_(hw::mesh::read(path, HW_BUILD_REPAIR, &report_)), findings_(path) {
+    : path_(path), mesh_(hw::mesh::read(path, hw::BuildPolicy::Repair, &report_)), findings_(path) {
   options_.shading = HW_SHADING_CREASE;
   rebuild();
 }
@@ -44,11 +46,11 @@ mesh_scene::mesh_scene(const std::string& path)
 void mesh_scene::rebuild() {
   buffers_ = std::make_unique<hw::render_buffers>(mesh_, options_, &report_);
   surface_ = std::make_unique<gpu_surface>(*buffers_);
-  wireframe_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_WIREFRAME);
-  boundary_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_BOUNDARY);
-  non_manifold_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_NON_MANIFOLD);
-  vertex_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_VERTEX_NORMALS);
-  face_normals_ = std::make_unique<gpu_lines>(*buffers_, HW_RENDER_FACE_NORMALS);
+  wireframe_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Wireframe);
+  boundary_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Boundary);
+  non_manifold_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::NonManifold);
+  vertex_normals_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::VertexNormals);
+  face_normals_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::FaceNormals);
 }
 
 void mesh_scene::draw(const programs& with) const {

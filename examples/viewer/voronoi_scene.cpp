@@ -55,9 +55,9 @@ std::array<float, 3> site_color(uint32_t site) {
 gpu_colored_surface::gpu_colored_surface(const hw::render_buffers& buffers,
                                          const std::vector<float>& colors) {
   glBindVertexArray(vao_.get());
-  upload_attribute(positions_, buffers.floats(HW_RENDER_POSITIONS), 0, 3);
+  upload_attribute(positions_, buffers.floats(hw::RenderFloats::Positions), 0, 3);
   upload_attribute(colors_, hw::values_view<const float>(colors.data(), colors.size()), 1, 3);
-  const auto triangles = buffers.indices(HW_RENDER_TRIANGLES);
+  const auto triangles = buffers.indices(hw::RenderIndices::Triangles);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get());  // recorded in the VAO
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size_bytes()),
                triangles.data(), GL_STATIC_DRAW);
@@ -102,7 +102,7 @@ void voronoi_scene::rebuild() {
   const hw::voronoi_cells clipped = diagram.clip({0, 0}, {width, height});
   const hw::render_buffers buffers = hw::render_buffers::cells(clipped);
   // Every vertex takes the colour of the site whose cell it belongs to.
-  const auto vertex_sites = buffers.indices(HW_RENDER_VERTEX_SOURCES);
+  const auto vertex_sites = buffers.indices(hw::RenderIndices::VertexSources);
   std::vector<float> colors;
   colors.reserve(3 * vertex_sites.size());
   for (uint32_t site : vertex_sites) {
@@ -110,7 +110,7 @@ void voronoi_scene::rebuild() {
     colors.insert(colors.end(), c.begin(), c.end());
   }
   cells_ = std::make_unique<gpu_colored_surface>(buffers, colors);
-  outlines_ = std::make_unique<gpu_lines>(buffers, HW_RENDER_WIREFRAME);
+  outlines_ = std::make_unique<gpu_lines>(buffers, hw::RenderFloats::Wireframe);
   for (uint32_t site = 0; site < clipped.size(); ++site) n_cells_ += !clipped.polygon(site).empty();
 
   // The sites as small squares: the outlines of a polygon list.
@@ -123,7 +123,7 @@ void voronoi_scene::rebuild() {
     corners.insert(corners.end(), square, square + 8);
   }
   site_marks_ = std::make_unique<gpu_lines>(hw::render_buffers::polygons(corners, 2, sizes),
-                                            HW_RENDER_WIREFRAME);
+                                            hw::RenderFloats::Wireframe);
 }
 
 void voronoi_scene::view(float aspect, float& half_width, float& half_height) const {

@@ -4,7 +4,8 @@
 use super::DoctorReport;
 
 /// A kind of finding that is a list of items (see each [`DoctorReport`] field of the same name).
-/// The C API numbers them in this order (`HW_DOCTOR_SMALL_COMPONENTS` = 0, …).
+/// The C API numbers them in this order from `HW_DOCTOR_FINDING_FIRST`
+/// (`HW_DOCTOR_FINDING_SMALL_COMPONENTS`, …).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Finding {
     /// [`DoctorReport::small_components`]: one component index per item.

@@ -28,23 +28,23 @@ use super::status::*;
 pub type hw_scalar_type = u32;
 /// `double`.
 /// \ingroup attributes
-pub const HW_SCALAR_F64: hw_scalar_type = 0;
+pub const HW_SCALAR_TYPE_F64: hw_scalar_type = 0;
 /// `float`.
 /// \ingroup attributes
-pub const HW_SCALAR_F32: hw_scalar_type = 1;
+pub const HW_SCALAR_TYPE_F32: hw_scalar_type = 1;
 /// `int32_t`.
 /// \ingroup attributes
-pub const HW_SCALAR_I32: hw_scalar_type = 2;
+pub const HW_SCALAR_TYPE_I32: hw_scalar_type = 2;
 /// `uint32_t`.
 /// \ingroup attributes
-pub const HW_SCALAR_U32: hw_scalar_type = 3;
+pub const HW_SCALAR_TYPE_U32: hw_scalar_type = 3;
 
 fn scalar_type(raw: hw_scalar_type) -> Result<ScalarType, FfiError> {
     match raw {
-        HW_SCALAR_F64 => Ok(ScalarType::F64),
-        HW_SCALAR_F32 => Ok(ScalarType::F32),
-        HW_SCALAR_I32 => Ok(ScalarType::I32),
-        HW_SCALAR_U32 => Ok(ScalarType::U32),
+        HW_SCALAR_TYPE_F64 => Ok(ScalarType::F64),
+        HW_SCALAR_TYPE_F32 => Ok(ScalarType::F32),
+        HW_SCALAR_TYPE_I32 => Ok(ScalarType::I32),
+        HW_SCALAR_TYPE_U32 => Ok(ScalarType::U32),
         other => Err(FfiError::invalid_input(format!(
             "unknown scalar type {other}"
         ))),
@@ -53,10 +53,10 @@ fn scalar_type(raw: hw_scalar_type) -> Result<ScalarType, FfiError> {
 
 fn raw_scalar_type(scalar: ScalarType) -> hw_scalar_type {
     match scalar {
-        ScalarType::F64 => HW_SCALAR_F64,
-        ScalarType::F32 => HW_SCALAR_F32,
-        ScalarType::I32 => HW_SCALAR_I32,
-        ScalarType::U32 => HW_SCALAR_U32,
+        ScalarType::F64 => HW_SCALAR_TYPE_F64,
+        ScalarType::F32 => HW_SCALAR_TYPE_F32,
+        ScalarType::I32 => HW_SCALAR_TYPE_I32,
+        ScalarType::U32 => HW_SCALAR_TYPE_U32,
     }
 }
 

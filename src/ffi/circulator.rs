@@ -3,7 +3,7 @@
 //! ```c
 //! hw_circulator c;
 //! hw_vertex w;
-//! if (hw_circ_around_vertex(mesh, v, HW_CIRC_VERTICES, &c) == HW_OK)
+//! if (hw_circ_around_vertex(mesh, v, HW_CIRCULATOR_KIND_VERTICES, &c) == HW_OK)
 //!   while (hw_circ_next_vertex(&c, &w)) visit(w);
 //! ```
 //! Orders: around a vertex, counter-clockwise seen from outside starting at
@@ -25,19 +25,19 @@ use super::status::hw_status;
 pub type hw_circulator_kind = u32;
 /// Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
 /// \ingroup navigation
-pub const HW_CIRC_HALFEDGES: hw_circulator_kind = 0;
+pub const HW_CIRCULATOR_KIND_HALFEDGES: hw_circulator_kind = 0;
 /// Around a vertex only: the incoming half-edges (twins of the outgoing ones).
 /// \ingroup navigation
-pub const HW_CIRC_INCOMING: hw_circulator_kind = 1;
+pub const HW_CIRCULATOR_KIND_INCOMING: hw_circulator_kind = 1;
 /// Vertices: a vertex's neighbours, a face's corners.
 /// \ingroup navigation
-pub const HW_CIRC_VERTICES: hw_circulator_kind = 2;
+pub const HW_CIRCULATOR_KIND_VERTICES: hw_circulator_kind = 2;
 /// Edges: at a vertex, or the sides of a face.
 /// \ingroup navigation
-pub const HW_CIRC_EDGES: hw_circulator_kind = 3;
+pub const HW_CIRCULATOR_KIND_EDGES: hw_circulator_kind = 3;
 /// Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
 /// \ingroup navigation
-pub const HW_CIRC_FACES: hw_circulator_kind = 4;
+pub const HW_CIRCULATOR_KIND_FACES: hw_circulator_kind = 4;
 
 /// What a walk circles.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -85,9 +85,9 @@ unsafe fn begin(
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(raw_mesh) }?;
         let allowed = match center {
-            Center::Vertex => kind <= HW_CIRC_FACES,
-            Center::Face => kind <= HW_CIRC_FACES && kind != HW_CIRC_INCOMING,
-            Center::Loop => kind == HW_CIRC_HALFEDGES,
+            Center::Vertex => kind <= HW_CIRCULATOR_KIND_FACES,
+            Center::Face => kind <= HW_CIRCULATOR_KIND_FACES && kind != HW_CIRCULATOR_KIND_INCOMING,
+            Center::Loop => kind == HW_CIRCULATOR_KIND_HALFEDGES,
         };
         if !allowed {
             return Err(FfiError::invalid_input(format!(
@@ -155,7 +155,7 @@ pub unsafe extern "C" fn hw_circ_around_face(
 }
 
 /// Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
-/// boundary half-edge. Yields half-edges (`kind` is ::HW_CIRC_HALFEDGES).
+/// boundary half-edge. Yields half-edges (`kind` is ::HW_CIRCULATOR_KIND_HALFEDGES).
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
@@ -168,7 +168,7 @@ pub unsafe extern "C" fn hw_circ_along_loop(
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
     unsafe {
-        begin(mesh, Center::Loop, HW_CIRC_HALFEDGES, out, |m| {
+        begin(mesh, Center::Loop, HW_CIRCULATOR_KIND_HALFEDGES, out, |m| {
             Ok(m.check_halfedge(h.into())?)
         })
     }
@@ -185,7 +185,8 @@ pub(crate) unsafe fn advance(
 ) -> Result<Option<u32>, FfiError> {
     // SAFETY: forwarded from the caller.
     let c = unsafe { arg_mut(circulator, "circulator") }?;
-    let yields_halfedges = kind == HW_CIRC_HALFEDGES && c.kind == HW_CIRC_INCOMING;
+    let yields_halfedges =
+        kind == HW_CIRCULATOR_KIND_HALFEDGES && c.kind == HW_CIRCULATOR_KIND_INCOMING;
     if c.kind != kind && !yields_halfedges {
         return Err(FfiError::invalid_input(format!(
             "circulator of kind {} read as kind {kind}",
@@ -210,12 +211,12 @@ pub(crate) unsafe fn advance(
     let mut found = None;
     for h in walk.by_ref() {
         let id = match c.kind {
-            HW_CIRC_HALFEDGES => h.0,
-            HW_CIRC_INCOMING => h.twin().0,
-            HW_CIRC_VERTICES if on_face => mesh.origin(h).0,
-            HW_CIRC_VERTICES => mesh.target(h).0,
-            HW_CIRC_EDGES => h.edge().0,
-            HW_CIRC_FACES if on_face => mesh.face(h.twin()).0,
+            HW_CIRCULATOR_KIND_HALFEDGES => h.0,
+            HW_CIRCULATOR_KIND_INCOMING => h.twin().0,
+            HW_CIRCULATOR_KIND_VERTICES if on_face => mesh.origin(h).0,
+            HW_CIRCULATOR_KIND_VERTICES => mesh.target(h).0,
+            HW_CIRCULATOR_KIND_EDGES => h.edge().0,
+            HW_CIRCULATOR_KIND_FACES if on_face => mesh.face(h.twin()).0,
             _ => mesh.face(h).0,
         };
         // Faces skip the outside; every other kind yields each step.
@@ -244,7 +245,7 @@ unsafe fn next_into<T>(
     unsafe { next_element(out, || Ok(advance(circulator, kind)?.map(wrap))) }
 }
 
-/// Next half-edge of a ::HW_CIRC_HALFEDGES or ::HW_CIRC_INCOMING circulator.
+/// Next half-edge of a ::HW_CIRCULATOR_KIND_HALFEDGES or ::HW_CIRCULATOR_KIND_INCOMING circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -255,13 +256,13 @@ pub unsafe extern "C" fn hw_circ_next_halfedge(
     out: *mut hw_halfedge,
 ) -> bool {
     unsafe {
-        next_into(circulator, HW_CIRC_HALFEDGES, out, |idx| {
+        next_into(circulator, HW_CIRCULATOR_KIND_HALFEDGES, out, |idx| {
             HalfedgeId(idx).into()
         })
     }
 }
 
-/// Next vertex of a ::HW_CIRC_VERTICES circulator.
+/// Next vertex of a ::HW_CIRCULATOR_KIND_VERTICES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -272,13 +273,13 @@ pub unsafe extern "C" fn hw_circ_next_vertex(
     out: *mut hw_vertex,
 ) -> bool {
     unsafe {
-        next_into(circulator, HW_CIRC_VERTICES, out, |idx| {
+        next_into(circulator, HW_CIRCULATOR_KIND_VERTICES, out, |idx| {
             VertexId(idx).into()
         })
     }
 }
 
-/// Next edge of a ::HW_CIRC_EDGES circulator.
+/// Next edge of a ::HW_CIRCULATOR_KIND_EDGES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -288,10 +289,14 @@ pub unsafe extern "C" fn hw_circ_next_edge(
     circulator: *mut hw_circulator,
     out: *mut hw_edge,
 ) -> bool {
-    unsafe { next_into(circulator, HW_CIRC_EDGES, out, |idx| EdgeId(idx).into()) }
+    unsafe {
+        next_into(circulator, HW_CIRCULATOR_KIND_EDGES, out, |idx| {
+            EdgeId(idx).into()
+        })
+    }
 }
 
-/// Next face of a ::HW_CIRC_FACES circulator.
+/// Next face of a ::HW_CIRCULATOR_KIND_FACES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
@@ -301,5 +306,9 @@ pub unsafe extern "C" fn hw_circ_next_face(
     circulator: *mut hw_circulator,
     out: *mut hw_face,
 ) -> bool {
-    unsafe { next_into(circulator, HW_CIRC_FACES, out, |idx| FaceId(idx).into()) }
+    unsafe {
+        next_into(circulator, HW_CIRCULATOR_KIND_FACES, out, |idx| {
+            FaceId(idx).into()
+        })
+    }
 }

@@ -12,8 +12,9 @@ use super::handle::{free_handle, into_handle};
 use super::status::hw_status;
 use super::threads::with_threads;
 use super::voronoi::{
-    HW_VORONOI_EMPTY, HW_VORONOI_HULL, HW_VORONOI_LINE, HW_VORONOI_PLANE, HW_VORONOI_POINT,
-    HW_VORONOI_REPRESENTATIVE, HW_VORONOI_TRIANGLE_TWINS, HW_VORONOI_TRIANGLES, hw_site_dimension,
+    HW_SITE_DIMENSION_EMPTY, HW_SITE_DIMENSION_LINE, HW_SITE_DIMENSION_PLANE,
+    HW_SITE_DIMENSION_POINT, HW_VORONOI_ARRAY_HULL, HW_VORONOI_ARRAY_REPRESENTATIVE,
+    HW_VORONOI_ARRAY_TRIANGLE_TWINS, HW_VORONOI_ARRAY_TRIANGLES, hw_site_dimension,
     hw_voronoi_array, points_arg,
 };
 
@@ -41,20 +42,20 @@ unsafe fn delaunay_ref<'a>(delaunay: *const hw_delaunay) -> Result<&'a Delaunay,
 /// The code of a site set's dimension.
 pub(crate) fn site_dimension(dimension: Dimension) -> hw_site_dimension {
     match dimension {
-        Dimension::Empty => HW_VORONOI_EMPTY,
-        Dimension::Point => HW_VORONOI_POINT,
-        Dimension::Line => HW_VORONOI_LINE,
-        Dimension::Plane => HW_VORONOI_PLANE,
+        Dimension::Empty => HW_SITE_DIMENSION_EMPTY,
+        Dimension::Point => HW_SITE_DIMENSION_POINT,
+        Dimension::Line => HW_SITE_DIMENSION_LINE,
+        Dimension::Plane => HW_SITE_DIMENSION_PLANE,
     }
 }
 
 /// The triangulation's index array `which`, or `None` for an array of the Voronoi diagram.
 pub(crate) fn delaunay_array(delaunay: &Delaunay, which: hw_voronoi_array) -> Option<&[u32]> {
     match which {
-        HW_VORONOI_REPRESENTATIVE => Some(delaunay.representative()),
-        HW_VORONOI_TRIANGLES => Some(delaunay.triangles()),
-        HW_VORONOI_TRIANGLE_TWINS => Some(delaunay.twins()),
-        HW_VORONOI_HULL => Some(delaunay.hull()),
+        HW_VORONOI_ARRAY_REPRESENTATIVE => Some(delaunay.representative()),
+        HW_VORONOI_ARRAY_TRIANGLES => Some(delaunay.triangles()),
+        HW_VORONOI_ARRAY_TRIANGLE_TWINS => Some(delaunay.twins()),
+        HW_VORONOI_ARRAY_HULL => Some(delaunay.hull()),
         _ => None,
     }
 }
@@ -64,8 +65,8 @@ pub(crate) fn delaunay_array(delaunay: &Delaunay, which: hw_voronoi_array) -> Op
 /// only the triangles, it takes less time and memory.
 ///
 /// Input as for hw_voronoi_build(): any finite sites, duplicates merged (see
-/// ::HW_VORONOI_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite coordinate
-/// gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+/// ::HW_VORONOI_ARRAY_REPRESENTATIVE), collinear sites give no triangles; a NaN or infinite
+/// coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
 ///
 /// On success `*out_delaunay` receives a new triangulation to release with hw_delaunay_free().
 ///
@@ -113,8 +114,8 @@ pub unsafe extern "C" fn hw_delaunay_n_triangles(delaunay: *const hw_delaunay) -
     guard_value(0, || Ok(unsafe { delaunay_ref(delaunay) }?.n_triangles()))
 }
 
-/// The dimension of the site set (::HW_VORONOI_EMPTY for a NULL triangulation, with the error
-/// recorded).
+/// The dimension of the site set (::HW_SITE_DIMENSION_EMPTY for a NULL triangulation, with the
+/// error recorded).
 ///
 /// # Safety
 /// `delaunay` must be NULL or a live triangulation.
@@ -122,7 +123,7 @@ pub unsafe extern "C" fn hw_delaunay_n_triangles(delaunay: *const hw_delaunay) -
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_delaunay_dimension(delaunay: *const hw_delaunay) -> hw_site_dimension {
     // SAFETY: forwarded from the caller.
-    guard_value(HW_VORONOI_EMPTY, || {
+    guard_value(HW_SITE_DIMENSION_EMPTY, || {
         Ok(site_dimension(
             unsafe { delaunay_ref(delaunay) }?.dimension(),
         ))
@@ -130,10 +131,10 @@ pub unsafe extern "C" fn hw_delaunay_dimension(delaunay: *const hw_delaunay) -> 
 }
 
 /// A read-only view of one index array of the triangulation: `which` is one of
-/// ::HW_VORONOI_REPRESENTATIVE, ::HW_VORONOI_TRIANGLES, ::HW_VORONOI_TRIANGLE_TWINS and
-/// ::HW_VORONOI_HULL (the other arrays belong to the Voronoi diagram: `HW_ERR_INVALID_INPUT`).
-/// `*out_data` (NULL when empty) and its length `*out_len` are valid as long as the
-/// triangulation.
+/// ::HW_VORONOI_ARRAY_REPRESENTATIVE, ::HW_VORONOI_ARRAY_TRIANGLES,
+/// ::HW_VORONOI_ARRAY_TRIANGLE_TWINS and ::HW_VORONOI_ARRAY_HULL (the other arrays belong to the
+/// Voronoi diagram: `HW_ERR_INVALID_INPUT`). `*out_data` (NULL when empty) and its length
+/// `*out_len` are valid as long as the triangulation.
 ///
 /// # Safety
 /// `delaunay` must be NULL or a live triangulation; `out_data` and `out_len` writable.

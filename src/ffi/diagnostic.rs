@@ -14,11 +14,11 @@ use super::status::*;
 /// hw_diagnose_indexed() and the other builders; release with hw_diagnostic_free().
 ///
 /// Two kinds of lists: the findings describe the input as it is, whatever the policy (they are
-/// the same for a build and for hw_diagnose_indexed()); ::HW_DIAG_SKIPPED_FACES,
-/// ::HW_DIAG_REORIENTED_FACES and ::HW_DIAG_VERTEX_COPIES list what the policy changed. Face
-/// indices refer to the input face list, vertex indices to the input positions. Faces with fewer
-/// than 3 corners, an out-of-range index or a repeated vertex are listed as such and left out of
-/// the edge, fan and area findings. Every list is sorted ascending.
+/// the same for a build and for hw_diagnose_indexed()); ::HW_DIAGNOSTIC_LIST_SKIPPED_FACES,
+/// ::HW_DIAGNOSTIC_LIST_REORIENTED_FACES and ::HW_DIAGNOSTIC_LIST_VERTEX_COPIES list what the
+/// policy changed. Face indices refer to the input face list, vertex indices to the input
+/// positions. Faces with fewer than 3 corners, an out-of-range index or a repeated vertex are
+/// listed as such and left out of the edge, fan and area findings. Every list is sorted ascending.
 /// \ingroup mesh
 pub struct hw_diagnostic {
     pub(crate) diagnostic: Diagnostic,
@@ -73,77 +73,80 @@ pub(crate) unsafe fn give_built<T: 'static>(
 }
 
 /// One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
-/// ::HW_DIAG_LIST_FIRST to `HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT - 1`, apart from the edge
-/// lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding), so a value of
-/// one family passed where another is expected is refused, never read as a different list.
+/// ::HW_DIAGNOSTIC_LIST_FIRST to `HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT - 1`, apart
+/// from the edge lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding),
+/// so a value of one family passed where another is expected is refused, never read as a different
+/// list.
 /// \ingroup mesh
 pub type hw_diagnostic_list = u32;
 /// The first id list.
 /// \ingroup mesh
-pub const HW_DIAG_LIST_FIRST: hw_diagnostic_list = 16;
+pub const HW_DIAGNOSTIC_LIST_FIRST: hw_diagnostic_list = 16;
 /// Faces with fewer than 3 corners.
 /// \ingroup mesh
-pub const HW_DIAG_FACES_TOO_SMALL: hw_diagnostic_list = 16;
+pub const HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL: hw_diagnostic_list = 16;
 /// Faces with a vertex index beyond the positions.
 /// \ingroup mesh
-pub const HW_DIAG_FACES_OUT_OF_RANGE: hw_diagnostic_list = 17;
+pub const HW_DIAGNOSTIC_LIST_FACES_OUT_OF_RANGE: hw_diagnostic_list = 17;
 /// Faces naming one vertex more than once.
 /// \ingroup mesh
-pub const HW_DIAG_FACES_REPEATED_VERTEX: hw_diagnostic_list = 18;
+pub const HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX: hw_diagnostic_list = 18;
 /// Vertices with a NaN or infinite coordinate.
 /// \ingroup mesh
-pub const HW_DIAG_NON_FINITE_VERTICES: hw_diagnostic_list = 19;
+pub const HW_DIAGNOSTIC_LIST_NON_FINITE_VERTICES: hw_diagnostic_list = 19;
 /// Vertices whose faces form more than one fan, faces being in one fan when they share an edge
-/// at the vertex (two cones touching at their tips). ::HW_BUILD_STRICT refuses them;
-/// ::HW_BUILD_SKIP and ::HW_BUILD_REPAIR give every fan but the first a copy of the vertex.
+/// at the vertex (two cones touching at their tips). ::HW_BUILD_POLICY_STRICT refuses them;
+/// ::HW_BUILD_POLICY_SKIP and ::HW_BUILD_POLICY_REPAIR give every fan but the first a copy of the
+/// vertex.
 /// \ingroup mesh
-pub const HW_DIAG_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 20;
+pub const HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES: hw_diagnostic_list = 20;
 /// Vertices no face names (a vertex whose every face a policy left out is in the mesh without a
 /// face, but not listed here).
 /// \ingroup mesh
-pub const HW_DIAG_ISOLATED_VERTICES: hw_diagnostic_list = 21;
+pub const HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES: hw_diagnostic_list = 21;
 /// Faces with zero area.
 /// \ingroup mesh
-pub const HW_DIAG_DEGENERATE_FACES: hw_diagnostic_list = 22;
-/// Faces left out of the mesh by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh face `i` is the
-/// `i`-th input face not listed here.
+pub const HW_DIAGNOSTIC_LIST_DEGENERATE_FACES: hw_diagnostic_list = 22;
+/// Faces left out of the mesh by ::HW_BUILD_POLICY_SKIP or ::HW_BUILD_POLICY_REPAIR: mesh face `i`
+/// is the `i`-th input face not listed here.
 /// \ingroup mesh
-pub const HW_DIAG_SKIPPED_FACES: hw_diagnostic_list = 23;
-/// Vertices added by ::HW_BUILD_SKIP or ::HW_BUILD_REPAIR: mesh vertex `n_input_vertices + i`
-/// copies input vertex `ids[i]` (same position).
+pub const HW_DIAGNOSTIC_LIST_SKIPPED_FACES: hw_diagnostic_list = 23;
+/// Vertices added by ::HW_BUILD_POLICY_SKIP or ::HW_BUILD_POLICY_REPAIR: mesh vertex
+/// `n_input_vertices + i` copies input vertex `ids[i]` (same position).
 /// \ingroup mesh
-pub const HW_DIAG_VERTEX_COPIES: hw_diagnostic_list = 24;
-/// Faces ::HW_BUILD_REPAIR built the other way round from the input (to agree with their
+pub const HW_DIAGNOSTIC_LIST_VERTEX_COPIES: hw_diagnostic_list = 24;
+/// Faces ::HW_BUILD_POLICY_REPAIR built the other way round from the input (to agree with their
 /// neighbours, or to turn a closed component outward).
 /// \ingroup mesh
-pub const HW_DIAG_REORIENTED_FACES: hw_diagnostic_list = 25;
+pub const HW_DIAGNOSTIC_LIST_REORIENTED_FACES: hw_diagnostic_list = 25;
 /// The number of id lists.
 /// \ingroup mesh
-pub const HW_DIAG_LIST_COUNT: hw_diagnostic_list = 10;
+pub const HW_DIAGNOSTIC_LIST_COUNT: hw_diagnostic_list = 10;
 
 /// One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
-/// ::HW_DIAG_EDGES_FIRST to `HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT - 1`, apart from the id
-/// lists' (::hw_diagnostic_list) and the doctor's findings' (::hw_doctor_finding).
+/// ::HW_DIAGNOSTIC_EDGES_FIRST to `HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT - 1`,
+/// apart from the id lists' (::hw_diagnostic_list) and the doctor's findings'
+/// (::hw_doctor_finding).
 /// \ingroup mesh
 pub type hw_diagnostic_edges = u32;
 /// The first edge list.
 /// \ingroup mesh
-pub const HW_DIAG_EDGES_FIRST: hw_diagnostic_edges = 32;
+pub const HW_DIAGNOSTIC_EDGES_FIRST: hw_diagnostic_edges = 32;
 /// Edges used by three or more faces.
 /// \ingroup mesh
-pub const HW_DIAG_NON_MANIFOLD_EDGES: hw_diagnostic_edges = 32;
+pub const HW_DIAGNOSTIC_EDGES_NON_MANIFOLD: hw_diagnostic_edges = 32;
 /// Edges whose two faces traverse them in the same direction.
 /// \ingroup mesh
-pub const HW_DIAG_INCONSISTENT_EDGES: hw_diagnostic_edges = 33;
+pub const HW_DIAGNOSTIC_EDGES_INCONSISTENT: hw_diagnostic_edges = 33;
 /// The number of edge lists.
 /// \ingroup mesh
-pub const HW_DIAG_EDGES_COUNT: hw_diagnostic_edges = 2;
+pub const HW_DIAGNOSTIC_EDGES_COUNT: hw_diagnostic_edges = 2;
 
 /// A list of a diagnostic: where it lives in one, and its name.
 type NamedList<T> = (fn(&Diagnostic) -> &[T], &'static std::ffi::CStr);
 
 /// Each id list in the order of its values.
-const ID_LISTS: [NamedList<u32>; HW_DIAG_LIST_COUNT as usize] = [
+const ID_LISTS: [NamedList<u32>; HW_DIAGNOSTIC_LIST_COUNT as usize] = [
     (|d| &d.faces_too_small, c"faces with fewer than 3 corners"),
     (
         |d| &d.faces_out_of_range,
@@ -166,7 +169,7 @@ const ID_LISTS: [NamedList<u32>; HW_DIAG_LIST_COUNT as usize] = [
 ];
 
 /// Each edge list in the order of its values.
-const EDGE_LISTS: [NamedList<EdgeReport>; HW_DIAG_EDGES_COUNT as usize] = [
+const EDGE_LISTS: [NamedList<EdgeReport>; HW_DIAGNOSTIC_EDGES_COUNT as usize] = [
     (|d| &d.non_manifold_edges, c"non-manifold edges (3+ faces)"),
     (|d| &d.inconsistent_edges, c"inconsistently oriented edges"),
 ];
@@ -178,7 +181,7 @@ fn entry<T: Copy>(table: &[T], first: u32, value: u32) -> Option<T> {
 }
 
 fn id_list(diagnostic: &Diagnostic, list: hw_diagnostic_list) -> Result<&[u32], FfiError> {
-    let (ids, _) = entry(&ID_LISTS, HW_DIAG_LIST_FIRST, list)
+    let (ids, _) = entry(&ID_LISTS, HW_DIAGNOSTIC_LIST_FIRST, list)
         .ok_or_else(|| FfiError::invalid_input(format!("unknown diagnostic list {list}")))?;
     Ok(ids(diagnostic))
 }
@@ -187,7 +190,7 @@ fn edge_list(
     diagnostic: &Diagnostic,
     edges: hw_diagnostic_edges,
 ) -> Result<&[EdgeReport], FfiError> {
-    let (list, _) = entry(&EDGE_LISTS, HW_DIAG_EDGES_FIRST, edges)
+    let (list, _) = entry(&EDGE_LISTS, HW_DIAGNOSTIC_EDGES_FIRST, edges)
         .ok_or_else(|| FfiError::invalid_input(format!("unknown diagnostic edge list {edges}")))?;
     Ok(list(diagnostic))
 }
@@ -196,7 +199,8 @@ fn edge_list(
 /// \ingroup mesh
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_diagnostic_list_name(list: hw_diagnostic_list) -> *const std::ffi::c_char {
-    entry(&ID_LISTS, HW_DIAG_LIST_FIRST, list).map_or(std::ptr::null(), |(_, name)| name.as_ptr())
+    entry(&ID_LISTS, HW_DIAGNOSTIC_LIST_FIRST, list)
+        .map_or(std::ptr::null(), |(_, name)| name.as_ptr())
 }
 
 /// The name of an edge list ("non-manifold edges (3+ faces)", …) as static text; NULL for an
@@ -204,7 +208,7 @@ pub extern "C" fn hw_diagnostic_list_name(list: hw_diagnostic_list) -> *const st
 /// \ingroup mesh
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_diagnostic_edges_name(edges: hw_diagnostic_edges) -> *const std::ffi::c_char {
-    entry(&EDGE_LISTS, HW_DIAG_EDGES_FIRST, edges)
+    entry(&EDGE_LISTS, HW_DIAGNOSTIC_EDGES_FIRST, edges)
         .map_or(std::ptr::null(), |(_, name)| name.as_ptr())
 }
 
@@ -399,7 +403,7 @@ mod tests {
         let status = unsafe {
             hw_diagnostic_edge(
                 handle,
-                HW_DIAG_NON_MANIFOLD_EDGES,
+                HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
                 0,
                 vertices.as_mut_ptr(),
                 &mut faces,
@@ -414,11 +418,15 @@ mod tests {
     #[test]
     fn every_list_has_a_name_and_the_families_never_share_a_value() {
         use super::super::doctor::{HW_DOCTOR_FINDING_COUNT, HW_DOCTOR_FINDING_FIRST};
-        let lists = HW_DIAG_LIST_FIRST..HW_DIAG_LIST_FIRST + HW_DIAG_LIST_COUNT;
-        let edges = HW_DIAG_EDGES_FIRST..HW_DIAG_EDGES_FIRST + HW_DIAG_EDGES_COUNT;
+        let lists = HW_DIAGNOSTIC_LIST_FIRST..HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT;
+        let edges =
+            HW_DIAGNOSTIC_EDGES_FIRST..HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT;
         let findings = HW_DOCTOR_FINDING_FIRST..HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT;
-        assert_eq!(lists.clone().last(), Some(HW_DIAG_REORIENTED_FACES));
-        assert_eq!(edges.clone().last(), Some(HW_DIAG_INCONSISTENT_EDGES));
+        assert_eq!(
+            lists.clone().last(),
+            Some(HW_DIAGNOSTIC_LIST_REORIENTED_FACES)
+        );
+        assert_eq!(edges.clone().last(), Some(HW_DIAGNOSTIC_EDGES_INCONSISTENT));
         for value in 0..=findings.end {
             let families = [&lists, &edges, &findings];
             assert!(families.iter().filter(|f| f.contains(&value)).count() <= 1);
@@ -434,10 +442,12 @@ mod tests {
         // A value of the wrong family is refused, not read as another list.
         let handle = hw_diagnostic::into_handle(Diagnostic::default());
         let (mut ids, mut len, mut count) = (std::ptr::null(), 0usize, 0usize);
-        let wrong_list =
-            unsafe { hw_diagnostic_ids(handle, HW_DIAG_NON_MANIFOLD_EDGES, &mut ids, &mut len) };
-        let wrong_edges =
-            unsafe { hw_diagnostic_edge_count(handle, HW_DIAG_FACES_TOO_SMALL, &mut count) };
+        let wrong_list = unsafe {
+            hw_diagnostic_ids(handle, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &mut ids, &mut len)
+        };
+        let wrong_edges = unsafe {
+            hw_diagnostic_edge_count(handle, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &mut count)
+        };
         assert_eq!(
             (wrong_list, wrong_edges),
             (HW_ERR_INVALID_INPUT, HW_ERR_INVALID_INPUT)

@@ -202,48 +202,49 @@ pub type hw_doctor_finding = u32;
 pub const HW_DOCTOR_FINDING_FIRST: hw_doctor_finding = 64;
 /// Indices of small components (into hw_doctor_report_component()); one id per item.
 /// \ingroup doctor
-pub const HW_DOCTOR_SMALL_COMPONENTS: hw_doctor_finding = 64;
+pub const HW_DOCTOR_FINDING_SMALL_COMPONENTS: hw_doctor_finding = 64;
 /// Faces of a closed path along which the orientation flips (the surface is not orientable),
 /// each sharing an edge with the next and the last with the first; one id per item.
 /// \ingroup doctor
-pub const HW_DOCTOR_NON_ORIENTABLE_WITNESS: hw_doctor_finding = 65;
+pub const HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS: hw_doctor_finding = 65;
 /// Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
 /// \ingroup doctor
-pub const HW_DOCTOR_ZERO_LENGTH_EDGES: hw_doctor_finding = 66;
+pub const HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES: hw_doctor_finding = 66;
 /// Triangles with an angle below the needle threshold; one id per item.
 /// \ingroup doctor
-pub const HW_DOCTOR_NEEDLES: hw_doctor_finding = 67;
+pub const HW_DOCTOR_FINDING_NEEDLES: hw_doctor_finding = 67;
 /// Triangles with an angle above the cap threshold; one id per item.
 /// \ingroup doctor
-pub const HW_DOCTOR_CAPS: hw_doctor_finding = 68;
+pub const HW_DOCTOR_FINDING_CAPS: hw_doctor_finding = 68;
 /// Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
 /// first, then the two faces, ascending).
 /// \ingroup doctor
-pub const HW_DOCTOR_FOLDED_EDGES: hw_doctor_finding = 69;
+pub const HW_DOCTOR_FINDING_FOLDED_EDGES: hw_doctor_finding = 69;
 /// Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
 /// \ingroup doctor
-pub const HW_DOCTOR_LONG_EDGES: hw_doctor_finding = 70;
+pub const HW_DOCTOR_FINDING_LONG_EDGES: hw_doctor_finding = 70;
 /// Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
 /// lowest vertex at that position).
 /// \ingroup doctor
-pub const HW_DOCTOR_DUPLICATE_POSITIONS: hw_doctor_finding = 71;
+pub const HW_DOCTOR_FINDING_DUPLICATE_POSITIONS: hw_doctor_finding = 71;
 /// Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
 /// vertex, then the first vertex of its group).
 /// \ingroup doctor
-pub const HW_DOCTOR_NEAR_DUPLICATE_VERTICES: hw_doctor_finding = 72;
+pub const HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES: hw_doctor_finding = 72;
 /// Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
 /// then the lowest such face).
 /// \ingroup doctor
-pub const HW_DOCTOR_DUPLICATE_FACES: hw_doctor_finding = 73;
+pub const HW_DOCTOR_FINDING_DUPLICATE_FACES: hw_doctor_finding = 73;
 /// Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
 /// the edge's two ends, smaller first, and the edge's face).
 /// \ingroup doctor
-pub const HW_DOCTOR_T_VERTICES: hw_doctor_finding = 74;
+pub const HW_DOCTOR_FINDING_T_VERTICES: hw_doctor_finding = 74;
 /// Pairs of faces that intersect other than along the vertices and edges they share, decided
 /// exactly (polygons as their triangles; touching counts; triangles with exactly collinear
-/// corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first), sorted.
+/// corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first),
+/// sorted.
 /// \ingroup doctor
-pub const HW_DOCTOR_SELF_INTERSECTIONS: hw_doctor_finding = 75;
+pub const HW_DOCTOR_FINDING_SELF_INTERSECTIONS: hw_doctor_finding = 75;
 /// The number of finding kinds.
 /// \ingroup doctor
 pub const HW_DOCTOR_FINDING_COUNT: hw_doctor_finding = 12;
@@ -493,7 +494,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
 }
 
 /// The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
-/// ::HW_DIAG_NON_MANIFOLD_VERTICES, in the same order.
+/// ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order.
 ///
 /// # Safety
 /// `report` must be NULL or live; `out_count` writable.
@@ -507,8 +508,8 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
     unsafe { give_count(report, out_count, |r| r.non_manifold_vertex_fans.len()) }
 }
 
-/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex, its
-/// number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
+/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex,
+/// its number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
 /// lowest face), valid as long as the report.
 ///
 /// # Safety
@@ -645,24 +646,33 @@ mod tests {
     #[test]
     fn the_c_kinds_number_the_rust_kinds_in_order() {
         let numbered = [
-            (HW_DOCTOR_SMALL_COMPONENTS, Finding::SmallComponents),
+            (HW_DOCTOR_FINDING_SMALL_COMPONENTS, Finding::SmallComponents),
             (
-                HW_DOCTOR_NON_ORIENTABLE_WITNESS,
+                HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS,
                 Finding::NonOrientableWitness,
             ),
-            (HW_DOCTOR_ZERO_LENGTH_EDGES, Finding::ZeroLengthEdges),
-            (HW_DOCTOR_NEEDLES, Finding::Needles),
-            (HW_DOCTOR_CAPS, Finding::Caps),
-            (HW_DOCTOR_FOLDED_EDGES, Finding::FoldedEdges),
-            (HW_DOCTOR_LONG_EDGES, Finding::LongEdges),
-            (HW_DOCTOR_DUPLICATE_POSITIONS, Finding::DuplicatePositions),
             (
-                HW_DOCTOR_NEAR_DUPLICATE_VERTICES,
+                HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES,
+                Finding::ZeroLengthEdges,
+            ),
+            (HW_DOCTOR_FINDING_NEEDLES, Finding::Needles),
+            (HW_DOCTOR_FINDING_CAPS, Finding::Caps),
+            (HW_DOCTOR_FINDING_FOLDED_EDGES, Finding::FoldedEdges),
+            (HW_DOCTOR_FINDING_LONG_EDGES, Finding::LongEdges),
+            (
+                HW_DOCTOR_FINDING_DUPLICATE_POSITIONS,
+                Finding::DuplicatePositions,
+            ),
+            (
+                HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES,
                 Finding::NearDuplicateVertices,
             ),
-            (HW_DOCTOR_DUPLICATE_FACES, Finding::DuplicateFaces),
-            (HW_DOCTOR_T_VERTICES, Finding::TVertices),
-            (HW_DOCTOR_SELF_INTERSECTIONS, Finding::SelfIntersections),
+            (HW_DOCTOR_FINDING_DUPLICATE_FACES, Finding::DuplicateFaces),
+            (HW_DOCTOR_FINDING_T_VERTICES, Finding::TVertices),
+            (
+                HW_DOCTOR_FINDING_SELF_INTERSECTIONS,
+                Finding::SelfIntersections,
+            ),
         ];
         assert_eq!(numbered.len(), HW_DOCTOR_FINDING_COUNT as usize);
         assert_eq!(Finding::ALL.len(), HW_DOCTOR_FINDING_COUNT as usize);

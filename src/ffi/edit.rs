@@ -296,10 +296,10 @@ pub unsafe extern "C" fn hw_index_maps_view(
         give_view(out_map, "out_map", out_len, || {
             let maps = &arg_ref(maps, "maps")?.maps;
             match kind {
-                HW_ELEMENT_VERTEX => Ok(&maps.vertices[..]),
-                HW_ELEMENT_HALFEDGE => Ok(&maps.halfedges[..]),
-                HW_ELEMENT_EDGE => Ok(&maps.edges[..]),
-                HW_ELEMENT_FACE => Ok(&maps.faces[..]),
+                HW_ELEMENT_KIND_VERTEX => Ok(&maps.vertices[..]),
+                HW_ELEMENT_KIND_HALFEDGE => Ok(&maps.halfedges[..]),
+                HW_ELEMENT_KIND_EDGE => Ok(&maps.edges[..]),
+                HW_ELEMENT_KIND_FACE => Ok(&maps.faces[..]),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown element kind {other}"
                 ))),

@@ -51,24 +51,24 @@ pub struct hw_face {
 pub type hw_element_kind = u32;
 /// Vertices.
 /// \ingroup ids
-pub const HW_ELEMENT_VERTEX: hw_element_kind = 0;
+pub const HW_ELEMENT_KIND_VERTEX: hw_element_kind = 0;
 /// Half-edges.
 /// \ingroup ids
-pub const HW_ELEMENT_HALFEDGE: hw_element_kind = 1;
+pub const HW_ELEMENT_KIND_HALFEDGE: hw_element_kind = 1;
 /// Edges.
 /// \ingroup ids
-pub const HW_ELEMENT_EDGE: hw_element_kind = 2;
+pub const HW_ELEMENT_KIND_EDGE: hw_element_kind = 2;
 /// Faces.
 /// \ingroup ids
-pub const HW_ELEMENT_FACE: hw_element_kind = 3;
+pub const HW_ELEMENT_KIND_FACE: hw_element_kind = 3;
 
 /// The Rust element kind of a C one.
 pub(crate) fn element_kind(raw: hw_element_kind) -> Result<ElementKind, FfiError> {
     match raw {
-        HW_ELEMENT_VERTEX => Ok(ElementKind::Vertex),
-        HW_ELEMENT_HALFEDGE => Ok(ElementKind::Halfedge),
-        HW_ELEMENT_EDGE => Ok(ElementKind::Edge),
-        HW_ELEMENT_FACE => Ok(ElementKind::Face),
+        HW_ELEMENT_KIND_VERTEX => Ok(ElementKind::Vertex),
+        HW_ELEMENT_KIND_HALFEDGE => Ok(ElementKind::Halfedge),
+        HW_ELEMENT_KIND_EDGE => Ok(ElementKind::Edge),
+        HW_ELEMENT_KIND_FACE => Ok(ElementKind::Face),
         other => Err(FfiError::invalid_input(format!(
             "unknown element kind {other}"
         ))),

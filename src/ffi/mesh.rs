@@ -28,26 +28,27 @@ pub type hw_build_policy = u32;
 /// oriented edge or a non-manifold vertex. The message names the offending faces, edges and
 /// vertices.
 /// \ingroup mesh
-pub const HW_BUILD_STRICT: hw_build_policy = 0;
-/// Leave out what cannot be placed, and list it (::HW_DIAG_SKIPPED_FACES): malformed faces,
-/// faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used in its
-/// direction; split non-manifold vertices (one vertex per fan, ::HW_DIAG_VERTEX_COPIES).
+pub const HW_BUILD_POLICY_STRICT: hw_build_policy = 0;
+/// Leave out what cannot be placed, and list it (::HW_DIAGNOSTIC_LIST_SKIPPED_FACES): malformed
+/// faces, faces on a NaN/infinite vertex, then, in input order, a face whose edge is already used
+/// in its direction; split non-manifold vertices (one vertex per fan,
+/// ::HW_DIAGNOSTIC_LIST_VERTEX_COPIES).
 /// \ingroup mesh
-pub const HW_BUILD_SKIP: hw_build_policy = 1;
+pub const HW_BUILD_POLICY_SKIP: hw_build_policy = 1;
 /// Keep every face that can be kept, and make it fit: collapse repeated corners, reverse faces so
-/// neighbours agree (::HW_DIAG_REORIENTED_FACES), cut the surface along edges still non-manifold
-/// or inconsistent and give each fan its own vertex, split non-manifold vertices, and turn every
-/// closed component to face outward. Faces that cannot be kept (fewer than 3 distinct corners,
-/// an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
-/// (::HW_DIAG_SKIPPED_FACES). Accepts every input ::HW_BUILD_SKIP accepts.
+/// neighbours agree (::HW_DIAGNOSTIC_LIST_REORIENTED_FACES), cut the surface along edges still
+/// non-manifold or inconsistent and give each fan its own vertex, split non-manifold vertices, and
+/// turn every closed component to face outward. Faces that cannot be kept (fewer than 3 distinct
+/// corners, an out-of-range index, a corner on a NaN/infinite vertex) are left out and listed
+/// (::HW_DIAGNOSTIC_LIST_SKIPPED_FACES). Accepts every input ::HW_BUILD_POLICY_SKIP accepts.
 /// \ingroup mesh
-pub const HW_BUILD_REPAIR: hw_build_policy = 2;
+pub const HW_BUILD_POLICY_REPAIR: hw_build_policy = 2;
 
 pub(crate) fn build_policy(raw: hw_build_policy) -> Result<BuildPolicy, FfiError> {
     match raw {
-        HW_BUILD_STRICT => Ok(BuildPolicy::Strict),
-        HW_BUILD_SKIP => Ok(BuildPolicy::Skip),
-        HW_BUILD_REPAIR => Ok(BuildPolicy::Repair),
+        HW_BUILD_POLICY_STRICT => Ok(BuildPolicy::Strict),
+        HW_BUILD_POLICY_SKIP => Ok(BuildPolicy::Skip),
+        HW_BUILD_POLICY_REPAIR => Ok(BuildPolicy::Repair),
         other => Err(FfiError::invalid_input(format!(
             "unknown build policy {other}"
         ))),
@@ -93,9 +94,10 @@ pub extern "C" fn hw_mesh_new() -> *mut hw_mesh {
 /// counter-clockwise seen from outside. Pairing is done in bulk by sorting edge keys.
 ///
 /// `policy` decides what happens to faces that do not fit a half-edge structure (see
-/// ::HW_BUILD_STRICT, ::HW_BUILD_SKIP, ::HW_BUILD_REPAIR). Malformed data — sizes below 3 or not
-/// summing to `n_indices`, indices out of range, NaN or infinite coordinates — give
-/// `HW_ERR_INVALID_INPUT` under ::HW_BUILD_STRICT; the message names the faces and vertices.
+/// ::HW_BUILD_POLICY_STRICT, ::HW_BUILD_POLICY_SKIP, ::HW_BUILD_POLICY_REPAIR). Malformed data —
+/// sizes below 3 or not summing to `n_indices`, indices out of range, NaN or infinite coordinates —
+/// give `HW_ERR_INVALID_INPUT` under ::HW_BUILD_POLICY_STRICT; the message names the faces and
+/// vertices.
 ///
 /// Whatever the policy, the mesh holds no NaN or infinite coordinate (such a vertex is there as a
 /// deleted vertex, its id kept) and no non-manifold vertex: every vertex query (valence,

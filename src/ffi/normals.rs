@@ -18,19 +18,19 @@ use super::threads::with_threads;
 pub type hw_normal_weighting = u32;
 /// Unit face normals summed: OpenMesh's default, the textbook average.
 /// \ingroup normals
-pub const HW_WEIGHT_UNIFORM: hw_normal_weighting = 0;
+pub const HW_NORMAL_WEIGHTING_UNIFORM: hw_normal_weighting = 0;
 /// Face normals weighted by face area.
 /// \ingroup normals
-pub const HW_WEIGHT_AREA: hw_normal_weighting = 1;
+pub const HW_NORMAL_WEIGHTING_AREA: hw_normal_weighting = 1;
 /// Unit face normals weighted by the face's angle at the vertex: pmp's default.
 /// \ingroup normals
-pub const HW_WEIGHT_ANGLE: hw_normal_weighting = 2;
+pub const HW_NORMAL_WEIGHTING_ANGLE: hw_normal_weighting = 2;
 
 pub(crate) fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
     match raw {
-        HW_WEIGHT_UNIFORM => Ok(VertexNormalWeighting::Uniform),
-        HW_WEIGHT_AREA => Ok(VertexNormalWeighting::Area),
-        HW_WEIGHT_ANGLE => Ok(VertexNormalWeighting::Angle),
+        HW_NORMAL_WEIGHTING_UNIFORM => Ok(VertexNormalWeighting::Uniform),
+        HW_NORMAL_WEIGHTING_AREA => Ok(VertexNormalWeighting::Area),
+        HW_NORMAL_WEIGHTING_ANGLE => Ok(VertexNormalWeighting::Angle),
         other => Err(FfiError::invalid_input(format!(
             "unknown normal weighting {other}"
         ))),

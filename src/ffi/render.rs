@@ -15,7 +15,7 @@ use super::error::FfiError;
 use super::face_list::face_list_arg;
 use super::handle::{free_handle, into_handle};
 use super::mesh::{hw_mesh, mesh_ref};
-use super::normals::{HW_WEIGHT_ANGLE, hw_normal_weighting, weighting};
+use super::normals::{HW_NORMAL_WEIGHTING_ANGLE, hw_normal_weighting, weighting};
 use super::status::*;
 use super::threads::with_threads;
 use super::voronoi_cells::{cells_ref, hw_voronoi_cells};
@@ -51,12 +51,14 @@ pub struct hw_render_options {
     /// ::HW_SHADING_CREASE.
     pub shading: hw_shading,
     /// Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
-    /// the vertex-normal glyphs (::HW_WEIGHT_UNIFORM, ::HW_WEIGHT_AREA, ::HW_WEIGHT_ANGLE).
+    /// the vertex-normal glyphs (::HW_NORMAL_WEIGHTING_UNIFORM, ::HW_NORMAL_WEIGHTING_AREA,
+    /// ::HW_NORMAL_WEIGHTING_ANGLE).
     pub weighting: hw_normal_weighting,
     /// For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
     pub crease_angle: f64,
-    /// `true`: one ::HW_RENDER_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
-    /// separate ::HW_RENDER_POSITIONS, ::HW_RENDER_NORMALS and ::HW_RENDER_UVS arrays.
+    /// `true`: one ::HW_RENDER_FLOATS_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
+    /// separate ::HW_RENDER_FLOATS_POSITIONS, ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_FLOATS_UVS
+    /// arrays.
     pub interleaved: bool,
     /// Length of the normal glyphs; 0 takes the mesh's mean edge length.
     pub normal_length: f64,
@@ -76,7 +78,7 @@ pub struct hw_render_options {
     /// then carry uvs, as given.
     pub corner_uvs: *const f64,
     /// Half-edge slots in `corner_normals` and `corner_uvs`: must be
-    /// `hw_mesh_slot_count(mesh, HW_ELEMENT_HALFEDGE)` when either is given.
+    /// `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
     pub n_corners: usize,
 }
 
@@ -89,7 +91,7 @@ pub struct hw_render_options {
 pub extern "C" fn hw_render_options_default() -> hw_render_options {
     hw_render_options {
         shading: HW_SHADING_CORNER_NORMALS,
-        weighting: HW_WEIGHT_ANGLE,
+        weighting: HW_NORMAL_WEIGHTING_ANGLE,
         crease_angle: 30f64.to_radians(),
         interleaved: false,
         normal_length: 0.0,
@@ -109,8 +111,9 @@ enum Contents {
 }
 
 /// GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
-/// hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with hw_render_buffers_free(). Immutable: its
-/// views stay valid until it is freed, also after the mesh it came from changes or is freed.
+/// hw_render_buffers_from_polygons() or hw_render_buffers_from_voronoi_cells(); release with
+/// hw_render_buffers_free(). Immutable: its views stay valid until it is freed, also after the mesh
+/// it came from changes or is freed.
 /// \ingroup render
 pub struct hw_render_buffers {
     contents: Contents,
@@ -131,123 +134,123 @@ impl From<RenderError> for FfiError {
 pub type hw_render_floats = u32;
 /// x y z per vertex (separate layout; empty when interleaved).
 /// \ingroup render
-pub const HW_RENDER_POSITIONS: hw_render_floats = 0;
+pub const HW_RENDER_FLOATS_POSITIONS: hw_render_floats = 0;
 /// Unit nx ny nz per vertex (separate layout; empty when interleaved).
 /// \ingroup render
-pub const HW_RENDER_NORMALS: hw_render_floats = 1;
+pub const HW_RENDER_FLOATS_NORMALS: hw_render_floats = 1;
 /// u v per vertex (separate layout with corner uvs; empty otherwise).
 /// \ingroup render
-pub const HW_RENDER_UVS: hw_render_floats = 2;
+pub const HW_RENDER_FLOATS_UVS: hw_render_floats = 2;
 /// hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
 /// \ingroup render
-pub const HW_RENDER_INTERLEAVED: hw_render_floats = 3;
+pub const HW_RENDER_FLOATS_INTERLEAVED: hw_render_floats = 3;
 /// `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
 /// \ingroup render
-pub const HW_RENDER_WIREFRAME: hw_render_floats = 4;
+pub const HW_RENDER_FLOATS_WIREFRAME: hw_render_floats = 4;
 /// `GL_LINES` points of the boundary edges (edges with a face on one side only).
 /// \ingroup render
-pub const HW_RENDER_BOUNDARY: hw_render_floats = 5;
+pub const HW_RENDER_FLOATS_BOUNDARY: hw_render_floats = 5;
 /// `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
 /// \ingroup render
-pub const HW_RENDER_NON_MANIFOLD: hw_render_floats = 6;
+pub const HW_RENDER_FLOATS_NON_MANIFOLD: hw_render_floats = 6;
 /// `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
 /// \ingroup render
-pub const HW_RENDER_VERTEX_NORMALS: hw_render_floats = 7;
+pub const HW_RENDER_FLOATS_VERTEX_NORMALS: hw_render_floats = 7;
 /// `GL_LINES` glyphs of the face normals, from each face's centroid.
 /// \ingroup render
-pub const HW_RENDER_FACE_NORMALS: hw_render_floats = 8;
+pub const HW_RENDER_FLOATS_FACE_NORMALS: hw_render_floats = 8;
 /// `GL_POINTS` points, x y z: the vertices a doctor's finding names
 /// (hw_render_buffers_from_finding(); empty otherwise).
 /// \ingroup render
-pub const HW_RENDER_POINTS: hw_render_floats = 9;
+pub const HW_RENDER_FLOATS_POINTS: hw_render_floats = 9;
 
 /// The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
 /// \ingroup render
 pub type hw_render_indices = u32;
 /// Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
 /// \ingroup render
-pub const HW_RENDER_TRIANGLES: hw_render_indices = 0;
+pub const HW_RENDER_INDICES_TRIANGLES: hw_render_indices = 0;
 /// Per triangle, the mesh face (or polygon) it comes from.
 /// \ingroup render
-pub const HW_RENDER_TRIANGLE_FACES: hw_render_indices = 1;
+pub const HW_RENDER_INDICES_TRIANGLE_FACES: hw_render_indices = 1;
 /// Per vertex, the mesh vertex (or polygon) it shows.
 /// \ingroup render
-pub const HW_RENDER_VERTEX_SOURCES: hw_render_indices = 2;
-/// Per ::HW_RENDER_WIREFRAME segment, its edge id (or polygon).
+pub const HW_RENDER_INDICES_VERTEX_SOURCES: hw_render_indices = 2;
+/// Per ::HW_RENDER_FLOATS_WIREFRAME segment, its edge id (or polygon).
 /// \ingroup render
-pub const HW_RENDER_WIREFRAME_SOURCES: hw_render_indices = 3;
-/// Per ::HW_RENDER_BOUNDARY segment, its edge id.
+pub const HW_RENDER_INDICES_WIREFRAME_SOURCES: hw_render_indices = 3;
+/// Per ::HW_RENDER_FLOATS_BOUNDARY segment, its edge id.
 /// \ingroup render
-pub const HW_RENDER_BOUNDARY_SOURCES: hw_render_indices = 4;
-/// Per ::HW_RENDER_POINTS point, the item of the finding it shows.
+pub const HW_RENDER_INDICES_BOUNDARY_SOURCES: hw_render_indices = 4;
+/// Per ::HW_RENDER_FLOATS_POINTS point, the item of the finding it shows.
 /// \ingroup render
-pub const HW_RENDER_POINT_SOURCES: hw_render_indices = 5;
+pub const HW_RENDER_INDICES_POINT_SOURCES: hw_render_indices = 5;
 
 fn float_array(contents: &Contents, which: hw_render_floats) -> Result<&[f32], FfiError> {
-    if which > HW_RENDER_POINTS {
+    if which > HW_RENDER_FLOATS_POINTS {
         return Err(FfiError::invalid_input(format!(
             "unknown render float array {which}"
         )));
     }
     Ok(match contents {
         Contents::Mesh(buffers) => match which {
-            HW_RENDER_POSITIONS => &buffers.surface.positions,
-            HW_RENDER_NORMALS => &buffers.surface.normals,
-            HW_RENDER_UVS => &buffers.surface.uvs,
-            HW_RENDER_INTERLEAVED => &buffers.surface.interleaved,
-            HW_RENDER_WIREFRAME => &buffers.wireframe.positions,
-            HW_RENDER_BOUNDARY => &buffers.boundary.positions,
-            HW_RENDER_NON_MANIFOLD => &buffers.non_manifold.positions,
-            HW_RENDER_VERTEX_NORMALS => &buffers.vertex_normals.positions,
-            HW_RENDER_FACE_NORMALS => &buffers.face_normals.positions,
+            HW_RENDER_FLOATS_POSITIONS => &buffers.surface.positions,
+            HW_RENDER_FLOATS_NORMALS => &buffers.surface.normals,
+            HW_RENDER_FLOATS_UVS => &buffers.surface.uvs,
+            HW_RENDER_FLOATS_INTERLEAVED => &buffers.surface.interleaved,
+            HW_RENDER_FLOATS_WIREFRAME => &buffers.wireframe.positions,
+            HW_RENDER_FLOATS_BOUNDARY => &buffers.boundary.positions,
+            HW_RENDER_FLOATS_NON_MANIFOLD => &buffers.non_manifold.positions,
+            HW_RENDER_FLOATS_VERTEX_NORMALS => &buffers.vertex_normals.positions,
+            HW_RENDER_FLOATS_FACE_NORMALS => &buffers.face_normals.positions,
             _ => &[],
         },
         Contents::Polygons(polygons) => match which {
-            HW_RENDER_POSITIONS => &polygons.positions,
-            HW_RENDER_NORMALS => &polygons.normals,
-            HW_RENDER_WIREFRAME => &polygons.outline.positions,
+            HW_RENDER_FLOATS_POSITIONS => &polygons.positions,
+            HW_RENDER_FLOATS_NORMALS => &polygons.normals,
+            HW_RENDER_FLOATS_WIREFRAME => &polygons.outline.positions,
             _ => &[],
         },
         Contents::Finding(finding) => match which {
-            HW_RENDER_POSITIONS => &finding.faces.positions,
-            HW_RENDER_NORMALS => &finding.faces.normals,
-            HW_RENDER_WIREFRAME => &finding.faces.outline.positions,
-            HW_RENDER_BOUNDARY => &finding.lines.positions,
-            HW_RENDER_POINTS => &finding.points,
+            HW_RENDER_FLOATS_POSITIONS => &finding.faces.positions,
+            HW_RENDER_FLOATS_NORMALS => &finding.faces.normals,
+            HW_RENDER_FLOATS_WIREFRAME => &finding.faces.outline.positions,
+            HW_RENDER_FLOATS_BOUNDARY => &finding.lines.positions,
+            HW_RENDER_FLOATS_POINTS => &finding.points,
             _ => &[],
         },
     })
 }
 
 fn index_array(contents: &Contents, which: hw_render_indices) -> Result<&[u32], FfiError> {
-    if which > HW_RENDER_POINT_SOURCES {
+    if which > HW_RENDER_INDICES_POINT_SOURCES {
         return Err(FfiError::invalid_input(format!(
             "unknown render index array {which}"
         )));
     }
     Ok(match contents {
         Contents::Mesh(buffers) => match which {
-            HW_RENDER_TRIANGLES => &buffers.surface.triangles,
-            HW_RENDER_TRIANGLE_FACES => &buffers.surface.triangle_faces,
-            HW_RENDER_VERTEX_SOURCES => &buffers.surface.vertex_sources,
-            HW_RENDER_WIREFRAME_SOURCES => &buffers.wireframe.sources,
-            HW_RENDER_BOUNDARY_SOURCES => &buffers.boundary.sources,
+            HW_RENDER_INDICES_TRIANGLES => &buffers.surface.triangles,
+            HW_RENDER_INDICES_TRIANGLE_FACES => &buffers.surface.triangle_faces,
+            HW_RENDER_INDICES_VERTEX_SOURCES => &buffers.surface.vertex_sources,
+            HW_RENDER_INDICES_WIREFRAME_SOURCES => &buffers.wireframe.sources,
+            HW_RENDER_INDICES_BOUNDARY_SOURCES => &buffers.boundary.sources,
             _ => &[],
         },
         Contents::Polygons(polygons) => match which {
-            HW_RENDER_TRIANGLES => &polygons.triangles,
-            HW_RENDER_TRIANGLE_FACES => &polygons.triangle_polygons,
-            HW_RENDER_VERTEX_SOURCES => &polygons.vertex_polygons,
-            HW_RENDER_WIREFRAME_SOURCES => &polygons.outline.sources,
+            HW_RENDER_INDICES_TRIANGLES => &polygons.triangles,
+            HW_RENDER_INDICES_TRIANGLE_FACES => &polygons.triangle_polygons,
+            HW_RENDER_INDICES_VERTEX_SOURCES => &polygons.vertex_polygons,
+            HW_RENDER_INDICES_WIREFRAME_SOURCES => &polygons.outline.sources,
             _ => &[],
         },
         Contents::Finding(finding) => match which {
-            HW_RENDER_TRIANGLES => &finding.faces.triangles,
-            HW_RENDER_TRIANGLE_FACES => &finding.faces.triangle_polygons,
-            HW_RENDER_VERTEX_SOURCES => &finding.faces.vertex_polygons,
-            HW_RENDER_WIREFRAME_SOURCES => &finding.faces.outline.sources,
-            HW_RENDER_BOUNDARY_SOURCES => &finding.lines.sources,
-            HW_RENDER_POINT_SOURCES => &finding.point_items,
+            HW_RENDER_INDICES_TRIANGLES => &finding.faces.triangles,
+            HW_RENDER_INDICES_TRIANGLE_FACES => &finding.faces.triangle_polygons,
+            HW_RENDER_INDICES_VERTEX_SOURCES => &finding.faces.vertex_polygons,
+            HW_RENDER_INDICES_WIREFRAME_SOURCES => &finding.faces.outline.sources,
+            HW_RENDER_INDICES_BOUNDARY_SOURCES => &finding.lines.sources,
+            HW_RENDER_INDICES_POINT_SOURCES => &finding.point_items,
             _ => &[],
         },
     })
@@ -268,13 +271,13 @@ fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
 /// boundary, the non-manifold edges of `diagnostic` and the normal glyphs.
 ///
 /// `diagnostic` may be NULL (no non-manifold edges then); when given it must be the one the
-/// mesh's build returned (load with ::HW_BUILD_REPAIR or ::HW_BUILD_SKIP to see the non-manifold
-/// edges of a file). `options` may be NULL for hw_render_options_default(). Bad options (an
-/// unknown shading or weighting, a negative or non-finite crease angle or glyph length, corner
-/// arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
+/// mesh's build returned (load with ::HW_BUILD_POLICY_REPAIR or ::HW_BUILD_POLICY_SKIP to see the
+/// non-manifold edges of a file). `options` may be NULL for hw_render_options_default(). Bad
+/// options (an unknown shading or weighting, a negative or non-finite crease angle or glyph length,
+/// corner arrays of the wrong size) give `HW_ERR_INVALID_INPUT`.
 ///
 /// Draw the surface with `glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, 0)` after uploading
-/// ::HW_RENDER_TRIANGLES as the element buffer, and each line set with
+/// ::HW_RENDER_INDICES_TRIANGLES as the element buffer, and each line set with
 /// `glDrawArrays(GL_LINES, 0, len / 3)`.
 ///
 /// # Safety
@@ -360,11 +363,12 @@ unsafe fn corner_array<'a, const N: usize>(
 }
 
 /// Builds fill and outline buffers of a list of polygons — Voronoi cells, regions, any polygons:
-/// ::HW_RENDER_POSITIONS and ::HW_RENDER_NORMALS (each polygon's own corners, so polygons can be
-/// coloured apart; normals are the polygons' unit normals, +z for counter-clockwise 2D input),
-/// ::HW_RENDER_TRIANGLES (every polygon triangulated) with ::HW_RENDER_TRIANGLE_FACES and
-/// ::HW_RENDER_VERTEX_SOURCES naming polygons, and the outlines as ::HW_RENDER_WIREFRAME. The
-/// other arrays are empty, and the layout is always separate.
+/// ::HW_RENDER_FLOATS_POSITIONS and ::HW_RENDER_FLOATS_NORMALS (each polygon's own corners, so
+/// polygons can be coloured apart; normals are the polygons' unit normals, +z for counter-clockwise
+/// 2D input), ::HW_RENDER_INDICES_TRIANGLES (every polygon triangulated) with
+/// ::HW_RENDER_INDICES_TRIANGLE_FACES and ::HW_RENDER_INDICES_VERTEX_SOURCES naming polygons, and
+/// the outlines as ::HW_RENDER_FLOATS_WIREFRAME. The other arrays are empty, and the layout is
+/// always separate.
 ///
 /// `corners` holds `dimension * n_corners` doubles (`dimension` 2: x y in the plane z = 0;
 /// 3: x y z), polygon after polygon; polygon `i` has `sizes[i]` corners, and the sizes must add
@@ -418,10 +422,11 @@ pub unsafe extern "C" fn hw_render_buffers_from_polygons(
 
 /// Builds fill and outline buffers of the clipped cells of a Voronoi diagram, as
 /// hw_render_buffers_from_polygons() would from its cells: polygon `i` is the cell of site `i`,
-/// so ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
-/// name sites (colour a cell by its site). Each cell gets its own copies of its corners (z = 0,
-/// normals +z); an empty cell (a duplicate site, or a cell outside the clip region) has no
-/// triangle and no outline. The buffers do not depend on `cells` afterwards.
+/// so ::HW_RENDER_INDICES_TRIANGLE_FACES, ::HW_RENDER_INDICES_VERTEX_SOURCES and
+/// ::HW_RENDER_INDICES_WIREFRAME_SOURCES name sites (colour a cell by its site). Each cell gets its
+/// own copies of its corners (z = 0, normals +z); an empty cell (a duplicate site, or a cell
+/// outside the clip region) has no triangle and no outline. The buffers do not depend on `cells`
+/// afterwards.
 ///
 /// # Safety
 /// `cells` must be NULL or a live `hw_voronoi_cells`; `out_buffers` writable.
@@ -448,14 +453,16 @@ pub unsafe extern "C" fn hw_render_buffers_from_voronoi_cells(
 
 /// Builds the buffers that draw one kind of finding of a doctor's report over the face list it
 /// examined (the same arrays as given to hw_doctor_examine_indexed()):
-/// - the faces it names, each once with its own corners, as ::HW_RENDER_POSITIONS,
-///   ::HW_RENDER_NORMALS and ::HW_RENDER_TRIANGLES, outlined by ::HW_RENDER_WIREFRAME;
-///   ::HW_RENDER_TRIANGLE_FACES, ::HW_RENDER_VERTEX_SOURCES and ::HW_RENDER_WIREFRAME_SOURCES
-///   name faces of the list;
+/// - the faces it names, each once with its own corners, as ::HW_RENDER_FLOATS_POSITIONS,
+///   ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_INDICES_TRIANGLES, outlined by
+///   ::HW_RENDER_FLOATS_WIREFRAME; ::HW_RENDER_INDICES_TRIANGLE_FACES,
+///   ::HW_RENDER_INDICES_VERTEX_SOURCES and ::HW_RENDER_INDICES_WIREFRAME_SOURCES name faces of the
+///   list;
 /// - the edges it names, and the 12 edges of the bounding box of each small component, as
-///   ::HW_RENDER_BOUNDARY segments, whose ::HW_RENDER_BOUNDARY_SOURCES are item indices of the
-///   finding;
-/// - the vertices it names as ::HW_RENDER_POINTS, with ::HW_RENDER_POINT_SOURCES (items).
+///   ::HW_RENDER_FLOATS_BOUNDARY segments, whose ::HW_RENDER_INDICES_BOUNDARY_SOURCES are item
+///   indices of the finding;
+/// - the vertices it names as ::HW_RENDER_FLOATS_POINTS, with ::HW_RENDER_INDICES_POINT_SOURCES
+///   (items).
 ///
 /// What each kind names: faces for the orientation witness, needles, caps, duplicate faces and
 /// intersecting face pairs; the edge and its two faces for folded edges; the edge for long
@@ -546,7 +553,7 @@ pub unsafe extern "C" fn hw_render_buffers_floats(
 }
 
 /// A zero-copy view of one `uint32_t` array: `*out_data` (NULL when empty) and its length
-/// `*out_len` in elements (three per triangle for ::HW_RENDER_TRIANGLES).
+/// `*out_len` in elements (three per triangle for ::HW_RENDER_INDICES_TRIANGLES).
 ///
 /// # Safety
 /// `buffers` must be NULL or live; `out_data` and `out_len` writable.
@@ -583,7 +590,7 @@ pub unsafe extern "C" fn hw_render_buffers_n_vertices(buffers: *const hw_render_
     })
 }
 
-/// Floats per vertex of ::HW_RENDER_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
+/// Floats per vertex of ::HW_RENDER_FLOATS_INTERLEAVED (6: x y z nx ny nz; 8 with uvs), 0 when the
 /// arrays are separate; 0 for NULL. The byte stride of `glVertexAttribPointer` is this times
 /// `sizeof(float)`; normals start at float 3 and uvs at float 6.
 ///

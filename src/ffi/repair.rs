@@ -40,40 +40,40 @@ pub struct hw_repair_report {
 pub type hw_repair_list = u32;
 /// Pairs `removed, kept` (2 values each) of vertices merged into another.
 /// \ingroup repair
-pub const HW_REPAIR_MERGED_VERTICES: hw_repair_list = 0;
+pub const HW_REPAIR_LIST_MERGED_VERTICES: hw_repair_list = 0;
 /// Vertices removed (merged ones included).
 /// \ingroup repair
-pub const HW_REPAIR_REMOVED_VERTICES: hw_repair_list = 1;
+pub const HW_REPAIR_LIST_REMOVED_VERTICES: hw_repair_list = 1;
 /// Faces removed.
 /// \ingroup repair
-pub const HW_REPAIR_REMOVED_FACES: hw_repair_list = 2;
+pub const HW_REPAIR_LIST_REMOVED_FACES: hw_repair_list = 2;
 /// Pairs `removed, kept` (2 values each) of duplicate faces.
 /// \ingroup repair
-pub const HW_REPAIR_DUPLICATE_FACES: hw_repair_list = 3;
+pub const HW_REPAIR_LIST_DUPLICATE_FACES: hw_repair_list = 3;
 /// Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
 /// \ingroup repair
-pub const HW_REPAIR_STITCHED_HALFEDGES: hw_repair_list = 4;
+pub const HW_REPAIR_LIST_STITCHED_HALFEDGES: hw_repair_list = 4;
 /// The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
 /// count before the repair) copies vertex `ids[i]`.
 /// \ingroup repair
-pub const HW_REPAIR_VERTEX_COPIES: hw_repair_list = 5;
+pub const HW_REPAIR_LIST_VERTEX_COPIES: hw_repair_list = 5;
 /// Faces whose corner order was reversed.
 /// \ingroup repair
-pub const HW_REPAIR_REORIENTED_FACES: hw_repair_list = 6;
+pub const HW_REPAIR_LIST_REORIENTED_FACES: hw_repair_list = 6;
 /// Pairs `cap, across` (2 values each) of triangles whose shared edge
 /// hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
 /// \ingroup repair
-pub const HW_REPAIR_FLIPPED_FACES: hw_repair_list = 7;
+pub const HW_REPAIR_LIST_FLIPPED_FACES: hw_repair_list = 7;
 
 /// Which components hw_soup_remove_small_components() removes.
 /// \ingroup repair
 pub type hw_small_components = u32;
 /// Components of at most `value` faces.
 /// \ingroup repair
-pub const HW_SMALL_BY_FACE_COUNT: hw_small_components = 0;
+pub const HW_SMALL_COMPONENTS_BY_FACE_COUNT: hw_small_components = 0;
 /// Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
 /// \ingroup repair
-pub const HW_SMALL_BY_RELATIVE_DIAMETER: hw_small_components = 1;
+pub const HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER: hw_small_components = 1;
 
 /// What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
 /// \ingroup repair
@@ -189,7 +189,7 @@ pub unsafe extern "C" fn hw_soup_from_indexed(
 /// vertices) into the lowest of each cluster, which keeps its position. Exact duplicates always
 /// merge; near ones greedily, in index order, into the first lower kept vertex within the
 /// tolerance (not transitively). Faces naming a merged vertex drop corners that repeat the one
-/// before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_REMOVED_FACES).
+/// before; one left with fewer than 3 distinct corners is removed (::HW_REPAIR_LIST_REMOVED_FACES).
 /// Corner normals and texture coordinates follow their corners. `HW_ERR_INVALID_INPUT`, the
 /// soup unchanged, for a tolerance negative, NaN, infinite, relative above 1 or positive below
 /// 2^-48 of the positions' extent, and for a malformed soup (index out of range, sizes not
@@ -214,7 +214,7 @@ pub unsafe extern "C" fn hw_soup_merge_vertices(
 }
 
 /// Removes every face whose vertex set is that of a lower face (either orientation, any
-/// starting corner), keeping the lowest (::HW_REPAIR_DUPLICATE_FACES pairs each removed face
+/// starting corner), keeping the lowest (::HW_REPAIR_LIST_DUPLICATE_FACES pairs each removed face
 /// with the one kept). Vertices are untouched. Refusals and report as for
 /// hw_soup_merge_vertices().
 ///
@@ -250,9 +250,9 @@ pub unsafe extern "C" fn hw_soup_remove_unreferenced_vertices(
 }
 
 /// Removes the faces of the small components (faces joined through shared edges) and the
-/// vertices only they named: by ::HW_SMALL_BY_FACE_COUNT (at most `value` faces, a whole
-/// number) or ::HW_SMALL_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the largest).
-/// `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
+/// vertices only they named: by ::HW_SMALL_COMPONENTS_BY_FACE_COUNT (at most `value` faces, a whole
+/// number) or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER (a diagonal at most `value` times the
+/// largest). `HW_ERR_INVALID_INPUT`, the soup unchanged, for a bad rule or value; otherwise as
 /// hw_soup_merge_vertices().
 ///
 /// # Safety
@@ -266,14 +266,14 @@ pub unsafe extern "C" fn hw_soup_remove_small_components(
     out_report: *mut *mut hw_repair_report,
 ) -> hw_status {
     let small = match rule {
-        HW_SMALL_BY_FACE_COUNT if value >= 0.0 && value.fract() == 0.0 => {
+        HW_SMALL_COMPONENTS_BY_FACE_COUNT if value >= 0.0 && value.fract() == 0.0 => {
             // Saturates above usize::MAX: every component is then small.
             Ok(SmallComponents::FaceCount(value as usize))
         }
-        HW_SMALL_BY_FACE_COUNT => Err(FfiError::invalid_input(format!(
+        HW_SMALL_COMPONENTS_BY_FACE_COUNT => Err(FfiError::invalid_input(format!(
             "face count {value} is not a whole number of 0 or more"
         ))),
-        HW_SMALL_BY_RELATIVE_DIAMETER => Ok(SmallComponents::RelativeDiameter(value)),
+        HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER => Ok(SmallComponents::RelativeDiameter(value)),
         other => Err(FfiError::invalid_input(format!(
             "unknown small-component rule {other}"
         ))),
@@ -287,10 +287,10 @@ pub unsafe extern "C" fn hw_soup_remove_small_components(
 }
 
 /// Reverses faces so that neighbours agree in orientation (in each connected part the smaller
-/// side turns) and every closed component faces outward, as a build's `HW_POLICY_REPAIR` does;
-/// a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their corners'
-/// normals and texture coordinates, in reverse order (::HW_REPAIR_REORIENTED_FACES); vertices
-/// are untouched. Refusals and report as for hw_soup_merge_vertices().
+/// side turns) and every closed component faces outward, as a build's `HW_BUILD_POLICY_REPAIR`
+/// does; a non-orientable part keeps an edge whose faces disagree. Reversed faces keep their
+/// corners' normals and texture coordinates, in reverse order (::HW_REPAIR_LIST_REORIENTED_FACES);
+/// vertices are untouched. Refusals and report as for hw_soup_merge_vertices().
 ///
 /// # Safety
 /// `soup` must be NULL or a live soup no other thread uses; `out_report` NULL or writable.
@@ -306,9 +306,9 @@ pub unsafe extern "C" fn hw_soup_orient_faces(
 
 /// Makes every edge shared by at most two faces: ::HW_NON_MANIFOLD_EDGES_CUT keeps every face
 /// and gives the groups of faces around the edge's ends copies of them (appended,
-/// ::HW_REPAIR_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
+/// ::HW_REPAIR_LIST_VERTEX_COPIES), ::HW_NON_MANIFOLD_EDGES_REMOVE_FACES keeps faces in order while
 /// the edge has at most one face running each way and removes the others
-/// (::HW_REPAIR_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
+/// (::HW_REPAIR_LIST_REMOVED_FACES). Run hw_soup_orient_faces() first. `HW_ERR_INVALID_INPUT`, the
 /// soup unchanged, for an unknown `how`; otherwise as hw_soup_merge_vertices().
 ///
 /// # Safety
@@ -336,7 +336,7 @@ pub unsafe extern "C" fn hw_soup_repair_non_manifold_edges(
 }
 
 /// Gives every fan of faces around a non-manifold vertex but the first a copy of the vertex
-/// (appended, ::HW_REPAIR_VERTEX_COPIES), as builds do; corners keep their normals and texture
+/// (appended, ::HW_REPAIR_LIST_VERTEX_COPIES), as builds do; corners keep their normals and texture
 /// coordinates. Refusals and report as for hw_soup_merge_vertices().
 ///
 /// # Safety
@@ -377,11 +377,11 @@ unsafe fn repair_mesh_in_place(
 /// Mends the mesh's degenerate triangles: those whose corners lie exactly on one line (decided
 /// exactly), or within `tolerance` of it (absolute, or when `relative` a fraction of the live
 /// vertices' bounding-box diagonal). A triangle with an edge at most the tolerance long (zero
-/// when exact) has the edge collapsed into its lower end (::HW_REPAIR_MERGED_VERTICES), which
+/// when exact) has the edge collapsed into its lower end (::HW_REPAIR_LIST_MERGED_VERTICES), which
 /// removes the two triangles beside it and keeps the surface closed; a cap (its corner opposite
 /// its longest edge on that edge) has that edge flipped with the triangle across it
-/// (::HW_REPAIR_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
-/// leaving a boundary. Every removed face is in ::HW_REPAIR_REMOVED_FACES. Faces of more than 3
+/// (::HW_REPAIR_LIST_FLIPPED_FACES) when the two new triangles are sound; any other is removed,
+/// leaving a boundary. Every removed face is in ::HW_REPAIR_LIST_REMOVED_FACES. Faces of more than 3
 /// corners are left as they are; vertices only removed faces named stay, isolated. Corners keep
 /// their normals and texture coordinates (a corner at a merged vertex keeps its own). The mesh
 /// is then compacted (the report's maps; the identity when nothing changed, the mesh then
@@ -410,7 +410,7 @@ pub unsafe extern "C" fn hw_mesh_remove_degenerate_faces(
 /// within `tolerance` as for hw_mesh_remove_degenerate_faces()) with a new vertex at the
 /// T-vertex's position, so that hw_mesh_stitch_borders() can then close the crack. The `i`-th
 /// new vertex (id `n + i`, `n` the vertex count before) copies T-vertex `ids[i]` of
-/// ::HW_REPAIR_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
+/// ::HW_REPAIR_LIST_VERTEX_COPIES; its attributes, and the new corner of the face beside the edge,
 /// are interpolated along the edge. Edges whose face has a corner at the T-vertex's position
 /// are left. Nothing is removed; the mesh is compacted (the report's maps cover the elements
 /// there were before; the identity when nothing was split). Afterwards no boundary vertex lies
@@ -479,14 +479,16 @@ pub unsafe extern "C" fn hw_repair_report_list(
         give_view(out_ids, "out_ids", out_len, || {
             let report = arg_ref(report, "report")?;
             match list {
-                HW_REPAIR_MERGED_VERTICES => Ok(report.report.merged_vertices.as_flattened()),
-                HW_REPAIR_REMOVED_VERTICES => Ok(&report.report.removed_vertices[..]),
-                HW_REPAIR_REMOVED_FACES => Ok(&report.report.removed_faces[..]),
-                HW_REPAIR_DUPLICATE_FACES => Ok(report.report.duplicate_faces.as_flattened()),
-                HW_REPAIR_STITCHED_HALFEDGES => Ok(report.report.stitched_halfedges.as_flattened()),
-                HW_REPAIR_VERTEX_COPIES => Ok(&report.report.vertex_copies[..]),
-                HW_REPAIR_REORIENTED_FACES => Ok(&report.report.reoriented_faces[..]),
-                HW_REPAIR_FLIPPED_FACES => Ok(report.report.flipped_faces.as_flattened()),
+                HW_REPAIR_LIST_MERGED_VERTICES => Ok(report.report.merged_vertices.as_flattened()),
+                HW_REPAIR_LIST_REMOVED_VERTICES => Ok(&report.report.removed_vertices[..]),
+                HW_REPAIR_LIST_REMOVED_FACES => Ok(&report.report.removed_faces[..]),
+                HW_REPAIR_LIST_DUPLICATE_FACES => Ok(report.report.duplicate_faces.as_flattened()),
+                HW_REPAIR_LIST_STITCHED_HALFEDGES => {
+                    Ok(report.report.stitched_halfedges.as_flattened())
+                }
+                HW_REPAIR_LIST_VERTEX_COPIES => Ok(&report.report.vertex_copies[..]),
+                HW_REPAIR_LIST_REORIENTED_FACES => Ok(&report.report.reoriented_faces[..]),
+                HW_REPAIR_LIST_FLIPPED_FACES => Ok(report.report.flipped_faces.as_flattened()),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown repair list {other}"
                 ))),

@@ -13,7 +13,8 @@ use super::handle::{free_handle, into_handle};
 use super::io::hw_soup;
 use super::mesh::hw_mesh;
 use super::repair::{
-    HW_SMALL_BY_FACE_COUNT, HW_SMALL_BY_RELATIVE_DIAMETER, hw_small_components, tolerance_arg,
+    HW_SMALL_COMPONENTS_BY_FACE_COUNT, HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER,
+    hw_small_components, tolerance_arg,
 };
 use super::status::*;
 
@@ -36,7 +37,7 @@ pub struct hw_repair_options {
     /// Whether small components are removed (by `small_rule` and `small_value`, as
     /// hw_soup_remove_small_components() takes them). Default false.
     pub remove_small_components: bool,
-    /// ::HW_SMALL_BY_FACE_COUNT or ::HW_SMALL_BY_RELATIVE_DIAMETER.
+    /// ::HW_SMALL_COMPONENTS_BY_FACE_COUNT or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER.
     pub small_rule: hw_small_components,
     /// The face count or the diameter ratio.
     pub small_value: f64,
@@ -68,7 +69,7 @@ pub extern "C" fn hw_repair_options_default() -> hw_repair_options {
         stitch_tolerance: 0.0,
         stitch_relative: false,
         remove_small_components: false,
-        small_rule: HW_SMALL_BY_FACE_COUNT,
+        small_rule: HW_SMALL_COMPONENTS_BY_FACE_COUNT,
         small_value: 0.0,
         remove_degenerate_faces: true,
         degenerate_tolerance: 0.0,
@@ -87,16 +88,20 @@ impl TryFrom<&hw_repair_options> for RepairOptions {
             None
         } else {
             Some(match o.small_rule {
-                HW_SMALL_BY_FACE_COUNT if o.small_value >= 0.0 && o.small_value.fract() == 0.0 => {
+                HW_SMALL_COMPONENTS_BY_FACE_COUNT
+                    if o.small_value >= 0.0 && o.small_value.fract() == 0.0 =>
+                {
                     SmallComponents::FaceCount(o.small_value as usize)
                 }
-                HW_SMALL_BY_FACE_COUNT => {
+                HW_SMALL_COMPONENTS_BY_FACE_COUNT => {
                     return Err(FfiError::invalid_input(format!(
                         "face count {} is not a whole number of 0 or more",
                         o.small_value
                     )));
                 }
-                HW_SMALL_BY_RELATIVE_DIAMETER => SmallComponents::RelativeDiameter(o.small_value),
+                HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER => {
+                    SmallComponents::RelativeDiameter(o.small_value)
+                }
                 other => {
                     return Err(FfiError::invalid_input(format!(
                         "unknown small-component rule {other}"
@@ -169,20 +174,20 @@ pub const HW_FATE_DEGENERATE: hw_fate = 8;
 pub type hw_fates_list = u32;
 /// The ::hw_fate of every input vertex.
 /// \ingroup repair
-pub const HW_FATES_VERTEX_KINDS: hw_fates_list = 0;
+pub const HW_FATES_LIST_VERTEX_KINDS: hw_fates_list = 0;
 /// The id that goes with every input vertex's fate.
 /// \ingroup repair
-pub const HW_FATES_VERTEX_IDS: hw_fates_list = 1;
+pub const HW_FATES_LIST_VERTEX_IDS: hw_fates_list = 1;
 /// The ::hw_fate of every input face.
 /// \ingroup repair
-pub const HW_FATES_FACE_KINDS: hw_fates_list = 2;
+pub const HW_FATES_LIST_FACE_KINDS: hw_fates_list = 2;
 /// The id that goes with every input face's fate.
 /// \ingroup repair
-pub const HW_FATES_FACE_IDS: hw_fates_list = 3;
+pub const HW_FATES_LIST_FACE_IDS: hw_fates_list = 3;
 /// Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
 /// vertex, by output id.
 /// \ingroup repair
-pub const HW_FATES_ADDED_VERTICES: hw_fates_list = 4;
+pub const HW_FATES_LIST_ADDED_VERTICES: hw_fates_list = 4;
 
 /// The counts of hw_repair_fates_counts().
 /// \ingroup repair
@@ -259,12 +264,12 @@ impl hw_repair_fates {
 }
 
 /// Repairs the soup into a new mesh: merges duplicate vertices (within the options' merge
-/// tolerance), removes duplicate faces, builds under ::HW_BUILD_REPAIR (non-manifold vertices
+/// tolerance), removes duplicate faces, builds under ::HW_BUILD_POLICY_REPAIR (non-manifold vertices
 /// split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
 /// that cannot be kept left out), mends degenerate triangles and splits boundary edges at
 /// T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
 /// unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
-/// faces build again under ::HW_BUILD_STRICT. `*out_fates` (when not NULL) says what became of
+/// faces build again under ::HW_BUILD_POLICY_STRICT. `*out_fates` (when not NULL) says what became of
 /// every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
 /// malformed soup; `HW_ERR_OUT_OF_MEMORY` when memory ran out.
 ///
@@ -316,11 +321,11 @@ pub unsafe extern "C" fn hw_repair_fates_list(
         give_view(out_ids, "out_ids", out_len, || {
             let fates = arg_ref(fates, "fates")?;
             match list {
-                HW_FATES_VERTEX_KINDS => Ok(&fates.vertex_kinds[..]),
-                HW_FATES_VERTEX_IDS => Ok(&fates.vertex_ids[..]),
-                HW_FATES_FACE_KINDS => Ok(&fates.face_kinds[..]),
-                HW_FATES_FACE_IDS => Ok(&fates.face_ids[..]),
-                HW_FATES_ADDED_VERTICES => Ok(fates.fates.added_vertices.as_flattened()),
+                HW_FATES_LIST_VERTEX_KINDS => Ok(&fates.vertex_kinds[..]),
+                HW_FATES_LIST_VERTEX_IDS => Ok(&fates.vertex_ids[..]),
+                HW_FATES_LIST_FACE_KINDS => Ok(&fates.face_kinds[..]),
+                HW_FATES_LIST_FACE_IDS => Ok(&fates.face_ids[..]),
+                HW_FATES_LIST_ADDED_VERTICES => Ok(fates.fates.added_vertices.as_flattened()),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown fates list {other}"
                 ))),

@@ -6,7 +6,10 @@ use std::ffi::c_char;
 /// details `hw_last_error_message` gives.
 ///
 /// A plain integer type with named constants, not a Rust enum, so that a value coming back from C
-/// (as in `hw_status_str`) can never be an invalid enum discriminant.
+/// (as in `hw_status_str`) can never be an invalid enum discriminant. Every other enumeration's
+/// constants start with its type's name (`hw_normal_weighting`: `HW_NORMAL_WEIGHTING_*`); status
+/// codes keep the short `HW_OK` / `HW_ERR_*` that C libraries give them, success told from
+/// failure at a glance.
 /// \ingroup errors
 #[allow(non_camel_case_types)]
 pub type hw_status = u32;

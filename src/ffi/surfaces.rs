@@ -22,10 +22,10 @@ use super::status::*;
 pub type hw_cell_faces = u32;
 /// One quadrilateral per cell (a triangle where a pole collapses a side).
 /// \ingroup surfaces
-pub const HW_CELLS_QUADS: hw_cell_faces = 0;
+pub const HW_CELL_FACES_QUADS: hw_cell_faces = 0;
 /// Two triangles per cell.
 /// \ingroup surfaces
-pub const HW_CELLS_TRIANGLES: hw_cell_faces = 1;
+pub const HW_CELL_FACES_TRIANGLES: hw_cell_faces = 1;
 
 /// How hw_surface_revolution() closes the profile's ends that are off the axis.
 /// \ingroup surfaces
@@ -51,8 +51,8 @@ impl From<SurfaceError> for FfiError {
 
 fn cell_faces(raw: hw_cell_faces) -> Result<CellFaces, FfiError> {
     match raw {
-        HW_CELLS_QUADS => Ok(CellFaces::Quads),
-        HW_CELLS_TRIANGLES => Ok(CellFaces::Triangles),
+        HW_CELL_FACES_QUADS => Ok(CellFaces::Quads),
+        HW_CELL_FACES_TRIANGLES => Ok(CellFaces::Triangles),
         other => Err(FfiError::invalid_input(format!(
             "unknown cell faces {other}"
         ))),

@@ -7,7 +7,7 @@ use std::ffi::c_char;
 pub const HW_VERSION_MAJOR: u32 = 0;
 /// Minor version: added functionality.
 /// \ingroup errors
-pub const HW_VERSION_MINOR: u32 = 1;
+pub const HW_VERSION_MINOR: u32 = 2;
 /// Patch version: bug fixes.
 /// \ingroup errors
 pub const HW_VERSION_PATCH: u32 = 0;
@@ -25,7 +25,7 @@ pub extern "C" fn hw_version_number() -> u32 {
 }
 
 /// The version of the library actually linked, as a static NUL-terminated string such as
-/// `"0.1.0"`. Never NULL; must not be freed.
+/// `"0.2.0"`. Never NULL; must not be freed.
 /// \ingroup errors
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_version_string() -> *const c_char {

@@ -21,31 +21,31 @@ use super::status::hw_status;
 pub type hw_mesh_array = u32;
 /// Per half-edge: the vertex it leaves.
 /// \ingroup navigation
-pub const HW_ARRAY_HALFEDGE_ORIGIN: hw_mesh_array = 0;
+pub const HW_MESH_ARRAY_HALFEDGE_ORIGIN: hw_mesh_array = 0;
 /// Per half-edge: the next half-edge around its face or boundary loop.
 /// \ingroup navigation
-pub const HW_ARRAY_HALFEDGE_NEXT: hw_mesh_array = 1;
+pub const HW_MESH_ARRAY_HALFEDGE_NEXT: hw_mesh_array = 1;
 /// Per half-edge: the previous half-edge around its face or boundary loop.
 /// \ingroup navigation
-pub const HW_ARRAY_HALFEDGE_PREV: hw_mesh_array = 2;
+pub const HW_MESH_ARRAY_HALFEDGE_PREV: hw_mesh_array = 2;
 /// Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
 /// \ingroup navigation
-pub const HW_ARRAY_HALFEDGE_FACE: hw_mesh_array = 3;
+pub const HW_MESH_ARRAY_HALFEDGE_FACE: hw_mesh_array = 3;
 /// Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
 /// \ingroup navigation
-pub const HW_ARRAY_VERTEX_HALFEDGE: hw_mesh_array = 4;
+pub const HW_MESH_ARRAY_VERTEX_HALFEDGE: hw_mesh_array = 4;
 /// Per face: one of its half-edges.
 /// \ingroup navigation
-pub const HW_ARRAY_FACE_HALFEDGE: hw_mesh_array = 5;
+pub const HW_MESH_ARRAY_FACE_HALFEDGE: hw_mesh_array = 5;
 
 fn array(mesh: &Mesh, which: hw_mesh_array) -> Result<&[u32], FfiError> {
     Ok(match which {
-        HW_ARRAY_HALFEDGE_ORIGIN => mesh.halfedge_origins(),
-        HW_ARRAY_HALFEDGE_NEXT => mesh.halfedge_nexts(),
-        HW_ARRAY_HALFEDGE_PREV => mesh.halfedge_prevs(),
-        HW_ARRAY_HALFEDGE_FACE => mesh.halfedge_faces(),
-        HW_ARRAY_VERTEX_HALFEDGE => mesh.vertex_halfedges(),
-        HW_ARRAY_FACE_HALFEDGE => mesh.face_halfedges(),
+        HW_MESH_ARRAY_HALFEDGE_ORIGIN => mesh.halfedge_origins(),
+        HW_MESH_ARRAY_HALFEDGE_NEXT => mesh.halfedge_nexts(),
+        HW_MESH_ARRAY_HALFEDGE_PREV => mesh.halfedge_prevs(),
+        HW_MESH_ARRAY_HALFEDGE_FACE => mesh.halfedge_faces(),
+        HW_MESH_ARRAY_VERTEX_HALFEDGE => mesh.vertex_halfedges(),
+        HW_MESH_ARRAY_FACE_HALFEDGE => mesh.face_halfedges(),
         other => {
             return Err(FfiError::invalid_input(format!(
                 "unknown mesh array {other}"

@@ -8,7 +8,7 @@
 //!   s->valence_sum += hw_mesh_vertex_valence(s->mesh, (hw_vertex){v});
 //!   return true;                       /* false stops the visit */
 //! }
-//! hw_mesh_visit(mesh, HW_ELEMENT_VERTEX, add_valence, &stats, NULL);
+//! hw_mesh_visit(mesh, HW_ELEMENT_KIND_VERTEX, add_valence, &stats, NULL);
 //! ```
 //!
 //! No Rust reference to the mesh is held while the caller's function runs (each step reads the
@@ -70,10 +70,11 @@ fn live_from(mesh: &Mesh, kind: ElementKind, from: u32) -> Option<u32> {
 }
 
 /// Calls `visit(id, userdata)` for every live (not deleted) element of `kind`
-/// (::HW_ELEMENT_VERTEX, ::HW_ELEMENT_HALFEDGE, ::HW_ELEMENT_EDGE or ::HW_ELEMENT_FACE), in
-/// increasing id order, until `visit` returns `false`. `*out_visited`, when `out_visited` is not
-/// NULL, receives the number of calls made. `visit` may read the mesh but must not free it, and
-/// must not throw or `longjmp` through this call. An empty mesh makes no call.
+/// (::HW_ELEMENT_KIND_VERTEX, ::HW_ELEMENT_KIND_HALFEDGE, ::HW_ELEMENT_KIND_EDGE or
+/// ::HW_ELEMENT_KIND_FACE), in increasing id order, until `visit` returns `false`. `*out_visited`,
+/// when `out_visited` is not NULL, receives the number of calls made. `visit` may read the mesh but
+/// must not free it, and must not throw or `longjmp` through this call. An empty mesh makes no
+/// call.
 ///
 /// Returns `HW_ERR_NULL_ARGUMENT` for a NULL mesh or `visit`, `HW_ERR_INVALID_INPUT` for an
 /// unknown kind (no call is made then).

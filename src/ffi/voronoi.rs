@@ -23,9 +23,10 @@ use super::threads::with_threads;
 /// taking a `const hw_voronoi *` may run concurrently.
 ///
 /// Numbering: sites keep their input index. A duplicated site is represented by the smallest
-/// index of its group (::HW_VORONOI_REPRESENTATIVE); the other copies have no cell, no incident
-/// Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs (`twin = h ^ 1`);
-/// half-edge `h` bounds the cell of `site[h]` (on its left) and separates it from `site[h ^ 1]`.
+/// index of its group (::HW_VORONOI_ARRAY_REPRESENTATIVE); the other copies have no cell, no
+/// incident Delaunay edge and no Voronoi half-edge. Voronoi half-edges come in twin pairs
+/// (`twin = h ^ 1`); half-edge `h` bounds the cell of `site[h]` (on its left) and separates it
+/// from `site[h ^ 1]`.
 /// \ingroup voronoi
 pub struct hw_voronoi {
     pub(crate) voronoi: Voronoi,
@@ -91,9 +92,9 @@ pub(crate) fn checked_site(voronoi: &Voronoi, site: u32) -> Result<u32, FfiError
 /// doubles (x, y per site).
 ///
 /// Predicates are exact, so the result is correct for any finite input: duplicates are merged
-/// (see ::HW_VORONOI_REPRESENTATIVE), collinear sites give parallel bisectors and no triangles,
-/// cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid input.
-/// A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
+/// (see ::HW_VORONOI_ARRAY_REPRESENTATIVE), collinear sites give parallel bisectors and no
+/// triangles, cocircular sites one Voronoi vertex of degree > 3. Zero, one or two sites are valid
+/// input. A NaN or infinite coordinate gives `HW_ERR_INVALID_INPUT` with a message naming the site.
 ///
 /// On success `*out_voronoi` receives a new diagram to release with hw_voronoi_free().
 ///
@@ -195,19 +196,20 @@ pub unsafe extern "C" fn hw_voronoi_n_halfedges(voronoi: *const hw_voronoi) -> u
 pub type hw_site_dimension = u32;
 /// No sites.
 /// \ingroup voronoi
-pub const HW_VORONOI_EMPTY: hw_site_dimension = 0;
+pub const HW_SITE_DIMENSION_EMPTY: hw_site_dimension = 0;
 /// One distinct site (possibly repeated): one cell, the whole plane.
 /// \ingroup voronoi
-pub const HW_VORONOI_POINT: hw_site_dimension = 1;
+pub const HW_SITE_DIMENSION_POINT: hw_site_dimension = 1;
 /// Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
 /// bisectors, and the hull lists the sites in order along their line.
 /// \ingroup voronoi
-pub const HW_VORONOI_LINE: hw_site_dimension = 2;
+pub const HW_SITE_DIMENSION_LINE: hw_site_dimension = 2;
 /// The sites span the plane: at least one triangle.
 /// \ingroup voronoi
-pub const HW_VORONOI_PLANE: hw_site_dimension = 3;
+pub const HW_SITE_DIMENSION_PLANE: hw_site_dimension = 3;
 
-/// The dimension of the site set (::HW_VORONOI_EMPTY for a NULL diagram, with the error recorded).
+/// The dimension of the site set (::HW_SITE_DIMENSION_EMPTY for a NULL diagram, with the error
+/// recorded).
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram.
@@ -215,7 +217,7 @@ pub const HW_VORONOI_PLANE: hw_site_dimension = 3;
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_dimension(voronoi: *const hw_voronoi) -> hw_site_dimension {
     // SAFETY: forwarded from the caller.
-    guard_value(HW_VORONOI_EMPTY, || {
+    guard_value(HW_SITE_DIMENSION_EMPTY, || {
         Ok(site_dimension(
             unsafe { voronoi_ref(voronoi) }?.delaunay().dimension(),
         ))
@@ -227,54 +229,54 @@ pub unsafe extern "C" fn hw_voronoi_dimension(voronoi: *const hw_voronoi) -> hw_
 pub type hw_voronoi_array = u32;
 /// Per site: the site representing it (itself unless it duplicates a smaller index).
 /// \ingroup voronoi
-pub const HW_VORONOI_REPRESENTATIVE: hw_voronoi_array = 0;
+pub const HW_VORONOI_ARRAY_REPRESENTATIVE: hw_voronoi_array = 0;
 /// Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
 /// Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
 /// \ingroup voronoi
-pub const HW_VORONOI_TRIANGLES: hw_voronoi_array = 1;
+pub const HW_VORONOI_ARRAY_TRIANGLES: hw_voronoi_array = 1;
 /// Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
 /// \ingroup voronoi
-pub const HW_VORONOI_TRIANGLE_TWINS: hw_voronoi_array = 2;
+pub const HW_VORONOI_ARRAY_TRIANGLE_TWINS: hw_voronoi_array = 2;
 /// The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
 /// line; for one distinct site: that site).
 /// \ingroup voronoi
-pub const HW_VORONOI_HULL: hw_voronoi_array = 3;
+pub const HW_VORONOI_ARRAY_HULL: hw_voronoi_array = 3;
 /// Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
 /// \ingroup voronoi
-pub const HW_VORONOI_TRIANGLE_VERTEX: hw_voronoi_array = 4;
+pub const HW_VORONOI_ARRAY_TRIANGLE_VERTEX: hw_voronoi_array = 4;
 /// Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
 /// \ingroup voronoi
-pub const HW_VORONOI_HALFEDGE_ORIGIN: hw_voronoi_array = 5;
+pub const HW_VORONOI_ARRAY_HALFEDGE_ORIGIN: hw_voronoi_array = 5;
 /// Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
 /// out to infinity is followed by the one coming back).
 /// \ingroup voronoi
-pub const HW_VORONOI_HALFEDGE_NEXT: hw_voronoi_array = 6;
+pub const HW_VORONOI_ARRAY_HALFEDGE_NEXT: hw_voronoi_array = 6;
 /// Per Voronoi half-edge: the previous half-edge around its cell.
 /// \ingroup voronoi
-pub const HW_VORONOI_HALFEDGE_PREV: hw_voronoi_array = 7;
+pub const HW_VORONOI_ARRAY_HALFEDGE_PREV: hw_voronoi_array = 7;
 /// Per Voronoi half-edge: the site whose cell it bounds (on its left).
 /// \ingroup voronoi
-pub const HW_VORONOI_HALFEDGE_SITE: hw_voronoi_array = 8;
+pub const HW_VORONOI_ARRAY_HALFEDGE_SITE: hw_voronoi_array = 8;
 /// Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
 /// `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
 /// \ingroup voronoi
-pub const HW_VORONOI_CELL_HALFEDGE: hw_voronoi_array = 9;
+pub const HW_VORONOI_ARRAY_CELL_HALFEDGE: hw_voronoi_array = 9;
 /// Per Voronoi vertex: one outgoing half-edge.
 /// \ingroup voronoi
-pub const HW_VORONOI_VERTEX_HALFEDGE: hw_voronoi_array = 10;
+pub const HW_VORONOI_ARRAY_VERTEX_HALFEDGE: hw_voronoi_array = 10;
 
 fn array(voronoi: &Voronoi, which: hw_voronoi_array) -> Result<&[u32], FfiError> {
     if let Some(triangulation) = delaunay_array(voronoi.delaunay(), which) {
         return Ok(triangulation);
     }
     Ok(match which {
-        HW_VORONOI_TRIANGLE_VERTEX => &voronoi.triangle_vertex,
-        HW_VORONOI_HALFEDGE_ORIGIN => &voronoi.half_edges().origin,
-        HW_VORONOI_HALFEDGE_NEXT => &voronoi.half_edges().next,
-        HW_VORONOI_HALFEDGE_PREV => &voronoi.half_edges().prev,
-        HW_VORONOI_HALFEDGE_SITE => &voronoi.half_edges().site,
-        HW_VORONOI_CELL_HALFEDGE => &voronoi.half_edges().cell_edge,
-        HW_VORONOI_VERTEX_HALFEDGE => &voronoi.half_edges().vertex_edge,
+        HW_VORONOI_ARRAY_TRIANGLE_VERTEX => &voronoi.triangle_vertex,
+        HW_VORONOI_ARRAY_HALFEDGE_ORIGIN => &voronoi.half_edges().origin,
+        HW_VORONOI_ARRAY_HALFEDGE_NEXT => &voronoi.half_edges().next,
+        HW_VORONOI_ARRAY_HALFEDGE_PREV => &voronoi.half_edges().prev,
+        HW_VORONOI_ARRAY_HALFEDGE_SITE => &voronoi.half_edges().site,
+        HW_VORONOI_ARRAY_CELL_HALFEDGE => &voronoi.half_edges().cell_edge,
+        HW_VORONOI_ARRAY_VERTEX_HALFEDGE => &voronoi.half_edges().vertex_edge,
         other => {
             return Err(FfiError::invalid_input(format!(
                 "unknown Voronoi array {other}"
@@ -368,20 +370,20 @@ pub unsafe extern "C" fn hw_voronoi_vertices(
 pub type hw_voronoi_edge_kind = u32;
 /// Both ends are Voronoi vertices: from `point` to `end`.
 /// \ingroup voronoi
-pub const HW_VORONOI_SEGMENT: hw_voronoi_edge_kind = 0;
+pub const HW_VORONOI_EDGE_KIND_SEGMENT: hw_voronoi_edge_kind = 0;
 /// One end at infinity: the points `point + t * direction`, `t >= 0`.
 /// \ingroup voronoi
-pub const HW_VORONOI_RAY: hw_voronoi_edge_kind = 1;
+pub const HW_VORONOI_EDGE_KIND_RAY: hw_voronoi_edge_kind = 1;
 /// Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
 /// \ingroup voronoi
-pub const HW_VORONOI_LINE_EDGE: hw_voronoi_edge_kind = 2;
+pub const HW_VORONOI_EDGE_KIND_LINE: hw_voronoi_edge_kind = 2;
 
 /// One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
 /// \ingroup voronoi
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct hw_voronoi_edge {
-    /// ::HW_VORONOI_SEGMENT, ::HW_VORONOI_RAY or ::HW_VORONOI_LINE_EDGE.
+    /// ::HW_VORONOI_EDGE_KIND_SEGMENT, ::HW_VORONOI_EDGE_KIND_RAY or ::HW_VORONOI_EDGE_KIND_LINE.
     pub kind: hw_voronoi_edge_kind,
     /// The site on the half-edge's left (whose cell it bounds).
     pub site: u32,
@@ -426,14 +428,16 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
         })?;
         let (kind, point, end, direction) = match geometry {
             EdgeGeometry::Segment { from, to } => (
-                HW_VORONOI_SEGMENT,
+                HW_VORONOI_EDGE_KIND_SEGMENT,
                 from,
                 to,
                 [to[0] - from[0], to[1] - from[1]],
             ),
-            EdgeGeometry::Ray { origin, direction } => (HW_VORONOI_RAY, origin, origin, direction),
+            EdgeGeometry::Ray { origin, direction } => {
+                (HW_VORONOI_EDGE_KIND_RAY, origin, origin, direction)
+            }
             EdgeGeometry::Line { point, direction } => {
-                (HW_VORONOI_LINE_EDGE, point, point, direction)
+                (HW_VORONOI_EDGE_KIND_LINE, point, point, direction)
             }
         };
         let edge = hw_voronoi_edge {
@@ -454,7 +458,7 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
 
 /// The Delaunay triangulation as a new half-edge mesh (z = 0): vertex `i` is site `i` (duplicates
 /// are isolated vertices), one triangle per Delaunay triangle, in the order of
-/// ::HW_VORONOI_TRIANGLES. Collinear input gives a mesh without faces. Release it with
+/// ::HW_VORONOI_ARRAY_TRIANGLES. Collinear input gives a mesh without faces. Release it with
 /// hw_mesh_free().
 ///
 /// # Safety

@@ -553,9 +553,9 @@ pub unsafe extern "C" fn hw_winged_face_normal(
     }
 }
 
-/// Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit normals of
-/// the faces around it (holes left out; zero if none), written to `out_normal[0..3]` (required:
-/// NULL gives `HW_ERR_NULL_ARGUMENT`).
+/// Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
+/// normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
+/// (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
@@ -689,19 +689,19 @@ pub const HW_WNAMING_LEFT_RIGHT: hw_wnaming = 2;
 pub type hw_table_format = u32;
 /// Columns aligned with spaces; a hole is `∅` (UTF-8).
 /// \ingroup winged
-pub const HW_TABLE_TEXT: hw_table_format = 0;
+pub const HW_TABLE_FORMAT_TEXT: hw_table_format = 0;
 /// A Markdown table; a hole is `∅`.
 /// \ingroup winged
-pub const HW_TABLE_MARKDOWN: hw_table_format = 1;
+pub const HW_TABLE_FORMAT_MARKDOWN: hw_table_format = 1;
 /// Comma-separated values with a header row; a hole is an empty field.
 /// \ingroup winged
-pub const HW_TABLE_CSV: hw_table_format = 2;
+pub const HW_TABLE_FORMAT_CSV: hw_table_format = 2;
 
 /// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
-/// ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_TEXT, ...) into `buf` (`len`
-/// bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL) always
-/// receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or
-/// shorter (call with `buf = NULL` to learn the size). Unknown enum values give
+/// ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `buf`
+/// (`len` bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL)
+/// always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is
+/// NULL or shorter (call with `buf = NULL` to learn the size). Unknown enum values give
 /// `HW_ERR_INVALID_INPUT`.
 ///
 /// # Safety
@@ -728,9 +728,9 @@ pub unsafe extern "C" fn hw_winged_table(
             other => return Err(FfiError::invalid_input(format!("unknown naming {other}"))),
         };
         let format = match format {
-            HW_TABLE_TEXT => TableFormat::Text,
-            HW_TABLE_MARKDOWN => TableFormat::Markdown,
-            HW_TABLE_CSV => TableFormat::Csv,
+            HW_TABLE_FORMAT_TEXT => TableFormat::Text,
+            HW_TABLE_FORMAT_MARKDOWN => TableFormat::Markdown,
+            HW_TABLE_FORMAT_CSV => TableFormat::Csv,
             other => {
                 return Err(FfiError::invalid_input(format!(
                     "unknown table format {other}"

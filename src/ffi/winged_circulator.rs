@@ -3,7 +3,7 @@
 //! ```c
 //! hw_wcirculator c;
 //! hw_wvertex corner;
-//! if (hw_wcirc_around_face(w, f, HW_WCIRC_VERTICES, &c) == HW_OK)
+//! if (hw_wcirc_around_face(w, f, HW_WCIRCULATOR_KIND_VERTICES, &c) == HW_OK)
 //!   while (hw_wcirc_next_vertex(&c, &corner)) visit(corner);
 //! ```
 //! Every step makes the winged-edge structure's orientation test (is the loop on this edge's
@@ -27,13 +27,13 @@ use super::winged::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_ref};
 pub type hw_wcirculator_kind = u32;
 /// Edges: the edges of a face's loop, or the edges at a vertex.
 /// \ingroup winged
-pub const HW_WCIRC_EDGES: hw_wcirculator_kind = 0;
+pub const HW_WCIRCULATOR_KIND_EDGES: hw_wcirculator_kind = 0;
 /// Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
 /// \ingroup winged
-pub const HW_WCIRC_VERTICES: hw_wcirculator_kind = 1;
+pub const HW_WCIRCULATOR_KIND_VERTICES: hw_wcirculator_kind = 1;
 /// Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
 /// \ingroup winged
-pub const HW_WCIRC_FACES: hw_wcirculator_kind = 2;
+pub const HW_WCIRCULATOR_KIND_FACES: hw_wcirculator_kind = 2;
 
 /// What a walk circles.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -90,7 +90,7 @@ fn begin(
     center: Center,
     kind: hw_wcirculator_kind,
 ) -> Result<hw_wcirculator, FfiError> {
-    if kind > HW_WCIRC_FACES {
+    if kind > HW_WCIRCULATOR_KIND_FACES {
         return Err(FfiError::invalid_input(format!(
             "unknown winged circulator kind {kind}"
         )));
@@ -164,10 +164,10 @@ fn element(w: &Winged, u: EdgeUse, center: u32, kind: hw_wcirculator_kind) -> u3
     let r = &w.edge_records()[u.edge.index()];
     let on_face = center == Center::Face as u32;
     match kind {
-        HW_WCIRC_EDGES => u.edge.0,
-        HW_WCIRC_VERTICES if on_face => r.tail(u.side).0,
-        HW_WCIRC_VERTICES => r.head(u.side).0,
-        HW_WCIRC_FACES if on_face => r.face(u.side.opposite()).0,
+        HW_WCIRCULATOR_KIND_EDGES => u.edge.0,
+        HW_WCIRCULATOR_KIND_VERTICES if on_face => r.tail(u.side).0,
+        HW_WCIRCULATOR_KIND_VERTICES => r.head(u.side).0,
+        HW_WCIRCULATOR_KIND_FACES if on_face => r.face(u.side.opposite()).0,
         _ => r.face(u.side).0,
     }
 }
@@ -229,7 +229,7 @@ unsafe fn next_into<T>(
     unsafe { next_element(out, || Ok(advance(circulator, kind)?.map(wrap))) }
 }
 
-/// Next edge of a ::HW_WCIRC_EDGES circulator.
+/// Next edge of a ::HW_WCIRCULATOR_KIND_EDGES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
@@ -239,10 +239,14 @@ pub unsafe extern "C" fn hw_wcirc_next_edge(
     circulator: *mut hw_wcirculator,
     out: *mut hw_wedge,
 ) -> bool {
-    unsafe { next_into(circulator, HW_WCIRC_EDGES, out, |idx| hw_wedge { idx }) }
+    unsafe {
+        next_into(circulator, HW_WCIRCULATOR_KIND_EDGES, out, |idx| hw_wedge {
+            idx,
+        })
+    }
 }
 
-/// Next vertex of a ::HW_WCIRC_VERTICES circulator.
+/// Next vertex of a ::HW_WCIRCULATOR_KIND_VERTICES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
@@ -252,10 +256,14 @@ pub unsafe extern "C" fn hw_wcirc_next_vertex(
     circulator: *mut hw_wcirculator,
     out: *mut hw_wvertex,
 ) -> bool {
-    unsafe { next_into(circulator, HW_WCIRC_VERTICES, out, |idx| hw_wvertex { idx }) }
+    unsafe {
+        next_into(circulator, HW_WCIRCULATOR_KIND_VERTICES, out, |idx| {
+            hw_wvertex { idx }
+        })
+    }
 }
 
-/// Next face of a ::HW_WCIRC_FACES circulator.
+/// Next face of a ::HW_WCIRCULATOR_KIND_FACES circulator.
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
@@ -265,5 +273,9 @@ pub unsafe extern "C" fn hw_wcirc_next_face(
     circulator: *mut hw_wcirculator,
     out: *mut hw_wface,
 ) -> bool {
-    unsafe { next_into(circulator, HW_WCIRC_FACES, out, |idx| hw_wface { idx }) }
+    unsafe {
+        next_into(circulator, HW_WCIRCULATOR_KIND_FACES, out, |idx| hw_wface {
+            idx,
+        })
+    }
 }
