@@ -152,3 +152,63 @@ fn circumcentres_of_triangles_spanning_every_magnitude_are_finite() {
         assert_each_site_nearest_to_itself(&v);
     }
 }
+
+/// Far from the origin a region one ulp wide holds few representable points: a side crossing it
+/// is placed from the sites in a frame local to the region, not from a bisector midpoint rounded
+/// a half ulp away (which put it 0.4 off along the region's other axis).
+#[test]
+fn sides_crossing_a_box_one_ulp_wide_far_out_are_where_the_sites_put_them() {
+    let x = 1e15_f64 + 50.0;
+    let ulp = x.next_up() - x;
+    assert_eq!(ulp, 0.125);
+    // The bisector of `a` and `b` is 0.125 (x - 0.0625) + (5 / 128) (y - 5 / 256) = 0 around `a`:
+    // it meets x = 0 at y = 0.21953125 and x = 0.125 at y = -0.18046875 (all exact in doubles).
+    let a = [x, 0.0];
+    let b = [x + ulp, 5.0 / 128.0];
+    let sites = [a, b, [x, 100.0]];
+    let v = Voronoi::new(&sites).unwrap();
+    let clip = ClipPolygon::rectangle([x, -1.0], [x + ulp, 1.0]).unwrap();
+    check_clipped(&v, &clip);
+    let cells = v.clip(&clip);
+    let cell = cells.cell_polygon(0).unwrap();
+    let on = |edge: f64| -> Vec<f64> {
+        cell.iter()
+            .filter(|p| p[0] == edge && p[1].abs() < 1.0)
+            .map(|p| p[1])
+            .collect()
+    };
+    // Within a few ulps of the exact heights (the positions are rounded from the local frame).
+    for (edge, exact) in [(x, 0.21953125), (x + ulp, -0.18046875)] {
+        let heights = on(edge);
+        assert_eq!(heights.len(), 1, "one crossing at x = {edge} in {cell:?}");
+        assert!(
+            (heights[0] - exact).abs() <= 1e-12,
+            "{heights:?} vs {exact} in {cell:?}"
+        );
+    }
+}
+
+/// A region two units wide and one ulp tall at 1e15 + 50: the sites a ulp above and below a site
+/// on its edge split a column between them, with Voronoi vertices half an ulp off the
+/// representable heights. Rounded there, vertices of neighbouring triangles merged and the cell
+/// of the site on the edge vanished.
+#[test]
+fn a_site_on_the_edge_of_a_region_one_ulp_tall_far_out_keeps_its_cell() {
+    let (x, y) = (1e15 + 49.125, 553.5217878740434_f64);
+    let u = y.next_up() - y;
+    let at = |dx: f64, dy: f64| [x + dx, y + dy * u];
+    let sites = [
+        at(0.0, 0.0),
+        at(0.0, 1.0),
+        at(0.0, -1.0),
+        at(-0.25, 5.0),
+        at(0.375, -4.0),
+        at(0.375, 3.0),
+        at(2.0, 0.0),
+        at(-0.5, -3.0),
+    ];
+    let v = Voronoi::new(&sites).unwrap();
+    let clip = ClipPolygon::rectangle(at(0.0, 0.0), at(2.0, 1.0)).unwrap();
+    check_clipped(&v, &clip);
+    assert!(v.clip(&clip).cell(0).unwrap().len() >= 3);
+}

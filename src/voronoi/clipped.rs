@@ -132,6 +132,23 @@ impl Builder<'_> {
 impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
+        let region_owner = || self.owner_of(clip.centroid());
+        let Some(local) = self.local_clip_frame(clip) else {
+            return self.clip_in_own_frame(clip, region_owner);
+        };
+        let mut cells = local.diagram.clip_in_own_frame(&local.clip, region_owner);
+        local.to_diagram(&mut cells.positions, clip.vertices());
+        cells.clip = clip.clone();
+        cells
+    }
+
+    /// [`Voronoi::clip`] in the diagram's coordinates; `region_owner` gives the site whose cell
+    /// holds the whole region when no edge reaches it.
+    fn clip_in_own_frame(
+        &self,
+        clip: &ClipPolygon,
+        region_owner: impl Fn() -> u32,
+    ) -> ClippedCells {
         let m = clip.vertices().len();
         // Room for the corners, the vertices and the crossings, which are usually O(√n) (the
         // boundary's share of the cells): growing the array later would copy all of it.
@@ -242,7 +259,7 @@ impl Voronoi {
         }
         // No edge reaches the region: it lies inside one cell.
         if indices.is_empty() {
-            let owner = self.owner_of(clip.centroid());
+            let owner = region_owner();
             if owner != INVALID {
                 ranges[owner as usize] = [0, m as u32];
                 indices.extend(0..m as u32);

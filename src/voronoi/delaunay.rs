@@ -368,6 +368,16 @@ impl Delaunay {
         &self.sites
     }
 
+    /// The same triangulation over `sites`: the sites moved to other coordinates (clipping's
+    /// local frame), read only by constructions, never by predicates.
+    pub(crate) fn with_sites(&self, sites: Vec<[f64; 2]>) -> Delaunay {
+        Delaunay {
+            sites,
+            scaled: OnceLock::new(),
+            ..self.clone()
+        }
+    }
+
     /// Dimension of the site set.
     pub fn dimension(&self) -> Dimension {
         self.dimension

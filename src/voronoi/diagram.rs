@@ -77,6 +77,17 @@ impl Voronoi {
 
     /// The dual of an existing triangulation.
     pub fn from_delaunay(delaunay: Delaunay) -> Self {
+        let unscale = delaunay.scale.recip();
+        Self::from_delaunay_by(delaunay, |v, t| v.circumcircle(t, unscale))
+    }
+
+    /// The dual of `delaunay`, the circumcentre of triangle `t` and the L1 length of its offset
+    /// from the triangle's first corner (at least the circumradius) given by `circumcircle(v,
+    /// t)` (see [`Voronoi::circumcircle`]).
+    pub(crate) fn from_delaunay_by(
+        delaunay: Delaunay,
+        circumcircle: impl Fn(&Voronoi, u32) -> ([f64; 2], f64) + Sync,
+    ) -> Self {
         let mut v = Voronoi {
             vertices: Vec::new(),
             triangle_vertex: Vec::new(),
@@ -84,7 +95,7 @@ impl Voronoi {
             delaunay,
         };
         match v.delaunay.dimension() {
-            Dimension::Plane => v.place_vertices(),
+            Dimension::Plane => v.place_vertices(circumcircle),
             // Without triangles the half-edge arrays are tiny and are the only description.
             Dimension::Line => {
                 let slabs = HalfEdges::parallel(&v.delaunay);
@@ -99,7 +110,7 @@ impl Voronoi {
     }
 
     /// Groups triangles with one circumcircle and places one vertex per group.
-    fn place_vertices(&mut self) {
+    fn place_vertices(&mut self, circumcircle: impl Fn(&Voronoi, u32) -> ([f64; 2], f64) + Sync) {
         let d = &self.delaunay;
         let n_tri = d.n_triangles();
         // Union-find over triangles: adjacent triangles share a Voronoi vertex when their fourth
@@ -117,7 +128,6 @@ impl Voronoi {
                     incircle_in(a, b, c, apex, &d.set_bounds) == 0.0
                 })
         };
-        let unscale = d.scale.recip();
         // A few long runs: enough to share the work among threads, few edges between runs.
         let run_len = seamed_run_length(n_tri);
         let mut centres = large_arrays::zeroed::<[f64; 2]>(n_tri);
@@ -139,7 +149,7 @@ impl Voronoi {
                 let (mut any_merged, mut later) = (false, Vec::new());
                 for i in 0..run.len() {
                     let t = first + i as u32;
-                    let (here, radius) = self.circumcircle(t, unscale);
+                    let (here, radius) = circumcircle(self, t);
                     run[i] = here;
                     for e in 3 * t..3 * t + 3 {
                         let twin = d.twins[e as usize];
@@ -166,7 +176,7 @@ impl Voronoi {
         let merged_between = map_each(later, |_, edges: Vec<u32>| {
             let merged = edges.into_iter().filter(|&e| {
                 let twin = d.twins[e as usize];
-                let (here, radius) = self.circumcircle(e / 3, unscale);
+                let (here, radius) = circumcircle(self, e / 3);
                 same_vertex(e, here, radius, centres_known[(twin / 3) as usize])
             });
             merged.collect::<Vec<u32>>()
@@ -444,11 +454,10 @@ pub(crate) struct EdgeEnds {
 /// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
 /// sites near `1e-300` keep their low bits beside one at `1e301`).
 #[inline]
-fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
+pub(crate) fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
-    let largest = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
-    let (unit, unit_inverse) = unit_scale_of(largest);
+    let (unit, unit_inverse) = unit_of_differences([bx, by, cx, cy]);
     let [bx, by, cx, cy] = [bx, by, cx, cy].map(|x| x * unit);
     let (bl, cl) = (bx * bx + by * by, cx * cx + cy * cy);
     let det = bx * cy - by * cx;
@@ -486,6 +495,24 @@ fn unit_scale_of(largest: f64) -> (f64, f64) {
         let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
         (unit, unit.recip())
     }
+}
+
+/// The power of two that brings the largest of `differences` near 1, and its inverse.
+#[inline(always)]
+fn unit_of_differences([bx, by, cx, cy]: [f64; 4]) -> (f64, f64) {
+    unit_scale_of(bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs()))
+}
+
+/// The circumcentre of triangle `abc` minus `a`, each coordinate rounded from the exact value
+/// (not only the offset's length accurate, as [`circumcentre_offset`] gives it: a triangle
+/// 1e15 times wider than tall has a centre whose short coordinate matters).
+pub(crate) fn exactly_rounded_circumcentre_offset(
+    a: [f64; 2],
+    b: [f64; 2],
+    c: [f64; 2],
+) -> [f64; 2] {
+    let (unit, _) = unit_of_differences([b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]]);
+    exact_circumcentre_offset(a, b, c, unit).map(|x| x / unit)
 }
 
 /// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres

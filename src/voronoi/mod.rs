@@ -14,6 +14,7 @@
 //! areas) are floating point.
 
 mod cell_sides;
+mod clip_frame;
 mod clip_region;
 mod clipped;
 mod dcel;
