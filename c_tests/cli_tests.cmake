@@ -99,3 +99,11 @@ halfwing_cli_test(voronoi_bad_clip 2 ARGS voronoi "${_points}/cgal_blob00.xy" --
 halfwing_cli_test(voronoi_empty_clip 5 ARGS voronoi "${_points}/cgal_blob00.xy" --clip 0,0,0,1 --svg "${_cli_scratch}/e.svg"
   STDERR "cgal_blob00.xy: clip region is degenerate")
 halfwing_cli_test(voronoi_not_points 3 ARGS voronoi "${_meshes}/open/cgal_triangle.off" --svg x.svg STDERR "unknown point format")
+
+# Output into a reader that stops early (here one that reads nothing) ends the tool quietly, as
+# other command-line tools end: no panic message about the failed write.
+add_test(NAME cli_closed_pipe
+         COMMAND sh -c "\"$0\" doctor \"$1\" --json | true" "${HALFWING_CLI}"
+                 "${_meshes}/broken/c3d_teapot.obj")
+set_tests_properties(cli_closed_pipe PROPERTIES
+                     FAIL_REGULAR_EXPRESSION "panicked|failed printing|Broken pipe")

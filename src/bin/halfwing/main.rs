@@ -40,6 +40,14 @@ exit codes:
 ";
 
 fn main() -> ExitCode {
+    // Output piped into a reader that stops early (`halfwing doctor x.obj | head`) ends the
+    // program quietly, as it does other command-line tools, instead of a panic on the failed
+    // write: Rust ignores SIGPIPE by default.
+    #[cfg(target_os = "linux")]
+    // SAFETY: restores the default action of one signal before any thread is started.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         None | Some("--help" | "-h" | "help") => {
