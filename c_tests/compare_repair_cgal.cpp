@@ -154,7 +154,7 @@ void compare_degenerate(const indexed::Mesh& m) {
   if (theirs.is_empty()) return;
   hw::mesh ours;
   try {
-    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, HW_BUILD_POLICY_STRICT);
+    ours = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices, hw::BuildPolicy::Strict);
   } catch (const hw::error&) {
     return;
   }
@@ -169,7 +169,7 @@ void compare_degenerate(const indexed::Mesh& m) {
     std::printf("  %-42s %zu degenerate triangles; after: halfwing %zu (%zu faces, %zu flips), "
                 "CGAL %zu (%zu faces)\n",
                 m.name.c_str(), before, after, ours.n_faces(),
-                report.list(HW_REPAIR_LIST_FLIPPED_FACES).size() / 2, cgal_after,
+                report.list(hw::RepairList::FlippedFaces).size() / 2, cgal_after,
                 static_cast<std::size_t>(theirs.number_of_faces()));
   ++compared_degenerate;
   models_degenerate += before > 0;

@@ -348,7 +348,7 @@ static void repair_pipeline() {
   CHECK(c.kept_vertices + c.merged_vertices + c.removed_vertices == n_input);
   CHECK(c.kept_vertices + c.added_vertices == m.n_vertices());
   CHECK(c.kept_faces + c.removed_faces == input.face_sizes().size());
-  CHECK(repaired.second.list(HW_FATES_LIST_VERTEX_KINDS).size() == n_input);
+  CHECK(repaired.second.list(hw::FatesList::VertexKinds).size() == n_input);
 
   // A cap flips with the triangle across its long edge; a T-vertex splits the edge under it.
   hw::mesh cap = hw::mesh::from_indexed({0, 0, 0, 2, 0, 0, 1, 0, 0, 1, -1, 0}, {3, 3},
