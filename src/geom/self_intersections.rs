@@ -54,11 +54,11 @@ pub enum SelfIntersectionError {
 }
 
 /// Makes sure the memory a search over `n_triangles` triangles on `n_vertices` vertices needs
-/// can be had, before anything that size is allocated; a refusal names `count` items of `what`.
+/// can be had, before anything that size is allocated; a refusal names `n_triangles` items of
+/// `what` (the triangles, or the corners that bound their number).
 fn ensure_search_room(
     n_triangles: usize,
     n_vertices: usize,
-    count: usize,
     what: &'static str,
 ) -> Result<(), OutOfMemory> {
     // Per triangle: its triangulation entry (16 bytes), its prepared form twice (prepared, then
@@ -69,7 +69,7 @@ fn ensure_search_room(
     let bytes = (n_triangles as u64)
         .saturating_mul(BYTES_PER_TRIANGLE)
         .saturating_add((n_vertices as u64).saturating_mul(BYTES_PER_VERTEX));
-    ensure_room(bytes, count, what)
+    ensure_room(bytes, n_triangles, what)
 }
 
 /// The pairs of triangles that intersect other than along the vertices and the edge they share,
@@ -131,8 +131,7 @@ pub fn face_self_intersections(
     faces: &FaceList<'_>,
 ) -> Result<Vec<[u32; 2]>, SelfIntersectionError> {
     // Each face gives at most as many triangles as it has corners.
-    let n_corners = faces.indices.len();
-    ensure_search_room(n_corners, faces.positions.len(), n_corners, "corners")?;
+    ensure_search_room(faces.indices.len(), faces.positions.len(), "corners")?;
     let triangulation = triangulate_faces(faces).map_err(|error| match error {
         TriangulateError::IndexOutOfRange {
             face,
@@ -193,12 +192,7 @@ fn intersecting_faces(
 ) -> Result<Vec<[u32; 2]>, SelfIntersectionError> {
     let face_of = |t: usize| faces.map_or(t as u32, |faces| faces[t]);
     check_corners(positions, triangles, face_of)?;
-    ensure_search_room(
-        triangles.len(),
-        positions.len(),
-        triangles.len(),
-        "triangles",
-    )?;
+    ensure_search_room(triangles.len(), positions.len(), "triangles")?;
     let prepare = |t: usize| {
         let corners = &triangles[t];
         let points = corners.map(|v| positions[v as usize]);
