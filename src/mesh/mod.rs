@@ -28,7 +28,7 @@ pub use circulators::{HalfedgeWalk, Step, WalkProgress};
 pub use components::Components;
 pub use connectivity::Mesh;
 pub use edit::{EditError, IndexMaps};
-pub(crate) use edit::{JoinedCorners, chords_of, compaction_map};
+pub(crate) use edit::{JoinedCorners, Pinch, chords_of, compaction_map};
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};
 pub(crate) use raw_parts::MeshArrays;

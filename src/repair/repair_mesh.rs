@@ -361,6 +361,18 @@ fn run(
                     .collect();
                 added.sort_unstable();
                 ledger.add_faces(&added);
+                // Copies welded where a hole passed twice through one point: merged, their ids
+                // kept until the mesh is compacted.
+                let welded: Vec<[u32; 2]> = report
+                    .welded_vertices
+                    .iter()
+                    .map(|&[gone, kept]| [gone.0, kept.0])
+                    .collect();
+                let mut unchanged: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+                for &[gone, _] in &welded {
+                    unchanged[gone as usize] = INVALID_INDEX;
+                }
+                ledger.map_vertices(&unchanged, &welded, Removal::Unbuildable);
                 // A refused fill may leave a deleted face id behind: the ids are compacted as
                 // the mesh turns into a face list.
                 let deleted: Vec<bool> = (0..mesh.face_capacity() as u32)

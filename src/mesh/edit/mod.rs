@@ -9,11 +9,13 @@ mod delete;
 mod flip;
 mod garbage;
 mod glue;
+mod pinch;
 mod split;
 mod triangulate;
 
 pub use garbage::IndexMaps;
 pub(crate) use garbage::compaction_map;
+pub(crate) use pinch::Pinch;
 pub(crate) use triangulate::{JoinedCorners, chords_of};
 
 use super::Mesh;
