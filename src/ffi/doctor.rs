@@ -2,14 +2,14 @@
 
 use crate::doctor::{DoctorOptions, DoctorReport, Finding, examine};
 
-use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, view_start};
-use super::diagnostic::hw_diagnostic;
-use super::error::FfiError;
-use super::face_list::face_list_arg;
-use super::handle::{free_handle, into_handle};
-use super::mesh::{hw_mesh, mesh_ref};
-use super::status::*;
-use super::threads::with_threads;
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::face_list::face_list_arg;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::threads::with_threads;
+use crate::ffi::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, view_start};
+use crate::ffi::mesh::diagnostic::hw_diagnostic;
+use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
 
 /// The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
 /// \ingroup doctor
