@@ -8,7 +8,8 @@
  * hw_last_error_message() gives a thread-local message naming the problem (argument, index,
  * face...; of a long list, the first few and the count of the rest), never longer than
  * ::HW_MAX_MESSAGE_SIZE bytes, and hw_status_str() a static description of the code. Output
- * arguments (`out_*`) are written only on success. A Rust panic never crosses this boundary: it
+ * arguments (`out_*`) are written only on success, but for the size a copy needs
+ * (`out_needed`, below). A Rust panic never crosses this boundary: it
  * becomes ::HW_ERR_PANIC. Functions that return a value instead of a status (counts, navigation)
  * return an invalid id (::HW_INVALID_INDEX), 0 or false on a bad argument and record the message.
  * Counts given (cells, pixels, sites, a file's declared records) are checked against the data
@@ -33,8 +34,12 @@
  * Element ids (`hw_vertex`, `hw_halfedge`, `hw_edge`, `hw_face`) are small structs passed by
  * value, so the compiler keeps their kinds apart; `idx == HW_INVALID_INDEX` means none.
  *
- * Many ids at once, five ways: copies into a caller's buffer (the size needed is always
- * reported, so a caller can ask, allocate and call again); zero-copy views of the internal arrays
+ * Many ids at once, five ways: copies into a caller's buffer, every one of the shape
+ * `(T *out_..., size_t capacity, size_t *out_needed)`, where `capacity` is what the buffer holds
+ * and `*out_needed` (when not NULL) always receives what the whole result needs, in the same
+ * unit (bytes with the terminating NUL for text), also when the call fails with
+ * ::HW_ERR_BUFFER_TOO_SMALL, so a caller can ask with `NULL, 0`, allocate and call again;
+ * zero-copy views of the internal arrays
  * (hw_mesh_view(), valid until the next mutating call); stack circulators (`hw_circ_*`, for the
  * textbook `do { ... } while (h != start);` loops); the inline navigation (hw_mesh_nav() and the
  * `static inline` `hw_nav_*` steps and circulators of halfwing_nav.h, included at the end of this
@@ -2130,25 +2135,25 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * Copies the message of the last failed call on this thread into `buf`, NUL-terminated.
+ * Copies the message of the last failed call on this thread into `out_text`, NUL-terminated.
  *
- * `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
- * included — also when the buffer is too small, so a caller can allocate and call again; it is
- * never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices. The message is
- * empty (`needed` = 1) when no call has failed on this thread yet. Successful calls do not clear
- * it, and neither does this function, so it can be read as often as wanted. Calls made from a
- * thread-local destructor after this thread's storage is torn down still return their status,
- * but record no message (it reads empty).
+ * `*out_needed` (when `out_needed` is not NULL) always receives the size the message needs,
+ * terminator included — also when the buffer is too small, so a caller can allocate and call
+ * again; it is never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices.
+ * The message is empty (`out_needed` = 1) when no call has failed on this thread yet. Successful
+ * calls do not clear it, and neither does this function, so it can be read as often as wanted.
+ * Calls made from a thread-local destructor after this thread's storage is torn down still return
+ * their status, but record no message (it reads empty).
  *
- * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
- * needed (nothing is written to `buf` then).
+ * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `out_text` is NULL or `capacity` is less than
+ * the size needed (nothing is written to `out_text` then).
  *
  * # Safety
- * `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or point to a
- * writable `size_t`.
+ * `out_text` must be NULL or point to `capacity` writable bytes; `out_needed` must be NULL or
+ * point to a writable `size_t`.
  * \ingroup errors
  */
-hw_status hw_last_error_message(char *buf, size_t len, size_t *needed);
+hw_status hw_last_error_message(char *out_text, size_t capacity, size_t *out_needed);
 
 /**
  * A short, static, NUL-terminated English description of `status`. Unknown values give
@@ -2376,22 +2381,22 @@ hw_status hw_diagnostic_edge(const hw_diagnostic *diagnostic,
                              size_t *out_n_faces);
 
 /**
- * A human-readable account, copied NUL-terminated into `buf`: one line per non-empty list, with
- * its count and its first 8 elements
+ * A human-readable account, copied NUL-terminated into `out_text`: one line per non-empty list,
+ * with its count and its first 8 elements
  * (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an edge names its first 8
- * faces the same way. `*needed` receives the size needed even when `buf` is too small (then
- * `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`); it is never more than
+ * faces the same way. `*out_needed` receives the size needed even when `out_text` is too small
+ * (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `out_text`); it is never more than
  * ::HW_MAX_MESSAGE_SIZE, whatever the input.
  *
  * # Safety
- * `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
- * writable.
+ * `diagnostic` must be NULL or live; `out_text` NULL or `capacity` writable bytes; `out_needed`
+ * NULL or writable.
  * \ingroup mesh
  */
 hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
-                                char *buf,
-                                size_t len,
-                                size_t *needed);
+                                char *out_text,
+                                size_t capacity,
+                                size_t *out_needed);
 
 /**
  * The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
@@ -2562,18 +2567,18 @@ hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
 
 /**
  * One half-edge of every boundary loop (the lowest id of the loop), ascending, copied into
- * `out_halfedges` (`capacity` elements). `*needed` always receives the loop count; walk a loop
+ * `out_halfedges` (`capacity` elements). `*out_needed` always receives the loop count; walk a loop
  * with hw_mesh_he_next() or hw_circ_along_loop().
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_halfedges` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
+ * `out_needed` NULL or writable.
  * \ingroup topology
  */
 hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
                                  hw_halfedge *out_halfedges,
                                  size_t capacity,
-                                 size_t *needed);
+                                 size_t *out_needed);
 
 /**
  * Number of connected components (faces connected across edges, as CGAL and OpenMesh count
@@ -2588,17 +2593,17 @@ hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
 /**
  * The component of every face (`0..count`, numbered by lowest face; `HW_INVALID_INDEX` for a
  * deleted face), indexed by face id, copied into `out_components` (`capacity` elements).
- * `*needed` always receives the number of face slots.
+ * `*out_needed` always receives the number of face slots.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_components` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
+ * `out_needed` NULL or writable.
  * \ingroup topology
  */
 hw_status hw_mesh_face_components(const hw_mesh *mesh,
                                   uint32_t *out_components,
                                   size_t capacity,
-                                  size_t *needed);
+                                  size_t *out_needed);
 
 /**
  * Fills `*out` with the navigation view of `mesh` (see ::hw_nav and halfwing_nav.h).
@@ -2992,21 +2997,21 @@ hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, siz
 
 /**
  * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
- * `kind` NUL-terminated into `buf` of `len` bytes; `*needed` (when not NULL) receives the size
- * needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND` when `index` is
- * past the last.
+ * `kind` NUL-terminated into `out_text` of `capacity` bytes; `*out_needed` (when not NULL)
+ * receives the size needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND`
+ * when `index` is past the last.
  *
  * # Safety
- * `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
- * writable.
+ * `mesh` must be NULL or a live mesh; `out_text` NULL or `capacity` writable bytes; `out_needed`
+ * NULL or writable.
  * \ingroup attributes
  */
 hw_status hw_mesh_attribute_name(const hw_mesh *mesh,
                                  hw_element_kind kind,
                                  size_t index,
-                                 char *buf,
-                                 size_t len,
-                                 size_t *needed);
+                                 char *out_text,
+                                 size_t capacity,
+                                 size_t *out_needed);
 
 /**
  * A read-only view of the corner normals: `*out_xyz` holds `3 * *out_n_halfedges` doubles (x,
@@ -3063,21 +3068,21 @@ hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfe
  * Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
  *
  * # Safety
- * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
  * NULL or writable.
  * \ingroup normals
  */
 hw_status hw_mesh_face_normals(const hw_mesh *mesh,
                                double *out_normals,
                                size_t capacity,
-                               size_t *needed);
+                               size_t *out_needed);
 
 /**
  * Unit vertex normals with the chosen weighting, in one pass over the faces. Every fan of a
  * non-manifold vertex counts.
  *
  * # Safety
- * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
  * NULL or writable.
  * \ingroup normals
  */
@@ -3085,29 +3090,29 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
                                  hw_normal_weighting weighting_kind,
                                  double *out_normals,
                                  size_t capacity,
-                                 size_t *needed);
+                                 size_t *out_needed);
 
 /**
  * Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
- * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
- * (see hw_mesh_slot_count()). `*face_needed` and `*vertex_needed` (each when not NULL) always
+ * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot (see
+ * hw_mesh_slot_count()). `*out_face_needed` and `*out_vertex_needed` (each when not NULL) always
  * receive those counts, both of them also when either array is too small (then
  * `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
  *
  * # Safety
  * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
  * `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
- * `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
+ * `out_face_normals`; `out_face_needed` and `out_vertex_needed` NULL or writable.
  * \ingroup normals
  */
 hw_status hw_mesh_normals(const hw_mesh *mesh,
                           hw_normal_weighting weighting_kind,
                           double *out_face_normals,
                           size_t face_capacity,
-                          size_t *face_needed,
+                          size_t *out_face_needed,
                           double *out_vertex_normals,
                           size_t vertex_capacity,
-                          size_t *vertex_needed);
+                          size_t *out_vertex_needed);
 
 /**
  * Per-corner normals, one per half-edge slot (the corner at the half-edge's origin inside its
@@ -3116,7 +3121,7 @@ hw_status hw_mesh_normals(const hw_mesh *mesh,
  * 0 a faceted look.
  *
  * # Safety
- * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+ * `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
  * NULL or writable.
  * \ingroup normals
  */
@@ -3124,7 +3129,7 @@ hw_status hw_mesh_corner_normals(const hw_mesh *mesh,
                                  double crease_angle,
                                  double *out_normals,
                                  size_t capacity,
-                                 size_t *needed);
+                                 size_t *out_needed);
 
 /**
  * Reads a mesh file into an indexed face list. Malformed files give `HW_ERR_PARSE` with the
@@ -3448,21 +3453,21 @@ hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double 
 
 /**
  * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
- * ::HW_WNORMALS_VERTICES), indexed by id, as
- * `3 * capacity` doubles (x, y, z per element; zero for deleted and degenerate elements) copied
- * into `out_xyz`, which holds `len` doubles. `*needed` (when not NULL) always receives the number
- * of doubles needed; `HW_ERR_BUFFER_TOO_SMALL` when `out_xyz` is NULL or too short.
+ * ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
+ * deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
+ * `*out_needed` (when not NULL) always receives the number of doubles needed;
+ * `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
  *
  * # Safety
- * `winged` must be NULL or a live structure; `out_xyz` NULL or `len` writable doubles; `needed`
- * NULL or writable.
+ * `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
+ * `out_needed` NULL or writable.
  * \ingroup winged
  */
 hw_status hw_winged_normals(const hw_winged *winged,
                             hw_wnormals which,
-                            double *out_xyz,
-                            size_t len,
-                            size_t *needed);
+                            double *out_normals,
+                            size_t capacity,
+                            size_t *out_needed);
 
 /**
  * Checks every structural invariant (records in range, wings linking closed loops, stored
@@ -3476,25 +3481,25 @@ hw_status hw_winged_normals(const hw_winged *winged,
 hw_status hw_winged_check(const hw_winged *winged);
 
 /**
- * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
- * ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `buf`
- * (`len` bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL)
- * always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is
- * NULL or shorter (call with `buf = NULL` to learn the size). Unknown enum values give
- * `HW_ERR_INVALID_INPUT`.
+ * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES, ...;
+ * `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `out_text`
+ * (`capacity` bytes), NUL-terminated, every line ending with a newline. `*out_needed` (when not
+ * NULL) always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when
+ * `out_text` is NULL or shorter (call with `out_text = NULL` to learn the size). Unknown enum
+ * values give `HW_ERR_INVALID_INPUT`.
  *
  * # Safety
- * `winged` must be NULL or a live structure; `buf` NULL or `len` writable bytes; `needed` NULL
- * or writable.
+ * `winged` must be NULL or a live structure; `out_text` NULL or `capacity` writable bytes;
+ * `out_needed` NULL or writable.
  * \ingroup winged
  */
 hw_status hw_winged_table(const hw_winged *winged,
                           hw_wtable which,
                           hw_wnaming naming,
                           hw_table_format format,
-                          char *buf,
-                          size_t len,
-                          size_t *needed);
+                          char *out_text,
+                          size_t capacity,
+                          size_t *out_needed);
 
 /**
  * Starts a walk around face `f`: its edges or corners in loop order, or the faces across its
@@ -3824,20 +3829,20 @@ hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
 
 /**
  * Copies the sites whose cells share an edge with the cell of `site` (its Delaunay neighbours,
- * less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*needed`
+ * less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*out_needed`
  * (when not NULL) receives their number. A duplicate site answers for its representative. Out of
  * range: `HW_ERR_INVALID_HANDLE`; `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
+ * `out_needed` NULL or writable.
  * \ingroup voronoi
  */
 hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
                                 uint32_t site,
                                 uint32_t *out_sites,
                                 size_t capacity,
-                                size_t *needed);
+                                size_t *out_needed);
 
 /**
  * The Voronoi half-edge separating the cells of sites `a` and `b`, on the side of `a` (its twin,
@@ -4023,18 +4028,18 @@ hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
 hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mesh);
 
 /**
- * Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*needed`, when
+ * Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*out_needed`, when
  * not NULL, receives the face count); `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
  *
  * # Safety
  * `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
+ * `out_needed` NULL or writable.
  * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
                                       uint32_t *out_sites,
                                       size_t capacity,
-                                      size_t *needed);
+                                      size_t *out_needed);
 
 /**
  * Lloyd relaxation: moves every site to the centroid of its Voronoi cell clipped to the convex
@@ -4072,14 +4077,14 @@ hw_status hw_voronoi_lloyd(const double *xy,
  * with the index of the site nearest to the pixel's centre under `metric` — decided exactly,
  * ties to the smallest index; duplicates never appear. Row-major, row 0 at the top (largest y).
  *
- * `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
- * count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
+ * `out_labels` must hold `width * height` labels; `*out_needed` (when not NULL) always receives
+ * that count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
  * without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric, a
  * non-finite bound or a misaligned `out_labels` give `HW_ERR_INVALID_INPUT`.
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
- * `needed` NULL or writable.
+ * `out_needed` NULL or writable.
  * \ingroup voronoi
  */
 hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
@@ -4092,7 +4097,7 @@ hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
                                  uint32_t height,
                                  uint32_t *out_labels,
                                  size_t capacity,
-                                 size_t *needed);
+                                 size_t *out_needed);
 
 /**
  * The default SVG options: 800 pixels wide, filled cells, sites, no Delaunay edges.
@@ -4101,22 +4106,22 @@ hw_status hw_voronoi_label_image(const hw_voronoi *voronoi,
 hw_svg_options hw_svg_options_default(void);
 
 /**
- * Copies an SVG drawing of `cells` (clipped from `voronoi`) into `buf`, NUL-terminated;
- * `options` NULL means hw_svg_options_default(). `*needed` (when not NULL) always receives the
- * size needed, terminator included; a smaller `len` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells from
- * another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
+ * Copies an SVG drawing of `cells` (clipped from `voronoi`) into `out_text`, NUL-terminated;
+ * `options` NULL means hw_svg_options_default(). `*out_needed` (when not NULL) always receives the
+ * size needed, terminator included; a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells
+ * from another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
  *
  * # Safety
- * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
- * `len` writable bytes; `needed` NULL or writable.
+ * `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `out_text` NULL
+ * or `capacity` writable bytes; `out_needed` NULL or writable.
  * \ingroup voronoi
  */
 hw_status hw_voronoi_svg(const hw_voronoi *voronoi,
                          const hw_voronoi_cells *cells,
                          const hw_svg_options *options,
-                         char *buf,
-                         size_t len,
-                         size_t *needed);
+                         char *out_text,
+                         size_t capacity,
+                         size_t *out_needed);
 
 /**
  * Writes an SVG drawing of `cells` (clipped from `voronoi`) to the file `path`; `options` NULL
@@ -4296,18 +4301,19 @@ hw_status hw_doctor_report_vertex_fan(const hw_doctor_report *report,
 
 /**
  * The report as text (a summary line, the diagnostic, a line per component and per non-empty
- * finding naming its first few elements), copied NUL-terminated into `buf`; `*needed` receives
- * the size needed even when `buf` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is
- * written to `buf`).
+ * finding naming its first few elements), copied NUL-terminated into `out_text`; `*out_needed`
+ * receives the size needed even when `out_text` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and
+ * nothing is written to `out_text`).
  *
  * # Safety
- * `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+ * `report` must be NULL or live; `out_text` NULL or `capacity` writable bytes; `out_needed` NULL
+ * or writable.
  * \ingroup doctor
  */
 hw_status hw_doctor_report_text(const hw_doctor_report *report,
-                                char *buf,
-                                size_t len,
-                                size_t *needed);
+                                char *out_text,
+                                size_t capacity,
+                                size_t *out_needed);
 
 /**
  * The whole report as one JSON object (every element of every finding), copied as
@@ -4318,9 +4324,9 @@ hw_status hw_doctor_report_text(const hw_doctor_report *report,
  * \ingroup doctor
  */
 hw_status hw_doctor_report_json(const hw_doctor_report *report,
-                                char *buf,
-                                size_t len,
-                                size_t *needed);
+                                char *out_text,
+                                size_t capacity,
+                                size_t *out_needed);
 
 /**
  * The pairs of faces of an indexed face list (same arrays as hw_mesh_from_indexed()) that

@@ -424,8 +424,8 @@ class owned {
   T* raw_ = nullptr;
 };
 
-/// The text of a copy-into-buffer call: `copy(buf, len, &needed)` is asked for the size, then
-/// for the text.
+/// The text of a copy-into-buffer call: `copy(out_text, capacity, &out_needed)` is asked for the
+/// size, then for the text.
 template <class Copy>
 std::string copied_text(Copy copy) {
   std::size_t needed = 0;
@@ -659,8 +659,9 @@ class diagnostic {
   /// The human-readable account; empty for an empty diagnostic.
   std::string summary() const {
     if (!raw_) return std::string();
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_diagnostic_summary(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_diagnostic_summary(raw_.get(), out_text, capacity, out_needed);
     });
   }
   ///@{
@@ -776,14 +777,16 @@ class doctor_report {
   const hw_diagnostic* input_diagnostic() const { return hw_doctor_report_diagnostic(raw_.get()); }
   /// The report as text.
   std::string text() const {
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_doctor_report_text(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_doctor_report_text(raw_.get(), out_text, capacity, out_needed);
     });
   }
   /// The report as JSON.
   std::string json() const {
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_doctor_report_json(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_doctor_report_json(raw_.get(), out_text, capacity, out_needed);
     });
   }
   ///@{
@@ -1425,8 +1428,9 @@ class mesh {
     check(hw_mesh_attribute_count(get(), to_c(kind), &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
-      names.push_back(detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-        return hw_mesh_attribute_name(get(), to_c(kind), i, buf, len, needed);
+      names.push_back(detail::copied_text([&](char* out_text, std::size_t capacity,
+                                              std::size_t* out_needed) {
+        return hw_mesh_attribute_name(get(), to_c(kind), i, out_text, capacity, out_needed);
       }));
     }
     return names;
@@ -1696,8 +1700,9 @@ class winged {
   /// A table in a textbook layout; see hw_winged_table().
   std::string table(WTable which, WNaming naming = WNaming::CwCcw,
                     TableFormat format = TableFormat::Text) const {
-    return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_winged_table(get(), to_c(which), to_c(naming), to_c(format), buf, len, needed);
+    return detail::copied_text([&](char* out_text, std::size_t capacity, std::size_t* out_needed) {
+      return hw_winged_table(get(), to_c(which), to_c(naming), to_c(format), out_text, capacity,
+                             out_needed);
     });
   }
 

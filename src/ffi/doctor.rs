@@ -550,22 +550,31 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fan(
 }
 
 /// The report as text (a summary line, the diagnostic, a line per component and per non-empty
-/// finding naming its first few elements), copied NUL-terminated into `buf`; `*needed` receives
-/// the size needed even when `buf` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is
-/// written to `buf`).
+/// finding naming its first few elements), copied NUL-terminated into `out_text`; `*out_needed`
+/// receives the size needed even when `out_text` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and
+/// nothing is written to `out_text`).
 ///
 /// # Safety
-/// `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+/// `report` must be NULL or live; `out_text` NULL or `capacity` writable bytes; `out_needed` NULL
+/// or writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_text(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { give_text(report, buf, len, needed, DoctorReport::to_string) }
+    unsafe {
+        give_text(
+            report,
+            out_text,
+            capacity,
+            out_needed,
+            DoctorReport::to_string,
+        )
+    }
 }
 
 /// The whole report as one JSON object (every element of every finding), copied as
@@ -577,12 +586,20 @@ pub unsafe extern "C" fn hw_doctor_report_text(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_json(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { give_text(report, buf, len, needed, DoctorReport::to_json) }
+    unsafe {
+        give_text(
+            report,
+            out_text,
+            capacity,
+            out_needed,
+            DoctorReport::to_json,
+        )
+    }
 }
 
 /// Copies `render(report)` into the caller's buffer: the body of the text calls.
@@ -591,16 +608,16 @@ pub unsafe extern "C" fn hw_doctor_report_json(
 /// As for hw_doctor_report_text().
 unsafe fn give_text(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
     render: impl FnOnce(&DoctorReport) -> String,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let report = unsafe { report_ref(report) }?;
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&render(report), buf, len, needed) }
+        unsafe { copy_text(&render(report), out_text, capacity, out_needed) }
     })
 }
 

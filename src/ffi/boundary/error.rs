@@ -100,33 +100,33 @@ pub(crate) fn record(error: FfiError) -> hw_status {
     error.status
 }
 
-/// Copies the message of the last failed call on this thread into `buf`, NUL-terminated.
+/// Copies the message of the last failed call on this thread into `out_text`, NUL-terminated.
 ///
-/// `*needed` (when `needed` is not NULL) always receives the size the message needs, terminator
-/// included — also when the buffer is too small, so a caller can allocate and call again; it is
-/// never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices. The message is
-/// empty (`needed` = 1) when no call has failed on this thread yet. Successful calls do not clear
-/// it, and neither does this function, so it can be read as often as wanted. Calls made from a
-/// thread-local destructor after this thread's storage is torn down still return their status,
-/// but record no message (it reads empty).
+/// `*out_needed` (when `out_needed` is not NULL) always receives the size the message needs,
+/// terminator included — also when the buffer is too small, so a caller can allocate and call
+/// again; it is never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices.
+/// The message is empty (`out_needed` = 1) when no call has failed on this thread yet. Successful
+/// calls do not clear it, and neither does this function, so it can be read as often as wanted.
+/// Calls made from a thread-local destructor after this thread's storage is torn down still return
+/// their status, but record no message (it reads empty).
 ///
-/// Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `buf` is NULL or `len` is less than the size
-/// needed (nothing is written to `buf` then).
+/// Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `out_text` is NULL or `capacity` is less than
+/// the size needed (nothing is written to `out_text` then).
 ///
 /// # Safety
-/// `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or point to a
-/// writable `size_t`.
+/// `out_text` must be NULL or point to `capacity` writable bytes; `out_needed` must be NULL or
+/// point to a writable `size_t`.
 /// \ingroup errors
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_last_error_message(
-    buf: *mut c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     // Not through `guard`: reading the last error must not overwrite it.
     let result = crate::ffi::boundary::quiet_panics::catch_quietly(|| {
         // SAFETY: the caller's guarantees are those of `copy_text`.
-        let copy = |text: &str| unsafe { copy_text(text, buf, len, needed) };
+        let copy = |text: &str| unsafe { copy_text(text, out_text, capacity, out_needed) };
         // Storage already torn down (see `record`): nothing was recorded, the message is empty.
         LAST_ERROR
             .try_with(|last| copy(&last.borrow()))

@@ -157,56 +157,58 @@ impl<T> Out<T> {
 }
 
 /// Copies `text` NUL-terminated into a caller's buffer: the protocol of every "copy into caller
-/// buffer" call. `*needed` (when not NULL) always receives the size needed, terminator included;
-/// when `buf` is NULL or `len` is smaller, nothing is written to `buf` and the error is
-/// `HW_ERR_BUFFER_TOO_SMALL`.
+/// buffer" call. `*out_needed` (when not NULL) always receives the size needed, terminator
+/// included; when `out_text` is NULL or `capacity` is smaller, nothing is written to `out_text` and
+/// the error is `HW_ERR_BUFFER_TOO_SMALL`.
 ///
 /// # Safety
-/// `buf` must be NULL or point to `len` writable bytes; `needed` must be NULL or writable.
+/// `out_text` must be NULL or point to `capacity` writable bytes; `out_needed` must be NULL or
+/// writable.
 pub(crate) unsafe fn copy_text(
     text: &str,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> Result<(), FfiError> {
     let size = text.len() + 1;
-    if !needed.is_null() {
+    if !out_needed.is_null() {
         // SAFETY: writable per the caller.
-        unsafe { needed.write(size) };
+        unsafe { out_needed.write(size) };
     }
-    if buf.is_null() || len < size {
+    if out_text.is_null() || capacity < size {
         return Err(FfiError::new(
             HW_ERR_BUFFER_TOO_SMALL,
-            format!("the buffer holds {len} bytes, {size} are needed"),
+            format!("the buffer holds {capacity} bytes, {size} are needed"),
         ));
     }
-    // SAFETY: `buf` holds at least `size` writable bytes; `text` is a distinct Rust allocation.
+    // SAFETY: `out_text` holds at least `size` writable bytes; `text` is a distinct Rust
+    // allocation.
     unsafe {
-        std::ptr::copy_nonoverlapping(text.as_ptr(), buf.cast::<u8>(), text.len());
-        buf.add(text.len()).write(0);
+        std::ptr::copy_nonoverlapping(text.as_ptr(), out_text.cast::<u8>(), text.len());
+        out_text.add(text.len()).write(0);
     }
     Ok(())
 }
 
 /// Checks a caller's output array of `capacity` elements that must take `count` of them: the
-/// array form of the [`copy_text`] protocol. `*needed` (when not NULL) always receives `count`;
+/// array form of the [`copy_text`] protocol. `*out_needed` (when not NULL) always receives `count`;
 /// when `out` is NULL or too small the error is `HW_ERR_BUFFER_TOO_SMALL`, when it is misaligned
 /// `HW_ERR_INVALID_INPUT` naming it (`name`). Returns the `count` elements to fill, which the
 /// caller does only once the call can no longer fail.
 ///
 /// # Safety
 /// `out` must be NULL or point to `capacity` writable elements that nothing else references
-/// for the returned lifetime; `needed` NULL or writable.
+/// for the returned lifetime; `out_needed` NULL or writable.
 pub(crate) unsafe fn out_array<'a, T>(
     out: *mut T,
     capacity: usize,
     count: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
     name: &str,
 ) -> Result<&'a mut [T], FfiError> {
-    if !needed.is_null() {
+    if !out_needed.is_null() {
         // SAFETY: writable per the caller.
-        unsafe { needed.write(count) };
+        unsafe { out_needed.write(count) };
     }
     if count == 0 {
         return Ok(&mut []);
@@ -232,11 +234,11 @@ pub(crate) unsafe fn copy_items<T: Copy>(
     items: &[T],
     out: *mut T,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
     name: &str,
 ) -> Result<(), FfiError> {
     // SAFETY: forwarded from the caller.
-    unsafe { out_array(out, capacity, items.len(), needed, name) }?.copy_from_slice(items);
+    unsafe { out_array(out, capacity, items.len(), out_needed, name) }?.copy_from_slice(items);
     Ok(())
 }
 

@@ -269,22 +269,22 @@ pub unsafe extern "C" fn hw_mesh_attribute_count(
 }
 
 /// Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
-/// `kind` NUL-terminated into `buf` of `len` bytes; `*needed` (when not NULL) receives the size
-/// needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND` when `index` is
-/// past the last.
+/// `kind` NUL-terminated into `out_text` of `capacity` bytes; `*out_needed` (when not NULL)
+/// receives the size needed. `HW_ERR_BUFFER_TOO_SMALL` when it does not fit, `HW_ERR_NOT_FOUND`
+/// when `index` is past the last.
 ///
 /// # Safety
-/// `mesh` must be NULL or a live mesh; `buf` NULL or `len` writable bytes; `needed` NULL or
-/// writable.
+/// `mesh` must be NULL or a live mesh; `out_text` NULL or `capacity` writable bytes; `out_needed`
+/// NULL or writable.
 /// \ingroup attributes
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_attribute_name(
     mesh: *const hw_mesh,
     kind: hw_element_kind,
     index: usize,
-    buf: *mut c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -297,7 +297,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_name(
             )
         })?;
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(name, buf, len, needed) }
+        unsafe { copy_text(name, out_text, capacity, out_needed) }
     })
 }
 

@@ -358,23 +358,23 @@ pub unsafe extern "C" fn hw_diagnostic_edge(
     })
 }
 
-/// A human-readable account, copied NUL-terminated into `buf`: one line per non-empty list, with
-/// its count and its first 8 elements
+/// A human-readable account, copied NUL-terminated into `out_text`: one line per non-empty list,
+/// with its count and its first 8 elements
 /// (`12 isolated vertices: v0 v1 v2 v3 v4 v5 v6 v7 … and 4 more`); an edge names its first 8
-/// faces the same way. `*needed` receives the size needed even when `buf` is too small (then
-/// `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `buf`); it is never more than
+/// faces the same way. `*out_needed` receives the size needed even when `out_text` is too small
+/// (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is written to `out_text`); it is never more than
 /// ::HW_MAX_MESSAGE_SIZE, whatever the input.
 ///
 /// # Safety
-/// `diagnostic` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or
-/// writable.
+/// `diagnostic` must be NULL or live; `out_text` NULL or `capacity` writable bytes; `out_needed`
+/// NULL or writable.
 /// \ingroup mesh
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_diagnostic_summary(
     diagnostic: *const hw_diagnostic,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -382,7 +382,7 @@ pub unsafe extern "C" fn hw_diagnostic_summary(
         let mut text = String::new();
         write_c_message(&mut text, &diagnostic.diagnostic.summary());
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&text, buf, len, needed) }
+        unsafe { copy_text(&text, out_text, capacity, out_needed) }
     })
 }
 

@@ -2,7 +2,7 @@
 //!
 //! Each array is indexed by element id and holds one normal (x, y, z) per id slot: as many as the
 //! element count unless elements were deleted and not yet garbage-collected. `capacity` counts
-//! normals (not doubles); `*needed` always receives the number of normals the array needs.
+//! normals (not doubles); `*out_needed` always receives the number of normals the array needs.
 //! Degenerate and deleted faces, isolated vertices and boundary half-edges get (0, 0, 0).
 
 use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, normals_into};
@@ -46,17 +46,17 @@ unsafe fn normal_buffer<'a>(
     out: *mut f64,
     capacity: usize,
     slots: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
     name: &str,
 ) -> Result<&'a mut [[f64; 3]], FfiError> {
     // SAFETY: forwarded from the caller; `[f64; 3]` has the alignment of `f64`.
-    unsafe { out_array(out.cast::<[f64; 3]>(), capacity, slots, needed, name) }
+    unsafe { out_array(out.cast::<[f64; 3]>(), capacity, slots, out_needed, name) }
 }
 
 /// Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
 ///
 /// # Safety
-/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
 /// NULL or writable.
 /// \ingroup normals
 #[unsafe(no_mangle)]
@@ -64,7 +64,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
     mesh: *const hw_mesh,
     out_normals: *mut f64,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -75,7 +75,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
                 out_normals,
                 capacity,
                 mesh.face_capacity(),
-                needed,
+                out_needed,
                 "out_normals",
             )
         }?;
@@ -88,7 +88,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
 /// non-manifold vertex counts.
 ///
 /// # Safety
-/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
 /// NULL or writable.
 /// \ingroup normals
 #[unsafe(no_mangle)]
@@ -97,7 +97,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
     weighting_kind: hw_normal_weighting,
     out_normals: *mut f64,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -109,7 +109,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
                 out_normals,
                 capacity,
                 mesh.vertex_capacity(),
-                needed,
+                out_needed,
                 "out_normals",
             )
         }?;
@@ -119,15 +119,15 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
 }
 
 /// Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
-/// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot
-/// (see hw_mesh_slot_count()). `*face_needed` and `*vertex_needed` (each when not NULL) always
+/// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot (see
+/// hw_mesh_slot_count()). `*out_face_needed` and `*out_vertex_needed` (each when not NULL) always
 /// receive those counts, both of them also when either array is too small (then
 /// `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
 ///
 /// # Safety
 /// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
 /// `out_vertex_normals` NULL or `3 * vertex_capacity` writable doubles, not overlapping
-/// `out_face_normals`; `face_needed` and `vertex_needed` NULL or writable.
+/// `out_face_normals`; `out_face_needed` and `out_vertex_needed` NULL or writable.
 /// \ingroup normals
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
@@ -136,10 +136,10 @@ pub unsafe extern "C" fn hw_mesh_normals(
     weighting_kind: hw_normal_weighting,
     out_face_normals: *mut f64,
     face_capacity: usize,
-    face_needed: *mut usize,
+    out_face_needed: *mut usize,
     out_vertex_normals: *mut f64,
     vertex_capacity: usize,
-    vertex_needed: *mut usize,
+    out_vertex_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -152,7 +152,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
                 out_face_normals,
                 face_capacity,
                 mesh.face_capacity(),
-                face_needed,
+                out_face_needed,
                 "out_face_normals",
             )
         };
@@ -162,7 +162,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
                 out_vertex_normals,
                 vertex_capacity,
                 mesh.vertex_capacity(),
-                vertex_needed,
+                out_vertex_needed,
                 "out_vertex_normals",
             )
         };
@@ -178,7 +178,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
 /// 0 a faceted look.
 ///
 /// # Safety
-/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `needed`
+/// `mesh` must be NULL or live; `out_normals` NULL or `3 * capacity` writable doubles; `out_needed`
 /// NULL or writable.
 /// \ingroup normals
 #[unsafe(no_mangle)]
@@ -187,7 +187,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals(
     crease_angle: f64,
     out_normals: *mut f64,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -204,7 +204,7 @@ pub unsafe extern "C" fn hw_mesh_corner_normals(
                 &normals,
                 out_normals.cast::<[f64; 3]>(),
                 capacity,
-                needed,
+                out_needed,
                 "out_normals",
             )
         }

@@ -45,19 +45,19 @@ pub unsafe extern "C" fn hw_mesh_n_boundary_loops(
 }
 
 /// One half-edge of every boundary loop (the lowest id of the loop), ascending, copied into
-/// `out_halfedges` (`capacity` elements). `*needed` always receives the loop count; walk a loop
+/// `out_halfedges` (`capacity` elements). `*out_needed` always receives the loop count; walk a loop
 /// with hw_mesh_he_next() or hw_circ_along_loop().
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_halfedges` NULL or `capacity` writable elements;
-/// `needed` NULL or writable.
+/// `out_needed` NULL or writable.
 /// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_boundary_loops(
     mesh: *const hw_mesh,
     out_halfedges: *mut hw_halfedge,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -67,7 +67,7 @@ pub unsafe extern "C" fn hw_mesh_boundary_loops(
             .map(Into::into)
             .collect();
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&loops, out_halfedges, capacity, needed, "out_halfedges") }
+        unsafe { copy_items(&loops, out_halfedges, capacity, out_needed, "out_halfedges") }
     })
 }
 
@@ -94,18 +94,18 @@ pub unsafe extern "C" fn hw_mesh_n_components(
 
 /// The component of every face (`0..count`, numbered by lowest face; `HW_INVALID_INDEX` for a
 /// deleted face), indexed by face id, copied into `out_components` (`capacity` elements).
-/// `*needed` always receives the number of face slots.
+/// `*out_needed` always receives the number of face slots.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_components` NULL or `capacity` writable elements;
-/// `needed` NULL or writable.
+/// `out_needed` NULL or writable.
 /// \ingroup topology
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_face_components(
     mesh: *const hw_mesh,
     out_components: *mut u32,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -116,7 +116,7 @@ pub unsafe extern "C" fn hw_mesh_face_components(
                 &components.face_component,
                 out_components,
                 capacity,
-                needed,
+                out_needed,
                 "out_components",
             )
         }

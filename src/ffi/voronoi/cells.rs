@@ -255,25 +255,25 @@ pub unsafe extern "C" fn hw_voronoi_cells_mesh(
     })
 }
 
-/// Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*needed`, when
+/// Copies the site of every face of hw_voronoi_cells_mesh() into `out_sites` (`*out_needed`, when
 /// not NULL, receives the face count); `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
 ///
 /// # Safety
 /// `cells` must be NULL or live cells; `out_sites` NULL or `capacity` writable elements;
-/// `needed` NULL or writable.
+/// `out_needed` NULL or writable.
 /// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
     cells: *const hw_voronoi_cells,
     out_sites: *mut u32,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         // The soup decides which cells become faces; asking it keeps the two in agreement.
         let (_, face_sites) = unsafe { cells_ref(cells) }?.to_polygon_soup();
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&face_sites, out_sites, capacity, needed, "out_sites") }
+        unsafe { copy_items(&face_sites, out_sites, capacity, out_needed, "out_sites") }
     })
 }

@@ -1,7 +1,8 @@
 //! `hw_voronoi`: the Voronoi diagram of 2D sites with its Delaunay dual — construction, counts,
 //! zero-copy views of both structures, edge geometry, the triangulation as a mesh, and queries.
 //!
-//! Clipped cells are in [`crate::ffi::voronoi::cells`]; rasters and SVG in [`crate::ffi::voronoi::images`].
+//! Clipped cells are in [`crate::ffi::voronoi::cells`]; rasters and SVG in
+//! [`crate::ffi::voronoi::images`].
 
 use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
@@ -514,13 +515,13 @@ pub unsafe extern "C" fn hw_voronoi_nearest_site(
 }
 
 /// Copies the sites whose cells share an edge with the cell of `site` (its Delaunay neighbours,
-/// less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*needed`
+/// less those cut off by cocircular merging), counter-clockwise, into `out_sites`; `*out_needed`
 /// (when not NULL) receives their number. A duplicate site answers for its representative. Out of
 /// range: `HW_ERR_INVALID_HANDLE`; `capacity` too small: `HW_ERR_BUFFER_TOO_SMALL`.
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_sites` NULL or `capacity` writable elements;
-/// `needed` NULL or writable.
+/// `out_needed` NULL or writable.
 /// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_neighbours(
@@ -528,14 +529,14 @@ pub unsafe extern "C" fn hw_voronoi_neighbours(
     site: u32,
     out_sites: *mut u32,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
         let neighbours = v.neighbours(checked_site(v, site)?);
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(&neighbours, out_sites, capacity, needed, "out_sites") }
+        unsafe { copy_items(&neighbours, out_sites, capacity, out_needed, "out_sites") }
     })
 }
 

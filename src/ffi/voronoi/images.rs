@@ -39,14 +39,14 @@ fn metric(raw: hw_metric) -> Result<Metric, FfiError> {
 /// with the index of the site nearest to the pixel's centre under `metric` — decided exactly,
 /// ties to the smallest index; duplicates never appear. Row-major, row 0 at the top (largest y).
 ///
-/// `out_labels` must hold `width * height` labels; `*needed` (when not NULL) always receives that
-/// count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
+/// `out_labels` must hold `width * height` labels; `*out_needed` (when not NULL) always receives
+/// that count, and a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL` before any work. A diagram
 /// without sites labels every pixel `HW_INVALID_INDEX`. A zero size, an unknown metric, a
 /// non-finite bound or a misaligned `out_labels` give `HW_ERR_INVALID_INPUT`.
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_labels` NULL or `capacity` writable elements;
-/// `needed` NULL or writable.
+/// `out_needed` NULL or writable.
 /// \ingroup voronoi
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
@@ -61,7 +61,7 @@ pub unsafe extern "C" fn hw_voronoi_label_image(
     height: u32,
     out_labels: *mut u32,
     capacity: usize,
-    needed: *mut usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -74,7 +74,7 @@ pub unsafe extern "C" fn hw_voronoi_label_image(
             })?;
         // Checked before the work, which can be long.
         // SAFETY: forwarded from the caller.
-        let labels = unsafe { out_array(out_labels, capacity, pixels, needed, "out_labels") }?;
+        let labels = unsafe { out_array(out_labels, capacity, pixels, out_needed, "out_labels") }?;
         let image = with_threads(|| {
             v.delaunay()
                 .label_image(metric, [xmin, ymin], [xmax, ymax], width, height)
@@ -154,29 +154,29 @@ unsafe fn svg_document(
     Ok(to_svg(v, c, &options))
 }
 
-/// Copies an SVG drawing of `cells` (clipped from `voronoi`) into `buf`, NUL-terminated;
-/// `options` NULL means hw_svg_options_default(). `*needed` (when not NULL) always receives the
-/// size needed, terminator included; a smaller `len` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells from
-/// another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
+/// Copies an SVG drawing of `cells` (clipped from `voronoi`) into `out_text`, NUL-terminated;
+/// `options` NULL means hw_svg_options_default(). `*out_needed` (when not NULL) always receives the
+/// size needed, terminator included; a smaller `capacity` gives `HW_ERR_BUFFER_TOO_SMALL`. Cells
+/// from another diagram or a non-positive width give `HW_ERR_INVALID_INPUT`.
 ///
 /// # Safety
-/// `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `buf` NULL or
-/// `len` writable bytes; `needed` NULL or writable.
+/// `voronoi` and `cells` must be NULL or live objects; `options` NULL or readable; `out_text` NULL
+/// or `capacity` writable bytes; `out_needed` NULL or writable.
 /// \ingroup voronoi
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_svg(
     voronoi: *const hw_voronoi,
     cells: *const hw_voronoi_cells,
     options: *const hw_svg_options,
-    buf: *mut c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let svg = unsafe { svg_document(voronoi, cells, options) }?;
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&svg, buf, len, needed) }
+        unsafe { copy_text(&svg, out_text, capacity, out_needed) }
     })
 }
 

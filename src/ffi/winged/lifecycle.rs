@@ -607,22 +607,22 @@ pub const HW_WNORMALS_FACES: hw_wnormals = 0;
 pub const HW_WNORMALS_VERTICES: hw_wnormals = 1;
 
 /// The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
-/// ::HW_WNORMALS_VERTICES), indexed by id, as
-/// `3 * capacity` doubles (x, y, z per element; zero for deleted and degenerate elements) copied
-/// into `out_xyz`, which holds `len` doubles. `*needed` (when not NULL) always receives the number
-/// of doubles needed; `HW_ERR_BUFFER_TOO_SMALL` when `out_xyz` is NULL or too short.
+/// ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
+/// deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
+/// `*out_needed` (when not NULL) always receives the number of doubles needed;
+/// `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `out_xyz` NULL or `len` writable doubles; `needed`
-/// NULL or writable.
+/// `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
+/// `out_needed` NULL or writable.
 /// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_normals(
     winged: *const hw_winged,
     which: hw_wnormals,
-    out_xyz: *mut f64,
-    len: usize,
-    needed: *mut usize,
+    out_normals: *mut f64,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -637,7 +637,15 @@ pub unsafe extern "C" fn hw_winged_normals(
             }
         };
         // SAFETY: forwarded from the caller.
-        unsafe { copy_items(normals.as_flattened(), out_xyz, len, needed, "out_xyz") }
+        unsafe {
+            copy_items(
+                normals.as_flattened(),
+                out_normals,
+                capacity,
+                out_needed,
+                "out_normals",
+            )
+        }
     })
 }
 
@@ -697,16 +705,16 @@ pub const HW_TABLE_FORMAT_MARKDOWN: hw_table_format = 1;
 /// \ingroup winged
 pub const HW_TABLE_FORMAT_CSV: hw_table_format = 2;
 
-/// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES,
-/// ...; `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `buf`
-/// (`len` bytes), NUL-terminated, every line ending with a newline. `*needed` (when not NULL)
-/// always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when `buf` is
-/// NULL or shorter (call with `buf = NULL` to learn the size). Unknown enum values give
-/// `HW_ERR_INVALID_INPUT`.
+/// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES, ...;
+/// `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `out_text`
+/// (`capacity` bytes), NUL-terminated, every line ending with a newline. `*out_needed` (when not
+/// NULL) always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when
+/// `out_text` is NULL or shorter (call with `out_text = NULL` to learn the size). Unknown enum
+/// values give `HW_ERR_INVALID_INPUT`.
 ///
 /// # Safety
-/// `winged` must be NULL or a live structure; `buf` NULL or `len` writable bytes; `needed` NULL
-/// or writable.
+/// `winged` must be NULL or a live structure; `out_text` NULL or `capacity` writable bytes;
+/// `out_needed` NULL or writable.
 /// \ingroup winged
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_table(
@@ -714,9 +722,9 @@ pub unsafe extern "C" fn hw_winged_table(
     which: hw_wtable,
     naming: hw_wnaming,
     format: hw_table_format,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
@@ -745,6 +753,6 @@ pub unsafe extern "C" fn hw_winged_table(
             other => return Err(FfiError::invalid_input(format!("unknown table {other}"))),
         };
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&text, buf, len, needed) }
+        unsafe { copy_text(&text, out_text, capacity, out_needed) }
     })
 }
