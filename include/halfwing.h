@@ -56,29 +56,59 @@
  * Vertex, half-edge, edge and face ids: small structs passed by value.
  *
  * @defgroup mesh Half-edge meshes
- * Creating, building (with a policy for bad input) and freeing meshes; the build diagnostic.
+ * Creating, building (with a policy for bad input), counting and freeing meshes; the build
+ * diagnostic.
+ *
+ * @defgroup navigation Half-edge navigation
+ * Checked single steps between a mesh's elements, and zero-copy views of its arrays.
+ *
+ * @defgroup nav Inline half-edge navigation
+ * halfwing_nav.h: `static inline` steps and circulators over trusted ids, at the speed of array
+ * code.
+ *
+ * @defgroup circulators Half-edge circulators and callbacks
+ * Stack circulators around a vertex, around a face or along a loop, and the same walks with a
+ * callback.
+ *
+ * @defgroup topology Half-edge topology
+ * Validation, boundary loops and connected components.
+ *
+ * @defgroup edit Half-edge editing
+ * Adding and deleting elements, flip, split, collapse, triangulation and garbage collection.
+ *
+ * @defgroup attributes Half-edge positions and attributes
+ * Vertex positions, corner normals and uvs, and typed user attributes.
+ *
+ * @defgroup normals Half-edge normals
+ * Face, vertex and crease-angle corner normals.
  *
  * @defgroup io Files
  * Reading and writing OBJ, OFF and PLY.
  *
- * @defgroup navigation Navigation
- * Checked navigation, stack circulators, callbacks and zero-copy views of a mesh.
+ * @defgroup winged Winged-edge meshes
+ * Baumgart's winged-edge kernel: construction, conversions, counts, the invariant check.
  *
- * @defgroup nav Inline navigation
- * halfwing_nav.h: `static inline` steps and circulators over trusted ids, at the speed of array
- * code.
+ * @defgroup winged_navigation Winged-edge navigation
+ * Live-element tests, edge records, a vertex's and a face's edge.
  *
- * @defgroup topology Topology
- * Validation, boundary loops and connected components.
+ * @defgroup winged_circulators Winged-edge circulators
+ * A face's loop and a vertex's ring, with the per-edge orientation test.
  *
- * @defgroup edit Editing
- * Adding and deleting elements, flip, split, collapse, triangulation and garbage collection.
+ * @defgroup winged_edit Euler operators
+ * Baumgart's make and kill operators, and garbage collection after the kills.
  *
- * @defgroup attributes Positions and attributes
- * Vertex positions, corner normals and uvs, and typed user attributes.
+ * @defgroup winged_attributes Winged-edge positions
+ * Reading and moving vertex positions.
  *
- * @defgroup normals Normals
- * Face, vertex and crease-angle corner normals.
+ * @defgroup winged_normals Winged-edge normals
+ * Face normals and Baumgart's vertex normals.
+ *
+ * @defgroup winged_io Winged-edge tables
+ * The vertex, face and edge tables in three naming conventions, as text, Markdown or CSV.
+ *
+ * @defgroup voronoi Voronoi diagrams
+ * Delaunay triangulation, Voronoi diagram, clipped cells, queries, Lloyd relaxation, rasters
+ * and SVG.
  *
  * @defgroup doctor Mesh doctor
  * Every defect of a face list or a mesh, named with its elements; self-intersections.
@@ -92,13 +122,6 @@
  *
  * @defgroup render Rendering buffers
  * Triangles, normals and line buffers ready for `glBufferData`.
- *
- * @defgroup winged Winged-edge meshes
- * Baumgart's winged-edge kernel: construction, conversions, walks, Euler operators and tables.
- *
- * @defgroup voronoi Voronoi diagrams
- * Delaunay triangulation, Voronoi diagram, clipped cells, queries, Lloyd relaxation, rasters
- * and SVG.
  */
 
 #ifndef HALFWING_H
@@ -294,6 +317,14 @@ typedef struct hw_voronoi_cells hw_voronoi_cells;
  */
 typedef struct hw_winged hw_winged;
 
+#ifdef __cplusplus
+extern "C" {
+#endif // __cplusplus
+
+/* ----------------------------------------------------------------------------------------------
+ * Status, errors, version and threads
+ * ---------------------------------------------------------------------------------------------- */
+
 /**
  * The result of a fallible C call. `HW_OK` (0) is success; every other value is an error whose
  * details `hw_last_error_message` gives.
@@ -306,855 +337,6 @@ typedef struct hw_winged hw_winged;
  * \ingroup errors
  */
 typedef uint32_t hw_status;
-
-/**
- * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
- * \ingroup mesh
- */
-typedef uint32_t hw_build_policy;
-
-/**
- * An element kind, to pick one of several per-kind arrays.
- * \ingroup ids
- */
-typedef uint32_t hw_element_kind;
-
-/**
- * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
- * ::HW_DIAGNOSTIC_LIST_FIRST to `HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT - 1`, apart
- * from the edge lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding),
- * so a value of one family passed where another is expected is refused, never read as a different
- * list.
- * \ingroup mesh
- */
-typedef uint32_t hw_diagnostic_list;
-
-/**
- * One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
- * ::HW_DIAGNOSTIC_EDGES_FIRST to `HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT - 1`,
- * apart from the id lists' (::hw_diagnostic_list) and the doctor's findings'
- * (::hw_doctor_finding).
- * \ingroup mesh
- */
-typedef uint32_t hw_diagnostic_edges;
-
-/**
- * A vertex id.
- * \ingroup ids
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_vertex;
-
-/**
- * A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
- * \ingroup ids
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_halfedge;
-
-/**
- * A face id.
- * \ingroup ids
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_face;
-
-/**
- * An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
- * \ingroup ids
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_edge;
-
-/**
- * A navigation view of a mesh: its connectivity arrays (zero-copy, as hw_mesh_view() gives them)
- * and their sizes, filled by hw_mesh_nav() and read by the inline `hw_nav_*` functions of
- * halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
- * indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
- * `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
- * \ingroup nav
- */
-typedef struct {
-  /**
-   * Per half-edge: the vertex it leaves.
-   */
-  const uint32_t *origin;
-  /**
-   * Per half-edge: the next half-edge around its face or boundary loop.
-   */
-  const uint32_t *next;
-  /**
-   * Per half-edge: the previous half-edge around its face or boundary loop.
-   */
-  const uint32_t *prev;
-  /**
-   * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
-   */
-  const uint32_t *face;
-  /**
-   * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated
-   * or deleted).
-   */
-  const uint32_t *vertex_halfedge;
-  /**
-   * Per face: one of its half-edges.
-   */
-  const uint32_t *face_halfedge;
-  /**
-   * Per vertex slot: `true` when deleted; NULL while no vertex has been deleted.
-   */
-  const bool *vertex_deleted;
-  /**
-   * Per edge slot: `true` when deleted (both half-edges); NULL while no edge has been deleted.
-   */
-  const bool *edge_deleted;
-  /**
-   * Per face slot: `true` when deleted; NULL while no face has been deleted.
-   */
-  const bool *face_deleted;
-  /**
-   * Vertex slots (valid vertex ids are below this), deleted ones included.
-   */
-  size_t n_vertex_slots;
-  /**
-   * Half-edge slots, deleted ones included.
-   */
-  size_t n_halfedge_slots;
-  /**
-   * Face slots, deleted ones included.
-   */
-  size_t n_face_slots;
-} hw_nav;
-
-/**
- * Which internal array hw_mesh_view() shows.
- * \ingroup navigation
- */
-typedef uint32_t hw_mesh_array;
-
-/**
- * What a circulator yields.
- * \ingroup navigation
- */
-typedef uint32_t hw_circulator_kind;
-
-/**
- * A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
- * hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
- * kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
- * \ingroup navigation
- */
-typedef struct {
-  /**
-   * The mesh walked.
-   */
-  const hw_mesh *mesh;
-  /**
-   * The half-edge the walk started at; reaching it again ends the walk.
-   */
-  uint32_t start;
-  /**
-   * The half-edge the walk yields next, or `HW_INVALID_INDEX` once it is over.
-   */
-  uint32_t current;
-  /**
-   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
-   */
-  uint32_t remaining;
-  /**
-   * What it walks around: a vertex, a face or a boundary loop (internal code).
-   */
-  uint32_t center;
-  /**
-   * What it yields.
-   */
-  hw_circulator_kind kind;
-} hw_circulator;
-
-/**
- * A caller's function called once per id by the `_visit` calls, with the `userdata` given to
- * them. Returns `true` to go on, `false` to stop the visit there.
- * \ingroup navigation
- */
-typedef bool (*hw_visit_fn)(uint32_t idx, void *userdata);
-
-/**
- * The numeric type of an attribute column.
- * \ingroup attributes
- */
-typedef uint32_t hw_scalar_type;
-
-/**
- * How a vertex normal weighs the faces around it.
- * \ingroup normals
- */
-typedef uint32_t hw_normal_weighting;
-
-/**
- * A vertex id of an ::hw_winged.
- * \ingroup winged
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_wvertex;
-
-/**
- * An edge id of an ::hw_winged (one record per undirected edge).
- * \ingroup winged
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_wedge;
-
-/**
- * A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
- * (a boundary).
- * \ingroup winged
- */
-typedef struct {
-  /**
-   * The index; `HW_INVALID_INDEX` means none.
-   */
-  uint32_t idx;
-} hw_wface;
-
-/**
- * Baumgart's edge record. An edge runs `start → end`; its **left** side is the loop that walks
- * it `start → end`, its **right** side the loop that walks it `end → start`; each side has the
- * previous and next edge of that loop (its wings). The same fields under three naming
- * conventions:
- *
- * | field        | Baumgart            | Granada            | Wikipedia            |
- * |--------------|---------------------|--------------------|----------------------|
- * | `start`      | VSTART              | Vi                 | vert_origin          |
- * | `end`        | VEND                | Vf                 | vert_destination     |
- * | `left_face`  | FCW                 | Cd                 | face_left            |
- * | `right_face` | FCCW                | Ci                 | face_right           |
- * | `left_prev`  | EPCW                | Ada                | edge_left_cw         |
- * | `left_next`  | ENCW                | Ads                | edge_left_ccw        |
- * | `right_prev` | EPCCW               | Aia                | edge_right_cw        |
- * | `right_next` | ENCCW               | Ais                | edge_right_ccw       |
- *
- * A face id of `HW_INVALID_INDEX` is a hole; its wings still link the boundary loop.
- * \ingroup winged
- */
-typedef struct {
-  /**
-   * The vertex the edge starts at.
-   */
-  hw_wvertex start;
-  /**
-   * The vertex the edge ends at.
-   */
-  hw_wvertex end;
-  /**
-   * The face on its left (the loop that walks it `start → end`).
-   */
-  hw_wface left_face;
-  /**
-   * The face on its right (the loop that walks it `end → start`).
-   */
-  hw_wface right_face;
-  /**
-   * The edge before it in the left loop.
-   */
-  hw_wedge left_prev;
-  /**
-   * The edge after it in the left loop.
-   */
-  hw_wedge left_next;
-  /**
-   * The edge before it in the right loop.
-   */
-  hw_wedge right_prev;
-  /**
-   * The edge after it in the right loop.
-   */
-  hw_wedge right_next;
-} hw_wedge_record;
-
-/**
- * Which elements hw_winged_normals() gives normals of.
- * \ingroup winged
- */
-typedef uint32_t hw_wnormals;
-
-/**
- * Which table hw_winged_table() prints.
- * \ingroup winged
- */
-typedef uint32_t hw_wtable;
-
-/**
- * Which naming scheme a table's columns use.
- * \ingroup winged
- */
-typedef uint32_t hw_wnaming;
-
-/**
- * How a table is written.
- * \ingroup winged
- */
-typedef uint32_t hw_table_format;
-
-/**
- * What a winged circulator yields.
- * \ingroup winged
- */
-typedef uint32_t hw_wcirculator_kind;
-
-/**
- * A winged circulator's state, kept on the caller's stack. Fill it with
- * hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
- * its kind. Treat the fields as private. It borrows the structure: do not modify the structure
- * while walking.
- * \ingroup winged
- */
-typedef struct {
-  /**
-   * The structure walked.
-   */
-  const hw_winged *winged;
-  /**
-   * The edge of the use the walk started from; coming back to that use ends the walk.
-   */
-  uint32_t start_edge;
-  /**
-   * The side of that use: 0 left, 1 right.
-   */
-  uint32_t start_side;
-  /**
-   * The edge of the use the walk yields next, `HW_INVALID_INDEX` once it is over.
-   */
-  uint32_t current_edge;
-  /**
-   * The side of that use: 0 left, 1 right.
-   */
-  uint32_t current_side;
-  /**
-   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
-   */
-  uint32_t remaining;
-  /**
-   * What it walks around: a face or a vertex (internal code).
-   */
-  uint32_t center;
-  /**
-   * What it yields.
-   */
-  hw_wcirculator_kind kind;
-} hw_wcirculator;
-
-/**
- * The dimension of the site set, as hw_voronoi_dimension() reports it.
- * \ingroup voronoi
- */
-typedef uint32_t hw_site_dimension;
-
-/**
- * Which index array hw_voronoi_view() shows.
- * \ingroup voronoi
- */
-typedef uint32_t hw_voronoi_array;
-
-/**
- * The shape of a Voronoi edge (see ::hw_voronoi_edge).
- * \ingroup voronoi
- */
-typedef uint32_t hw_voronoi_edge_kind;
-
-/**
- * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
- * \ingroup voronoi
- */
-typedef struct {
-  /**
-   * ::HW_VORONOI_EDGE_KIND_SEGMENT, ::HW_VORONOI_EDGE_KIND_RAY or ::HW_VORONOI_EDGE_KIND_LINE.
-   */
-  hw_voronoi_edge_kind kind;
-  /**
-   * The site on the half-edge's left (whose cell it bounds).
-   */
-  uint32_t site;
-  /**
-   * The site on its right.
-   */
-  uint32_t opposite_site;
-  /**
-   * Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
-   */
-  uint32_t origin;
-  /**
-   * End vertex (`HW_INVALID_INDEX` when it runs to infinity).
-   */
-  uint32_t target;
-  /**
-   * Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
-   * where it ends). Line: the midpoint of the two sites.
-   */
-  double point[2];
-  /**
-   * Segment: the end. Otherwise equal to `point`.
-   */
-  double end[2];
-  /**
-   * Ray and line: the direction away from `point` (not normalised; for a half-edge coming
-   * from infinity it points back towards infinity, i.e. against the half-edge). Segment:
-   * `end - point`.
-   */
-  double direction[2];
-} hw_voronoi_edge;
-
-/**
- * A distance function for hw_voronoi_label_image().
- * \ingroup voronoi
- */
-typedef uint32_t hw_metric;
-
-/**
- * What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
- * \ingroup voronoi
- */
-typedef struct {
-  /**
-   * Picture width in pixels (> 0); the height follows the clip region's aspect ratio.
-   */
-  double width_px;
-  /**
-   * Fill cells with distinct pastel colours (otherwise outlines only).
-   */
-  bool fill_cells;
-  /**
-   * Draw the sites as dots.
-   */
-  bool sites;
-  /**
-   * Draw the Delaunay edges.
-   */
-  bool delaunay_edges;
-} hw_svg_options;
-
-/**
- * The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
- * \ingroup doctor
- */
-typedef struct {
-  /**
-   * Distance under which two vertices are near duplicates and a vertex lies on an edge,
-   * relative to the diagonal of the bounding box of the vertices faces name. 0 to 1; default
-   * 1e-9.
-   */
-  double relative_tolerance;
-  /**
-   * A triangle with an angle below this (degrees) is a needle. Default 5.
-   */
-  double needle_angle_degrees;
-  /**
-   * A triangle with an angle above this (degrees) is a cap. Default 175.
-   */
-  double cap_angle_degrees;
-  /**
-   * Two faces sharing an edge whose normals are more than this (degrees) apart are folded.
-   * Default 175.
-   */
-  double fold_angle_degrees;
-  /**
-   * An edge longer than this many times the median edge is long. At least 1; default 10.
-   */
-  double long_edge_ratio;
-  /**
-   * A component is small when its face count or diameter is at most this fraction of the
-   * largest's. 0 to 1; default 0.01.
-   */
-  double small_component_ratio;
-} hw_doctor_options;
-
-/**
- * One kind of finding that is a list of elements (see hw_doctor_report_finding()). The values
- * run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
- * apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
- * one family passed where another is expected is refused, never read as a different list.
- * \ingroup doctor
- */
-typedef uint32_t hw_doctor_finding;
-
-/**
- * The surface's verdicts. `manifold`: no non-manifold edge or vertex and no malformed face;
- * `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
- * `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
- * volume, no self-intersection and no zero-area face.
- * \ingroup doctor
- */
-typedef struct {
-  /**
-   * No non-manifold edge or vertex and no malformed face.
-   */
-  bool manifold;
-  /**
-   * No boundary.
-   */
-  bool closed;
-  /**
-   * Every component orientable and consistently oriented.
-   */
-  bool oriented;
-  /**
-   * All three, finite coordinates, every component enclosing a positive volume, no
-   * self-intersection and no zero-area face.
-   */
-  bool closed_polyhedron;
-  /**
-   * Why it is not a closed polyhedron (the first reason, static text), NULL when it is one.
-   */
-  const char *reason;
-} hw_doctor_verdict;
-
-/**
- * One connected component (faces joined through shared edges).
- * \ingroup doctor
- */
-typedef struct {
-  /**
-   * Its lowest face.
-   */
-  uint32_t first_face;
-  /**
-   * Its faces.
-   */
-  size_t n_faces;
-  /**
-   * Its distinct edges.
-   */
-  size_t n_edges;
-  /**
-   * Distinct vertices (one shared with another component through a non-manifold vertex
-   * counts in both).
-   */
-  size_t n_vertices;
-  /**
-   * Its boundary loops (0 when it is closed).
-   */
-  size_t n_boundary_loops;
-  /**
-   * V − E + F.
-   */
-  int64_t euler_characteristic;
-  /**
-   * The genus of an orientable 2-manifold component; -1 for any other.
-   */
-  int64_t genus;
-  /**
-   * No boundary edge (every edge has two or more faces).
-   */
-  bool closed;
-  /**
-   * No non-manifold edge or vertex.
-   */
-  bool manifold;
-  /**
-   * Its faces can be oriented so that every two-face edge is walked both ways.
-   */
-  bool orientable;
-  /**
-   * Every two-face edge is walked both ways as given.
-   */
-  bool consistently_oriented;
-  /**
-   * 1 when a closed, manifold, consistently oriented component faces outward (encloses a
-   * positive volume), -1 inward, 0 otherwise or when it encloses no volume.
-   */
-  int32_t outward;
-  /**
-   * The signed volume it encloses (when `outward` is not 0 or the volume is 0; NaN for a
-   * component that is not closed, manifold and consistently oriented). May overflow to
-   * infinity or underflow to 0 at extreme coordinates: `outward` keeps the sign.
-   */
-  double volume;
-  /**
-   * The sum of its faces' areas.
-   */
-  double area;
-  /**
-   * Its bounding box: lowest x, y, z, then highest x, y, z.
-   */
-  double bounding_box[6];
-} hw_doctor_component;
-
-/**
- * Which components hw_soup_remove_small_components() removes.
- * \ingroup repair
- */
-typedef uint32_t hw_small_components;
-
-/**
- * What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
- * \ingroup repair
- */
-typedef uint32_t hw_non_manifold_edges;
-
-/**
- * One list of a repair report, for hw_repair_report_list().
- * \ingroup repair
- */
-typedef uint32_t hw_repair_list;
-
-/**
- * Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
- * \ingroup repair
- */
-typedef struct {
-  /**
-   * Holes with more boundary edges than this are left open.
-   */
-  size_t max_edges;
-  /**
-   * Holes whose perimeter exceeds this are left open; infinity for no bound.
-   */
-  double max_perimeter;
-} hw_fill_hole_options;
-
-/**
- * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
- * duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
- * exactly on them, and keeps every component.
- * \ingroup repair
- */
-typedef struct {
-  /**
-   * Vertices this close merge (absolute, or when `merge_relative` a fraction 0 to 1 of the
-   * bounding-box diagonal). Default 0: identical positions.
-   */
-  double merge_tolerance;
-  /**
-   * Whether `merge_tolerance` is relative. Default false.
-   */
-  bool merge_relative;
-  /**
-   * Boundary edges whose ends are this close stitch (as `merge_tolerance`). Default 0.
-   */
-  double stitch_tolerance;
-  /**
-   * Whether `stitch_tolerance` is relative. Default false.
-   */
-  bool stitch_relative;
-  /**
-   * Whether small components are removed (by `small_rule` and `small_value`, as
-   * hw_soup_remove_small_components() takes them). Default false.
-   */
-  bool remove_small_components;
-  /**
-   * ::HW_SMALL_COMPONENTS_BY_FACE_COUNT or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER.
-   */
-  hw_small_components small_rule;
-  /**
-   * The face count or the diameter ratio.
-   */
-  double small_value;
-  /**
-   * Whether degenerate triangles are mended (hw_mesh_remove_degenerate_faces(), after the
-   * build). Default true.
-   */
-  bool remove_degenerate_faces;
-  /**
-   * Triangles this close to a line are degenerate (as `merge_tolerance`). Default 0: exactly
-   * on one line.
-   */
-  double degenerate_tolerance;
-  /**
-   * Whether `degenerate_tolerance` is relative. Default false.
-   */
-  bool degenerate_relative;
-  /**
-   * Whether boundary edges are split at T-vertices (hw_mesh_remove_t_vertices(), before
-   * stitching). Default true.
-   */
-  bool remove_t_vertices;
-  /**
-   * Boundary vertices this close to another boundary edge split it (as `merge_tolerance`).
-   * Default 0: exactly on the edge.
-   */
-  double t_vertex_tolerance;
-  /**
-   * Whether `t_vertex_tolerance` is relative. Default false.
-   */
-  bool t_vertex_relative;
-} hw_repair_options;
-
-/**
- * One list of hw_repair_fates_list().
- * \ingroup repair
- */
-typedef uint32_t hw_fates_list;
-
-/**
- * The counts of hw_repair_fates_counts().
- * \ingroup repair
- */
-typedef struct {
-  /**
-   * Input vertices in the output.
-   */
-  size_t kept_vertices;
-  /**
-   * Input vertices merged into another.
-   */
-  size_t merged_vertices;
-  /**
-   * Input vertices removed.
-   */
-  size_t removed_vertices;
-  /**
-   * Output vertices that copy an input vertex (kept + added = output vertices).
-   */
-  size_t added_vertices;
-  /**
-   * Input faces in the output (= output faces).
-   */
-  size_t kept_faces;
-  /**
-   * Kept faces that run the other way round.
-   */
-  size_t reversed_faces;
-  /**
-   * Input faces removed.
-   */
-  size_t removed_faces;
-  /**
-   * Pairs of boundary edges stitched into one.
-   */
-  size_t stitched_edges;
-  /**
-   * Edges flipped to mend a degenerate triangle.
-   */
-  size_t flipped_edges;
-  /**
-   * Boundary edges split at a T-vertex.
-   */
-  size_t split_edges;
-} hw_repair_fate_counts;
-
-/**
- * How the cells of a parametric surface become faces.
- * \ingroup surfaces
- */
-typedef uint32_t hw_cell_faces;
-
-/**
- * How hw_surface_revolution() closes the profile's ends that are off the axis.
- * \ingroup surfaces
- */
-typedef uint32_t hw_caps;
-
-/**
- * Where the normals of hw_render_buffers_build() come from.
- * \ingroup render
- */
-typedef uint32_t hw_shading;
-
-/**
- * How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
- * \ingroup render
- */
-typedef struct {
-  /**
-   * ::HW_SHADING_CORNER_NORMALS (the default), ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or
-   * ::HW_SHADING_CREASE.
-   */
-  hw_shading shading;
-  /**
-   * Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
-   * the vertex-normal glyphs (::HW_NORMAL_WEIGHTING_UNIFORM, ::HW_NORMAL_WEIGHTING_AREA,
-   * ::HW_NORMAL_WEIGHTING_ANGLE).
-   */
-  hw_normal_weighting weighting;
-  /**
-   * For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
-   */
-  double crease_angle;
-  /**
-   * `true`: one ::HW_RENDER_FLOATS_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
-   * separate ::HW_RENDER_FLOATS_POSITIONS, ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_FLOATS_UVS
-   * arrays.
-   */
-  bool interleaved;
-  /**
-   * Length of the normal glyphs; 0 takes the mesh's mean edge length.
-   */
-  double normal_length;
-  /**
-   * With ::HW_SHADING_CORNER_NORMALS: use the mesh's own corner normals (a file's `vn`,
-   * hw_mesh_corner_normals_set()) when it has them and `corner_normals` is NULL. The other
-   * shadings ignore them.
-   */
-  bool mesh_corner_normals;
-  /**
-   * Give the vertices the mesh's own corner texture coordinates, when it has them and
-   * `corner_uvs` is NULL (a mesh read from an OBJ has (0, 0) at the corners its file gives
-   * none).
-   */
-  bool mesh_corner_uvs;
-  /**
-   * NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
-   * half-edge's origin), used by ::HW_SHADING_CORNER_NORMALS instead of the mesh's own; a
-   * zero vector means the corner has none. The other shadings ignore it.
-   */
-  const double *corner_normals;
-  /**
-   * NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
-   * then carry uvs, as given.
-   */
-  const double *corner_uvs;
-  /**
-   * Half-edge slots in `corner_normals` and `corner_uvs`: must be
-   * `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
-   */
-  size_t n_corners;
-} hw_render_options;
-
-/**
- * The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
- * floats.
- * \ingroup render
- */
-typedef uint32_t hw_render_floats;
-
-/**
- * The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
- * \ingroup render
- */
-typedef uint32_t hw_render_indices;
-
-/**
- * The fate of an element, in the kinds lists of hw_repair_fates_list().
- * \ingroup repair
- */
-typedef uint32_t hw_fate;
-
-
-
-
 
 /**
  * Success.
@@ -1234,28 +416,128 @@ typedef uint32_t hw_fate;
 #define HW_ERR_OUT_OF_MEMORY 11
 
 /**
- * Vertices.
- * \ingroup ids
+ * The fate of an element, in the kinds lists of hw_repair_fates_list().
+ * \ingroup repair
  */
-#define HW_ELEMENT_KIND_VERTEX 0
+typedef uint32_t hw_fate;
 
 /**
- * Half-edges.
- * \ingroup ids
+ * Kept: its id is the output element.
+ * \ingroup repair
  */
-#define HW_ELEMENT_KIND_HALFEDGE 1
+#define HW_FATE_KEPT 0
 
 /**
- * Edges.
- * \ingroup ids
+ * A vertex merged into another: its id is the output vertex it went into.
+ * \ingroup repair
  */
-#define HW_ELEMENT_KIND_EDGE 2
+#define HW_FATE_MERGED 1
 
 /**
- * Faces.
- * \ingroup ids
+ * A face kept, reversed: its id is the output face.
+ * \ingroup repair
  */
-#define HW_ELEMENT_KIND_FACE 3
+#define HW_FATE_REVERSED 2
+
+/**
+ * A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_COLLAPSED 3
+
+/**
+ * A face removed as a duplicate: its id is the input face kept in its place.
+ * \ingroup repair
+ */
+#define HW_FATE_DUPLICATE 4
+
+/**
+ * Removed: a face the repairing build could not keep, or a vertex with a non-finite
+ * coordinate (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_UNBUILDABLE 5
+
+/**
+ * Removed with a small component (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_SMALL_COMPONENT 6
+
+/**
+ * A vertex removed because no kept face names it (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_UNREFERENCED 7
+
+/**
+ * A face removed as degenerate: its corners on one line, collapsed with a short edge or
+ * removed by hw_mesh_remove_degenerate_faces() (id `UINT32_MAX`).
+ * \ingroup repair
+ */
+#define HW_FATE_DEGENERATE 8
+
+/**
+ * Copies the message of the last failed call on this thread into `out_text`, NUL-terminated.
+ *
+ * `*out_needed` (when `out_needed` is not NULL) always receives the size the message needs,
+ * terminator included — also when the buffer is too small, so a caller can allocate and call
+ * again; it is never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices.
+ * The message is empty (`out_needed` = 1) when no call has failed on this thread yet. Successful
+ * calls do not clear it, and neither does this function, so it can be read as often as wanted.
+ * Calls made from a thread-local destructor after this thread's storage is torn down still return
+ * their status, but record no message (it reads empty).
+ *
+ * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `out_text` is NULL or `capacity` is less than
+ * the size needed (nothing is written to `out_text` then).
+ *
+ * # Safety
+ * `out_text` must be NULL or point to `capacity` writable bytes; `out_needed` must be NULL or
+ * point to a writable `size_t`.
+ * \ingroup errors
+ */
+hw_status hw_last_error_message(char *out_text, size_t capacity, size_t *out_needed);
+
+/**
+ * A short, static, NUL-terminated English description of `status`. Unknown values give
+ * `"unknown status"`. Never returns NULL; the string must not be freed.
+ * \ingroup errors
+ */
+const char *hw_status_str(hw_status status);
+
+/**
+ * Sets how many threads bulk construction and normal computation use from now on, for every
+ * thread of the process: 1 runs them single-threaded, 0 restores the default (one per core).
+ * A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
+ * setting. In a build without the `parallel` feature everything is single-threaded and a valid
+ * count changes nothing.
+ * \ingroup errors
+ */
+hw_status hw_set_thread_count(size_t count);
+
+/**
+ * The version number of the library actually linked, in the form of `HW_VERSION_NUMBER`.
+ * Compare with `HW_VERSION_NUMBER` to detect a header/library mismatch.
+ * \ingroup errors
+ */
+uint32_t hw_version_number(void);
+
+/**
+ * The version of the library actually linked, as a static NUL-terminated string such as
+ * `"0.2.0"`. Never NULL; must not be freed.
+ * \ingroup errors
+ */
+const char *hw_version_string(void);
+
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge meshes
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * What hw_mesh_from_indexed() does with faces that cannot be placed in a half-edge structure.
+ * \ingroup mesh
+ */
+typedef uint32_t hw_build_policy;
 
 /**
  * Build the input exactly as it is, or refuse it whole: `HW_ERR_INVALID_INPUT` for a malformed
@@ -1285,6 +567,46 @@ typedef uint32_t hw_fate;
  * \ingroup mesh
  */
 #define HW_BUILD_POLICY_REPAIR 2
+
+/**
+ * An element kind, to pick one of several per-kind arrays.
+ * \ingroup ids
+ */
+typedef uint32_t hw_element_kind;
+
+/**
+ * Vertices.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_VERTEX 0
+
+/**
+ * Half-edges.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_HALFEDGE 1
+
+/**
+ * Edges.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_EDGE 2
+
+/**
+ * Faces.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_FACE 3
+
+/**
+ * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
+ * ::HW_DIAGNOSTIC_LIST_FIRST to `HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT - 1`, apart
+ * from the edge lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding),
+ * so a value of one family passed where another is expected is refused, never read as a different
+ * list.
+ * \ingroup mesh
+ */
+typedef uint32_t hw_diagnostic_list;
 
 /**
  * The first id list.
@@ -1366,6 +688,15 @@ typedef uint32_t hw_fate;
 #define HW_DIAGNOSTIC_LIST_COUNT 10
 
 /**
+ * One list of edges in a diagnostic (see hw_diagnostic_edge()). The values run from
+ * ::HW_DIAGNOSTIC_EDGES_FIRST to `HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT - 1`,
+ * apart from the id lists' (::hw_diagnostic_list) and the doctor's findings'
+ * (::hw_doctor_finding).
+ * \ingroup mesh
+ */
+typedef uint32_t hw_diagnostic_edges;
+
+/**
  * The first edge list.
  * \ingroup mesh
  */
@@ -1388,803 +719,6 @@ typedef uint32_t hw_fate;
  * \ingroup mesh
  */
 #define HW_DIAGNOSTIC_EDGES_COUNT 2
-
-/**
- * Per half-edge: the vertex it leaves.
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_HALFEDGE_ORIGIN 0
-
-/**
- * Per half-edge: the next half-edge around its face or boundary loop.
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_HALFEDGE_NEXT 1
-
-/**
- * Per half-edge: the previous half-edge around its face or boundary loop.
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_HALFEDGE_PREV 2
-
-/**
- * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_HALFEDGE_FACE 3
-
-/**
- * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_VERTEX_HALFEDGE 4
-
-/**
- * Per face: one of its half-edges.
- * \ingroup navigation
- */
-#define HW_MESH_ARRAY_FACE_HALFEDGE 5
-
-/**
- * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
- * \ingroup navigation
- */
-#define HW_CIRCULATOR_KIND_HALFEDGES 0
-
-/**
- * Around a vertex only: the incoming half-edges (twins of the outgoing ones).
- * \ingroup navigation
- */
-#define HW_CIRCULATOR_KIND_INCOMING 1
-
-/**
- * Vertices: a vertex's neighbours, a face's corners.
- * \ingroup navigation
- */
-#define HW_CIRCULATOR_KIND_VERTICES 2
-
-/**
- * Edges: at a vertex, or the sides of a face.
- * \ingroup navigation
- */
-#define HW_CIRCULATOR_KIND_EDGES 3
-
-/**
- * Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
- * \ingroup navigation
- */
-#define HW_CIRCULATOR_KIND_FACES 4
-
-/**
- * `double`.
- * \ingroup attributes
- */
-#define HW_SCALAR_TYPE_F64 0
-
-/**
- * `float`.
- * \ingroup attributes
- */
-#define HW_SCALAR_TYPE_F32 1
-
-/**
- * `int32_t`.
- * \ingroup attributes
- */
-#define HW_SCALAR_TYPE_I32 2
-
-/**
- * `uint32_t`.
- * \ingroup attributes
- */
-#define HW_SCALAR_TYPE_U32 3
-
-/**
- * Unit face normals summed: OpenMesh's default, the textbook average.
- * \ingroup normals
- */
-#define HW_NORMAL_WEIGHTING_UNIFORM 0
-
-/**
- * Face normals weighted by face area.
- * \ingroup normals
- */
-#define HW_NORMAL_WEIGHTING_AREA 1
-
-/**
- * Unit face normals weighted by the face's angle at the vertex: pmp's default.
- * \ingroup normals
- */
-#define HW_NORMAL_WEIGHTING_ANGLE 2
-
-/**
- * Face normals (Newell), indexed by face id.
- * \ingroup winged
- */
-#define HW_WNORMALS_FACES 0
-
-/**
- * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
- * \ingroup winged
- */
-#define HW_WNORMALS_VERTICES 1
-
-/**
- * The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
- * \ingroup winged
- */
-#define HW_WTABLE_VERTICES 0
-
-/**
- * The face table: id, stored edge ("Face-Edge").
- * \ingroup winged
- */
-#define HW_WTABLE_FACES 1
-
-/**
- * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
- * \ingroup winged
- */
-#define HW_WTABLE_EDGES 2
-
-/**
- * The three tables, vertex, face and edge, separated by a blank line.
- * \ingroup winged
- */
-#define HW_WTABLE_ALL 3
-
-/**
- * Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
- * from 1 with a letter (V1, E1, F1).
- * \ingroup winged
- */
-#define HW_WNAMING_CW_CCW 0
-
-/**
- * The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
- * \ingroup winged
- */
-#define HW_WNAMING_DIRECT_INVERSE 1
-
-/**
- * Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
- * \ingroup winged
- */
-#define HW_WNAMING_LEFT_RIGHT 2
-
-/**
- * Columns aligned with spaces; a hole is `∅` (UTF-8).
- * \ingroup winged
- */
-#define HW_TABLE_FORMAT_TEXT 0
-
-/**
- * A Markdown table; a hole is `∅`.
- * \ingroup winged
- */
-#define HW_TABLE_FORMAT_MARKDOWN 1
-
-/**
- * Comma-separated values with a header row; a hole is an empty field.
- * \ingroup winged
- */
-#define HW_TABLE_FORMAT_CSV 2
-
-/**
- * Edges: the edges of a face's loop, or the edges at a vertex.
- * \ingroup winged
- */
-#define HW_WCIRCULATOR_KIND_EDGES 0
-
-/**
- * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
- * \ingroup winged
- */
-#define HW_WCIRCULATOR_KIND_VERTICES 1
-
-/**
- * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
- * \ingroup winged
- */
-#define HW_WCIRCULATOR_KIND_FACES 2
-
-/**
- * No sites.
- * \ingroup voronoi
- */
-#define HW_SITE_DIMENSION_EMPTY 0
-
-/**
- * One distinct site (possibly repeated): one cell, the whole plane.
- * \ingroup voronoi
- */
-#define HW_SITE_DIMENSION_POINT 1
-
-/**
- * Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
- * bisectors, and the hull lists the sites in order along their line.
- * \ingroup voronoi
- */
-#define HW_SITE_DIMENSION_LINE 2
-
-/**
- * The sites span the plane: at least one triangle.
- * \ingroup voronoi
- */
-#define HW_SITE_DIMENSION_PLANE 3
-
-/**
- * Per site: the site representing it (itself unless it duplicates a smaller index).
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_REPRESENTATIVE 0
-
-/**
- * Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
- * Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_TRIANGLES 1
-
-/**
- * Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_TRIANGLE_TWINS 2
-
-/**
- * The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
- * line; for one distinct site: that site).
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_HULL 3
-
-/**
- * Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_TRIANGLE_VERTEX 4
-
-/**
- * Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_HALFEDGE_ORIGIN 5
-
-/**
- * Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
- * out to infinity is followed by the one coming back).
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_HALFEDGE_NEXT 6
-
-/**
- * Per Voronoi half-edge: the previous half-edge around its cell.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_HALFEDGE_PREV 7
-
-/**
- * Per Voronoi half-edge: the site whose cell it bounds (on its left).
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_HALFEDGE_SITE 8
-
-/**
- * Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
- * `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_CELL_HALFEDGE 9
-
-/**
- * Per Voronoi vertex: one outgoing half-edge.
- * \ingroup voronoi
- */
-#define HW_VORONOI_ARRAY_VERTEX_HALFEDGE 10
-
-/**
- * Both ends are Voronoi vertices: from `point` to `end`.
- * \ingroup voronoi
- */
-#define HW_VORONOI_EDGE_KIND_SEGMENT 0
-
-/**
- * One end at infinity: the points `point + t * direction`, `t >= 0`.
- * \ingroup voronoi
- */
-#define HW_VORONOI_EDGE_KIND_RAY 1
-
-/**
- * Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
- * \ingroup voronoi
- */
-#define HW_VORONOI_EDGE_KIND_LINE 2
-
-/**
- * Euclidean distance (the diagram's own metric).
- * \ingroup voronoi
- */
-#define HW_METRIC_EUCLIDEAN 0
-
-/**
- * Manhattan (L1, taxicab) distance `|dx| + |dy|`.
- * \ingroup voronoi
- */
-#define HW_METRIC_MANHATTAN 1
-
-/**
- * Chebyshev (L∞) distance `max(|dx|, |dy|)`.
- * \ingroup voronoi
- */
-#define HW_METRIC_CHEBYSHEV 2
-
-/**
- * The first finding kind.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_FIRST 64
-
-/**
- * Indices of small components (into hw_doctor_report_component()); one id per item.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_SMALL_COMPONENTS 64
-
-/**
- * Faces of a closed path along which the orientation flips (the surface is not orientable),
- * each sharing an edge with the next and the last with the first; one id per item.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS 65
-
-/**
- * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES 66
-
-/**
- * Triangles with an angle below the needle threshold; one id per item.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_NEEDLES 67
-
-/**
- * Triangles with an angle above the cap threshold; one id per item.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_CAPS 68
-
-/**
- * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
- * first, then the two faces, ascending).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_FOLDED_EDGES 69
-
-/**
- * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_LONG_EDGES 70
-
-/**
- * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
- * lowest vertex at that position).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_DUPLICATE_POSITIONS 71
-
-/**
- * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
- * vertex, then the first vertex of its group).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES 72
-
-/**
- * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
- * then the lowest such face).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_DUPLICATE_FACES 73
-
-/**
- * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
- * the edge's two ends, smaller first, and the edge's face).
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_T_VERTICES 74
-
-/**
- * Pairs of faces that intersect other than along the vertices and edges they share, decided
- * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
- * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first),
- * sorted.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_SELF_INTERSECTIONS 75
-
-/**
- * The number of finding kinds.
- * \ingroup doctor
- */
-#define HW_DOCTOR_FINDING_COUNT 12
-
-/**
- * Pairs `removed, kept` (2 values each) of vertices merged into another.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_MERGED_VERTICES 0
-
-/**
- * Vertices removed (merged ones included).
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_REMOVED_VERTICES 1
-
-/**
- * Faces removed.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_REMOVED_FACES 2
-
-/**
- * Pairs `removed, kept` (2 values each) of duplicate faces.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_DUPLICATE_FACES 3
-
-/**
- * Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_STITCHED_HALFEDGES 4
-
-/**
- * The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
- * count before the repair) copies vertex `ids[i]`.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_VERTEX_COPIES 5
-
-/**
- * Faces whose corner order was reversed.
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_REORIENTED_FACES 6
-
-/**
- * Pairs `cap, across` (2 values each) of triangles whose shared edge
- * hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
- * \ingroup repair
- */
-#define HW_REPAIR_LIST_FLIPPED_FACES 7
-
-/**
- * Components of at most `value` faces.
- * \ingroup repair
- */
-#define HW_SMALL_COMPONENTS_BY_FACE_COUNT 0
-
-/**
- * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
- * \ingroup repair
- */
-#define HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER 1
-
-/**
- * Keep every face and cut the surface along the edge (copies of its ends).
- * \ingroup repair
- */
-#define HW_NON_MANIFOLD_EDGES_CUT 0
-
-/**
- * Keep faces in order while the edge has at most one face each way; remove the others.
- * \ingroup repair
- */
-#define HW_NON_MANIFOLD_EDGES_REMOVE_FACES 1
-
-/**
- * Kept: its id is the output element.
- * \ingroup repair
- */
-#define HW_FATE_KEPT 0
-
-/**
- * A vertex merged into another: its id is the output vertex it went into.
- * \ingroup repair
- */
-#define HW_FATE_MERGED 1
-
-/**
- * A face kept, reversed: its id is the output face.
- * \ingroup repair
- */
-#define HW_FATE_REVERSED 2
-
-/**
- * A face removed: fewer than 3 distinct corners after merging (id `UINT32_MAX`).
- * \ingroup repair
- */
-#define HW_FATE_COLLAPSED 3
-
-/**
- * A face removed as a duplicate: its id is the input face kept in its place.
- * \ingroup repair
- */
-#define HW_FATE_DUPLICATE 4
-
-/**
- * Removed: a face the repairing build could not keep, or a vertex with a non-finite
- * coordinate (id `UINT32_MAX`).
- * \ingroup repair
- */
-#define HW_FATE_UNBUILDABLE 5
-
-/**
- * Removed with a small component (id `UINT32_MAX`).
- * \ingroup repair
- */
-#define HW_FATE_SMALL_COMPONENT 6
-
-/**
- * A vertex removed because no kept face names it (id `UINT32_MAX`).
- * \ingroup repair
- */
-#define HW_FATE_UNREFERENCED 7
-
-/**
- * A face removed as degenerate: its corners on one line, collapsed with a short edge or
- * removed by hw_mesh_remove_degenerate_faces() (id `UINT32_MAX`).
- * \ingroup repair
- */
-#define HW_FATE_DEGENERATE 8
-
-/**
- * The ::hw_fate of every input vertex.
- * \ingroup repair
- */
-#define HW_FATES_LIST_VERTEX_KINDS 0
-
-/**
- * The id that goes with every input vertex's fate.
- * \ingroup repair
- */
-#define HW_FATES_LIST_VERTEX_IDS 1
-
-/**
- * The ::hw_fate of every input face.
- * \ingroup repair
- */
-#define HW_FATES_LIST_FACE_KINDS 2
-
-/**
- * The id that goes with every input face's fate.
- * \ingroup repair
- */
-#define HW_FATES_LIST_FACE_IDS 3
-
-/**
- * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
- * vertex, by output id.
- * \ingroup repair
- */
-#define HW_FATES_LIST_ADDED_VERTICES 4
-
-/**
- * One quadrilateral per cell (a triangle where a pole collapses a side).
- * \ingroup surfaces
- */
-#define HW_CELL_FACES_QUADS 0
-
-/**
- * Two triangles per cell.
- * \ingroup surfaces
- */
-#define HW_CELL_FACES_TRIANGLES 1
-
-/**
- * Leave them open.
- * \ingroup surfaces
- */
-#define HW_CAPS_NONE 0
-
-/**
- * One planar polygon per end.
- * \ingroup surfaces
- */
-#define HW_CAPS_POLYGON 1
-
-/**
- * A fan of triangles from a new vertex on the axis.
- * \ingroup surfaces
- */
-#define HW_CAPS_FAN 2
-
-/**
- * Face normals: faceted; every vertex is split per face.
- * \ingroup render
- */
-#define HW_SHADING_FLAT 0
-
-/**
- * Vertex normals with the options' weighting: one render vertex per mesh vertex.
- * \ingroup render
- */
-#define HW_SHADING_SMOOTH 1
-
-/**
- * Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
- * split along those edges only.
- * \ingroup render
- */
-#define HW_SHADING_CREASE 2
-
-/**
- * The default: the options' `corner_normals`, else the mesh's own corner normals (a file's `vn`,
- * hw_mesh_corner_normals_set()) when `mesh_corner_normals` is true, scaled to unit length. A
- * corner without one — none given, or a zero vector (how a mesh read from an OBJ stores the
- * corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
- * options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
- * those normals and compute every normal from the positions.
- * \ingroup render
- */
-#define HW_SHADING_CORNER_NORMALS 3
-
-/**
- * x y z per vertex (separate layout; empty when interleaved).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_POSITIONS 0
-
-/**
- * Unit nx ny nz per vertex (separate layout; empty when interleaved).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_NORMALS 1
-
-/**
- * u v per vertex (separate layout with corner uvs; empty otherwise).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_UVS 2
-
-/**
- * hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_INTERLEAVED 3
-
-/**
- * `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_WIREFRAME 4
-
-/**
- * `GL_LINES` points of the boundary edges (edges with a face on one side only).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_BOUNDARY 5
-
-/**
- * `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_NON_MANIFOLD 6
-
-/**
- * `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_VERTEX_NORMALS 7
-
-/**
- * `GL_LINES` glyphs of the face normals, from each face's centroid.
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_FACE_NORMALS 8
-
-/**
- * `GL_POINTS` points, x y z: the vertices a doctor's finding names
- * (hw_render_buffers_from_finding(); empty otherwise).
- * \ingroup render
- */
-#define HW_RENDER_FLOATS_POINTS 9
-
-/**
- * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
- * \ingroup render
- */
-#define HW_RENDER_INDICES_TRIANGLES 0
-
-/**
- * Per triangle, the mesh face (or polygon) it comes from.
- * \ingroup render
- */
-#define HW_RENDER_INDICES_TRIANGLE_FACES 1
-
-/**
- * Per vertex, the mesh vertex (or polygon) it shows.
- * \ingroup render
- */
-#define HW_RENDER_INDICES_VERTEX_SOURCES 2
-
-/**
- * Per ::HW_RENDER_FLOATS_WIREFRAME segment, its edge id (or polygon).
- * \ingroup render
- */
-#define HW_RENDER_INDICES_WIREFRAME_SOURCES 3
-
-/**
- * Per ::HW_RENDER_FLOATS_BOUNDARY segment, its edge id.
- * \ingroup render
- */
-#define HW_RENDER_INDICES_BOUNDARY_SOURCES 4
-
-/**
- * Per ::HW_RENDER_FLOATS_POINTS point, the item of the finding it shows.
- * \ingroup render
- */
-#define HW_RENDER_INDICES_POINT_SOURCES 5
-
-#ifdef __cplusplus
-extern "C" {
-#endif // __cplusplus
-
-/**
- * Copies the message of the last failed call on this thread into `out_text`, NUL-terminated.
- *
- * `*out_needed` (when `out_needed` is not NULL) always receives the size the message needs,
- * terminator included — also when the buffer is too small, so a caller can allocate and call
- * again; it is never more than ::HW_MAX_MESSAGE_SIZE, so a buffer of that size always suffices.
- * The message is empty (`out_needed` = 1) when no call has failed on this thread yet. Successful
- * calls do not clear it, and neither does this function, so it can be read as often as wanted.
- * Calls made from a thread-local destructor after this thread's storage is torn down still return
- * their status, but record no message (it reads empty).
- *
- * Returns `HW_OK`, or `HW_ERR_BUFFER_TOO_SMALL` when `out_text` is NULL or `capacity` is less than
- * the size needed (nothing is written to `out_text` then).
- *
- * # Safety
- * `out_text` must be NULL or point to `capacity` writable bytes; `out_needed` must be NULL or
- * point to a writable `size_t`.
- * \ingroup errors
- */
-hw_status hw_last_error_message(char *out_text, size_t capacity, size_t *out_needed);
-
-/**
- * A short, static, NUL-terminated English description of `status`. Unknown values give
- * `"unknown status"`. Never returns NULL; the string must not be freed.
- * \ingroup errors
- */
-const char *hw_status_str(hw_status status);
-
-/**
- * Sets how many threads bulk construction and normal computation use from now on, for every
- * thread of the process: 1 runs them single-threaded, 0 restores the default (one per core).
- * A count above ::HW_MAX_THREAD_COUNT gives `HW_ERR_INVALID_INPUT` and keeps the current
- * setting. In a build without the `parallel` feature everything is single-threaded and a valid
- * count changes nothing.
- * \ingroup errors
- */
-hw_status hw_set_thread_count(size_t count);
-
-/**
- * The version number of the library actually linked, in the form of `HW_VERSION_NUMBER`.
- * Compare with `HW_VERSION_NUMBER` to detect a header/library mismatch.
- * \ingroup errors
- */
-uint32_t hw_version_number(void);
-
-/**
- * The version of the library actually linked, as a static NUL-terminated string such as
- * `"0.2.0"`. Never NULL; must not be freed.
- * \ingroup errors
- */
-const char *hw_version_string(void);
 
 /**
  * Creates an empty mesh. Returns NULL only if the allocation fails.
@@ -2398,6 +932,96 @@ hw_status hw_diagnostic_summary(const hw_diagnostic *diagnostic,
                                 size_t capacity,
                                 size_t *out_needed);
 
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge navigation
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * A vertex id.
+ * \ingroup ids
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_vertex;
+
+/**
+ * A half-edge id. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`, its edge `h.idx >> 1`.
+ * \ingroup ids
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_halfedge;
+
+/**
+ * A face id.
+ * \ingroup ids
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_face;
+
+/**
+ * An (undirected) edge id: edge `e` has the half-edges `2 e` and `2 e + 1`.
+ * \ingroup ids
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_edge;
+
+/**
+ * Which internal array hw_mesh_view() shows.
+ * \ingroup navigation
+ */
+typedef uint32_t hw_mesh_array;
+
+/**
+ * Per half-edge: the vertex it leaves.
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_HALFEDGE_ORIGIN 0
+
+/**
+ * Per half-edge: the next half-edge around its face or boundary loop.
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_HALFEDGE_NEXT 1
+
+/**
+ * Per half-edge: the previous half-edge around its face or boundary loop.
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_HALFEDGE_PREV 2
+
+/**
+ * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_HALFEDGE_FACE 3
+
+/**
+ * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated).
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_VERTEX_HALFEDGE 4
+
+/**
+ * Per face: one of its half-edges.
+ * \ingroup navigation
+ */
+#define HW_MESH_ARRAY_FACE_HALFEDGE 5
+
 /**
  * The vertex half-edge `h` leaves (`Origin` or `v` in textbook notation).
  *
@@ -2545,6 +1169,298 @@ uint32_t hw_mesh_vertex_valence(const hw_mesh *mesh, hw_vertex v);
 uint32_t hw_mesh_face_degree(const hw_mesh *mesh, hw_face f);
 
 /**
+ * A read-only view of one connectivity array: `*out_data` (NULL when empty) and its length
+ * `*out_len`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_data` and `out_len` writable.
+ * \ingroup navigation
+ */
+hw_status hw_mesh_view(const hw_mesh *mesh,
+                       hw_mesh_array which,
+                       const uint32_t **out_data,
+                       size_t *out_len);
+
+/**
+ * A read-only view of the vertex positions: `*out_xyz` holds `3 * *out_n_vertices` doubles
+ * (x, y, z per vertex; NULL when there are none).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_vertices` writable.
+ * \ingroup navigation
+ */
+hw_status hw_mesh_view_positions(const hw_mesh *mesh,
+                                 const double **out_xyz,
+                                 size_t *out_n_vertices);
+
+/* ----------------------------------------------------------------------------------------------
+ * Inline half-edge navigation
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * A navigation view of a mesh: its connectivity arrays (zero-copy, as hw_mesh_view() gives them)
+ * and their sizes, filled by hw_mesh_nav() and read by the inline `hw_nav_*` functions of
+ * halfwing_nav.h. Valid until the next call that modifies the mesh (or frees it). Arrays are
+ * indexed by id, deleted slots included until hw_mesh_garbage_collect(); an unused slot holds
+ * `HW_INVALID_INDEX`. A pointer is NULL when its array is empty.
+ * \ingroup nav
+ */
+typedef struct {
+  /**
+   * Per half-edge: the vertex it leaves.
+   */
+  const uint32_t *origin;
+  /**
+   * Per half-edge: the next half-edge around its face or boundary loop.
+   */
+  const uint32_t *next;
+  /**
+   * Per half-edge: the previous half-edge around its face or boundary loop.
+   */
+  const uint32_t *prev;
+  /**
+   * Per half-edge: its face (`HW_INVALID_INDEX` on a boundary).
+   */
+  const uint32_t *face;
+  /**
+   * Per vertex: its outgoing half-edge (the boundary one on a boundary; invalid when isolated
+   * or deleted).
+   */
+  const uint32_t *vertex_halfedge;
+  /**
+   * Per face: one of its half-edges.
+   */
+  const uint32_t *face_halfedge;
+  /**
+   * Per vertex slot: `true` when deleted; NULL while no vertex has been deleted.
+   */
+  const bool *vertex_deleted;
+  /**
+   * Per edge slot: `true` when deleted (both half-edges); NULL while no edge has been deleted.
+   */
+  const bool *edge_deleted;
+  /**
+   * Per face slot: `true` when deleted; NULL while no face has been deleted.
+   */
+  const bool *face_deleted;
+  /**
+   * Vertex slots (valid vertex ids are below this), deleted ones included.
+   */
+  size_t n_vertex_slots;
+  /**
+   * Half-edge slots, deleted ones included.
+   */
+  size_t n_halfedge_slots;
+  /**
+   * Face slots, deleted ones included.
+   */
+  size_t n_face_slots;
+} hw_nav;
+
+/**
+ * Fills `*out` with the navigation view of `mesh` (see ::hw_nav and halfwing_nav.h).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` NULL or writable.
+ * \ingroup nav
+ */
+hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
+
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge circulators and callbacks
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * What a circulator yields.
+ * \ingroup circulators
+ */
+typedef uint32_t hw_circulator_kind;
+
+/**
+ * Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
+ * \ingroup circulators
+ */
+#define HW_CIRCULATOR_KIND_HALFEDGES 0
+
+/**
+ * Around a vertex only: the incoming half-edges (twins of the outgoing ones).
+ * \ingroup circulators
+ */
+#define HW_CIRCULATOR_KIND_INCOMING 1
+
+/**
+ * Vertices: a vertex's neighbours, a face's corners.
+ * \ingroup circulators
+ */
+#define HW_CIRCULATOR_KIND_VERTICES 2
+
+/**
+ * Edges: at a vertex, or the sides of a face.
+ * \ingroup circulators
+ */
+#define HW_CIRCULATOR_KIND_EDGES 3
+
+/**
+ * Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
+ * \ingroup circulators
+ */
+#define HW_CIRCULATOR_KIND_FACES 4
+
+/**
+ * A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
+ * hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
+ * kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
+ * \ingroup circulators
+ */
+typedef struct {
+  /**
+   * The mesh walked.
+   */
+  const hw_mesh *mesh;
+  /**
+   * The half-edge the walk started at; reaching it again ends the walk.
+   */
+  uint32_t start;
+  /**
+   * The half-edge the walk yields next, or `HW_INVALID_INDEX` once it is over.
+   */
+  uint32_t current;
+  /**
+   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
+   */
+  uint32_t remaining;
+  /**
+   * What it walks around: a vertex, a face or a boundary loop (internal code).
+   */
+  uint32_t center;
+  /**
+   * What it yields.
+   */
+  hw_circulator_kind kind;
+} hw_circulator;
+
+/**
+ * A caller's function called once per id by the `_visit` calls, with the `userdata` given to
+ * them. Returns `true` to go on, `false` to stop the visit there.
+ * \ingroup circulators
+ */
+typedef bool (*hw_visit_fn)(uint32_t idx, void *userdata);
+
+/**
+ * Starts a walk around vertex `v`. An isolated vertex gives an empty walk.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup circulators
+ */
+hw_status hw_circ_around_vertex(const hw_mesh *mesh,
+                                hw_vertex v,
+                                hw_circulator_kind kind,
+                                hw_circulator *out);
+
+/**
+ * Starts a walk around face `f`.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup circulators
+ */
+hw_status hw_circ_around_face(const hw_mesh *mesh,
+                              hw_face f,
+                              hw_circulator_kind kind,
+                              hw_circulator *out);
+
+/**
+ * Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
+ * boundary half-edge. Yields half-edges (`kind` is ::HW_CIRCULATOR_KIND_HALFEDGES).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out` writable.
+ * \ingroup circulators
+ */
+hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *out);
+
+/**
+ * Next half-edge of a ::HW_CIRCULATOR_KIND_HALFEDGES or ::HW_CIRCULATOR_KIND_INCOMING circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup circulators
+ */
+bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
+
+/**
+ * Next vertex of a ::HW_CIRCULATOR_KIND_VERTICES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup circulators
+ */
+bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
+
+/**
+ * Next edge of a ::HW_CIRCULATOR_KIND_EDGES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup circulators
+ */
+bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
+
+/**
+ * Next face of a ::HW_CIRCULATOR_KIND_FACES circulator.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
+ * \ingroup circulators
+ */
+bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
+
+/**
+ * Calls `visit(id, userdata)` for every live (not deleted) element of `kind`
+ * (::HW_ELEMENT_KIND_VERTEX, ::HW_ELEMENT_KIND_HALFEDGE, ::HW_ELEMENT_KIND_EDGE or
+ * ::HW_ELEMENT_KIND_FACE), in increasing id order, until `visit` returns `false`. `*out_visited`,
+ * when `out_visited` is not NULL, receives the number of calls made. `visit` may read the mesh but
+ * must not free it, and must not throw or `longjmp` through this call. An empty mesh makes no
+ * call.
+ *
+ * Returns `HW_ERR_NULL_ARGUMENT` for a NULL mesh or `visit`, `HW_ERR_INVALID_INPUT` for an
+ * unknown kind (no call is made then).
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh; `out_visited` NULL or writable.
+ * \ingroup circulators
+ */
+hw_status hw_mesh_visit(const hw_mesh *mesh,
+                        hw_element_kind kind,
+                        hw_visit_fn visit,
+                        void *userdata,
+                        size_t *out_visited);
+
+/**
+ * Calls `visit(id, userdata)` for each element `circulator` yields (ids of the kind it was
+ * started with: half-edges, vertices, edges or faces), until the walk ends or `visit` returns
+ * `false`; the circulator is left where the visit stopped. `*out_visited`, when `out_visited` is
+ * not NULL, receives the number of calls made. `visit` may read the mesh but must not modify or
+ * free it, and must not throw or `longjmp` through this call.
+ *
+ * Returns `HW_ERR_NULL_ARGUMENT` for a NULL circulator or `visit`.
+ *
+ * # Safety
+ * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out_visited` NULL or
+ * writable.
+ * \ingroup circulators
+ */
+hw_status hw_circ_visit(hw_circulator *circulator,
+                        hw_visit_fn visit,
+                        void *userdata,
+                        size_t *out_visited);
+
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge topology
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
  * Validates every invariant of the half-edge structure (twins, next/prev, closed face and
  * boundary loops, vertex half-edges outgoing and on the boundary when there is one, ids in
  * range), with every walk bounded. `HW_OK`, or `HW_ERR_INVALID_INPUT` with a message naming the
@@ -2605,149 +1521,9 @@ hw_status hw_mesh_face_components(const hw_mesh *mesh,
                                   size_t capacity,
                                   size_t *out_needed);
 
-/**
- * Fills `*out` with the navigation view of `mesh` (see ::hw_nav and halfwing_nav.h).
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out` NULL or writable.
- * \ingroup nav
- */
-hw_status hw_mesh_nav(const hw_mesh *mesh, hw_nav *out);
-
-/**
- * A read-only view of one connectivity array: `*out_data` (NULL when empty) and its length
- * `*out_len`.
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out_data` and `out_len` writable.
- * \ingroup navigation
- */
-hw_status hw_mesh_view(const hw_mesh *mesh,
-                       hw_mesh_array which,
-                       const uint32_t **out_data,
-                       size_t *out_len);
-
-/**
- * A read-only view of the vertex positions: `*out_xyz` holds `3 * *out_n_vertices` doubles
- * (x, y, z per vertex; NULL when there are none).
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out_xyz` and `out_n_vertices` writable.
- * \ingroup navigation
- */
-hw_status hw_mesh_view_positions(const hw_mesh *mesh,
-                                 const double **out_xyz,
-                                 size_t *out_n_vertices);
-
-/**
- * Starts a walk around vertex `v`. An isolated vertex gives an empty walk.
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out` writable.
- * \ingroup navigation
- */
-hw_status hw_circ_around_vertex(const hw_mesh *mesh,
-                                hw_vertex v,
-                                hw_circulator_kind kind,
-                                hw_circulator *out);
-
-/**
- * Starts a walk around face `f`.
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out` writable.
- * \ingroup navigation
- */
-hw_status hw_circ_around_face(const hw_mesh *mesh,
-                              hw_face f,
-                              hw_circulator_kind kind,
-                              hw_circulator *out);
-
-/**
- * Starts a walk by `next` from `h`: a face's sides, or a whole boundary loop when `h` is a
- * boundary half-edge. Yields half-edges (`kind` is ::HW_CIRCULATOR_KIND_HALFEDGES).
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out` writable.
- * \ingroup navigation
- */
-hw_status hw_circ_along_loop(const hw_mesh *mesh, hw_halfedge h, hw_circulator *out);
-
-/**
- * Next half-edge of a ::HW_CIRCULATOR_KIND_HALFEDGES or ::HW_CIRCULATOR_KIND_INCOMING circulator.
- *
- * # Safety
- * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
- * \ingroup navigation
- */
-bool hw_circ_next_halfedge(hw_circulator *circulator, hw_halfedge *out);
-
-/**
- * Next vertex of a ::HW_CIRCULATOR_KIND_VERTICES circulator.
- *
- * # Safety
- * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
- * \ingroup navigation
- */
-bool hw_circ_next_vertex(hw_circulator *circulator, hw_vertex *out);
-
-/**
- * Next edge of a ::HW_CIRCULATOR_KIND_EDGES circulator.
- *
- * # Safety
- * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
- * \ingroup navigation
- */
-bool hw_circ_next_edge(hw_circulator *circulator, hw_edge *out);
-
-/**
- * Next face of a ::HW_CIRCULATOR_KIND_FACES circulator.
- *
- * # Safety
- * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
- * \ingroup navigation
- */
-bool hw_circ_next_face(hw_circulator *circulator, hw_face *out);
-
-/**
- * Calls `visit(id, userdata)` for every live (not deleted) element of `kind`
- * (::HW_ELEMENT_KIND_VERTEX, ::HW_ELEMENT_KIND_HALFEDGE, ::HW_ELEMENT_KIND_EDGE or
- * ::HW_ELEMENT_KIND_FACE), in increasing id order, until `visit` returns `false`. `*out_visited`,
- * when `out_visited` is not NULL, receives the number of calls made. `visit` may read the mesh but
- * must not free it, and must not throw or `longjmp` through this call. An empty mesh makes no
- * call.
- *
- * Returns `HW_ERR_NULL_ARGUMENT` for a NULL mesh or `visit`, `HW_ERR_INVALID_INPUT` for an
- * unknown kind (no call is made then).
- *
- * # Safety
- * `mesh` must be NULL or a live mesh; `out_visited` NULL or writable.
- * \ingroup navigation
- */
-hw_status hw_mesh_visit(const hw_mesh *mesh,
-                        hw_element_kind kind,
-                        hw_visit_fn visit,
-                        void *userdata,
-                        size_t *out_visited);
-
-/**
- * Calls `visit(id, userdata)` for each element `circulator` yields (ids of the kind it was
- * started with: half-edges, vertices, edges or faces), until the walk ends or `visit` returns
- * `false`; the circulator is left where the visit stopped. `*out_visited`, when `out_visited` is
- * not NULL, receives the number of calls made. `visit` may read the mesh but must not modify or
- * free it, and must not throw or `longjmp` through this call.
- *
- * Returns `HW_ERR_NULL_ARGUMENT` for a NULL circulator or `visit`.
- *
- * # Safety
- * `circulator` must be NULL or a circulator over a live, unmodified mesh; `out_visited` NULL or
- * writable.
- * \ingroup navigation
- */
-hw_status hw_circ_visit(hw_circulator *circulator,
-                        hw_visit_fn visit,
-                        void *userdata,
-                        size_t *out_visited);
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge editing
+ * ---------------------------------------------------------------------------------------------- */
 
 /**
  * Adds an isolated vertex at `xyz[0..3]` (finite) and gives its id in `*out_vertex`.
@@ -2894,6 +1670,40 @@ hw_status hw_index_maps_view(const hw_index_maps *maps,
  * \ingroup edit
  */
 void hw_index_maps_free(hw_index_maps *maps);
+
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge positions and attributes
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * The numeric type of an attribute column.
+ * \ingroup attributes
+ */
+typedef uint32_t hw_scalar_type;
+
+/**
+ * `double`.
+ * \ingroup attributes
+ */
+#define HW_SCALAR_TYPE_F64 0
+
+/**
+ * `float`.
+ * \ingroup attributes
+ */
+#define HW_SCALAR_TYPE_F32 1
+
+/**
+ * `int32_t`.
+ * \ingroup attributes
+ */
+#define HW_SCALAR_TYPE_I32 2
+
+/**
+ * `uint32_t`.
+ * \ingroup attributes
+ */
+#define HW_SCALAR_TYPE_U32 3
 
 /**
  * Copies the position of `v` into `out_xyz[0..3]`.
@@ -3064,6 +1874,34 @@ hw_status hw_mesh_corner_uvs_view(const hw_mesh *mesh,
  */
 hw_status hw_mesh_corner_uvs_set(hw_mesh *mesh, const double *uv, size_t n_halfedges);
 
+/* ----------------------------------------------------------------------------------------------
+ * Half-edge normals
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * How a vertex normal weighs the faces around it.
+ * \ingroup normals
+ */
+typedef uint32_t hw_normal_weighting;
+
+/**
+ * Unit face normals summed: OpenMesh's default, the textbook average.
+ * \ingroup normals
+ */
+#define HW_NORMAL_WEIGHTING_UNIFORM 0
+
+/**
+ * Face normals weighted by face area.
+ * \ingroup normals
+ */
+#define HW_NORMAL_WEIGHTING_AREA 1
+
+/**
+ * Unit face normals weighted by the face's angle at the vertex: pmp's default.
+ * \ingroup normals
+ */
+#define HW_NORMAL_WEIGHTING_ANGLE 2
+
 /**
  * Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
  *
@@ -3131,6 +1969,10 @@ hw_status hw_mesh_corner_normals(const hw_mesh *mesh,
                                  size_t capacity,
                                  size_t *out_needed);
 
+/* ----------------------------------------------------------------------------------------------
+ * Files
+ * ---------------------------------------------------------------------------------------------- */
+
 /**
  * Reads a mesh file into an indexed face list. Malformed files give `HW_ERR_PARSE` with the
  * line (or binary PLY record) and the problem; unreadable ones `HW_ERR_IO`; an unknown extension
@@ -3196,6 +2038,10 @@ hw_status hw_mesh_read(const char *path,
  * \ingroup io
  */
 hw_status hw_mesh_write(const hw_mesh *mesh, const char *path);
+
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge meshes
+ * ---------------------------------------------------------------------------------------------- */
 
 /**
  * Creates an empty structure, to build with the Euler operators (hw_winged_mvfs() first).
@@ -3350,11 +2196,115 @@ size_t hw_winged_edge_capacity(const hw_winged *winged);
 size_t hw_winged_face_capacity(const hw_winged *winged);
 
 /**
- * Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
+ * Checks every structural invariant (records in range, wings linking closed loops, stored
+ * edges incident, counts). `HW_OK`, or `HW_ERR_INVALID_INPUT` with the first broken invariant
+ * in the message. A structure made by this library always passes.
  *
  * # Safety
  * `winged` must be NULL or a live structure.
  * \ingroup winged
+ */
+hw_status hw_winged_check(const hw_winged *winged);
+
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge navigation
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * A vertex id of an ::hw_winged.
+ * \ingroup winged
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_wvertex;
+
+/**
+ * An edge id of an ::hw_winged (one record per undirected edge).
+ * \ingroup winged
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_wedge;
+
+/**
+ * A face id of an ::hw_winged. On an edge side, `idx == HW_INVALID_INDEX` means a hole
+ * (a boundary).
+ * \ingroup winged
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_wface;
+
+/**
+ * Baumgart's edge record. An edge runs `start → end`; its **left** side is the loop that walks
+ * it `start → end`, its **right** side the loop that walks it `end → start`; each side has the
+ * previous and next edge of that loop (its wings). The same fields under three naming
+ * conventions:
+ *
+ * | field        | Baumgart            | Granada            | Wikipedia            |
+ * |--------------|---------------------|--------------------|----------------------|
+ * | `start`      | VSTART              | Vi                 | vert_origin          |
+ * | `end`        | VEND                | Vf                 | vert_destination     |
+ * | `left_face`  | FCW                 | Cd                 | face_left            |
+ * | `right_face` | FCCW                | Ci                 | face_right           |
+ * | `left_prev`  | EPCW                | Ada                | edge_left_cw         |
+ * | `left_next`  | ENCW                | Ads                | edge_left_ccw        |
+ * | `right_prev` | EPCCW               | Aia                | edge_right_cw        |
+ * | `right_next` | ENCCW               | Ais                | edge_right_ccw       |
+ *
+ * A face id of `HW_INVALID_INDEX` is a hole; its wings still link the boundary loop.
+ * \ingroup winged
+ */
+typedef struct {
+  /**
+   * The vertex the edge starts at.
+   */
+  hw_wvertex start;
+  /**
+   * The vertex the edge ends at.
+   */
+  hw_wvertex end;
+  /**
+   * The face on its left (the loop that walks it `start → end`).
+   */
+  hw_wface left_face;
+  /**
+   * The face on its right (the loop that walks it `end → start`).
+   */
+  hw_wface right_face;
+  /**
+   * The edge before it in the left loop.
+   */
+  hw_wedge left_prev;
+  /**
+   * The edge after it in the left loop.
+   */
+  hw_wedge left_next;
+  /**
+   * The edge before it in the right loop.
+   */
+  hw_wedge right_prev;
+  /**
+   * The edge after it in the right loop.
+   */
+  hw_wedge right_next;
+} hw_wedge_record;
+
+/**
+ * Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure.
+ * \ingroup winged_navigation
  */
 bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
 
@@ -3363,7 +2313,7 @@ bool hw_winged_is_vertex(const hw_winged *winged, hw_wvertex v);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
 
@@ -3372,7 +2322,7 @@ bool hw_winged_is_edge(const hw_winged *winged, hw_wedge e);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
 
@@ -3382,7 +2332,7 @@ bool hw_winged_is_face(const hw_winged *winged, hw_wface f);
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_record` writable.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 hw_status hw_winged_edge(const hw_winged *winged, hw_wedge e, hw_wedge_record *out_record);
 
@@ -3393,7 +2343,7 @@ hw_status hw_winged_edge(const hw_winged *winged, hw_wedge e, hw_wedge_record *o
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_records` and `out_len` writable.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 hw_status hw_winged_edge_records(const hw_winged *winged,
                                  const hw_wedge_record **out_records,
@@ -3406,7 +2356,7 @@ hw_status hw_winged_edge_records(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
 
@@ -3416,90 +2366,79 @@ hw_wedge hw_winged_vertex_edge(const hw_winged *winged, hw_wvertex v);
  *
  * # Safety
  * `winged` must be NULL or a live structure.
- * \ingroup winged
+ * \ingroup winged_navigation
  */
 hw_wedge hw_winged_face_edge(const hw_winged *winged, hw_wface f);
 
-/**
- * Writes the position of `v` to `out_xyz[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
- *
- * # Safety
- * `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
- * \ingroup winged
- */
-hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge circulators
+ * ---------------------------------------------------------------------------------------------- */
 
 /**
- * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
- * degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
- * `HW_ERR_NULL_ARGUMENT`).
- *
- * # Safety
- * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
- * \ingroup winged
+ * What a winged circulator yields.
+ * \ingroup winged_circulators
  */
-hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
+typedef uint32_t hw_wcirculator_kind;
 
 /**
- * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
- * normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
- * (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
- *
- * # Safety
- * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
- * \ingroup winged
+ * Edges: the edges of a face's loop, or the edges at a vertex.
+ * \ingroup winged_circulators
  */
-hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+#define HW_WCIRCULATOR_KIND_EDGES 0
 
 /**
- * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
- * ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
- * deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
- * `*out_needed` (when not NULL) always receives the number of doubles needed;
- * `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
- *
- * # Safety
- * `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
- * `out_needed` NULL or writable.
- * \ingroup winged
+ * Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
+ * \ingroup winged_circulators
  */
-hw_status hw_winged_normals(const hw_winged *winged,
-                            hw_wnormals which,
-                            double *out_normals,
-                            size_t capacity,
-                            size_t *out_needed);
+#define HW_WCIRCULATOR_KIND_VERTICES 1
 
 /**
- * Checks every structural invariant (records in range, wings linking closed loops, stored
- * edges incident, counts). `HW_OK`, or `HW_ERR_INVALID_INPUT` with the first broken invariant
- * in the message. A structure made by this library always passes.
- *
- * # Safety
- * `winged` must be NULL or a live structure.
- * \ingroup winged
+ * Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
+ * \ingroup winged_circulators
  */
-hw_status hw_winged_check(const hw_winged *winged);
+#define HW_WCIRCULATOR_KIND_FACES 2
 
 /**
- * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES, ...;
- * `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `out_text`
- * (`capacity` bytes), NUL-terminated, every line ending with a newline. `*out_needed` (when not
- * NULL) always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when
- * `out_text` is NULL or shorter (call with `out_text = NULL` to learn the size). Unknown enum
- * values give `HW_ERR_INVALID_INPUT`.
- *
- * # Safety
- * `winged` must be NULL or a live structure; `out_text` NULL or `capacity` writable bytes;
- * `out_needed` NULL or writable.
- * \ingroup winged
+ * A winged circulator's state, kept on the caller's stack. Fill it with
+ * hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
+ * its kind. Treat the fields as private. It borrows the structure: do not modify the structure
+ * while walking.
+ * \ingroup winged_circulators
  */
-hw_status hw_winged_table(const hw_winged *winged,
-                          hw_wtable which,
-                          hw_wnaming naming,
-                          hw_table_format format,
-                          char *out_text,
-                          size_t capacity,
-                          size_t *out_needed);
+typedef struct {
+  /**
+   * The structure walked.
+   */
+  const hw_winged *winged;
+  /**
+   * The edge of the use the walk started from; coming back to that use ends the walk.
+   */
+  uint32_t start_edge;
+  /**
+   * The side of that use: 0 left, 1 right.
+   */
+  uint32_t start_side;
+  /**
+   * The edge of the use the walk yields next, `HW_INVALID_INDEX` once it is over.
+   */
+  uint32_t current_edge;
+  /**
+   * The side of that use: 0 left, 1 right.
+   */
+  uint32_t current_side;
+  /**
+   * Steps left before the bound on a walk's length stops it (a corrupt cycle cannot hang).
+   */
+  uint32_t remaining;
+  /**
+   * What it walks around: a face or a vertex (internal code).
+   */
+  uint32_t center;
+  /**
+   * What it yields.
+   */
+  hw_wcirculator_kind kind;
+} hw_wcirculator;
 
 /**
  * Starts a walk around face `f`: its edges or corners in loop order, or the faces across its
@@ -3507,7 +2446,7 @@ hw_status hw_winged_table(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out` writable.
- * \ingroup winged
+ * \ingroup winged_circulators
  */
 hw_status hw_wcirc_around_face(const hw_winged *winged,
                                hw_wface f,
@@ -3520,7 +2459,7 @@ hw_status hw_wcirc_around_face(const hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out` writable.
- * \ingroup winged
+ * \ingroup winged_circulators
  */
 hw_status hw_wcirc_around_vertex(const hw_winged *winged,
                                  hw_wvertex v,
@@ -3532,7 +2471,7 @@ hw_status hw_wcirc_around_vertex(const hw_winged *winged,
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
- * \ingroup winged
+ * \ingroup winged_circulators
  */
 bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
 
@@ -3541,7 +2480,7 @@ bool hw_wcirc_next_edge(hw_wcirculator *circulator, hw_wedge *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
- * \ingroup winged
+ * \ingroup winged_circulators
  */
 bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
 
@@ -3550,9 +2489,13 @@ bool hw_wcirc_next_vertex(hw_wcirculator *circulator, hw_wvertex *out);
  *
  * # Safety
  * `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
- * \ingroup winged
+ * \ingroup winged_circulators
  */
 bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
+
+/* ----------------------------------------------------------------------------------------------
+ * Euler operators
+ * ---------------------------------------------------------------------------------------------- */
 
 /**
  * **Make vertex, face, solid**: a new solid of one vertex at `position[0..3]` and one face
@@ -3562,7 +2505,7 @@ bool hw_wcirc_next_face(hw_wcirculator *circulator, hw_wface *out);
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
  * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
  * `out_face` writable.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_mvfs(hw_winged *winged,
                          const double *position,
@@ -3578,7 +2521,7 @@ hw_status hw_winged_mvfs(hw_winged *winged,
  * `winged` must be NULL or a live structure used by no one else during the call; `position`
  * must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
  * `out_vertex` writable.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_mev(hw_winged *winged,
                         hw_wface face,
@@ -3596,7 +2539,7 @@ hw_status hw_winged_mev(hw_winged *winged,
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `out_edge`
  * and `out_face` writable.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_mef(hw_winged *winged,
                         hw_wface face,
@@ -3614,7 +2557,7 @@ hw_status hw_winged_mef(hw_winged *winged,
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_kev(hw_winged *winged, hw_wedge edge, hw_wvertex vertex);
 
@@ -3624,7 +2567,7 @@ hw_status hw_winged_kev(hw_winged *winged, hw_wedge edge, hw_wvertex vertex);
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_kef(hw_winged *winged, hw_wedge edge, hw_wface kill);
 
@@ -3633,7 +2576,7 @@ hw_status hw_winged_kef(hw_winged *winged, hw_wedge edge, hw_wface kill);
  *
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
 
@@ -3646,9 +2589,22 @@ hw_status hw_winged_kvfs(hw_winged *winged, hw_wface face);
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
  * NULL or writable.
- * \ingroup winged
+ * \ingroup winged_edit
  */
 hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps);
+
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge positions
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * Writes the position of `v` to `out_xyz[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
+ * \ingroup winged_attributes
+ */
+hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
 
 /**
  * Moves vertex `v` to `xyz[0..3]` (finite).
@@ -3656,9 +2612,399 @@ hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps)
  * # Safety
  * `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
  * doubles.
- * \ingroup winged
+ * \ingroup winged_attributes
  */
 hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *xyz);
+
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge normals
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * Which elements hw_winged_normals() gives normals of.
+ * \ingroup winged_normals
+ */
+typedef uint32_t hw_wnormals;
+
+/**
+ * Face normals (Newell), indexed by face id.
+ * \ingroup winged_normals
+ */
+#define HW_WNORMALS_FACES 0
+
+/**
+ * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
+ * \ingroup winged_normals
+ */
+#define HW_WNORMALS_VERTICES 1
+
+/**
+ * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
+ * degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
+ * `HW_ERR_NULL_ARGUMENT`).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+ * \ingroup winged_normals
+ */
+hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
+
+/**
+ * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
+ * normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
+ * (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
+ * \ingroup winged_normals
+ */
+hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+
+/**
+ * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
+ * ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
+ * deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
+ * `*out_needed` (when not NULL) always receives the number of doubles needed;
+ * `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
+ * `out_needed` NULL or writable.
+ * \ingroup winged_normals
+ */
+hw_status hw_winged_normals(const hw_winged *winged,
+                            hw_wnormals which,
+                            double *out_normals,
+                            size_t capacity,
+                            size_t *out_needed);
+
+/* ----------------------------------------------------------------------------------------------
+ * Winged-edge tables
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * Which table hw_winged_table() prints.
+ * \ingroup winged_io
+ */
+typedef uint32_t hw_wtable;
+
+/**
+ * The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
+ * \ingroup winged_io
+ */
+#define HW_WTABLE_VERTICES 0
+
+/**
+ * The face table: id, stored edge ("Face-Edge").
+ * \ingroup winged_io
+ */
+#define HW_WTABLE_FACES 1
+
+/**
+ * The edge table: id, vertices, faces and wings ("Edge-Edge relation").
+ * \ingroup winged_io
+ */
+#define HW_WTABLE_EDGES 2
+
+/**
+ * The three tables, vertex, face and edge, separated by a blank line.
+ * \ingroup winged_io
+ */
+#define HW_WTABLE_ALL 3
+
+/**
+ * Which naming scheme a table's columns use.
+ * \ingroup winged_io
+ */
+typedef uint32_t hw_wnaming;
+
+/**
+ * Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
+ * from 1 with a letter (V1, E1, F1).
+ * \ingroup winged_io
+ */
+#define HW_WNAMING_CW_CCW 0
+
+/**
+ * The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
+ * \ingroup winged_io
+ */
+#define HW_WNAMING_DIRECT_INVERSE 1
+
+/**
+ * Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
+ * \ingroup winged_io
+ */
+#define HW_WNAMING_LEFT_RIGHT 2
+
+/**
+ * How a table is written.
+ * \ingroup winged_io
+ */
+typedef uint32_t hw_table_format;
+
+/**
+ * Columns aligned with spaces; a hole is `∅` (UTF-8).
+ * \ingroup winged_io
+ */
+#define HW_TABLE_FORMAT_TEXT 0
+
+/**
+ * A Markdown table; a hole is `∅`.
+ * \ingroup winged_io
+ */
+#define HW_TABLE_FORMAT_MARKDOWN 1
+
+/**
+ * Comma-separated values with a header row; a hole is an empty field.
+ * \ingroup winged_io
+ */
+#define HW_TABLE_FORMAT_CSV 2
+
+/**
+ * Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES, ...;
+ * `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `out_text`
+ * (`capacity` bytes), NUL-terminated, every line ending with a newline. `*out_needed` (when not
+ * NULL) always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when
+ * `out_text` is NULL or shorter (call with `out_text = NULL` to learn the size). Unknown enum
+ * values give `HW_ERR_INVALID_INPUT`.
+ *
+ * # Safety
+ * `winged` must be NULL or a live structure; `out_text` NULL or `capacity` writable bytes;
+ * `out_needed` NULL or writable.
+ * \ingroup winged_io
+ */
+hw_status hw_winged_table(const hw_winged *winged,
+                          hw_wtable which,
+                          hw_wnaming naming,
+                          hw_table_format format,
+                          char *out_text,
+                          size_t capacity,
+                          size_t *out_needed);
+
+/* ----------------------------------------------------------------------------------------------
+ * Voronoi diagrams
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * The dimension of the site set, as hw_voronoi_dimension() reports it.
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_site_dimension;
+
+/**
+ * No sites.
+ * \ingroup voronoi
+ */
+#define HW_SITE_DIMENSION_EMPTY 0
+
+/**
+ * One distinct site (possibly repeated): one cell, the whole plane.
+ * \ingroup voronoi
+ */
+#define HW_SITE_DIMENSION_POINT 1
+
+/**
+ * Two or more distinct sites, all collinear: no triangles; cells are slabs between parallel
+ * bisectors, and the hull lists the sites in order along their line.
+ * \ingroup voronoi
+ */
+#define HW_SITE_DIMENSION_LINE 2
+
+/**
+ * The sites span the plane: at least one triangle.
+ * \ingroup voronoi
+ */
+#define HW_SITE_DIMENSION_PLANE 3
+
+/**
+ * Which index array hw_voronoi_view() shows.
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_voronoi_array;
+
+/**
+ * Per site: the site representing it (itself unless it duplicates a smaller index).
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_REPRESENTATIVE 0
+
+/**
+ * Per Delaunay triangle: its three sites, counter-clockwise (`3 * n_triangles` entries).
+ * Delaunay half-edge `e` (= corner `e`) runs from site `triangles[e]` to the next corner's site.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_TRIANGLES 1
+
+/**
+ * Per Delaunay half-edge: the opposite half-edge, `HW_INVALID_INDEX` on the convex hull.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_TRIANGLE_TWINS 2
+
+/**
+ * The convex hull's sites, counter-clockwise (for collinear input: the sites in order along the
+ * line; for one distinct site: that site).
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_HULL 3
+
+/**
+ * Per Delaunay triangle: its Voronoi vertex (cocircular triangles share one).
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_TRIANGLE_VERTEX 4
+
+/**
+ * Per Voronoi half-edge: its start vertex, `HW_INVALID_INDEX` when it comes from infinity.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_HALFEDGE_ORIGIN 5
+
+/**
+ * Per Voronoi half-edge: the next half-edge counter-clockwise around its cell (an edge running
+ * out to infinity is followed by the one coming back).
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_HALFEDGE_NEXT 6
+
+/**
+ * Per Voronoi half-edge: the previous half-edge around its cell.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_HALFEDGE_PREV 7
+
+/**
+ * Per Voronoi half-edge: the site whose cell it bounds (on its left).
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_HALFEDGE_SITE 8
+
+/**
+ * Per site: one half-edge of its cell (the edge from infinity for an unbounded cell),
+ * `HW_INVALID_INDEX` for duplicates and when the diagram has no edges.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_CELL_HALFEDGE 9
+
+/**
+ * Per Voronoi vertex: one outgoing half-edge.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_ARRAY_VERTEX_HALFEDGE 10
+
+/**
+ * The shape of a Voronoi edge (see ::hw_voronoi_edge).
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_voronoi_edge_kind;
+
+/**
+ * Both ends are Voronoi vertices: from `point` to `end`.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_EDGE_KIND_SEGMENT 0
+
+/**
+ * One end at infinity: the points `point + t * direction`, `t >= 0`.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_EDGE_KIND_RAY 1
+
+/**
+ * Both ends at infinity (collinear sites): the points `point + t * direction` for every `t`.
+ * \ingroup voronoi
+ */
+#define HW_VORONOI_EDGE_KIND_LINE 2
+
+/**
+ * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
+ * \ingroup voronoi
+ */
+typedef struct {
+  /**
+   * ::HW_VORONOI_EDGE_KIND_SEGMENT, ::HW_VORONOI_EDGE_KIND_RAY or ::HW_VORONOI_EDGE_KIND_LINE.
+   */
+  hw_voronoi_edge_kind kind;
+  /**
+   * The site on the half-edge's left (whose cell it bounds).
+   */
+  uint32_t site;
+  /**
+   * The site on its right.
+   */
+  uint32_t opposite_site;
+  /**
+   * Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
+   */
+  uint32_t origin;
+  /**
+   * End vertex (`HW_INVALID_INDEX` when it runs to infinity).
+   */
+  uint32_t target;
+  /**
+   * Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
+   * where it ends). Line: the midpoint of the two sites.
+   */
+  double point[2];
+  /**
+   * Segment: the end. Otherwise equal to `point`.
+   */
+  double end[2];
+  /**
+   * Ray and line: the direction away from `point` (not normalised; for a half-edge coming
+   * from infinity it points back towards infinity, i.e. against the half-edge). Segment:
+   * `end - point`.
+   */
+  double direction[2];
+} hw_voronoi_edge;
+
+/**
+ * A distance function for hw_voronoi_label_image().
+ * \ingroup voronoi
+ */
+typedef uint32_t hw_metric;
+
+/**
+ * Euclidean distance (the diagram's own metric).
+ * \ingroup voronoi
+ */
+#define HW_METRIC_EUCLIDEAN 0
+
+/**
+ * Manhattan (L1, taxicab) distance `|dx| + |dy|`.
+ * \ingroup voronoi
+ */
+#define HW_METRIC_MANHATTAN 1
+
+/**
+ * Chebyshev (L∞) distance `max(|dx|, |dy|)`.
+ * \ingroup voronoi
+ */
+#define HW_METRIC_CHEBYSHEV 2
+
+/**
+ * What hw_voronoi_svg() draws. hw_svg_options_default() gives the defaults.
+ * \ingroup voronoi
+ */
+typedef struct {
+  /**
+   * Picture width in pixels (> 0); the height follows the clip region's aspect ratio.
+   */
+  double width_px;
+  /**
+   * Fill cells with distinct pastel colours (otherwise outlines only).
+   */
+  bool fill_cells;
+  /**
+   * Draw the sites as dots.
+   */
+  bool sites;
+  /**
+   * Draw the Delaunay edges.
+   */
+  bool delaunay_edges;
+} hw_svg_options;
 
 /**
  * Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`
@@ -4137,6 +3483,249 @@ hw_status hw_voronoi_svg_write(const hw_voronoi *voronoi,
                                const hw_svg_options *options,
                                const char *path);
 
+/* ----------------------------------------------------------------------------------------------
+ * Mesh doctor
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
+ * \ingroup doctor
+ */
+typedef struct {
+  /**
+   * Distance under which two vertices are near duplicates and a vertex lies on an edge,
+   * relative to the diagonal of the bounding box of the vertices faces name. 0 to 1; default
+   * 1e-9.
+   */
+  double relative_tolerance;
+  /**
+   * A triangle with an angle below this (degrees) is a needle. Default 5.
+   */
+  double needle_angle_degrees;
+  /**
+   * A triangle with an angle above this (degrees) is a cap. Default 175.
+   */
+  double cap_angle_degrees;
+  /**
+   * Two faces sharing an edge whose normals are more than this (degrees) apart are folded.
+   * Default 175.
+   */
+  double fold_angle_degrees;
+  /**
+   * An edge longer than this many times the median edge is long. At least 1; default 10.
+   */
+  double long_edge_ratio;
+  /**
+   * A component is small when its face count or diameter is at most this fraction of the
+   * largest's. 0 to 1; default 0.01.
+   */
+  double small_component_ratio;
+} hw_doctor_options;
+
+/**
+ * One kind of finding that is a list of elements (see hw_doctor_report_finding()). The values
+ * run from ::HW_DOCTOR_FINDING_FIRST to `HW_DOCTOR_FINDING_FIRST + HW_DOCTOR_FINDING_COUNT - 1`,
+ * apart from the diagnostic's lists (::hw_diagnostic_list, ::hw_diagnostic_edges), so a value of
+ * one family passed where another is expected is refused, never read as a different list.
+ * \ingroup doctor
+ */
+typedef uint32_t hw_doctor_finding;
+
+/**
+ * The first finding kind.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_FIRST 64
+
+/**
+ * Indices of small components (into hw_doctor_report_component()); one id per item.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_SMALL_COMPONENTS 64
+
+/**
+ * Faces of a closed path along which the orientation flips (the surface is not orientable),
+ * each sharing an edge with the next and the last with the first; one id per item.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_NON_ORIENTABLE_WITNESS 65
+
+/**
+ * Edges whose ends are at the same position: 2 ids per item (vertices, smaller first).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_ZERO_LENGTH_EDGES 66
+
+/**
+ * Triangles with an angle below the needle threshold; one id per item.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_NEEDLES 67
+
+/**
+ * Triangles with an angle above the cap threshold; one id per item.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_CAPS 68
+
+/**
+ * Edges whose two faces fold onto each other: 4 ids per item (the two vertices, smaller
+ * first, then the two faces, ascending).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_FOLDED_EDGES 69
+
+/**
+ * Edges longer than the long-edge ratio times the median: 2 ids per item (vertices).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_LONG_EDGES 70
+
+/**
+ * Vertices at exactly the position of a lower vertex: 2 ids per item (the vertex, then the
+ * lowest vertex at that position).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_DUPLICATE_POSITIONS 71
+
+/**
+ * Vertices within the tolerance of a lower vertex (not at its position): 2 ids per item (the
+ * vertex, then the first vertex of its group).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_NEAR_DUPLICATE_VERTICES 72
+
+/**
+ * Faces on the vertex set of a lower face, in either orientation: 2 ids per item (the face,
+ * then the lowest such face).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_DUPLICATE_FACES 73
+
+/**
+ * Vertices lying inside a boundary edge they are not an end of: 4 ids per item (the vertex,
+ * the edge's two ends, smaller first, and the edge's face).
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_T_VERTICES 74
+
+/**
+ * Pairs of faces that intersect other than along the vertices and edges they share, decided
+ * exactly (polygons as their triangles; touching counts; triangles with exactly collinear
+ * corners and faces on non-finite vertices are not tested): 2 ids per item (faces, smaller first),
+ * sorted.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_SELF_INTERSECTIONS 75
+
+/**
+ * The number of finding kinds.
+ * \ingroup doctor
+ */
+#define HW_DOCTOR_FINDING_COUNT 12
+
+/**
+ * The surface's verdicts. `manifold`: no non-manifold edge or vertex and no malformed face;
+ * `closed`: no boundary; `oriented`: every component orientable and consistently oriented;
+ * `closed_polyhedron`: all three, finite coordinates, every component enclosing a positive
+ * volume, no self-intersection and no zero-area face.
+ * \ingroup doctor
+ */
+typedef struct {
+  /**
+   * No non-manifold edge or vertex and no malformed face.
+   */
+  bool manifold;
+  /**
+   * No boundary.
+   */
+  bool closed;
+  /**
+   * Every component orientable and consistently oriented.
+   */
+  bool oriented;
+  /**
+   * All three, finite coordinates, every component enclosing a positive volume, no
+   * self-intersection and no zero-area face.
+   */
+  bool closed_polyhedron;
+  /**
+   * Why it is not a closed polyhedron (the first reason, static text), NULL when it is one.
+   */
+  const char *reason;
+} hw_doctor_verdict;
+
+/**
+ * One connected component (faces joined through shared edges).
+ * \ingroup doctor
+ */
+typedef struct {
+  /**
+   * Its lowest face.
+   */
+  uint32_t first_face;
+  /**
+   * Its faces.
+   */
+  size_t n_faces;
+  /**
+   * Its distinct edges.
+   */
+  size_t n_edges;
+  /**
+   * Distinct vertices (one shared with another component through a non-manifold vertex
+   * counts in both).
+   */
+  size_t n_vertices;
+  /**
+   * Its boundary loops (0 when it is closed).
+   */
+  size_t n_boundary_loops;
+  /**
+   * V − E + F.
+   */
+  int64_t euler_characteristic;
+  /**
+   * The genus of an orientable 2-manifold component; -1 for any other.
+   */
+  int64_t genus;
+  /**
+   * No boundary edge (every edge has two or more faces).
+   */
+  bool closed;
+  /**
+   * No non-manifold edge or vertex.
+   */
+  bool manifold;
+  /**
+   * Its faces can be oriented so that every two-face edge is walked both ways.
+   */
+  bool orientable;
+  /**
+   * Every two-face edge is walked both ways as given.
+   */
+  bool consistently_oriented;
+  /**
+   * 1 when a closed, manifold, consistently oriented component faces outward (encloses a
+   * positive volume), -1 inward, 0 otherwise or when it encloses no volume.
+   */
+  int32_t outward;
+  /**
+   * The signed volume it encloses (when `outward` is not 0 or the volume is 0; NaN for a
+   * component that is not closed, manifold and consistently oriented). May overflow to
+   * infinity or underflow to 0 at extreme coordinates: `outward` keeps the sign.
+   */
+  double volume;
+  /**
+   * The sum of its faces' areas.
+   */
+  double area;
+  /**
+   * Its bounding box: lowest x, y, z, then highest x, y, z.
+   */
+  double bounding_box[6];
+} hw_doctor_component;
+
 /**
  * The doctor's default thresholds.
  * \ingroup doctor
@@ -4378,6 +3967,268 @@ hw_status hw_face_pairs_view(const hw_face_pairs *pairs,
  * \ingroup doctor
  */
 void hw_face_pairs_free(hw_face_pairs *pairs);
+
+/* ----------------------------------------------------------------------------------------------
+ * Repairs
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * Which components hw_soup_remove_small_components() removes.
+ * \ingroup repair
+ */
+typedef uint32_t hw_small_components;
+
+/**
+ * Components of at most `value` faces.
+ * \ingroup repair
+ */
+#define HW_SMALL_COMPONENTS_BY_FACE_COUNT 0
+
+/**
+ * Components whose bounding-box diagonal is at most `value` (0 to 1) times the largest one's.
+ * \ingroup repair
+ */
+#define HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER 1
+
+/**
+ * What hw_soup_repair_non_manifold_edges() does at an edge of three faces or more.
+ * \ingroup repair
+ */
+typedef uint32_t hw_non_manifold_edges;
+
+/**
+ * Keep every face and cut the surface along the edge (copies of its ends).
+ * \ingroup repair
+ */
+#define HW_NON_MANIFOLD_EDGES_CUT 0
+
+/**
+ * Keep faces in order while the edge has at most one face each way; remove the others.
+ * \ingroup repair
+ */
+#define HW_NON_MANIFOLD_EDGES_REMOVE_FACES 1
+
+/**
+ * One list of a repair report, for hw_repair_report_list().
+ * \ingroup repair
+ */
+typedef uint32_t hw_repair_list;
+
+/**
+ * Pairs `removed, kept` (2 values each) of vertices merged into another.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_MERGED_VERTICES 0
+
+/**
+ * Vertices removed (merged ones included).
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_REMOVED_VERTICES 1
+
+/**
+ * Faces removed.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_REMOVED_FACES 2
+
+/**
+ * Pairs `removed, kept` (2 values each) of duplicate faces.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_DUPLICATE_FACES 3
+
+/**
+ * Pairs `a, b` (2 values each) of boundary half-edges stitched: `a`'s edge stays, `b`'s goes.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_STITCHED_HALFEDGES 4
+
+/**
+ * The vertex each added vertex copies: the `i`-th added vertex (id `n + i`, `n` the vertex
+ * count before the repair) copies vertex `ids[i]`.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_VERTEX_COPIES 5
+
+/**
+ * Faces whose corner order was reversed.
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_REORIENTED_FACES 6
+
+/**
+ * Pairs `cap, across` (2 values each) of triangles whose shared edge
+ * hw_mesh_remove_degenerate_faces() flipped (`cap` had a corner on the edge; both stay).
+ * \ingroup repair
+ */
+#define HW_REPAIR_LIST_FLIPPED_FACES 7
+
+/**
+ * Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Holes with more boundary edges than this are left open.
+   */
+  size_t max_edges;
+  /**
+   * Holes whose perimeter exceeds this are left open; infinity for no bound.
+   */
+  double max_perimeter;
+} hw_fill_hole_options;
+
+/**
+ * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
+ * duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
+ * exactly on them, and keeps every component.
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Vertices this close merge (absolute, or when `merge_relative` a fraction 0 to 1 of the
+   * bounding-box diagonal). Default 0: identical positions.
+   */
+  double merge_tolerance;
+  /**
+   * Whether `merge_tolerance` is relative. Default false.
+   */
+  bool merge_relative;
+  /**
+   * Boundary edges whose ends are this close stitch (as `merge_tolerance`). Default 0.
+   */
+  double stitch_tolerance;
+  /**
+   * Whether `stitch_tolerance` is relative. Default false.
+   */
+  bool stitch_relative;
+  /**
+   * Whether small components are removed (by `small_rule` and `small_value`, as
+   * hw_soup_remove_small_components() takes them). Default false.
+   */
+  bool remove_small_components;
+  /**
+   * ::HW_SMALL_COMPONENTS_BY_FACE_COUNT or ::HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER.
+   */
+  hw_small_components small_rule;
+  /**
+   * The face count or the diameter ratio.
+   */
+  double small_value;
+  /**
+   * Whether degenerate triangles are mended (hw_mesh_remove_degenerate_faces(), after the
+   * build). Default true.
+   */
+  bool remove_degenerate_faces;
+  /**
+   * Triangles this close to a line are degenerate (as `merge_tolerance`). Default 0: exactly
+   * on one line.
+   */
+  double degenerate_tolerance;
+  /**
+   * Whether `degenerate_tolerance` is relative. Default false.
+   */
+  bool degenerate_relative;
+  /**
+   * Whether boundary edges are split at T-vertices (hw_mesh_remove_t_vertices(), before
+   * stitching). Default true.
+   */
+  bool remove_t_vertices;
+  /**
+   * Boundary vertices this close to another boundary edge split it (as `merge_tolerance`).
+   * Default 0: exactly on the edge.
+   */
+  double t_vertex_tolerance;
+  /**
+   * Whether `t_vertex_tolerance` is relative. Default false.
+   */
+  bool t_vertex_relative;
+} hw_repair_options;
+
+/**
+ * One list of hw_repair_fates_list().
+ * \ingroup repair
+ */
+typedef uint32_t hw_fates_list;
+
+/**
+ * The ::hw_fate of every input vertex.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_VERTEX_KINDS 0
+
+/**
+ * The id that goes with every input vertex's fate.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_VERTEX_IDS 1
+
+/**
+ * The ::hw_fate of every input face.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_FACE_KINDS 2
+
+/**
+ * The id that goes with every input face's fate.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_FACE_IDS 3
+
+/**
+ * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
+ * vertex, by output id.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_ADDED_VERTICES 4
+
+/**
+ * The counts of hw_repair_fates_counts().
+ * \ingroup repair
+ */
+typedef struct {
+  /**
+   * Input vertices in the output.
+   */
+  size_t kept_vertices;
+  /**
+   * Input vertices merged into another.
+   */
+  size_t merged_vertices;
+  /**
+   * Input vertices removed.
+   */
+  size_t removed_vertices;
+  /**
+   * Output vertices that copy an input vertex (kept + added = output vertices).
+   */
+  size_t added_vertices;
+  /**
+   * Input faces in the output (= output faces).
+   */
+  size_t kept_faces;
+  /**
+   * Kept faces that run the other way round.
+   */
+  size_t reversed_faces;
+  /**
+   * Input faces removed.
+   */
+  size_t removed_faces;
+  /**
+   * Pairs of boundary edges stitched into one.
+   */
+  size_t stitched_edges;
+  /**
+   * Edges flipped to mend a degenerate triangle.
+   */
+  size_t flipped_edges;
+  /**
+   * Boundary edges split at a T-vertex.
+   */
+  size_t split_edges;
+} hw_repair_fate_counts;
 
 /**
  * Makes a soup of an indexed face list (the arrays hw_mesh_from_indexed() takes), copied as
@@ -4694,6 +4545,52 @@ hw_status hw_repair_fates_counts(const hw_repair_fates *fates, hw_repair_fate_co
  */
 void hw_repair_fates_free(hw_repair_fates *fates);
 
+/* ----------------------------------------------------------------------------------------------
+ * Surfaces
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * How the cells of a parametric surface become faces.
+ * \ingroup surfaces
+ */
+typedef uint32_t hw_cell_faces;
+
+/**
+ * One quadrilateral per cell (a triangle where a pole collapses a side).
+ * \ingroup surfaces
+ */
+#define HW_CELL_FACES_QUADS 0
+
+/**
+ * Two triangles per cell.
+ * \ingroup surfaces
+ */
+#define HW_CELL_FACES_TRIANGLES 1
+
+/**
+ * How hw_surface_revolution() closes the profile's ends that are off the axis.
+ * \ingroup surfaces
+ */
+typedef uint32_t hw_caps;
+
+/**
+ * Leave them open.
+ * \ingroup surfaces
+ */
+#define HW_CAPS_NONE 0
+
+/**
+ * One planar polygon per end.
+ * \ingroup surfaces
+ */
+#define HW_CAPS_POLYGON 1
+
+/**
+ * A fan of triangles from a new vertex on the axis.
+ * \ingroup surfaces
+ */
+#define HW_CAPS_FAN 2
+
 /**
  * The regular tetrahedron of the winged-edge literature's worked example, with its exact
  * coordinates and faces.
@@ -4809,6 +4706,216 @@ hw_status hw_surface_ruled(const double *first,
                            uint32_t steps,
                            hw_cell_faces faces,
                            hw_mesh **out_mesh);
+
+/* ----------------------------------------------------------------------------------------------
+ * Rendering buffers
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * Where the normals of hw_render_buffers_build() come from.
+ * \ingroup render
+ */
+typedef uint32_t hw_shading;
+
+/**
+ * Face normals: faceted; every vertex is split per face.
+ * \ingroup render
+ */
+#define HW_SHADING_FLAT 0
+
+/**
+ * Vertex normals with the options' weighting: one render vertex per mesh vertex.
+ * \ingroup render
+ */
+#define HW_SHADING_SMOOTH 1
+
+/**
+ * Smooth within regions bounded by edges sharper than the options' crease angle; vertices are
+ * split along those edges only.
+ * \ingroup render
+ */
+#define HW_SHADING_CREASE 2
+
+/**
+ * The default: the options' `corner_normals`, else the mesh's own corner normals (a file's `vn`,
+ * hw_mesh_corner_normals_set()) when `mesh_corner_normals` is true, scaled to unit length. A
+ * corner without one — none given, or a zero vector (how a mesh read from an OBJ stores the
+ * corners its file gives no normal) or a NaN or infinite one — takes the smooth normal with the
+ * options' weighting. ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH and ::HW_SHADING_CREASE ignore
+ * those normals and compute every normal from the positions.
+ * \ingroup render
+ */
+#define HW_SHADING_CORNER_NORMALS 3
+
+/**
+ * How hw_render_buffers_build() builds its arrays. Start from hw_render_options_default().
+ * \ingroup render
+ */
+typedef struct {
+  /**
+   * ::HW_SHADING_CORNER_NORMALS (the default), ::HW_SHADING_FLAT, ::HW_SHADING_SMOOTH or
+   * ::HW_SHADING_CREASE.
+   */
+  hw_shading shading;
+  /**
+   * Weighting of smooth shading (also where ::HW_SHADING_CORNER_NORMALS has no normal) and of
+   * the vertex-normal glyphs (::HW_NORMAL_WEIGHTING_UNIFORM, ::HW_NORMAL_WEIGHTING_AREA,
+   * ::HW_NORMAL_WEIGHTING_ANGLE).
+   */
+  hw_normal_weighting weighting;
+  /**
+   * For ::HW_SHADING_CREASE: the dihedral angle in radians (≥ 0) above which an edge is sharp.
+   */
+  double crease_angle;
+  /**
+   * `true`: one ::HW_RENDER_FLOATS_INTERLEAVED array (x y z nx ny nz [u v] per vertex); `false`:
+   * separate ::HW_RENDER_FLOATS_POSITIONS, ::HW_RENDER_FLOATS_NORMALS and ::HW_RENDER_FLOATS_UVS
+   * arrays.
+   */
+  bool interleaved;
+  /**
+   * Length of the normal glyphs; 0 takes the mesh's mean edge length.
+   */
+  double normal_length;
+  /**
+   * With ::HW_SHADING_CORNER_NORMALS: use the mesh's own corner normals (a file's `vn`,
+   * hw_mesh_corner_normals_set()) when it has them and `corner_normals` is NULL. The other
+   * shadings ignore them.
+   */
+  bool mesh_corner_normals;
+  /**
+   * Give the vertices the mesh's own corner texture coordinates, when it has them and
+   * `corner_uvs` is NULL (a mesh read from an OBJ has (0, 0) at the corners its file gives
+   * none).
+   */
+  bool mesh_corner_uvs;
+  /**
+   * NULL, or `3 * n_corners` doubles: a normal per half-edge slot (the corner at the
+   * half-edge's origin), used by ::HW_SHADING_CORNER_NORMALS instead of the mesh's own; a
+   * zero vector means the corner has none. The other shadings ignore it.
+   */
+  const double *corner_normals;
+  /**
+   * NULL, or `2 * n_corners` doubles: a texture coordinate per half-edge slot; the vertices
+   * then carry uvs, as given.
+   */
+  const double *corner_uvs;
+  /**
+   * Half-edge slots in `corner_normals` and `corner_uvs`: must be
+   * `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
+   */
+  size_t n_corners;
+} hw_render_options;
+
+/**
+ * The `float` arrays of a render-buffer object (see hw_render_buffers_floats()). Lengths are in
+ * floats.
+ * \ingroup render
+ */
+typedef uint32_t hw_render_floats;
+
+/**
+ * x y z per vertex (separate layout; empty when interleaved).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_POSITIONS 0
+
+/**
+ * Unit nx ny nz per vertex (separate layout; empty when interleaved).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_NORMALS 1
+
+/**
+ * u v per vertex (separate layout with corner uvs; empty otherwise).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_UVS 2
+
+/**
+ * hw_render_buffers_stride() floats per vertex: x y z nx ny nz [u v] (interleaved layout).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_INTERLEAVED 3
+
+/**
+ * `GL_LINES` points, x y z, two per segment: every edge (a polygon list: every polygon side).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_WIREFRAME 4
+
+/**
+ * `GL_LINES` points of the boundary edges (edges with a face on one side only).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_BOUNDARY 5
+
+/**
+ * `GL_LINES` points of the non-manifold edges reported by the diagnostic given to the build.
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_NON_MANIFOLD 6
+
+/**
+ * `GL_LINES` glyphs of the vertex normals, from each vertex along its normal.
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_VERTEX_NORMALS 7
+
+/**
+ * `GL_LINES` glyphs of the face normals, from each face's centroid.
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_FACE_NORMALS 8
+
+/**
+ * `GL_POINTS` points, x y z: the vertices a doctor's finding names
+ * (hw_render_buffers_from_finding(); empty otherwise).
+ * \ingroup render
+ */
+#define HW_RENDER_FLOATS_POINTS 9
+
+/**
+ * The `uint32_t` arrays of a render-buffer object (see hw_render_buffers_indices()).
+ * \ingroup render
+ */
+typedef uint32_t hw_render_indices;
+
+/**
+ * Three vertex indices per triangle, counter-clockwise from outside: the element buffer.
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_TRIANGLES 0
+
+/**
+ * Per triangle, the mesh face (or polygon) it comes from.
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_TRIANGLE_FACES 1
+
+/**
+ * Per vertex, the mesh vertex (or polygon) it shows.
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_VERTEX_SOURCES 2
+
+/**
+ * Per ::HW_RENDER_FLOATS_WIREFRAME segment, its edge id (or polygon).
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_WIREFRAME_SOURCES 3
+
+/**
+ * Per ::HW_RENDER_FLOATS_BOUNDARY segment, its edge id.
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_BOUNDARY_SOURCES 4
+
+/**
+ * Per ::HW_RENDER_FLOATS_POINTS point, the item of the finding it shows.
+ * \ingroup render
+ */
+#define HW_RENDER_INDICES_POINT_SOURCES 5
 
 /**
  * The default options: ::HW_SHADING_CORNER_NORMALS (the mesh's own corner normals where it has

@@ -21,22 +21,22 @@ use crate::ffi::mesh::elements::{HW_INVALID_INDEX, hw_edge, hw_face, hw_halfedge
 use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
 
 /// What a circulator yields.
-/// \ingroup navigation
+/// \ingroup circulators
 pub type hw_circulator_kind = u32;
 /// Half-edges: a vertex's outgoing ones, a face's sides, a loop's members.
-/// \ingroup navigation
+/// \ingroup circulators
 pub const HW_CIRCULATOR_KIND_HALFEDGES: hw_circulator_kind = 0;
 /// Around a vertex only: the incoming half-edges (twins of the outgoing ones).
-/// \ingroup navigation
+/// \ingroup circulators
 pub const HW_CIRCULATOR_KIND_INCOMING: hw_circulator_kind = 1;
 /// Vertices: a vertex's neighbours, a face's corners.
-/// \ingroup navigation
+/// \ingroup circulators
 pub const HW_CIRCULATOR_KIND_VERTICES: hw_circulator_kind = 2;
 /// Edges: at a vertex, or the sides of a face.
-/// \ingroup navigation
+/// \ingroup circulators
 pub const HW_CIRCULATOR_KIND_EDGES: hw_circulator_kind = 3;
 /// Faces: around a vertex (outside skipped), or across a face's sides (boundary sides skipped).
-/// \ingroup navigation
+/// \ingroup circulators
 pub const HW_CIRCULATOR_KIND_FACES: hw_circulator_kind = 4;
 
 /// What a walk circles.
@@ -50,7 +50,7 @@ enum Center {
 /// A circulator's state, kept on the caller's stack. Fill it with hw_circ_around_vertex(),
 /// hw_circ_around_face() or hw_circ_along_loop(); read it with the `hw_circ_next_*` call of its
 /// kind. Treat the fields as private. It borrows the mesh: do not modify the mesh while walking.
-/// \ingroup navigation
+/// \ingroup circulators
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_circulator {
@@ -118,7 +118,7 @@ unsafe fn begin(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_around_vertex(
     mesh: *const hw_mesh,
@@ -138,7 +138,7 @@ pub unsafe extern "C" fn hw_circ_around_vertex(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_around_face(
     mesh: *const hw_mesh,
@@ -159,7 +159,7 @@ pub unsafe extern "C" fn hw_circ_around_face(
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_along_loop(
     mesh: *const hw_mesh,
@@ -249,7 +249,7 @@ unsafe fn next_into<T>(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_halfedge(
     circulator: *mut hw_circulator,
@@ -266,7 +266,7 @@ pub unsafe extern "C" fn hw_circ_next_halfedge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_vertex(
     circulator: *mut hw_circulator,
@@ -283,7 +283,7 @@ pub unsafe extern "C" fn hw_circ_next_vertex(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_edge(
     circulator: *mut hw_circulator,
@@ -300,7 +300,7 @@ pub unsafe extern "C" fn hw_circ_next_edge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out` writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_next_face(
     circulator: *mut hw_circulator,

@@ -1,5 +1,6 @@
 //! The half-edge kernel's C functions (`hw_mesh_*`, `hw_circ_*`, `hw_soup_*`), in the order the
-//! header lists them: lifecycle, navigation, circulators, edits, attributes, normals, files.
+//! header lists them: lifecycle, navigation, circulators, topology, edits, attributes, normals,
+//! files.
 
 // Lifecycle: element ids, the mesh object, the build diagnostic.
 pub(crate) mod elements;
@@ -8,19 +9,20 @@ pub(crate) mod lifecycle;
 
 pub(crate) mod diagnostic;
 
-// Navigation: single steps, whole-mesh topology, the inline view, zero-copy arrays.
+// Navigation: single steps, zero-copy arrays, the inline view.
 pub(crate) mod navigation;
 
-pub(crate) mod topology;
+pub(crate) mod views;
 
 pub(crate) mod nav;
-
-pub(crate) mod views;
 
 // Circulators and callbacks.
 pub(crate) mod circulator;
 
 pub(crate) mod visit;
+
+// Whole-mesh topology.
+pub(crate) mod topology;
 
 // Edits.
 pub(crate) mod edit;

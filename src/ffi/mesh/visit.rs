@@ -29,7 +29,7 @@ use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
 
 /// A caller's function called once per id by the `_visit` calls, with the `userdata` given to
 /// them. Returns `true` to go on, `false` to stop the visit there.
-/// \ingroup navigation
+/// \ingroup circulators
 pub type hw_visit_fn = Option<unsafe extern "C" fn(idx: u32, userdata: *mut c_void) -> bool>;
 
 /// Calls `visit` for each id `next` yields until it yields none or `visit` returns `false`, and
@@ -81,7 +81,7 @@ fn live_from(mesh: &Mesh, kind: ElementKind, from: u32) -> Option<u32> {
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_visited` NULL or writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_visit(
     mesh: *const hw_mesh,
@@ -112,7 +112,7 @@ pub unsafe extern "C" fn hw_mesh_visit(
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified mesh; `out_visited` NULL or
 /// writable.
-/// \ingroup navigation
+/// \ingroup circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_circ_visit(
     circulator: *mut hw_circulator,

@@ -23,16 +23,16 @@ use crate::ffi::mesh::elements::HW_INVALID_INDEX;
 use crate::ffi::winged::lifecycle::{hw_wedge, hw_wface, hw_winged, hw_wvertex, winged_ref};
 
 /// What a winged circulator yields.
-/// \ingroup winged
+/// \ingroup winged_circulators
 pub type hw_wcirculator_kind = u32;
 /// Edges: the edges of a face's loop, or the edges at a vertex.
-/// \ingroup winged
+/// \ingroup winged_circulators
 pub const HW_WCIRCULATOR_KIND_EDGES: hw_wcirculator_kind = 0;
 /// Vertices: a face's corners, or a vertex's neighbours (the other ends of its edges).
-/// \ingroup winged
+/// \ingroup winged_circulators
 pub const HW_WCIRCULATOR_KIND_VERTICES: hw_wcirculator_kind = 1;
 /// Faces: the faces across a face's edges, or the faces around a vertex (holes skipped).
-/// \ingroup winged
+/// \ingroup winged_circulators
 pub const HW_WCIRCULATOR_KIND_FACES: hw_wcirculator_kind = 2;
 
 /// What a walk circles.
@@ -46,7 +46,7 @@ enum Center {
 /// hw_wcirc_around_face() or hw_wcirc_around_vertex(); read it with the `hw_wcirc_next_*` call of
 /// its kind. Treat the fields as private. It borrows the structure: do not modify the structure
 /// while walking.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct hw_wcirculator {
@@ -115,7 +115,7 @@ fn begin(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out` writable.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_around_face(
     winged: *const hw_winged,
@@ -139,7 +139,7 @@ pub unsafe extern "C" fn hw_wcirc_around_face(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out` writable.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_around_vertex(
     winged: *const hw_winged,
@@ -233,7 +233,7 @@ unsafe fn next_into<T>(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_edge(
     circulator: *mut hw_wcirculator,
@@ -250,7 +250,7 @@ pub unsafe extern "C" fn hw_wcirc_next_edge(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_vertex(
     circulator: *mut hw_wcirculator,
@@ -267,7 +267,7 @@ pub unsafe extern "C" fn hw_wcirc_next_vertex(
 ///
 /// # Safety
 /// `circulator` must be NULL or a circulator over a live, unmodified structure; `out` writable.
-/// \ingroup winged
+/// \ingroup winged_circulators
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_wcirc_next_face(
     circulator: *mut hw_wcirculator,

@@ -27,7 +27,7 @@ use crate::ffi::winged::lifecycle::{hw_wedge, hw_wface, hw_winged, hw_wvertex, w
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
 /// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_vertex` and
 /// `out_face` writable.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mvfs(
     winged: *mut hw_winged,
@@ -60,7 +60,7 @@ pub unsafe extern "C" fn hw_winged_mvfs(
 /// `winged` must be NULL or a live structure used by no one else during the call; `position`
 /// must point to 3 readable doubles (NULL gives `HW_ERR_NULL_ARGUMENT`); `out_edge` and
 /// `out_vertex` writable.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mev(
     winged: *mut hw_winged,
@@ -95,7 +95,7 @@ pub unsafe extern "C" fn hw_winged_mev(
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `out_edge`
 /// and `out_face` writable.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_mef(
     winged: *mut hw_winged,
@@ -130,7 +130,7 @@ pub unsafe extern "C" fn hw_winged_mef(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kev(
     winged: *mut hw_winged,
@@ -146,7 +146,7 @@ pub unsafe extern "C" fn hw_winged_kev(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kef(
     winged: *mut hw_winged,
@@ -161,7 +161,7 @@ pub unsafe extern "C" fn hw_winged_kef(
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_kvfs(winged: *mut hw_winged, face: hw_wface) -> hw_status {
     // SAFETY: forwarded from the caller.
@@ -176,7 +176,7 @@ pub unsafe extern "C" fn hw_winged_kvfs(winged: *mut hw_winged, face: hw_wface) 
 /// # Safety
 /// `winged` must be NULL or a live structure used by no one else during the call; `out_maps`
 /// NULL or writable.
-/// \ingroup winged
+/// \ingroup winged_edit
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_garbage_collect(
     winged: *mut hw_winged,
@@ -197,24 +197,5 @@ pub unsafe extern "C" fn hw_winged_garbage_collect(
             unsafe { out.write(into_handle(hw_index_maps { maps })) };
         }
         Ok(())
-    })
-}
-
-/// Moves vertex `v` to `xyz[0..3]` (finite).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure used by no one else during the call; `xyz` 3
-/// doubles.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_set_position(
-    winged: *mut hw_winged,
-    v: hw_wvertex,
-    xyz: *const f64,
-) -> hw_status {
-    guard(|| {
-        // SAFETY: forwarded from the caller.
-        let (w, p) = unsafe { (winged_mut(winged)?, point_arg(xyz, "xyz")?) };
-        Ok(w.set_position(v.into(), p)?)
     })
 }

@@ -1,25 +1,21 @@
 //! `hw_winged`: the winged-edge (Baumgart) mesh object — creation from an indexed face list or a
-//! half-edge mesh, conversion back, counts, edge records, normals, validation and the course
-//! notes' tables. Walks are in `winged_circulator.rs`, the Euler operators in `winged_euler.rs`.
+//! half-edge mesh, conversion back, counts and validation. One-step navigation is in
+//! `navigation.rs`, walks in `circulator.rs`, the Euler operators in `euler.rs`, positions,
+//! normals and the course notes' tables in `positions.rs`, `normals.rs` and `table.rs`.
 //!
 //! Ids get their own by-value types (`hw_wvertex`, `hw_wedge`, `hw_wface`), distinct from the
 //! half-edge kernel's, so the compiler refuses a winged id passed to a half-edge call. Their
 //! numbering does match across hw_winged_from_mesh() and hw_winged_to_mesh(): winged vertex,
 //! edge and face `i` are mesh vertex, edge and face `i`.
 
-use crate::winged::{
-    EdgeId, EdgeRecord, FaceId, Naming, TableFormat, VertexId, Winged, WingedError,
-};
+use crate::winged::{EdgeId, EdgeRecord, FaceId, VertexId, Winged, WingedError};
 
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::face_list::face_list_arg;
 use crate::ffi::boundary::handle::{free_handle, into_handle};
 use crate::ffi::boundary::status::*;
 use crate::ffi::boundary::threads::with_threads;
-use crate::ffi::boundary::{
-    Out, arg_mut, arg_ref, arg_slice, copy_items, copy_text, give_view, guard, guard_value,
-    guard_void,
-};
+use crate::ffi::boundary::{Out, arg_mut, arg_ref, arg_slice, guard, guard_value, guard_void};
 use crate::ffi::mesh::diagnostic::{give_built, hw_diagnostic};
 use crate::ffi::mesh::elements::id_conversions;
 use crate::ffi::mesh::lifecycle::{build_policy, hw_build_policy, hw_mesh, mesh_ref};
@@ -170,7 +166,7 @@ pub(crate) unsafe fn winged_mut<'a>(winged: *mut hw_winged) -> Result<&'a mut Wi
 ///
 /// # Safety
 /// `winged` must be NULL or a live `hw_winged`.
-unsafe fn query<T>(
+pub(crate) unsafe fn query<T>(
     winged: *const hw_winged,
     fallback: T,
     answer: impl FnOnce(&Winged) -> Result<T, FfiError>,
@@ -403,183 +399,12 @@ pub unsafe extern "C" fn hw_winged_face_capacity(winged: *const hw_winged) -> us
     unsafe { query(winged, 0, |w| Ok(w.face_capacity() as usize)) }
 }
 
-/// Whether `v` names a live vertex (false for a NULL structure, with the error recorded).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_is_vertex(winged: *const hw_winged, v: hw_wvertex) -> bool {
-    unsafe { query(winged, false, |w| Ok(w.is_vertex(v.into()))) }
-}
-
-/// Whether `e` names a live edge (false for a NULL structure, with the error recorded).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_is_edge(winged: *const hw_winged, e: hw_wedge) -> bool {
-    unsafe { query(winged, false, |w| Ok(w.is_edge(e.into()))) }
-}
-
-/// Whether `f` names a live face (false for a NULL structure, with the error recorded).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_is_face(winged: *const hw_winged, f: hw_wface) -> bool {
-    unsafe { query(winged, false, |w| Ok(w.is_face(f.into()))) }
-}
-
-/// Copies the record of edge `e` (its vertices, faces and wings) into `*out_record`.
-/// `HW_ERR_INVALID_HANDLE` for an edge that does not exist or was deleted.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_record` writable.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_edge(
-    winged: *const hw_winged,
-    e: hw_wedge,
-    out_record: *mut hw_wedge_record,
-) -> hw_status {
-    guard(|| {
-        let out = Out::new(out_record, "out_record")?;
-        // SAFETY: forwarded from the caller.
-        let record = unsafe { winged_ref(winged) }?.edge(e.into())?.into();
-        // SAFETY: checked non-NULL; writable per the caller.
-        unsafe { out.write(record) };
-        Ok(())
-    })
-}
-
-/// A zero-copy, read-only view of all edge records, indexed by edge id: `*out_records` (NULL when
-/// there are none) and `*out_len`. A deleted edge's record has `start.idx == HW_INVALID_INDEX`.
-/// Valid until the next call that modifies the structure.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_records` and `out_len` writable.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_edge_records(
-    winged: *const hw_winged,
-    out_records: *mut *const hw_wedge_record,
-    out_len: *mut usize,
-) -> hw_status {
-    // SAFETY: forwarded from the caller.
-    unsafe {
-        give_view(out_records, "out_records", out_len, || {
-            let records = winged_ref(winged)?.edge_records();
-            // SAFETY: `hw_wedge_record` and `EdgeRecord` are both `repr(C)` structs of eight
-            // 32-bit ids in the same order (sizes and alignments asserted above), so the slice
-            // reads as either type.
-            Ok(std::slice::from_raw_parts(
-                records.as_ptr().cast::<hw_wedge_record>(),
-                records.len(),
-            ))
-        })
-    }
-}
-
-/// The edge vertex `v` stores: its ring starts there (for a boundary vertex, the edge whose side
-/// leaving `v` is a hole). Invalid for an isolated vertex, and (with the error recorded) for a
-/// vertex that does not exist.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_vertex_edge(
-    winged: *const hw_winged,
-    v: hw_wvertex,
-) -> hw_wedge {
-    unsafe {
-        query(winged, hw_wedge::INVALID, |w| {
-            Ok(w.vertex_edge(v.into())?.into())
-        })
-    }
-}
-
-/// The edge face `f` stores: its loop starts there. Invalid for a point face (made by
-/// hw_winged_mvfs()), and (with the error recorded) for a face that does not exist.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_face_edge(winged: *const hw_winged, f: hw_wface) -> hw_wedge {
-    unsafe {
-        query(winged, hw_wedge::INVALID, |w| {
-            Ok(w.face_edge(f.into())?.into())
-        })
-    }
-}
-
-/// Writes the position of `v` to `out_xyz[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_position(
-    winged: *const hw_winged,
-    v: hw_wvertex,
-    out_xyz: *mut f64,
-) -> hw_status {
-    // SAFETY: forwarded from the caller.
-    unsafe { write_triple(winged, out_xyz, "out_xyz", |w| Ok(w.position(v.into())?)) }
-}
-
-/// Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
-/// degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
-/// `HW_ERR_NULL_ARGUMENT`).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_face_normal(
-    winged: *const hw_winged,
-    f: hw_wface,
-    out_normal: *mut f64,
-) -> hw_status {
-    // SAFETY: forwarded from the caller.
-    unsafe {
-        write_triple(winged, out_normal, "out_normal", |w| {
-            Ok(w.face_normal(f.into())?)
-        })
-    }
-}
-
-/// Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
-/// normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
-/// (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_vertex_normal(
-    winged: *const hw_winged,
-    v: hw_wvertex,
-    out_normal: *mut f64,
-) -> hw_status {
-    // SAFETY: forwarded from the caller.
-    unsafe {
-        write_triple(winged, out_normal, "out_normal", |w| {
-            Ok(w.vertex_normal(v.into())?)
-        })
-    }
-}
-
 /// Computes a 3-vector from the structure and writes it to `out[0..3]` on success; a NULL `out`
 /// is refused.
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out` NULL (refused) or 3 writable doubles.
-unsafe fn write_triple(
+pub(crate) unsafe fn write_triple(
     winged: *const hw_winged,
     out: *mut f64,
     name: &str,
@@ -596,59 +421,6 @@ unsafe fn write_triple(
     })
 }
 
-/// Which elements hw_winged_normals() gives normals of.
-/// \ingroup winged
-pub type hw_wnormals = u32;
-/// Face normals (Newell), indexed by face id.
-/// \ingroup winged
-pub const HW_WNORMALS_FACES: hw_wnormals = 0;
-/// Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
-/// \ingroup winged
-pub const HW_WNORMALS_VERTICES: hw_wnormals = 1;
-
-/// The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
-/// ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
-/// deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
-/// `*out_needed` (when not NULL) always receives the number of doubles needed;
-/// `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
-/// `out_needed` NULL or writable.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_normals(
-    winged: *const hw_winged,
-    which: hw_wnormals,
-    out_normals: *mut f64,
-    capacity: usize,
-    out_needed: *mut usize,
-) -> hw_status {
-    guard(|| {
-        // SAFETY: forwarded from the caller.
-        let w = unsafe { winged_ref(winged) }?;
-        let normals = match which {
-            HW_WNORMALS_FACES => w.face_normals(),
-            HW_WNORMALS_VERTICES => w.vertex_normals(),
-            other => {
-                return Err(FfiError::invalid_input(format!(
-                    "unknown normals kind {other}"
-                )));
-            }
-        };
-        // SAFETY: forwarded from the caller.
-        unsafe {
-            copy_items(
-                normals.as_flattened(),
-                out_normals,
-                capacity,
-                out_needed,
-                "out_normals",
-            )
-        }
-    })
-}
-
 /// Checks every structural invariant (records in range, wings linking closed loops, stored
 /// edges incident, counts). `HW_OK`, or `HW_ERR_INVALID_INPUT` with the first broken invariant
 /// in the message. A structure made by this library always passes.
@@ -660,99 +432,4 @@ pub unsafe extern "C" fn hw_winged_normals(
 pub unsafe extern "C" fn hw_winged_check(winged: *const hw_winged) -> hw_status {
     // SAFETY: forwarded from the caller.
     guard(|| Ok(unsafe { winged_ref(winged) }?.check()?))
-}
-
-/// Which table hw_winged_table() prints.
-/// \ingroup winged
-pub type hw_wtable = u32;
-/// The vertex table: id, coordinates, stored edge (Baumgart's "Vertex-Edge" table).
-/// \ingroup winged
-pub const HW_WTABLE_VERTICES: hw_wtable = 0;
-/// The face table: id, stored edge ("Face-Edge").
-/// \ingroup winged
-pub const HW_WTABLE_FACES: hw_wtable = 1;
-/// The edge table: id, vertices, faces and wings ("Edge-Edge relation").
-/// \ingroup winged
-pub const HW_WTABLE_EDGES: hw_wtable = 2;
-/// The three tables, vertex, face and edge, separated by a blank line.
-/// \ingroup winged
-pub const HW_WTABLE_ALL: hw_wtable = 3;
-
-/// Which naming scheme a table's columns use.
-/// \ingroup winged
-pub type hw_wnaming = u32;
-/// Baumgart's (his cube example): VSTART VEND EPCW ENCW EPCCW ENCCW FCW FCCW; elements labelled
-/// from 1 with a letter (V1, E1, F1).
-/// \ingroup winged
-pub const HW_WNAMING_CW_CCW: hw_wnaming = 0;
-/// The University of Granada notes': Vi Vf Cd Ci Ada Ads Aia Ais; elements numbered from 0.
-/// \ingroup winged
-pub const HW_WNAMING_DIRECT_INVERSE: hw_wnaming = 1;
-/// Wikipedia's winged-edge article: vert_origin ... edge_right_ccw; elements numbered from 0.
-/// \ingroup winged
-pub const HW_WNAMING_LEFT_RIGHT: hw_wnaming = 2;
-
-/// How a table is written.
-/// \ingroup winged
-pub type hw_table_format = u32;
-/// Columns aligned with spaces; a hole is `∅` (UTF-8).
-/// \ingroup winged
-pub const HW_TABLE_FORMAT_TEXT: hw_table_format = 0;
-/// A Markdown table; a hole is `∅`.
-/// \ingroup winged
-pub const HW_TABLE_FORMAT_MARKDOWN: hw_table_format = 1;
-/// Comma-separated values with a header row; a hole is an empty field.
-/// \ingroup winged
-pub const HW_TABLE_FORMAT_CSV: hw_table_format = 2;
-
-/// Prints a table of the structure in a textbook layout (`which`: ::HW_WTABLE_VERTICES, ...;
-/// `naming`: ::HW_WNAMING_CW_CCW, ...; `format`: ::HW_TABLE_FORMAT_TEXT, ...) into `out_text`
-/// (`capacity` bytes), NUL-terminated, every line ending with a newline. `*out_needed` (when not
-/// NULL) always receives the size needed, terminator included; `HW_ERR_BUFFER_TOO_SMALL` when
-/// `out_text` is NULL or shorter (call with `out_text = NULL` to learn the size). Unknown enum
-/// values give `HW_ERR_INVALID_INPUT`.
-///
-/// # Safety
-/// `winged` must be NULL or a live structure; `out_text` NULL or `capacity` writable bytes;
-/// `out_needed` NULL or writable.
-/// \ingroup winged
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_table(
-    winged: *const hw_winged,
-    which: hw_wtable,
-    naming: hw_wnaming,
-    format: hw_table_format,
-    out_text: *mut std::ffi::c_char,
-    capacity: usize,
-    out_needed: *mut usize,
-) -> hw_status {
-    guard(|| {
-        // SAFETY: forwarded from the caller.
-        let w = unsafe { winged_ref(winged) }?;
-        let naming = match naming {
-            HW_WNAMING_CW_CCW => Naming::ClockwiseCounterclockwise,
-            HW_WNAMING_DIRECT_INVERSE => Naming::DirectInverse,
-            HW_WNAMING_LEFT_RIGHT => Naming::LeftRight,
-            other => return Err(FfiError::invalid_input(format!("unknown naming {other}"))),
-        };
-        let format = match format {
-            HW_TABLE_FORMAT_TEXT => TableFormat::Text,
-            HW_TABLE_FORMAT_MARKDOWN => TableFormat::Markdown,
-            HW_TABLE_FORMAT_CSV => TableFormat::Csv,
-            other => {
-                return Err(FfiError::invalid_input(format!(
-                    "unknown table format {other}"
-                )));
-            }
-        };
-        let text = match which {
-            HW_WTABLE_VERTICES => w.vertex_table(naming, format),
-            HW_WTABLE_FACES => w.face_table(naming, format),
-            HW_WTABLE_EDGES => w.edge_table(naming, format),
-            HW_WTABLE_ALL => w.tables(naming, format),
-            other => return Err(FfiError::invalid_input(format!("unknown table {other}"))),
-        };
-        // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&text, out_text, capacity, out_needed) }
-    })
 }
