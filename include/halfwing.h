@@ -569,36 +569,6 @@ typedef uint32_t hw_build_policy;
 #define HW_BUILD_POLICY_REPAIR 2
 
 /**
- * An element kind, to pick one of several per-kind arrays.
- * \ingroup ids
- */
-typedef uint32_t hw_element_kind;
-
-/**
- * Vertices.
- * \ingroup ids
- */
-#define HW_ELEMENT_KIND_VERTEX 0
-
-/**
- * Half-edges.
- * \ingroup ids
- */
-#define HW_ELEMENT_KIND_HALFEDGE 1
-
-/**
- * Edges.
- * \ingroup ids
- */
-#define HW_ELEMENT_KIND_EDGE 2
-
-/**
- * Faces.
- * \ingroup ids
- */
-#define HW_ELEMENT_KIND_FACE 3
-
-/**
  * One list of element ids in a diagnostic (see hw_diagnostic_ids()). The values run from
  * ::HW_DIAGNOSTIC_LIST_FIRST to `HW_DIAGNOSTIC_LIST_FIRST + HW_DIAGNOSTIC_LIST_COUNT - 1`, apart
  * from the edge lists' (::hw_diagnostic_edges) and the doctor's findings' (::hw_doctor_finding),
@@ -812,15 +782,43 @@ size_t hw_mesh_n_edges(const hw_mesh *mesh);
 size_t hw_mesh_n_halfedges(const hw_mesh *mesh);
 
 /**
- * The number of id slots of one element kind: ids run from 0 to this minus one. Equal to the
- * element count unless elements were deleted and not yet garbage-collected; arrays indexed by id
- * (views, normals) have this length. 0 for a NULL mesh or an unknown kind.
+ * Number of vertex slots: vertex ids run from 0 to this minus one. Equal to the vertex count
+ * unless vertices were deleted and not yet garbage-collected; arrays indexed by vertex id (views,
+ * normals) have this length. 0 for a NULL mesh.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh.
  * \ingroup mesh
  */
-size_t hw_mesh_slot_count(const hw_mesh *mesh, hw_element_kind kind);
+size_t hw_mesh_n_vertex_slots(const hw_mesh *mesh);
+
+/**
+ * Number of half-edge slots (twice the edge slots), as hw_mesh_n_vertex_slots() counts vertex
+ * slots; 0 for a NULL mesh.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
+ */
+size_t hw_mesh_n_halfedge_slots(const hw_mesh *mesh);
+
+/**
+ * Number of edge slots, as hw_mesh_n_vertex_slots() counts vertex slots; 0 for a NULL mesh.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
+ */
+size_t hw_mesh_n_edge_slots(const hw_mesh *mesh);
+
+/**
+ * Number of face slots, as hw_mesh_n_vertex_slots() counts vertex slots; 0 for a NULL mesh.
+ *
+ * # Safety
+ * `mesh` must be NULL or a live mesh.
+ * \ingroup mesh
+ */
+size_t hw_mesh_n_face_slots(const hw_mesh *mesh);
 
 /**
  * The name of an id list ("isolated vertices", …) as static text; NULL for an unknown list.
@@ -893,9 +891,9 @@ hw_status hw_diagnostic_ids(const hw_diagnostic *diagnostic,
  * `diagnostic` must be NULL or live; `out_count` writable.
  * \ingroup mesh
  */
-hw_status hw_diagnostic_edge_count(const hw_diagnostic *diagnostic,
-                                   hw_diagnostic_edges edges,
-                                   size_t *out_count);
+hw_status hw_diagnostic_n_edges(const hw_diagnostic *diagnostic,
+                                hw_diagnostic_edges edges,
+                                size_t *out_count);
 
 /**
  * Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
@@ -1338,6 +1336,36 @@ typedef struct {
    */
   hw_circulator_kind kind;
 } hw_circulator;
+
+/**
+ * An element kind, to pick one of several per-kind arrays.
+ * \ingroup ids
+ */
+typedef uint32_t hw_element_kind;
+
+/**
+ * Vertices.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_VERTEX 0
+
+/**
+ * Half-edges.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_HALFEDGE 1
+
+/**
+ * Edges.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_EDGE 2
+
+/**
+ * Faces.
+ * \ingroup ids
+ */
+#define HW_ELEMENT_KIND_FACE 3
 
 /**
  * A caller's function called once per id by the `_visit` calls, with the `userdata` given to
@@ -1803,7 +1831,7 @@ hw_status hw_mesh_attribute_data(hw_mesh *mesh,
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup attributes
  */
-hw_status hw_mesh_attribute_count(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
+hw_status hw_mesh_n_attributes(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
 
 /**
  * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
@@ -1840,8 +1868,8 @@ hw_status hw_mesh_corner_normals_view(const hw_mesh *mesh,
 
 /**
  * Sets the corner normals (adding them when the mesh has none) from `3 * n_halfedges` finite
- * doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_slot_count()). Writing single
- * values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
+ * doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_n_halfedge_slots()). Writing
+ * single values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`
@@ -1932,10 +1960,10 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
 
 /**
  * Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
- * `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot (see
- * hw_mesh_slot_count()). `*out_face_needed` and `*out_vertex_needed` (each when not NULL) always
- * receive those counts, both of them also when either array is too small (then
- * `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
+ * `out_face_normals` needs one normal per face slot (hw_mesh_n_face_slots()),
+ * `out_vertex_normals` one per vertex slot (hw_mesh_n_vertex_slots()). `*out_face_needed` and
+ * `*out_vertex_needed` (each when not NULL) always receive those counts, both of them also when
+ * either array is too small (then `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
  *
  * # Safety
  * `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
@@ -2175,25 +2203,25 @@ size_t hw_winged_n_faces(const hw_winged *winged);
  * `winged` must be NULL or a live structure.
  * \ingroup winged
  */
-size_t hw_winged_vertex_capacity(const hw_winged *winged);
+size_t hw_winged_n_vertex_slots(const hw_winged *winged);
 
 /**
- * Size of the edge id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+ * Size of the edge id space (see hw_winged_n_vertex_slots()); 0 for a NULL structure.
  *
  * # Safety
  * `winged` must be NULL or a live structure.
  * \ingroup winged
  */
-size_t hw_winged_edge_capacity(const hw_winged *winged);
+size_t hw_winged_n_edge_slots(const hw_winged *winged);
 
 /**
- * Size of the face id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+ * Size of the face id space (see hw_winged_n_vertex_slots()); 0 for a NULL structure.
  *
  * # Safety
  * `winged` must be NULL or a live structure.
  * \ingroup winged
  */
-size_t hw_winged_face_capacity(const hw_winged *winged);
+size_t hw_winged_n_face_slots(const hw_winged *winged);
 
 /**
  * Checks every structural invariant (records in range, wings linking closed loops, stored
@@ -2604,7 +2632,7 @@ hw_status hw_winged_garbage_collect(hw_winged *winged, hw_index_maps **out_maps)
  * `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
  * \ingroup winged_attributes
  */
-hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
+hw_status hw_winged_vertex_position(const hw_winged *winged, hw_wvertex v, double *out_xyz);
 
 /**
  * Moves vertex `v` to `xyz[0..3]` (finite).
@@ -2614,29 +2642,11 @@ hw_status hw_winged_position(const hw_winged *winged, hw_wvertex v, double *out_
  * doubles.
  * \ingroup winged_attributes
  */
-hw_status hw_winged_set_position(hw_winged *winged, hw_wvertex v, const double *xyz);
+hw_status hw_winged_set_vertex_position(hw_winged *winged, hw_wvertex v, const double *xyz);
 
 /* ----------------------------------------------------------------------------------------------
  * Winged-edge normals
  * ---------------------------------------------------------------------------------------------- */
-
-/**
- * Which elements hw_winged_normals() gives normals of.
- * \ingroup winged_normals
- */
-typedef uint32_t hw_wnormals;
-
-/**
- * Face normals (Newell), indexed by face id.
- * \ingroup winged_normals
- */
-#define HW_WNORMALS_FACES 0
-
-/**
- * Vertex normals (sum of the faces' unit normals, normalised), indexed by vertex id.
- * \ingroup winged_normals
- */
-#define HW_WNORMALS_VERTICES 1
 
 /**
  * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
@@ -2661,22 +2671,35 @@ hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out
 hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
 
 /**
- * The unit normals of all faces or all vertices (`which`: ::HW_WNORMALS_FACES,
- * ::HW_WNORMALS_VERTICES), indexed by id, as `3 * capacity` doubles (x, y, z per element; zero for
- * deleted and degenerate elements) copied into `out_normals`, which holds `capacity` doubles.
- * `*out_needed` (when not NULL) always receives the number of doubles needed;
+ * The unit normals of all faces by Newell's method, indexed by face id, copied into
+ * `out_normals` as x, y, z per face slot (zero for deleted and degenerate faces), as
+ * hw_mesh_face_normals() copies a mesh's: `capacity` and `*out_needed` count normals (3 doubles
+ * each), `*out_needed` (when not NULL) always receiving the number of face slots;
  * `HW_ERR_BUFFER_TOO_SMALL` when `out_normals` is NULL or too short.
  *
  * # Safety
- * `winged` must be NULL or a live structure; `out_normals` NULL or `capacity` writable doubles;
- * `out_needed` NULL or writable.
+ * `winged` must be NULL or a live structure; `out_normals` NULL or `3 * capacity` writable
+ * doubles; `out_needed` NULL or writable.
  * \ingroup winged_normals
  */
-hw_status hw_winged_normals(const hw_winged *winged,
-                            hw_wnormals which,
-                            double *out_normals,
-                            size_t capacity,
-                            size_t *out_needed);
+hw_status hw_winged_face_normals(const hw_winged *winged,
+                                 double *out_normals,
+                                 size_t capacity,
+                                 size_t *out_needed);
+
+/**
+ * The unit normals of all vertices as hw_winged_vertex_normal() computes them, indexed by vertex
+ * id (zero for deleted vertices and those without faces), copied as hw_winged_face_normals()
+ * copies the faces'.
+ *
+ * # Safety
+ * As for hw_winged_face_normals().
+ * \ingroup winged_normals
+ */
+hw_status hw_winged_vertex_normals(const hw_winged *winged,
+                                   double *out_normals,
+                                   size_t capacity,
+                                   size_t *out_needed);
 
 /* ----------------------------------------------------------------------------------------------
  * Winged-edge tables
@@ -3318,7 +3341,7 @@ void hw_voronoi_cells_free(hw_voronoi_cells *cells);
  * `cells` must be NULL or live cells.
  * \ingroup voronoi
  */
-size_t hw_voronoi_cells_count(const hw_voronoi_cells *cells);
+size_t hw_voronoi_cells_n_cells(const hw_voronoi_cells *cells);
 
 /**
  * A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
@@ -3823,7 +3846,7 @@ hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_ver
  * `report` must be NULL or live; `out_count` writable.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_component_count(const hw_doctor_report *report, size_t *out_count);
+hw_status hw_doctor_report_n_components(const hw_doctor_report *report, size_t *out_count);
 
 /**
  * Component `index` (components in order of their lowest face).
@@ -3843,7 +3866,7 @@ hw_status hw_doctor_report_component(const hw_doctor_report *report,
  * `report` must be NULL or live; `out_count` writable.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_boundary_loop_count(const hw_doctor_report *report, size_t *out_count);
+hw_status hw_doctor_report_n_boundary_loops(const hw_doctor_report *report, size_t *out_count);
 
 /**
  * Boundary loop `index`: a zero-copy view of its vertices in order (each joined by a boundary
@@ -3869,10 +3892,10 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
  * `report` must be NULL or live; `out_count` writable.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_vertex_fans_count(const hw_doctor_report *report, size_t *out_count);
+hw_status hw_doctor_report_n_vertex_fans(const hw_doctor_report *report, size_t *out_count);
 
 /**
- * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex,
+ * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,
  * its number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
  * lowest face), valid as long as the report.
  *
@@ -4802,7 +4825,7 @@ typedef struct {
   const double *corner_uvs;
   /**
    * Half-edge slots in `corner_normals` and `corner_uvs`: must be
-   * `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
+   * `hw_mesh_n_halfedge_slots(mesh)` when either is given.
    */
   size_t n_corners;
 } hw_render_options;

@@ -396,7 +396,7 @@ pub struct hw_doctor_component {
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_component_count(
+pub unsafe extern "C" fn hw_doctor_report_n_components(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -450,7 +450,7 @@ pub unsafe extern "C" fn hw_doctor_report_component(
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_boundary_loop_count(
+pub unsafe extern "C" fn hw_doctor_report_n_boundary_loops(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -500,7 +500,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
+pub unsafe extern "C" fn hw_doctor_report_n_vertex_fans(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -508,7 +508,7 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
     unsafe { give_count(report, out_count, |r| r.non_manifold_vertex_fans.len()) }
 }
 
-/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex,
+/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,
 /// its number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
 /// lowest face), valid as long as the report.
 ///

@@ -78,7 +78,7 @@ pub struct hw_render_options {
     /// then carry uvs, as given.
     pub corner_uvs: *const f64,
     /// Half-edge slots in `corner_normals` and `corner_uvs`: must be
-    /// `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
+    /// `hw_mesh_n_halfedge_slots(mesh)` when either is given.
     pub n_corners: usize,
 }
 

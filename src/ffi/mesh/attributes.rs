@@ -252,7 +252,7 @@ pub unsafe extern "C" fn hw_mesh_attribute_data(
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
 /// \ingroup attributes
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_mesh_attribute_count(
+pub unsafe extern "C" fn hw_mesh_n_attributes(
     mesh: *const hw_mesh,
     kind: hw_element_kind,
     out_count: *mut usize,
@@ -384,8 +384,8 @@ pub unsafe extern "C" fn hw_mesh_corner_normals_view(
 }
 
 /// Sets the corner normals (adding them when the mesh has none) from `3 * n_halfedges` finite
-/// doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_slot_count()). Writing single
-/// values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
+/// doubles; `n_halfedges` must be the half-edge slot count (hw_mesh_n_halfedge_slots()). Writing
+/// single values in place: hw_mesh_attribute_data() on `"hw:corner_normal"`.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `xyz` NULL or `3 * n_halfedges`

@@ -300,7 +300,7 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
 /// `diagnostic` must be NULL or live; `out_count` writable.
 /// \ingroup mesh
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_diagnostic_edge_count(
+pub unsafe extern "C" fn hw_diagnostic_n_edges(
     diagnostic: *const hw_diagnostic,
     edges: hw_diagnostic_edges,
     out_count: *mut usize,
@@ -446,7 +446,7 @@ mod tests {
             hw_diagnostic_ids(handle, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &mut ids, &mut len)
         };
         let wrong_edges = unsafe {
-            hw_diagnostic_edge_count(handle, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &mut count)
+            hw_diagnostic_n_edges(handle, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &mut count)
         };
         assert_eq!(
             (wrong_list, wrong_edges),

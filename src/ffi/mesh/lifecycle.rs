@@ -10,7 +10,6 @@ use crate::ffi::boundary::status::*;
 use crate::ffi::boundary::threads::with_threads;
 use crate::ffi::boundary::{arg_ref, guard_value, guard_void};
 use crate::ffi::mesh::diagnostic::{give_built, hw_diagnostic};
-use crate::ffi::mesh::elements::{element_kind, hw_element_kind};
 
 /// A half-edge polygon mesh. Opaque; create it with hw_mesh_new() or hw_mesh_from_indexed() and
 /// release it with hw_mesh_free().
@@ -215,14 +214,45 @@ pub unsafe extern "C" fn hw_mesh_n_halfedges(mesh: *const hw_mesh) -> usize {
     unsafe { count(mesh, Mesh::n_halfedges) }
 }
 
-/// The number of id slots of one element kind: ids run from 0 to this minus one. Equal to the
-/// element count unless elements were deleted and not yet garbage-collected; arrays indexed by id
-/// (views, normals) have this length. 0 for a NULL mesh or an unknown kind.
+/// Number of vertex slots: vertex ids run from 0 to this minus one. Equal to the vertex count
+/// unless vertices were deleted and not yet garbage-collected; arrays indexed by vertex id (views,
+/// normals) have this length. 0 for a NULL mesh.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh.
 /// \ingroup mesh
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_mesh_slot_count(mesh: *const hw_mesh, kind: hw_element_kind) -> usize {
-    unsafe { query(mesh, 0, |mesh| Ok(mesh.capacity_of(element_kind(kind)?))) }
+pub unsafe extern "C" fn hw_mesh_n_vertex_slots(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_vertex_slots) }
+}
+
+/// Number of half-edge slots (twice the edge slots), as hw_mesh_n_vertex_slots() counts vertex
+/// slots; 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_halfedge_slots(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_halfedge_slots) }
+}
+
+/// Number of edge slots, as hw_mesh_n_vertex_slots() counts vertex slots; 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_edge_slots(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_edge_slots) }
+}
+
+/// Number of face slots, as hw_mesh_n_vertex_slots() counts vertex slots; 0 for a NULL mesh.
+///
+/// # Safety
+/// `mesh` must be NULL or a live mesh.
+/// \ingroup mesh
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_n_face_slots(mesh: *const hw_mesh) -> usize {
+    unsafe { count(mesh, Mesh::n_face_slots) }
 }

@@ -58,9 +58,9 @@ impl hw_nav {
             vertex_deleted: view_start(mesh.vertex_deletion_marks()),
             edge_deleted: view_start(mesh.edge_deletion_marks()),
             face_deleted: view_start(mesh.face_deletion_marks()),
-            n_vertex_slots: mesh.vertex_capacity(),
-            n_halfedge_slots: mesh.halfedge_capacity(),
-            n_face_slots: mesh.face_capacity(),
+            n_vertex_slots: mesh.n_vertex_slots(),
+            n_halfedge_slots: mesh.n_halfedge_slots(),
+            n_face_slots: mesh.n_face_slots(),
         }
     }
 }

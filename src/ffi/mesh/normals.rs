@@ -74,7 +74,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
             normal_buffer(
                 out_normals,
                 capacity,
-                mesh.face_capacity(),
+                mesh.n_face_slots(),
                 out_needed,
                 "out_normals",
             )
@@ -108,7 +108,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
             normal_buffer(
                 out_normals,
                 capacity,
-                mesh.vertex_capacity(),
+                mesh.n_vertex_slots(),
                 out_needed,
                 "out_normals",
             )
@@ -119,10 +119,10 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
 }
 
 /// Face and vertex normals together, in one pass (what OpenMesh's `update_normals` computes):
-/// `out_face_normals` needs one normal per face slot, `out_vertex_normals` one per vertex slot (see
-/// hw_mesh_slot_count()). `*out_face_needed` and `*out_vertex_needed` (each when not NULL) always
-/// receive those counts, both of them also when either array is too small (then
-/// `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
+/// `out_face_normals` needs one normal per face slot (hw_mesh_n_face_slots()),
+/// `out_vertex_normals` one per vertex slot (hw_mesh_n_vertex_slots()). `*out_face_needed` and
+/// `*out_vertex_needed` (each when not NULL) always receive those counts, both of them also when
+/// either array is too small (then `HW_ERR_BUFFER_TOO_SMALL` and neither array is written).
 ///
 /// # Safety
 /// `mesh` must be NULL or live; `out_face_normals` NULL or `3 * face_capacity` writable doubles;
@@ -151,7 +151,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
             normal_buffer(
                 out_face_normals,
                 face_capacity,
-                mesh.face_capacity(),
+                mesh.n_face_slots(),
                 out_face_needed,
                 "out_face_normals",
             )
@@ -161,7 +161,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
             normal_buffer(
                 out_vertex_normals,
                 vertex_capacity,
-                mesh.vertex_capacity(),
+                mesh.n_vertex_slots(),
                 out_vertex_needed,
                 "out_vertex_normals",
             )

@@ -65,7 +65,7 @@ unsafe fn visit_each(
 
 /// The first live (not deleted) id of `kind` at or after `from`.
 fn live_from(mesh: &Mesh, kind: ElementKind, from: u32) -> Option<u32> {
-    let end = u32::try_from(mesh.capacity_of(kind)).unwrap_or(u32::MAX);
+    let end = u32::try_from(mesh.n_slots(kind)).unwrap_or(u32::MAX);
     (from..end).find(|&id| !mesh.is_deleted_of(kind, id))
 }
 

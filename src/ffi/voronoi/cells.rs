@@ -138,7 +138,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_free(cells: *mut hw_voronoi_cells) {
 /// `cells` must be NULL or live cells.
 /// \ingroup voronoi
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_voronoi_cells_count(cells: *const hw_voronoi_cells) -> usize {
+pub unsafe extern "C" fn hw_voronoi_cells_n_cells(cells: *const hw_voronoi_cells) -> usize {
     // SAFETY: forwarded from the caller.
     guard_value(0, || Ok(unsafe { cells_ref(cells) }?.n_cells()))
 }

@@ -375,28 +375,28 @@ pub unsafe extern "C" fn hw_winged_n_faces(winged: *const hw_winged) -> usize {
 /// `winged` must be NULL or a live structure.
 /// \ingroup winged
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_vertex_capacity(winged: *const hw_winged) -> usize {
-    unsafe { query(winged, 0, |w| Ok(w.vertex_capacity() as usize)) }
+pub unsafe extern "C" fn hw_winged_n_vertex_slots(winged: *const hw_winged) -> usize {
+    unsafe { query(winged, 0, |w| Ok(w.n_vertex_slots() as usize)) }
 }
 
-/// Size of the edge id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+/// Size of the edge id space (see hw_winged_n_vertex_slots()); 0 for a NULL structure.
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
 /// \ingroup winged
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_edge_capacity(winged: *const hw_winged) -> usize {
-    unsafe { query(winged, 0, |w| Ok(w.edge_capacity() as usize)) }
+pub unsafe extern "C" fn hw_winged_n_edge_slots(winged: *const hw_winged) -> usize {
+    unsafe { query(winged, 0, |w| Ok(w.n_edge_slots() as usize)) }
 }
 
-/// Size of the face id space (see hw_winged_vertex_capacity()); 0 for a NULL structure.
+/// Size of the face id space (see hw_winged_n_vertex_slots()); 0 for a NULL structure.
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure.
 /// \ingroup winged
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_face_capacity(winged: *const hw_winged) -> usize {
-    unsafe { query(winged, 0, |w| Ok(w.face_capacity() as usize)) }
+pub unsafe extern "C" fn hw_winged_n_face_slots(winged: *const hw_winged) -> usize {
+    unsafe { query(winged, 0, |w| Ok(w.n_face_slots() as usize)) }
 }
 
 /// Computes a 3-vector from the structure and writes it to `out[0..3]` on success; a NULL `out`

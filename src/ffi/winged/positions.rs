@@ -10,7 +10,7 @@ use crate::ffi::winged::lifecycle::{hw_winged, hw_wvertex, winged_mut, write_tri
 /// `winged` must be NULL or a live structure; `out_xyz` must point to 3 writable doubles.
 /// \ingroup winged_attributes
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_position(
+pub unsafe extern "C" fn hw_winged_vertex_position(
     winged: *const hw_winged,
     v: hw_wvertex,
     out_xyz: *mut f64,
@@ -26,7 +26,7 @@ pub unsafe extern "C" fn hw_winged_position(
 /// doubles.
 /// \ingroup winged_attributes
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_winged_set_position(
+pub unsafe extern "C" fn hw_winged_set_vertex_position(
     winged: *mut hw_winged,
     v: hw_wvertex,
     xyz: *const f64,
