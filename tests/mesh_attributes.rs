@@ -82,7 +82,7 @@ fn corners_keep_their_values_when_policies_skip_reorient_and_copy() {
         let kept: Vec<u32> = (0..soup.n_faces() as u32)
             .filter(|f| !diagnostic.skipped_faces.contains(f))
             .collect();
-        for f in 0..mesh.face_capacity() as u32 {
+        for f in 0..mesh.n_face_slots() as u32 {
             let mut seen = Vec::new();
             for h in mesh.face_loop(FaceId(f)) {
                 let [corner, vertex, face] = normals[h.idx()];
@@ -102,7 +102,7 @@ fn corners_keep_their_values_when_policies_skip_reorient_and_copy() {
         } else {
             assert!(!diagnostic.skipped_faces.is_empty());
         }
-        for h in 0..mesh.halfedge_capacity() as u32 {
+        for h in 0..mesh.n_halfedge_slots() as u32 {
             if mesh.is_boundary_halfedge(HalfedgeId(h)) {
                 assert_eq!(normals[h as usize], [0.0; 3]);
             }
@@ -156,7 +156,7 @@ fn ids(mesh: &Mesh, kind: ElementKind) -> &[u32] {
 #[test]
 fn split_edge_blends_at_the_projected_position_and_keeps_the_ends() {
     let mut mesh = tagged_grid();
-    let e = (0..mesh.edge_capacity() as u32)
+    let e = (0..mesh.n_edge_slots() as u32)
         .map(EdgeId)
         .find(|&e| !mesh.is_boundary_edge(e))
         .unwrap();
@@ -213,7 +213,7 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
         .unwrap();
     quad.attribute_mut::<i32>(ElementKind::Face, "label")
         .unwrap()[f.idx()] = -7;
-    let corners: Vec<[f64; 2]> = (0..quad.halfedge_capacity())
+    let corners: Vec<[f64; 2]> = (0..quad.n_halfedge_slots())
         .map(|h| [quad.origin(HalfedgeId(h as u32)).0 as f64, 0.0])
         .collect();
     quad.set_corner_uvs(&corners).unwrap();
@@ -249,7 +249,7 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
 #[test]
 fn collapse_delete_and_compaction_keep_values_with_their_elements() {
     let mut mesh = tagged_grid();
-    let h = (0..mesh.halfedge_capacity() as u32)
+    let h = (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .find(|&h| mesh.can_collapse_halfedge(h).is_ok())
         .unwrap();
@@ -257,7 +257,7 @@ fn collapse_delete_and_compaction_keep_values_with_their_elements() {
     assert_eq!(mesh.collapse_halfedge(h).unwrap(), kept);
     assert_eq!(ids(&mesh, ElementKind::Vertex)[kept.idx()], kept.0);
     let normals = mesh.corner_normals().unwrap();
-    for f in (0..mesh.face_capacity() as u32).map(FaceId) {
+    for f in (0..mesh.n_face_slots() as u32).map(FaceId) {
         if mesh.is_face_deleted(f) {
             continue;
         }
@@ -268,7 +268,7 @@ fn collapse_delete_and_compaction_keep_values_with_their_elements() {
             assert!(tagged == mesh.origin(g) || moved, "{g}: {tagged}");
         }
     }
-    let live = (0..mesh.face_capacity() as u32)
+    let live = (0..mesh.n_face_slots() as u32)
         .map(FaceId)
         .find(|&f| !mesh.is_face_deleted(f));
     mesh.delete_face(live.unwrap(), true).unwrap();
@@ -284,7 +284,7 @@ fn collapse_delete_and_compaction_keep_values_with_their_elements() {
     for (kind, map) in pairs {
         let old = ids(&before, kind);
         let new = ids(&mesh, kind);
-        assert_eq!(new.len(), mesh.capacity_of(kind));
+        assert_eq!(new.len(), mesh.n_slots(kind));
         for (old_id, &new_id) in map.iter().enumerate() {
             if new_id != u32::MAX {
                 assert_eq!(new[new_id as usize], old[old_id], "{kind}");

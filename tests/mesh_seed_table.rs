@@ -101,7 +101,7 @@ fn seed_table_topology_matches_through_the_halfedge_map() {
     let map: Vec<HalfedgeId> = (0..24)
         .map(|e| {
             let (from, to) = (VertexId(HALFEDGES[e][0]), VertexId(target(e)));
-            (0..mesh.halfedge_capacity() as u32)
+            (0..mesh.n_halfedge_slots() as u32)
                 .map(HalfedgeId)
                 .find(|&h| mesh.origin(h) == from && mesh.target(h) == to)
                 .unwrap_or_else(|| panic!("no half-edge {from:?}→{to:?}"))

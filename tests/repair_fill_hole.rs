@@ -92,7 +92,7 @@ fn largest_angle_to_neighbours(mesh: &Mesh, faces: &[FaceId]) -> f64 {
 
 /// The mesh's faces as triangles (fans), for the self-intersection search.
 fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let positions = (0..mesh.vertex_capacity() as u32)
+    let positions = (0..mesh.n_vertex_slots() as u32)
         .map(|v| {
             let v = halfwing::mesh::VertexId(v);
             if mesh.check_vertex(v).is_ok() {
@@ -103,7 +103,7 @@ fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
         })
         .collect();
     let mut tris = Vec::new();
-    for f in 0..mesh.face_capacity() as u32 {
+    for f in 0..mesh.n_face_slots() as u32 {
         let f = FaceId(f);
         if mesh.check_face(f).is_err() {
             continue;

@@ -415,7 +415,7 @@ mod tests {
         let third = mesh.next[second] as usize;
         mesh.next[third] = second as u32;
         let walk = mesh.face_loop(FaceId(0));
-        assert!(walk.clone().count() <= mesh.halfedge_capacity());
+        assert!(walk.clone().count() <= mesh.n_halfedge_slots());
         let mut walk = walk;
         walk.by_ref().for_each(drop);
         assert!(walk.was_cut_short());

@@ -55,7 +55,7 @@ pub struct HalfedgeWalk<'m> {
 
 impl<'m> HalfedgeWalk<'m> {
     fn new(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
-        let start = if start.idx() < mesh.halfedge_capacity() {
+        let start = if start.idx() < mesh.n_halfedge_slots() {
             start.0
         } else {
             INVALID_INDEX
@@ -64,7 +64,7 @@ impl<'m> HalfedgeWalk<'m> {
             mesh,
             start,
             current: start,
-            remaining: mesh.halfedge_capacity(),
+            remaining: mesh.n_halfedge_slots(),
             step,
             cut_short: false,
         }
@@ -90,7 +90,7 @@ impl<'m> HalfedgeWalk<'m> {
     /// range, a bound above the half-edge count: stale or forged state) gives an ended walk that
     /// reports [`HalfedgeWalk::was_cut_short`], never an out-of-bounds access.
     pub fn resume(mesh: &'m Mesh, progress: WalkProgress) -> Self {
-        let capacity = mesh.halfedge_capacity();
+        let capacity = mesh.n_halfedge_slots();
         let fits = |h: u32| (h as usize) < capacity;
         let sound = fits(progress.start)
             && (progress.current == INVALID_INDEX || fits(progress.current))
@@ -131,7 +131,7 @@ impl Iterator for HalfedgeWalk<'_> {
         };
         self.current = if following == self.start {
             INVALID_INDEX
-        } else if following as usize >= self.mesh.halfedge_capacity() {
+        } else if following as usize >= self.mesh.n_halfedge_slots() {
             self.cut_short = true;
             INVALID_INDEX
         } else {
@@ -218,7 +218,7 @@ impl Mesh {
         // read for boundary half-edges, so few of their pages are touched (with a byte per
         // half-edge, every one read: 1M-triangle torus 3.3 ms, grid 2.5 ms; so: 1.3 and 1.5 ms,
         // against CGAL's 3.0 and 3.1).
-        let mut visited = IdSet::new(self.halfedge_capacity());
+        let mut visited = IdSet::new(self.n_halfedge_slots());
         let mut loops = Vec::new();
         let boundary = self
             .face

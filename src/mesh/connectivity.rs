@@ -86,22 +86,22 @@ impl Mesh {
     }
 
     /// Size of the vertex arrays, deleted slots included: valid vertex ids are below this.
-    pub fn vertex_capacity(&self) -> usize {
+    pub fn n_vertex_slots(&self) -> usize {
         self.vertex_halfedge.len()
     }
 
     /// Size of the half-edge arrays, deleted slots included.
-    pub fn halfedge_capacity(&self) -> usize {
+    pub fn n_halfedge_slots(&self) -> usize {
         self.origin.len()
     }
 
     /// Size of the edge arrays (half the half-edge arrays), deleted slots included.
-    pub fn edge_capacity(&self) -> usize {
+    pub fn n_edge_slots(&self) -> usize {
         self.origin.len() / 2
     }
 
     /// Size of the face arrays, deleted slots included.
-    pub fn face_capacity(&self) -> usize {
+    pub fn n_face_slots(&self) -> usize {
         self.face_halfedge.len()
     }
 

@@ -12,7 +12,7 @@ impl Mesh {
     /// coordinates, when the mesh has them, become the soup's per-corner arrays. Building from
     /// the result with [`Mesh::from_soup`] reproduces the mesh.
     pub fn to_soup(&self) -> PolygonSoup {
-        let mut new_index = vec![INVALID_INDEX; self.vertex_capacity()];
+        let mut new_index = vec![INVALID_INDEX; self.n_vertex_slots()];
         let mut positions = Vec::with_capacity(self.n_vertices());
         for (v, slot) in new_index.iter_mut().enumerate() {
             if !self.is_vertex_deleted(VertexId(v as u32)) {
@@ -22,7 +22,7 @@ impl Mesh {
         }
         let mut face_sizes = Vec::with_capacity(self.n_faces());
         let mut corners = Vec::with_capacity(self.n_halfedges());
-        for f in 0..self.face_capacity() {
+        for f in 0..self.n_face_slots() {
             let f = FaceId(f as u32);
             if self.is_face_deleted(f) {
                 continue;

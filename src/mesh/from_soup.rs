@@ -74,7 +74,7 @@ impl Mesh {
         let mut reoriented = diagnostic.reoriented_faces.iter().peekable();
         let kept_faces =
             (0..soup.face_sizes.len() as u32).filter(|f| skipped.next_if_eq(&f).is_none());
-        let mut source = vec![INVALID_INDEX; self.halfedge_capacity()];
+        let mut source = vec![INVALID_INDEX; self.n_halfedge_slots()];
         let mut kept = Vec::new();
         for (face, input) in kept_faces.enumerate() {
             let range = offsets[input as usize]..offsets[input as usize + 1];

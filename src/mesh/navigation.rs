@@ -164,7 +164,7 @@ impl Mesh {
         resolve(
             ElementKind::Vertex,
             v.0,
-            self.vertex_capacity(),
+            self.n_vertex_slots(),
             self.is_vertex_deleted(v),
         )
         .map(|_| v)
@@ -175,7 +175,7 @@ impl Mesh {
         resolve(
             ElementKind::Halfedge,
             h.0,
-            self.halfedge_capacity(),
+            self.n_halfedge_slots(),
             self.is_halfedge_deleted(h),
         )
         .map(|_| h)
@@ -186,7 +186,7 @@ impl Mesh {
         resolve(
             ElementKind::Edge,
             e.0,
-            self.edge_capacity(),
+            self.n_edge_slots(),
             self.is_edge_deleted(e),
         )
         .map(|_| e)
@@ -197,7 +197,7 @@ impl Mesh {
         resolve(
             ElementKind::Face,
             f.0,
-            self.face_capacity(),
+            self.n_face_slots(),
             self.is_face_deleted(f),
         )
         .map(|_| f)

@@ -46,11 +46,11 @@ pub fn remove_degenerate_faces(
     tolerance: Tolerance,
 ) -> Result<RepairReport, RepairError> {
     let tolerance = absolute_on_mesh(tolerance, mesh)?;
-    let n_faces = mesh.face_capacity();
+    let n_faces = mesh.n_face_slots();
     let was_live: Vec<bool> = (0..n_faces as u32)
         .map(|f| !mesh.is_face_deleted(FaceId(f)))
         .collect();
-    let mut merged_into: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+    let mut merged_into: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
     let mut flipped_faces = Vec::new();
     let mut changed = false;
     // A stack popped lowest first: faces are taken in order, and again after a collapse

@@ -28,10 +28,10 @@ use crate::support::disjoint_sets;
 /// vertices' bounding box. When nothing is stitched the mesh is unchanged and the maps are the
 /// identity.
 pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairReport, RepairError> {
-    let n_slots = mesh.vertex_capacity();
+    let n_slots = mesh.n_vertex_slots();
     let absolute = absolute_on_mesh(tolerance, mesh)?;
 
-    let boundary: Vec<HalfedgeId> = (0..mesh.halfedge_capacity() as u32)
+    let boundary: Vec<HalfedgeId> = (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .filter(|&h| !mesh.is_halfedge_deleted(h) && mesh.is_boundary_halfedge(h))
         .collect();
@@ -122,7 +122,7 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
 /// The vertex every vertex slot becomes when `pairs` are glued: the lowest of the set the
 /// pairs' ends join.
 fn merged_vertices(mesh: &Mesh, pairs: &[[HalfedgeId; 2]]) -> Vec<u32> {
-    let mut parent: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+    let mut parent: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
     for &[a, b] in pairs {
         disjoint_sets::join(&mut parent, 0, mesh.origin(a).0, mesh.target(b).0);
         disjoint_sets::join(&mut parent, 0, mesh.target(a).0, mesh.origin(b).0);
@@ -143,13 +143,13 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
             is_merged[k as usize] = true;
         }
     }
-    let mut glued_away = vec![false; mesh.edge_capacity()];
+    let mut glued_away = vec![false; mesh.n_edge_slots()];
     for &[_, b] in pairs {
         glued_away[b.edge().idx()] = true;
     }
     let mut broken = Vec::new();
     let mut ends: Vec<[u32; 2]> = Vec::new();
-    for e in 0..mesh.edge_capacity() as u32 {
+    for e in 0..mesh.n_edge_slots() as u32 {
         let h = HalfedgeId(2 * e);
         if mesh.is_halfedge_deleted(h) || glued_away[e as usize] {
             continue;
@@ -169,7 +169,7 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
         broken.extend(run[0]);
     }
     let mut corners = Vec::new();
-    for f in 0..mesh.face_capacity() as u32 {
+    for f in 0..mesh.n_face_slots() as u32 {
         let f = crate::mesh::FaceId(f);
         if mesh.is_face_deleted(f) {
             continue;

@@ -56,17 +56,17 @@ impl Winged {
     }
 
     /// Size of the vertex id space (live and deleted vertices).
-    pub fn vertex_capacity(&self) -> u32 {
+    pub fn n_vertex_slots(&self) -> u32 {
         self.positions.len() as u32
     }
 
     /// Size of the edge id space (live and deleted edges).
-    pub fn edge_capacity(&self) -> u32 {
+    pub fn n_edge_slots(&self) -> u32 {
         self.edges.len() as u32
     }
 
     /// Size of the face id space (live and deleted faces).
-    pub fn face_capacity(&self) -> u32 {
+    pub fn n_face_slots(&self) -> u32 {
         self.face_edge.len() as u32
     }
 
@@ -104,21 +104,21 @@ impl Winged {
 
     /// Ids of the live vertices, in increasing order.
     pub fn vertices(&self) -> impl Iterator<Item = VertexId> + '_ {
-        (0..self.vertex_capacity())
+        (0..self.n_vertex_slots())
             .map(VertexId)
             .filter(|&v| self.is_vertex(v))
     }
 
     /// Ids of the live edges, in increasing order.
     pub fn edges(&self) -> impl Iterator<Item = EdgeId> + '_ {
-        (0..self.edge_capacity())
+        (0..self.n_edge_slots())
             .map(EdgeId)
             .filter(|&e| self.is_edge(e))
     }
 
     /// Ids of the live faces, in increasing order.
     pub fn faces(&self) -> impl Iterator<Item = FaceId> + '_ {
-        (0..self.face_capacity())
+        (0..self.n_face_slots())
             .map(FaceId)
             .filter(|&f| self.is_face(f))
     }

@@ -8,10 +8,10 @@ impl Mesh {
     /// Grows every column to its kind's capacity (after elements were appended).
     pub(in crate::mesh) fn grow_attributes(&mut self) {
         let (v, h, e, f) = (
-            self.vertex_capacity(),
-            self.halfedge_capacity(),
-            self.edge_capacity(),
-            self.face_capacity(),
+            self.n_vertex_slots(),
+            self.n_halfedge_slots(),
+            self.n_edge_slots(),
+            self.n_face_slots(),
         );
         let attributes = &mut self.attributes;
         attributes.vertex.resize(v);

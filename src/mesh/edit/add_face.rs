@@ -96,7 +96,7 @@ impl Mesh {
             loop {
                 boundary_prev = self.next(boundary_prev).twin();
                 steps += 1;
-                if steps > self.halfedge_capacity() {
+                if steps > self.n_halfedge_slots() {
                     return refuse(ADD_FACE, "a corner's one-ring does not close");
                 }
                 if boundary_prev == inner_prev {

@@ -80,7 +80,7 @@ impl Mesh {
         &self,
         v: VertexId,
     ) -> impl Iterator<Item = HalfedgeId> + '_ {
-        (0..self.halfedge_capacity() as u32)
+        (0..self.n_halfedge_slots() as u32)
             .map(HalfedgeId)
             .filter(move |&h| self.origin(h) == v && !self.is_halfedge_deleted(h))
     }

@@ -63,7 +63,7 @@ pub(super) struct Surroundings {
 impl Surroundings {
     /// The live faces of `mesh` (fans from their first corner). O(n log n).
     pub(super) fn new(mesh: &Mesh) -> Surroundings {
-        let faces = (0..mesh.face_capacity() as u32)
+        let faces = (0..mesh.n_face_slots() as u32)
             .map(FaceId)
             .filter(|&f| mesh.check_face(f).is_ok());
         let mut surroundings = Surroundings {
