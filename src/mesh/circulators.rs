@@ -55,7 +55,7 @@ pub struct HalfedgeWalk<'m> {
 
 impl<'m> HalfedgeWalk<'m> {
     fn new(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
-        let start = if start.idx() < mesh.halfedge_capacity() {
+        let start = if start.index() < mesh.halfedge_capacity() {
             start.0
         } else {
             INVALID_INDEX
@@ -145,7 +145,7 @@ impl Mesh {
     fn vertex_walk(&self, v: VertexId) -> HalfedgeWalk<'_> {
         let start = self
             .vertex_halfedge
-            .get(v.idx())
+            .get(v.index())
             .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
         HalfedgeWalk::new(self, start, Step::RotateCcw)
     }
@@ -188,7 +188,7 @@ impl Mesh {
     pub fn face_loop(&self, f: FaceId) -> HalfedgeWalk<'_> {
         let start = self
             .face_halfedge
-            .get(f.idx())
+            .get(f.index())
             .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
         self.halfedge_loop(start)
     }

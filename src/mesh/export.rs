@@ -35,7 +35,7 @@ impl Mesh {
             .iter()
             .map(|&h| {
                 let v = self.origin(h);
-                new_index.get(v.idx()).copied().unwrap_or(INVALID_INDEX)
+                new_index.get(v.index()).copied().unwrap_or(INVALID_INDEX)
             })
             .collect();
         PolygonSoup {
@@ -50,5 +50,5 @@ impl Mesh {
 
 /// The values of the given half-edges, in order.
 fn per_corner<T: Copy>(values: &[T], corners: &[HalfedgeId]) -> Vec<T> {
-    corners.iter().map(|h| values[h.idx()]).collect()
+    corners.iter().map(|h| values[h.index()]).collect()
 }

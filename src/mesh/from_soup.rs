@@ -93,7 +93,7 @@ impl Mesh {
                 kept.reverse();
             }
             for (h, &c) in self.face_loop(FaceId(face as u32)).zip(&kept) {
-                source[h.idx()] = c;
+                source[h.index()] = c;
             }
         }
         source

@@ -7,6 +7,7 @@ pub(crate) mod counted;
 pub(crate) mod cycles;
 pub(crate) mod disjoint_sets;
 pub(crate) mod id_set;
+pub(crate) mod ids;
 pub(crate) mod large_arrays;
 pub(crate) mod order;
 pub(crate) mod prefetch;
