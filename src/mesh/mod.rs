@@ -24,7 +24,7 @@ mod vertex_fans;
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
 pub use attributes::{AttributeError, AttributeInfo, Scalar, ScalarType};
 pub use check::{Element, Invariant, InvariantError};
-pub use circulators::{HalfedgeWalk, Step, WalkProgress};
+pub use circulators::{Step, Walk, WalkState};
 pub use components::Components;
 pub use connectivity::Mesh;
 pub use edit::{EditError, IndexMaps};

@@ -17,7 +17,7 @@ pub(crate) use garbage::compaction_map;
 pub(crate) use triangulate::{JoinedCorners, chords_of};
 
 use super::Mesh;
-use super::circulators::{HalfedgeWalk, Step};
+use super::circulators::Step;
 use super::ids::{FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 use super::navigation::HandleError;
 
@@ -154,7 +154,7 @@ impl Mesh {
         if self.is_boundary_halfedge(self.vertex_halfedge(v)) {
             return;
         }
-        if let Some(h) = HalfedgeWalk::with_step(self, in_fan, Step::RotateCcw)
+        if let Some(h) = self.walk(in_fan, Step::Ring)
             .find(|&h| self.is_boundary_halfedge(h))
         {
             self.vertex_halfedge[v.index()] = h.0;
