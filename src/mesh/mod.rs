@@ -22,13 +22,15 @@ mod raw_parts;
 mod vertex_fans;
 
 pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
+pub use crate::support::index_maps::IndexMaps;
+pub(crate) use crate::support::index_maps::compaction_map;
 pub use attributes::{AttributeError, AttributeInfo, Scalar, ScalarType};
 pub use check::{Element, Invariant, InvariantError};
 pub use circulators::{Step, Walk, WalkState};
 pub use components::Components;
 pub use connectivity::Mesh;
-pub use edit::{EditError, IndexMaps};
-pub(crate) use edit::{JoinedCorners, chords_of, compaction_map};
+pub use edit::EditError;
+pub(crate) use edit::{JoinedCorners, chords_of};
 pub use ids::{EdgeId, FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 pub use navigation::{ElementKind, HandleError};
 pub(crate) use raw_parts::MeshArrays;

@@ -91,7 +91,7 @@ mod soup_conversion;
 mod structure;
 mod table;
 
-pub use compact::Compaction;
+pub use crate::support::index_maps::IndexMaps;
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
 pub use navigation::{Step, Walk, WalkState};

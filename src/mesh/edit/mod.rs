@@ -12,8 +12,6 @@ mod glue;
 mod split;
 mod triangulate;
 
-pub use garbage::IndexMaps;
-pub(crate) use garbage::compaction_map;
 pub(crate) use triangulate::{JoinedCorners, chords_of};
 
 use super::Mesh;
@@ -154,7 +152,8 @@ impl Mesh {
         if self.is_boundary_halfedge(self.vertex_halfedge(v)) {
             return;
         }
-        if let Some(h) = self.walk(in_fan, Step::Ring)
+        if let Some(h) = self
+            .walk(in_fan, Step::Ring)
             .find(|&h| self.is_boundary_halfedge(h))
         {
             self.vertex_halfedge[v.index()] = h.0;
