@@ -79,12 +79,12 @@ pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
 
 mod build;
 mod check;
+mod circulators;
 mod compact;
 mod error;
 mod euler;
 mod ids;
 mod mesh_conversion;
-mod navigation;
 mod normals;
 mod record;
 mod soup_conversion;
@@ -92,9 +92,9 @@ mod structure;
 mod table;
 
 pub use crate::support::index_maps::IndexMaps;
+pub use circulators::{Step, Walk, WalkState};
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
-pub use navigation::{Step, Walk, WalkState};
 pub use record::EdgeRecord;
 pub use structure::Winged;
 pub use table::{Naming, TableFormat};

@@ -7,7 +7,6 @@ mod add_face;
 mod collapse;
 mod delete;
 mod flip;
-mod garbage;
 mod glue;
 mod split;
 mod triangulate;

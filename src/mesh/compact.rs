@@ -1,8 +1,8 @@
 //! Compaction after deletions.
 
 use crate::mesh::Mesh;
-use crate::mesh::connectivity::Deletions;
 use crate::mesh::ids::INVALID_INDEX;
+use crate::mesh::structure::Deletions;
 use crate::support::index_maps::{IndexMaps, compaction_map};
 
 fn remap(value: u32, map: &[u32]) -> u32 {
