@@ -16,6 +16,7 @@ mod diagnose;
 mod edit;
 mod ids;
 mod navigation;
+mod normals;
 mod raw_parts;
 mod soup_conversion;
 mod structure;

@@ -15,12 +15,26 @@ impl Winged {
         let edges = compaction_map(self.edges.len(), &deleted_edges);
         let faces = compaction_map(self.face_alive.len(), &dead(&self.face_alive));
         let v = |x: VertexId| {
-            x.is_valid()
-                .then(|| VertexId(vertices[x.index()]))
-                .unwrap_or(x)
+            if x.is_valid() {
+                VertexId(vertices[x.index()])
+            } else {
+                x
+            }
         };
-        let e = |x: EdgeId| x.is_valid().then(|| EdgeId(edges[x.index()])).unwrap_or(x);
-        let f = |x: FaceId| x.is_valid().then(|| FaceId(faces[x.index()])).unwrap_or(x);
+        let e = |x: EdgeId| {
+            if x.is_valid() {
+                EdgeId(edges[x.index()])
+            } else {
+                x
+            }
+        };
+        let f = |x: FaceId| {
+            if x.is_valid() {
+                FaceId(faces[x.index()])
+            } else {
+                x
+            }
+        };
 
         let live_vertices: Vec<usize> = (0..self.positions.len())
             .filter(|&i| self.vertex_alive[i])

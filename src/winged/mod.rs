@@ -85,6 +85,7 @@ mod error;
 mod euler;
 mod ids;
 mod mesh_conversion;
+mod navigation;
 mod normals;
 mod record;
 mod soup_conversion;
