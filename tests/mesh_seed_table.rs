@@ -145,7 +145,7 @@ fn seed_vertices_store_their_boundary_halfedge() {
     // Counter-clockwise around v4 from e15's twin side: neighbours in CCW order about (2, 2).
     let ring: Vec<VertexId> = mesh.vertex_vertices(VertexId(3)).collect();
     let angle = |v: VertexId| {
-        let p = POSITIONS[v.idx()];
+        let p = POSITIONS[v.index()];
         (p[1] - 2.0).atan2(p[0] - 2.0)
     };
     let turns = (0..ring.len())

@@ -396,7 +396,7 @@ fn stitching_a_cut_grid_closes_the_cut() {
                 let mut out = vec![];
                 let mut h = start;
                 loop {
-                    out.push(mesh.corner_uvs().unwrap()[h.idx()][0]);
+                    out.push(mesh.corner_uvs().unwrap()[h.index()][0]);
                     h = mesh.next(h);
                     if h == start {
                         break;

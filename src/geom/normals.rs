@@ -68,7 +68,7 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
 /// overflow or underflow a double (coordinates near 1e308, faces smaller than about 1e-154),
 /// along its normal at another length.
 pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    let h0 = mesh.face_halfedges().get(f.idx()).copied();
+    let h0 = mesh.face_halfedges().get(f.index()).copied();
     let corners = || mesh.face_vertices(f).map(|v| mesh.position(v));
     let area_vector = SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
         .area_vector(mesh.positions())
@@ -171,7 +171,7 @@ pub fn normals_into(
     match faces {
         Some(faces) => {
             assert_eq!(faces.len(), mesh.n_face_slots(), "one normal per face slot");
-            accumulate_normals(mesh, weighting, |f, unit| faces[f.idx()] = unit, vertices);
+            accumulate_normals(mesh, weighting, |f, unit| faces[f.index()] = unit, vertices);
         }
         None => accumulate_normals(mesh, weighting, |_, _| {}, vertices),
     }
@@ -274,7 +274,7 @@ fn add_polygon(
             VertexNormalWeighting::Angle => corner_angle(mesh, h),
             _ => 1.0,
         };
-        add_scaled(&mut sums[mesh.origin(h).idx()], face_normal, weight);
+        add_scaled(&mut sums[mesh.origin(h).index()], face_normal, weight);
     }
 }
 
@@ -303,7 +303,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
     let smooth_across = |a: FaceId, b: FaceId| {
         b.is_valid()
             && (crease_angle >= std::f64::consts::PI
-                || dot(unit_face_normals[a.idx()], unit_face_normals[b.idx()]) >= cos_crease)
+                || dot(unit_face_normals[a.index()], unit_face_normals[b.index()]) >= cos_crease)
     };
     let corner = |h: usize| -> [f64; 3] {
         let h = HalfedgeId(h as u32);
@@ -314,7 +314,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
         let mut sum = [0.0; 3];
         add_scaled(
             &mut sum,
-            unit_face_normals[face.idx()],
+            unit_face_normals[face.index()],
             corner_angle(mesh, h),
         );
         // Turns from h by `turn`, adding each corner met while the faces stay smooth; `true` when
@@ -332,7 +332,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
                 }
                 add_scaled(
                     sum,
-                    unit_face_normals[mesh.face(rotated).idx()],
+                    unit_face_normals[mesh.face(rotated).index()],
                     corner_angle(mesh, rotated),
                 );
                 g = rotated;
@@ -549,8 +549,8 @@ mod tests {
         let vertex = vertex_normals(&mesh, VertexNormalWeighting::Angle);
         for h in 0..mesh.n_halfedge_slots() as u32 {
             let h = HalfedgeId(h);
-            assert!(close(sharp[h.idx()], faces[mesh.face(h).idx()]));
-            assert!(close(smooth[h.idx()], vertex[mesh.origin(h).idx()]));
+            assert!(close(sharp[h.index()], faces[mesh.face(h).index()]));
+            assert!(close(smooth[h.index()], vertex[mesh.origin(h).index()]));
         }
     }
 
@@ -579,8 +579,8 @@ mod tests {
         let corners = corner_normals(&mesh, 45f64.to_radians());
         let merged = corner_normals(&mesh, 100f64.to_radians());
         let h = mesh.face_halfedge(FaceId(0));
-        assert!(close(corners[h.idx()], faces[0]));
-        assert!(!close(merged[h.idx()], faces[0]));
+        assert!(close(corners[h.index()], faces[0]));
+        assert!(!close(merged[h.index()], faces[0]));
         let boundary =
             (0..mesh.n_halfedge_slots()).find(|&h| !mesh.face(HalfedgeId(h as u32)).is_valid());
         assert_eq!(corners[boundary.unwrap()], [0.0; 3]);

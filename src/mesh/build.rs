@@ -25,8 +25,8 @@ use crate::support::large_arrays::{filled, fit, with_capacity_written};
 use crate::support::rare_hits::rare_hits;
 
 use super::Mesh;
-use super::connectivity::Deletions;
 use super::ids::{INVALID_INDEX, VertexId};
+use super::structure::Deletions;
 use super::vertex_fans::vertices_without_halfedge;
 
 impl Mesh {

@@ -94,7 +94,7 @@ fn shaded_corner_normals(
                 .map(|h| {
                     let f = mesh.face(h);
                     if f.is_valid() {
-                        faces[f.idx()]
+                        faces[f.index()]
                     } else {
                         [0.0; 3]
                     }
@@ -121,7 +121,7 @@ fn shaded_corner_normals(
 fn normal_at_origin(mesh: &Mesh, vertex_normals: &[[f64; 3]], h: HalfedgeId) -> [f64; 3] {
     let v = mesh.origin(h);
     if v.is_valid() {
-        vertex_normals[v.idx()]
+        vertex_normals[v.index()]
     } else {
         [0.0; 3]
     }
@@ -270,10 +270,10 @@ pub fn surface_buffer(
             let v = mesh.origin(h);
             let uv = options
                 .corner_uvs
-                .map_or([0.0; 2], |uvs| uvs[h.idx()].map(|c| c as f32));
-            let normal = normals[h.idx()].map(|c| c as f32);
+                .map_or([0.0; 2], |uvs| uvs[h.index()].map(|c| c as f32));
+            let normal = normals[h.index()].map(|c| c as f32);
             corner_positions.push(mesh.position(v));
-            corner_vertices.push(splitter.vertex(v.idx(), normal, uv));
+            corner_vertices.push(splitter.vertex(v.index(), normal, uv));
         }
         local.clear();
         if let PolygonOutcome::Fallback(reason) =
@@ -515,7 +515,7 @@ mod tests {
             ([f64::INFINITY, 0.0, 0.0], None),
         ];
         let given: Vec<[f64; 3]> = (0..mesh.n_halfedge_slots())
-            .map(|h| per_face[mesh.face(HalfedgeId(h as u32)).idx()].0)
+            .map(|h| per_face[mesh.face(HalfedgeId(h as u32)).index()].0)
             .collect();
         let options = SurfaceOptions {
             corner_normals: Some(&given),

@@ -368,7 +368,7 @@ fn run(
                     .iter()
                     .map(|&[gone, kept]| [gone.0, kept.0])
                     .collect();
-                let mut unchanged: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+                let mut unchanged: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
                 for &[gone, _] in &welded {
                     unchanged[gone as usize] = INVALID_INDEX;
                 }

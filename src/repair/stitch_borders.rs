@@ -38,7 +38,7 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
     // Cluster of every boundary vertex (by the lowest boundary vertex of its cluster).
     let mut boundary_fans = vec![0u32; n_slots];
     for &h in &boundary {
-        boundary_fans[mesh.origin(h).idx()] += 1;
+        boundary_fans[mesh.origin(h).index()] += 1;
     }
     let boundary_vertices: Vec<u32> = (0..n_slots as u32)
         .filter(|&v| boundary_fans[v as usize] > 0)
@@ -57,19 +57,22 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
     let mut keyed: Vec<([u32; 2], HalfedgeId)> = boundary
         .iter()
         .filter_map(|&h| {
-            let (a, b) = (cluster[mesh.origin(h).idx()], cluster[mesh.target(h).idx()]);
+            let (a, b) = (
+                cluster[mesh.origin(h).index()],
+                cluster[mesh.target(h).index()],
+            );
             (a != b).then_some(([a.min(b), a.max(b)], h))
         })
         .collect();
     keyed.sort_unstable();
     let single_fan = |h: HalfedgeId| {
-        boundary_fans[mesh.origin(h).idx()] == 1 && boundary_fans[mesh.target(h).idx()] == 1
+        boundary_fans[mesh.origin(h).index()] == 1 && boundary_fans[mesh.target(h).index()] == 1
     };
     let mut pairs: Vec<[HalfedgeId; 2]> = keyed
         .chunk_by(|x, y| x.0 == y.0)
         .filter_map(|run| match run {
             &[(_, a), (_, b)]
-                if cluster[mesh.origin(a).idx()] != cluster[mesh.origin(b).idx()]
+                if cluster[mesh.origin(a).index()] != cluster[mesh.origin(b).index()]
                     && single_fan(a)
                     && single_fan(b) =>
             {
@@ -93,8 +96,8 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
             is_broken[v as usize] = true;
         }
         pairs.retain(|&[a, _]| {
-            !is_broken[kept_vertex[mesh.origin(a).idx()] as usize]
-                && !is_broken[kept_vertex[mesh.target(a).idx()] as usize]
+            !is_broken[kept_vertex[mesh.origin(a).index()] as usize]
+                && !is_broken[kept_vertex[mesh.target(a).index()] as usize]
         });
     };
 
@@ -145,7 +148,7 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
     }
     let mut glued_away = vec![false; mesh.n_edge_slots()];
     for &[_, b] in pairs {
-        glued_away[b.edge().idx()] = true;
+        glued_away[b.edge().index()] = true;
     }
     let mut broken = Vec::new();
     let mut ends: Vec<[u32; 2]> = Vec::new();
@@ -154,7 +157,7 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
         if mesh.is_halfedge_deleted(h) || glued_away[e as usize] {
             continue;
         }
-        let (a, b) = (kept[mesh.origin(h).idx()], kept[mesh.target(h).idx()]);
+        let (a, b) = (kept[mesh.origin(h).index()], kept[mesh.target(h).index()]);
         if !is_merged[a as usize] && !is_merged[b as usize] {
             continue;
         }
@@ -175,7 +178,7 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
             continue;
         }
         corners.clear();
-        corners.extend(mesh.face_vertices(f).map(|v| kept[v.idx()]));
+        corners.extend(mesh.face_vertices(f).map(|v| kept[v.index()]));
         if !corners.iter().any(|&v| is_merged[v as usize]) {
             continue;
         }

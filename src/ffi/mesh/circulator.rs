@@ -12,7 +12,7 @@
 //! hw_mesh_face_halfedge(); along a loop, by `next`. Every walk is bounded by the number of
 //! half-edges, so a corrupt mesh ends a walk instead of looping.
 
-use crate::mesh::{EdgeId, FaceId, HalfedgeId, HalfedgeWalk, Mesh, Step, VertexId, WalkProgress};
+use crate::mesh::{EdgeId, FaceId, HalfedgeId, Mesh, Step, VertexId, WalkState};
 
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::status::hw_status;
@@ -95,11 +95,11 @@ unsafe fn begin(
             )));
         }
         let step = if center == Center::Vertex {
-            Step::RotateCcw
+            Step::Ring
         } else {
-            Step::Next
+            Step::Loop
         };
-        let progress = HalfedgeWalk::with_step(mesh, start(mesh)?, step).progress();
+        let progress = mesh.walk(start(mesh)?, step).state();
         let circulator = hw_circulator {
             mesh: raw_mesh,
             start: progress.start,
@@ -196,17 +196,17 @@ pub(crate) unsafe fn advance(
     // SAFETY: the circulator's mesh is live per the caller.
     let mesh = unsafe { mesh_ref(c.mesh) }?;
     let step = if c.center == Center::Vertex as u32 {
-        Step::RotateCcw
+        Step::Ring
     } else {
-        Step::Next
+        Step::Loop
     };
-    let progress = WalkProgress {
+    let progress = WalkState {
         start: c.start,
         current: c.current,
         remaining: c.remaining as usize,
         step,
     };
-    let mut walk = HalfedgeWalk::resume(mesh, progress);
+    let mut walk = mesh.resume_walk(progress);
     let on_face = c.center == Center::Face as u32;
     let mut found = None;
     for h in walk.by_ref() {
@@ -225,7 +225,7 @@ pub(crate) unsafe fn advance(
             break;
         }
     }
-    let progress = walk.progress();
+    let progress = walk.state();
     c.current = progress.current;
     c.remaining = progress.remaining as u32;
     Ok(found)

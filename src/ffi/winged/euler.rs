@@ -185,14 +185,8 @@ pub unsafe extern "C" fn hw_winged_garbage_collect(
     guard(|| {
         let out = Out::optional(out_maps);
         // SAFETY: forwarded from the caller.
-        let compaction = unsafe { winged_mut(winged) }?.garbage_collect();
+        let maps = unsafe { winged_mut(winged) }?.garbage_collect();
         if let Some(out) = out {
-            let maps = crate::mesh::IndexMaps {
-                vertices: compaction.vertices.iter().map(|id| id.0).collect(),
-                halfedges: Vec::new(),
-                edges: compaction.edges.iter().map(|id| id.0).collect(),
-                faces: compaction.faces.iter().map(|id| id.0).collect(),
-            };
             // SAFETY: checked non-NULL, writable per the caller.
             unsafe { out.write(into_handle(hw_index_maps { maps })) };
         }

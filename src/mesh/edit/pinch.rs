@@ -48,7 +48,7 @@ impl Mesh {
                 h = self.next(h.twin());
             }
             for &h in &fan {
-                self.origin[h.idx()] = v.0;
+                self.origin[h.index()] = v.0;
             }
             self.mark_vertex_deleted(w);
             (w, fan)
@@ -69,12 +69,12 @@ impl Mesh {
         self.link(second, after_first);
         if let Some((w, fan)) = pinch.welded {
             for &h in &fan {
-                self.origin[h.idx()] = w.0;
+                self.origin[h.index()] = w.0;
             }
-            self.deleted.vertices[w.idx()] = false;
+            self.deleted.vertices[w.index()] = false;
             self.deleted.n_vertices -= 1;
             // `fan[0]` is the boundary half-edge that left `w` (the vertex invariant).
-            self.vertex_halfedge[w.idx()] = fan[0].0;
+            self.vertex_halfedge[w.index()] = fan[0].0;
         }
     }
 }

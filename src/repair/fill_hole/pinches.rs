@@ -50,7 +50,7 @@ pub(super) fn split_at_pinches(
         };
         let (first, second) = (sides[(m + n - 1) % n], sides[k - 1]);
         let fans = several_fans.get_or_insert_with(|| {
-            let mut set = IdSet::new(mesh.vertex_capacity());
+            let mut set = IdSet::new(mesh.n_vertex_slots());
             for v in mesh.non_manifold_vertices() {
                 set.insert(v.0);
             }

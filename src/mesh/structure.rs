@@ -107,12 +107,16 @@ impl Mesh {
 
     /// `true` when vertex `v` is marked deleted (out-of-range ids are not).
     pub fn is_vertex_deleted(&self, v: VertexId) -> bool {
-        self.deleted.vertices.get(v.idx()).copied().unwrap_or(false)
+        self.deleted
+            .vertices
+            .get(v.index())
+            .copied()
+            .unwrap_or(false)
     }
 
     /// `true` when edge `e` (and so both its half-edges) is marked deleted.
     pub fn is_edge_deleted(&self, e: EdgeId) -> bool {
-        self.deleted.edges.get(e.idx()).copied().unwrap_or(false)
+        self.deleted.edges.get(e.index()).copied().unwrap_or(false)
     }
 
     /// `true` when half-edge `h`'s edge is marked deleted.
@@ -122,7 +126,7 @@ impl Mesh {
 
     /// `true` when face `f` is marked deleted.
     pub fn is_face_deleted(&self, f: FaceId) -> bool {
-        self.deleted.faces.get(f.idx()).copied().unwrap_or(false)
+        self.deleted.faces.get(f.index()).copied().unwrap_or(false)
     }
 
     /// `true` when element `idx` of `kind` is marked deleted (out-of-range ids are not).
@@ -199,7 +203,7 @@ impl Mesh {
     pub fn set_position(&mut self, v: VertexId, position: [f64; 3]) -> Result<(), EditError> {
         let v = self.check_vertex(v)?;
         require_finite(position, v.0)?;
-        self.positions[v.idx()] = position;
+        self.positions[v.index()] = position;
         Ok(())
     }
 

@@ -1,38 +1,9 @@
 //! Compaction after deletions.
 
 use crate::mesh::Mesh;
-use crate::mesh::connectivity::Deletions;
 use crate::mesh::ids::INVALID_INDEX;
-
-/// Old-to-new index maps returned by [`Mesh::garbage_collect`]: `vertices[old] = new`, with
-/// `u32::MAX` for deleted elements. Live elements keep their relative order.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct IndexMaps {
-    /// Vertex map.
-    pub vertices: Vec<u32>,
-    /// Half-edge map (twins stay paired: `new(h ^ 1) = new(h) ^ 1`).
-    pub halfedges: Vec<u32>,
-    /// Edge map.
-    pub edges: Vec<u32>,
-    /// Face map.
-    pub faces: Vec<u32>,
-}
-
-/// New index of every slot, `INVALID_INDEX` where `deleted`; lengths below `u32::MAX` hold
-/// because the arrays were built with 32-bit ids.
-pub(crate) fn compaction_map(len: usize, deleted: &[bool]) -> Vec<u32> {
-    let mut next = 0u32;
-    (0..len)
-        .map(|i| {
-            if deleted.get(i).copied().unwrap_or(false) {
-                INVALID_INDEX
-            } else {
-                next += 1;
-                next - 1
-            }
-        })
-        .collect()
-}
+use crate::mesh::structure::Deletions;
+use crate::support::index_maps::{IndexMaps, compaction_map};
 
 fn remap(value: u32, map: &[u32]) -> u32 {
     if value == INVALID_INDEX {
