@@ -33,8 +33,11 @@ pub(super) fn split_at_pinches(
 ) -> SplitLoop {
     let sides: Vec<HalfedgeId> = mesh.halfedge_loop(h).collect();
     let n = sides.len();
-    let key =
-        |mesh: &Mesh, s: HalfedgeId| mesh.position(mesh.origin(s)).map(|x| (x + 0.0).to_bits());
+    // Pinching welds copies at one position only, so the points stay as they are read here.
+    let points: Vec<[u64; 3]> = sides
+        .iter()
+        .map(|&s| mesh.position(mesh.origin(s)).map(|x| (x + 0.0).to_bits()))
+        .collect();
     let mut passed: HashMap<[u64; 3], usize> = HashMap::with_capacity(n);
     let mut stack: Vec<usize> = Vec::with_capacity(n);
     let mut split = SplitLoop {
@@ -42,9 +45,8 @@ pub(super) fn split_at_pinches(
         pinches: Vec::new(),
     };
     for k in 0..n {
-        let point = key(mesh, sides[k]);
-        let Some(&m) = passed.get(&point) else {
-            passed.insert(point, k);
+        let Some(&m) = passed.get(&points[k]) else {
+            passed.insert(points[k], k);
             stack.push(k);
             continue;
         };
@@ -56,10 +58,10 @@ pub(super) fn split_at_pinches(
             }
             set
         });
-        if !may_pinch(mesh, fans, first, second) {
+        let (v, w) = (mesh.target(first), mesh.target(second));
+        if !may_pinch(mesh, fans, v, w) {
             continue;
         }
-        let (v, w) = (mesh.target(first), mesh.target(second));
         let pinch = mesh.pinch_boundary_loop(first, second);
         if w != v {
             fans.insert(v.0);
@@ -68,7 +70,7 @@ pub(super) fn split_at_pinches(
         split.pinches.push(pinch);
         split.loops.push(second);
         while let Some(&top) = stack.last().filter(|&&top| top > m) {
-            passed.remove(&key(mesh, sides[top]));
+            passed.remove(&points[top]);
             stack.pop();
         }
     }
@@ -81,10 +83,9 @@ pub(super) fn split_at_pinches(
     split
 }
 
-/// Whether the loop may be pinched at the targets `v` of `first` and `w` of `second` (one
-/// position): the same vertex, or two with one fan each and no neighbour in common.
-fn may_pinch(mesh: &Mesh, several_fans: &IdSet, first: HalfedgeId, second: HalfedgeId) -> bool {
-    let (v, w) = (mesh.target(first), mesh.target(second));
+/// Whether a loop may be pinched at `v` and `w` (one position): the same vertex, or two with
+/// one fan each and no neighbour in common.
+fn may_pinch(mesh: &Mesh, several_fans: &IdSet, v: VertexId, w: VertexId) -> bool {
     if v == w {
         return true;
     }
