@@ -18,6 +18,7 @@ mod export;
 mod from_soup;
 mod ids;
 mod navigation;
+mod pinched_fans;
 mod raw_parts;
 mod vertex_fans;
 
