@@ -608,7 +608,7 @@ static void point_files(void) {
     fclose(file);
   }
   CHECK_STATUS(hw_points2d_read(path, &points), HW_ERR_PARSE, "line 3");
-  CHECK(last_error_contains("bad_points.txt") && last_error_contains("\"oops\" is not a number"));
+  CHECK(last_error_contains("bad_points.txt") && last_error_contains("`oops` is not a number"));
   CHECK_STATUS(hw_points2d_read("points.csv", &points), HW_ERR_INVALID_INPUT, "unknown point format");
   CHECK_STATUS(hw_points2d_read("/nonexistent/points.xy", &points), HW_ERR_IO, "cannot read");
   CHECK_STATUS(hw_points2d_read(NULL, &points), HW_ERR_NULL_ARGUMENT, "path");

@@ -290,7 +290,7 @@ mod tests {
     fn malformed_files_name_the_line_and_the_problem() {
         let error = read(PointFormat::Xy, "0 1\n2 x\n").unwrap_err();
         assert!(
-            error.to_string().contains("\"x\" is not a number"),
+            error.to_string().contains("`x` is not a number"),
             "{error}"
         );
         assert_eq!(line_of(error), 2);
