@@ -64,21 +64,6 @@ Soup exact_soup(const bench::IndexedMesh& m) {
   return soup;
 }
 
-/// Every corner on a vertex of its own.
-bench::IndexedMesh unwelded(const bench::IndexedMesh& m) {
-  bench::IndexedMesh out;
-  out.name = m.name + "-unwelded";
-  out.face_sizes = m.face_sizes;
-  out.positions.reserve(3 * m.indices.size());
-  out.indices.reserve(m.indices.size());
-  for (uint32_t v : m.indices) {
-    out.indices.push_back(static_cast<uint32_t>(out.positions.size() / 3));
-    out.positions.insert(out.positions.end(), m.positions.begin() + 3 * v,
-                         m.positions.begin() + 3 * v + 3);
-  }
-  return out;
-}
-
 constexpr std::size_t kSteps = 6;
 const char* const kStepNames[kSteps] = {"soup", "orient+build", "outward", "degenerate",
                                         "stitch", "isolated"};
@@ -172,11 +157,11 @@ int main(int argc, char** argv) {
   std::printf("%-34s %8s %8s %8s %10s %10s %8s\n", "model", "faces in", "vertices", "faces",
               "halfwing", "CGAL sum", "ratio");
   const uint32_t n = opts.quick ? 100 : 708;
-  compare(unwelded(bench::torus(n, n, true)), opts.repeats);
+  compare(bench::unwelded(bench::torus(n, n, true)), opts.repeats);
   for (const std::string& file : opts.files) {
     const bench::IndexedMesh model = bench::read_file(file);
     compare(model, opts.repeats);
-    compare(unwelded(model), opts.repeats);
+    compare(bench::unwelded(model), opts.repeats);
   }
   return 0;
 }

@@ -289,10 +289,7 @@ mod tests {
     #[test]
     fn malformed_files_name_the_line_and_the_problem() {
         let error = read(PointFormat::Xy, "0 1\n2 x\n").unwrap_err();
-        assert!(
-            error.to_string().contains("`x` is not a number"),
-            "{error}"
-        );
+        assert!(error.to_string().contains("`x` is not a number"), "{error}");
         assert_eq!(line_of(error), 2);
         assert_eq!(line_of(read(PointFormat::Xy, "0 1\n\n5\n").unwrap_err()), 3);
         let error = read(PointFormat::Counted, "# header next\n3\n0 1\n").unwrap_err();
