@@ -17,13 +17,13 @@ impl Mesh {
         if pinched.is_empty() {
             return;
         }
-        let mut is_pinched = vec![false; self.vertex_capacity()];
+        let mut is_pinched = vec![false; self.n_vertex_slots()];
         for v in &pinched {
-            is_pinched[v.idx()] = true;
+            is_pinched[v.index()] = true;
         }
-        let mut leaving: Vec<(u32, u32)> = (0..self.halfedge_capacity() as u32)
+        let mut leaving: Vec<(u32, u32)> = (0..self.n_halfedge_slots() as u32)
             .map(HalfedgeId)
-            .filter(|&h| !self.is_halfedge_deleted(h) && is_pinched[self.origin(h).idx()])
+            .filter(|&h| !self.is_halfedge_deleted(h) && is_pinched[self.origin(h).index()])
             .map(|h| (self.origin(h).0, h.0))
             .collect();
         leaving.sort_unstable();
@@ -46,7 +46,7 @@ impl Mesh {
 
     /// The half-edges of the fan of `h` (leaving `h`'s origin), from `h`.
     fn outgoing_halfedges_from(&self, h: HalfedgeId) -> impl Iterator<Item = HalfedgeId> + '_ {
-        let bound = self.halfedge_capacity();
+        let bound = self.n_halfedge_slots();
         std::iter::successors(Some(h), move |&g| {
             let next = self.prev(g).twin();
             (next != h).then_some(next)
@@ -200,7 +200,7 @@ mod tests {
         }
         let mut vertex_halfedge = mesh.vertex_halfedge.clone();
         vertex_halfedge[copy as usize] = u32::MAX;
-        let mut deleted_vertices = vec![false; mesh.vertex_capacity()];
+        let mut deleted_vertices = vec![false; mesh.n_vertex_slots()];
         deleted_vertices[copy as usize] = true;
         let mesh = Mesh::from_arrays(MeshArrays {
             origin,
@@ -222,7 +222,7 @@ mod tests {
     /// Collapses every interior edge of the grids it can, in id order; gives the collapses.
     fn collapse_all(mesh: &mut Mesh, pinched: VertexId, check_fans: bool) -> usize {
         let mut collapsed = 0;
-        for h in (0..mesh.halfedge_capacity() as u32)
+        for h in (0..mesh.n_halfedge_slots() as u32)
             .step_by(2)
             .map(HalfedgeId)
         {
@@ -253,7 +253,7 @@ mod tests {
         mesh.check().unwrap();
         let maps = mesh.garbage_collect();
         mesh.check().unwrap();
-        let pinched = VertexId(maps.vertices[pinched.idx()]);
+        let pinched = VertexId(maps.vertices[pinched.index()]);
         assert_eq!(mesh.non_manifold_vertices(), vec![pinched]);
         assert!(mesh.fan_misses_halfedges(pinched));
     }
