@@ -67,6 +67,21 @@ inline IndexedMesh open_grid(uint32_t n) {
   return m;
 }
 
+/// `m` with every corner on a vertex of its own (a triangle soup), named `<name>-unwelded`.
+inline IndexedMesh unwelded(const IndexedMesh& m) {
+  IndexedMesh out;
+  out.name = m.name + "-unwelded";
+  out.face_sizes = m.face_sizes;
+  out.positions.reserve(3 * m.indices.size());
+  out.indices.reserve(m.indices.size());
+  for (uint32_t v : m.indices) {
+    out.indices.push_back(static_cast<uint32_t>(out.positions.size() / 3));
+    out.positions.insert(out.positions.end(), m.positions.begin() + 3 * v,
+                         m.positions.begin() + 3 * v + 3);
+  }
+  return out;
+}
+
 /// A model file (OBJ, OFF, PLY) read with hw_soup_read(), named by its file name.
 inline IndexedMesh read_file(const std::string& path) {
   return indexed::read(path, path.substr(path.find_last_of('/') + 1));

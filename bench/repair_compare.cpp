@@ -24,23 +24,8 @@ namespace {
 namespace PMP = CGAL::Polygon_mesh_processing;
 using cgal_soup::Soup;
 
-/// Every corner on a vertex of its own.
-bench::IndexedMesh unwelded(const bench::IndexedMesh& m) {
-  bench::IndexedMesh out;
-  out.name = m.name + "-unwelded";
-  out.face_sizes = m.face_sizes;
-  out.positions.reserve(3 * m.indices.size());
-  out.indices.reserve(m.indices.size());
-  for (uint32_t v : m.indices) {
-    out.indices.push_back(static_cast<uint32_t>(out.positions.size() / 3));
-    out.positions.insert(out.positions.end(), m.positions.begin() + 3 * v,
-                         m.positions.begin() + 3 * v + 3);
-  }
-  return out;
-}
-
 void compare(const bench::IndexedMesh& welded, int repeats) {
-  const bench::IndexedMesh m = unwelded(welded);
+  const bench::IndexedMesh m = bench::unwelded(welded);
   double ours = std::numeric_limits<double>::infinity(), theirs = ours;
   std::size_t our_left = 0, their_left = 0;
   for (int round = 0; round < repeats; ++round) {

@@ -299,6 +299,20 @@ static void voronoi_classes() {
              std::string(e.what()).find("site 1") != std::string::npos;
   }
   CHECK(thrown);
+
+  // A point file feeds a diagram; a malformed one throws with the file's line.
+  const std::vector<hw::point2> read =
+      hw::read_points2d(std::string(HALFWING_DATA_DIR) + "/points2d/triangle_dots.node");
+  CHECK(read.size() == 100 && read[0][0] == 0.0476694 && read[0][1] == 0.809168);
+  CHECK(hw::voronoi(read).n_sites() == read.size());
+  thrown = false;
+  try {
+    hw::read_points2d(std::string(HALFWING_DATA_DIR) + "/meshes/closed/cgal_cube.off");
+  } catch (const hw::error& e) {
+    thrown = e.status() == hw::Status::InvalidInput &&
+             std::string(e.what()).find("unknown point format") != std::string::npos;
+  }
+  CHECK(thrown);
 }
 
 static void doctor() {

@@ -578,6 +578,44 @@ static void svg(void) {
   hw_voronoi_free(v);
 }
 
+/* A point file read through the library's reader feeds a diagram; a malformed one is refused
+ * with the file and the line named. */
+static void point_files(void) {
+  char path[1024];
+  hw_points2d *points = NULL;
+  hw_voronoi *v = NULL;
+  const double *xy = NULL;
+  size_t n = 0;
+  FILE *file;
+  snprintf(path, sizeof path, "%s/points2d/cgal_points.xy", HALFWING_DATA_DIR);
+  CHECK(hw_points2d_read(path, &points) == HW_OK);
+  CHECK(hw_points2d_view(points, &xy, &n) == HW_OK);
+  CHECK(n > 3 && xy != NULL);
+  CHECK(hw_voronoi_build(xy, n, &v) == HW_OK);
+  CHECK(hw_voronoi_n_sites(v) == n);
+  hw_voronoi_free(v);
+  CHECK_STATUS(hw_points2d_view(points, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_xy");
+  CHECK_STATUS(hw_points2d_view(NULL, &xy, &n), HW_ERR_NULL_ARGUMENT, "points");
+  hw_points2d_free(points);
+  hw_points2d_free(NULL);
+
+  points = NULL;
+  snprintf(path, sizeof path, "%s/bad_points.txt", TEST_TMP_DIR);
+  file = fopen(path, "w");
+  CHECK(file != NULL);
+  if (file) {
+    fputs("3\n0 1\n2 oops\n", file);
+    fclose(file);
+  }
+  CHECK_STATUS(hw_points2d_read(path, &points), HW_ERR_PARSE, "line 3");
+  CHECK(last_error_contains("bad_points.txt") && last_error_contains("`oops` is not a number"));
+  CHECK_STATUS(hw_points2d_read("points.csv", &points), HW_ERR_INVALID_INPUT, "unknown point format");
+  CHECK_STATUS(hw_points2d_read("/nonexistent/points.xy", &points), HW_ERR_IO, "cannot read");
+  CHECK_STATUS(hw_points2d_read(NULL, &points), HW_ERR_NULL_ARGUMENT, "path");
+  CHECK_STATUS(hw_points2d_read(path, NULL), HW_ERR_NULL_ARGUMENT, "out_points");
+  CHECK(points == NULL);
+}
+
 int main(void) {
   counts_and_views();
   edges();
@@ -590,5 +628,6 @@ int main(void) {
   lloyd();
   label_images();
   svg();
+  point_files();
   return check_summary("test_voronoi_api");
 }

@@ -107,8 +107,8 @@
  * The vertex, face and edge tables in three naming conventions, as text, Markdown or CSV.
  *
  * @defgroup voronoi Voronoi diagrams
- * Delaunay triangulation, Voronoi diagram, clipped cells, queries, Lloyd relaxation, rasters
- * and SVG.
+ * 2D point files, Delaunay triangulation, Voronoi diagram, clipped cells, queries, Lloyd
+ * relaxation, rasters and SVG.
  *
  * @defgroup doctor Mesh doctor
  * Every defect of a face list or a mesh, named with its elements; self-intersections.
@@ -249,6 +249,13 @@ typedef struct hw_index_maps hw_index_maps;
  * \ingroup mesh
  */
 typedef struct hw_mesh hw_mesh;
+
+/**
+ * The points of a 2D point file, in file order. Opaque; read with hw_points2d_read(), look at
+ * with hw_points2d_view(), release with hw_points2d_free().
+ * \ingroup voronoi
+ */
+typedef struct hw_points2d hw_points2d;
 
 /**
  * GPU-ready arrays of a mesh or a polygon list. Opaque; from hw_render_buffers_build(),
@@ -1644,8 +1651,8 @@ hw_status hw_mesh_split_face(hw_mesh *mesh,
 
 /**
  * Collapses half-edge `h`: its origin merges into its target (which keeps its position, given in
- * `*out_vertex`). Refused unless the link condition holds and the triangles beside the edge can
- * vanish without breaking the surface.
+ * `*out_vertex`); a polygon beside the edge loses a corner. Refused unless the link condition
+ * holds and the triangles beside the edge can vanish without breaking the surface.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.
@@ -3028,6 +3035,41 @@ typedef struct {
    */
   bool delaunay_edges;
 } hw_svg_options;
+
+/**
+ * Reads a 2D point file, the format by the path's extension: `.xy` and `.cin` (a point per line),
+ * `.node` and `.poly` (Triangle's format: a header `count 2 ...`, then `index x y ...` lines),
+ * `.txt` (a count line, then a point per line), `.json` (a flat or nested array of
+ * coordinates). A malformed file gives `HW_ERR_PARSE`, the message naming the file, the line and
+ * the problem; an unreadable one `HW_ERR_IO`; an unknown extension `HW_ERR_INVALID_INPUT`.
+ * Non-finite coordinates are read as values (hw_voronoi_build() refuses them).
+ *
+ * # Safety
+ * `path` must be NULL or NUL-terminated; `out_points` writable.
+ * \ingroup voronoi
+ */
+hw_status hw_points2d_read(const char *path, hw_points2d **out_points);
+
+/**
+ * A zero-copy view of the points: `*out_xy` (`2 * *out_n_points` doubles, x then y of each
+ * point, in the form hw_voronoi_build() takes; NULL when there are none). Lives as long as the
+ * points.
+ *
+ * # Safety
+ * `points` must be NULL or live; `out_xy` and `out_n_points` writable.
+ * \ingroup voronoi
+ */
+hw_status hw_points2d_view(const hw_points2d *points, const double **out_xy, size_t *out_n_points);
+
+/**
+ * Releases points. NULL is a no-op; a second free is refused (within the limits the ownership
+ * conventions at the top of the header state).
+ *
+ * # Safety
+ * `points` must be NULL or points from this library, not in use by another thread.
+ * \ingroup voronoi
+ */
+void hw_points2d_free(hw_points2d *points);
 
 /**
  * Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`

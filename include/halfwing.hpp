@@ -1739,6 +1739,20 @@ class winged {
 /// A 2D point (x, y).
 using point2 = std::array<double, 2>;
 
+/// The points of a 2D point file (.xy, .cin, .node, .poly, .txt, .json), in file order, in the
+/// form hw::voronoi takes; see hw_points2d_read().
+inline std::vector<point2> read_points2d(const std::string& path) {
+  hw_points2d* raw = nullptr;
+  check(hw_points2d_read(path.c_str(), &raw));
+  const detail::owned<hw_points2d, hw_points2d_free> points(raw);
+  const double* xy = nullptr;
+  std::size_t n = 0;
+  check(hw_points2d_view(points.get(), &xy, &n));
+  std::vector<point2> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = {xy[2 * i], xy[2 * i + 1]};
+  return out;
+}
+
 /// Clipped Voronoi cells (owns an hw_voronoi_cells): closed polygons tiling a convex region, with
 /// shared corners. Independent of the diagram they came from; immutable, so every method may run
 /// concurrently. Failures throw hw::error.

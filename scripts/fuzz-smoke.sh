@@ -27,9 +27,10 @@ seed() {  # seed <target> <file name> <contents>: a first input, when the corpus
 seed read_obj tetrahedron.obj 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvt 0 0\nf 1/1/1 3/1/1 2/1/1\nf 1 2 4\nf 2 3 4\nf 3 1 4\n'
 seed read_off tetrahedron.off 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n'
 seed read_ply triangle.ply 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'
+seed read_points2d triangle.node '\00014 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n'
 for target in build_mesh doctor edits voronoi; do seed "$target" zero '\000\000\000\000'; done
 
-for target in read_obj read_off read_ply build_mesh doctor edits voronoi; do
+for target in read_obj read_off read_ply read_points2d build_mesh doctor edits voronoi; do
   mkdir -p "artifacts/$target"
   log=$(mktemp)
   if ! "target/$host/release/$target" -max_total_time="$seconds" -rss_limit_mb=2048 \

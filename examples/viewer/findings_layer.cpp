@@ -30,13 +30,9 @@ constexpr std::array<kind_style, HW_DOCTOR_FINDING_COUNT> kind_styles{{
     {GLFW_KEY_I, 'I', {{1.0f, 0.0f, 0.0f}, 2.5f}, "red"},          // self-intersections
 }};
 
-/// The indexed face list of a file, as the file numbers it.
-struct face_list {
-  std::vector<double> positions;
-  std::vector<uint32_t> face_sizes, indices;
-};
+}  // namespace
 
-face_list read_face_list(const std::string& path) {
+face_list face_list::read(const std::string& path) {
   hw_soup* raw = nullptr;
   hw::check(hw_soup_read(path.c_str(), &raw));
   const hw::detail::owned<hw_soup, hw_soup_free> soup(raw);
@@ -51,6 +47,23 @@ face_list read_face_list(const std::string& path) {
   list.indices.assign(indices, indices + n_indices);
   return list;
 }
+
+face_list face_list::of(const hw::mesh& mesh) {
+  face_list list;
+  const hw::values_view<const double> positions = mesh.view_positions();
+  list.positions.assign(positions.begin(), positions.end());
+  for (uint32_t f = 0; f < mesh.n_faces(); ++f) {
+    uint32_t size = 0;
+    for (hw_vertex v : mesh.vertices_of(hw_face{f})) {
+      list.indices.push_back(v.idx);
+      ++size;
+    }
+    list.face_sizes.push_back(size);
+  }
+  return list;
+}
+
+namespace {
 
 /// Three axis-aligned segments of length `size` through each point: a cross the line program
 /// can draw, so vertices need no program of their own.
@@ -76,8 +89,7 @@ void draw_lines(GLuint program, const line_style& style, const gpu_lines* lines)
 
 }  // namespace
 
-findings_layer::findings_layer(const std::string& path) {
-  const face_list list = read_face_list(path);
+findings_layer::findings_layer(const face_list& list) {
   report_ = hw::doctor_report::of(list.positions, list.face_sizes, list.indices);
   // Crosses a hundredth of the model's size.
   float size = 0;

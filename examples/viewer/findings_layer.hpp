@@ -16,10 +16,21 @@
 
 namespace viewer {
 
+/// An indexed face list: a file as it numbers it, or a mesh's faces.
+struct face_list {
+  std::vector<double> positions;
+  std::vector<uint32_t> face_sizes, indices;
+
+  /// The file at `path` as it numbers it (nothing repaired). Throws hw::error.
+  static face_list read(const std::string& path);
+  /// The faces of `mesh`, whose elements are numbered without gaps (as a repair leaves them).
+  static face_list of(const hw::mesh& mesh);
+};
+
 class findings_layer {
  public:
-  /// Reads `path` as the file numbers it (nothing repaired) and examines it. Throws hw::error.
-  explicit findings_layer(const std::string& path);
+  /// Examines `list` with the doctor. Throws hw::error.
+  explicit findings_layer(const face_list& list);
 
   /// Draws the shown kinds with the line program.
   void draw(GLuint line_program) const;

@@ -38,13 +38,17 @@ void draw_lines(GLuint program, const line_style& style, const gpu_lines& lines)
 }  // namespace
 
 mesh_scene::mesh_scene(const std::string& path)
-    : path_(path), mesh_(hw::mesh::read(path, hw::BuildPolicy::Repair, &report_)), findings_(path) {
+    : path_(path),
+      mesh_(hw::mesh::read(path, hw::BuildPolicy::Repair, &report_)),
+      findings_(face_list::read(path)) {
   options_.shading = HW_SHADING_CREASE;
   rebuild();
 }
 
 void mesh_scene::rebuild() {
-  buffers_ = std::make_unique<hw::render_buffers>(mesh_, options_, &report_);
+  // The repaired mesh has no non-manifold edge: the file's diagnostic does not apply to it.
+  buffers_ = std::make_unique<hw::render_buffers>(shown_mesh(), options_,
+                                                  show_repaired_ ? nullptr : &report_);
   surface_ = std::make_unique<gpu_surface>(*buffers_);
   wireframe_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Wireframe);
   boundary_ = std::make_unique<gpu_lines>(*buffers_, hw::RenderFloats::Boundary);
@@ -68,7 +72,7 @@ void mesh_scene::draw(const programs& with) const {
   glDepthFunc(GL_LEQUAL);
   if (show_boundary_) draw_lines(with.lines, styles::boundary, *boundary_);
   if (show_non_manifold_) draw_lines(with.lines, styles::non_manifold, *non_manifold_);
-  findings_.draw(with.lines);
+  shown_findings().draw(with.lines);
   glDepthFunc(GL_LESS);
   glBindVertexArray(0);
 }
@@ -91,7 +95,13 @@ bool mesh_scene::on_key(int key) {
     case GLFW_KEY_M: show_non_manifold_ = !show_non_manifold_; return true;
     case GLFW_KEY_N: show_vertex_normals_ = !show_vertex_normals_; return true;
     case GLFW_KEY_F: show_face_normals_ = !show_face_normals_; return true;
-    default: return findings_.on_key(key);
+    case GLFW_KEY_J: toggle_repaired(); break;
+    default: {
+      // A finding kind stays shown or hidden in both meshes.
+      const bool known = findings_.on_key(key);
+      if (repaired_findings_) repaired_findings_->on_key(key);
+      return known;
+    }
   }
   rebuild();  // the shading changed: new normals, maybe new vertex splits
   return true;
@@ -105,13 +115,16 @@ std::string mesh_scene::help() const {
          "  B          boundary loops (magenta)\n"
          "  M          non-manifold edges from the diagnostic (cyan)\n"
          "  N / F      vertex / face normal glyphs (green / yellow)\n"
-         "the doctor's findings on the file, one key each:\n" +
-         findings_.help();
+         "  J          repair: run the repair pipeline on the file and show the result, with the\n"
+         "             doctor's findings on it (counts before and after in the console); again:\n"
+         "             back to the file\n"
+         "the doctor's findings on the shown mesh, one key each:\n" +
+         shown_findings().help();
 }
 
 std::string mesh_scene::status() const {
   std::ostringstream out;
-  out << shading_name(options_.shading);
+  out << (show_repaired_ ? "repaired, " : "") << shading_name(options_.shading);
   if (options_.shading == HW_SHADING_CREASE)
     out << " " << std::lround(options_.crease_angle / degrees) << " deg";
   if (options_.shading == HW_SHADING_SMOOTH) out << " (" << weighting_name(options_.weighting) << ")";
@@ -132,6 +145,30 @@ std::string mesh_scene::summary() const {
       << "diagnostic: " << (report_.is_clean() ? std::string("clean") : report_.summary())
       << "\n" << findings_.summary();
   return out.str();
+}
+
+void mesh_scene::toggle_repaired() {
+  if (!repaired_) {
+    const hw::soup file = hw::soup::read(path_);
+    auto [mesh, fates] = hw::repair_mesh(file);
+    const hw_repair_fate_counts counts = fates.counts();
+    repaired_ = std::make_unique<hw::mesh>(std::move(mesh));
+    repaired_findings_ = std::make_unique<findings_layer>(face_list::of(*repaired_));
+    std::printf("repair of %s\n"
+                "  before: %zu vertices, %zu faces\n  %s\n"
+                "  after: %zu vertices, %zu edges, %zu faces, %zu boundary loops\n"
+                "  vertices: %zu kept, %zu merged, %zu removed, %zu added (copies)\n"
+                "  faces: %zu kept (%zu reversed), %zu removed\n  %s\n",
+                path_.c_str(), file.positions().size() / 3, file.face_sizes().size(),
+                findings_.summary().c_str(), repaired_->n_vertices(), repaired_->n_edges(),
+                repaired_->n_faces(), repaired_->boundary_loops().size(), counts.kept_vertices,
+                counts.merged_vertices, counts.removed_vertices, counts.added_vertices,
+                counts.kept_faces, counts.reversed_faces, counts.removed_faces,
+                repaired_findings_->summary().c_str());
+  }
+  show_repaired_ = !show_repaired_;
+  std::printf("showing %s\n", show_repaired_ ? "the repaired mesh" : "the file");
+  std::fflush(stdout);
 }
 
 std::pair<std::array<float, 3>, std::array<float, 3>> mesh_scene::bounds() const {

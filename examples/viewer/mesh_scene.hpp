@@ -1,7 +1,8 @@
 // mesh_scene.hpp — a loaded polygon mesh as the viewer shows it: shaded flat, smooth, with a
 // crease angle or with the file's normals, with its wireframe, boundary loops, non-manifold
-// edges, normal glyphs and the doctor's findings on the file, each toggled by a key. Every array
-// comes from hw::render_buffers.
+// edges, normal glyphs and the doctor's findings on the file, each toggled by a key; a key runs
+// the repair pipeline and shows its result with the doctor's findings on it. Every array comes
+// from hw::render_buffers.
 #ifndef HALFWING_VIEWER_MESH_SCENE_HPP
 #define HALFWING_VIEWER_MESH_SCENE_HPP
 
@@ -44,6 +45,14 @@ class mesh_scene : public scene {
  private:
   /// Rebuilds the render buffers for the current shading and uploads them.
   void rebuild();
+  /// Repairs the file (hw::repair_mesh with the default options) the first time, printing the
+  /// counts before and after; then switches between the file and the repaired mesh.
+  void toggle_repaired();
+  /// The mesh shown: the file's, or the repaired one.
+  const hw::mesh& shown_mesh() const { return show_repaired_ ? *repaired_ : mesh_; }
+  const findings_layer& shown_findings() const {
+    return show_repaired_ ? *repaired_findings_ : findings_;
+  }
 
   std::string path_;
   hw::diagnostic report_;
@@ -53,6 +62,9 @@ class mesh_scene : public scene {
   std::unique_ptr<gpu_surface> surface_;
   std::unique_ptr<gpu_lines> wireframe_, boundary_, non_manifold_, vertex_normals_, face_normals_;
   findings_layer findings_;
+  std::unique_ptr<hw::mesh> repaired_;
+  std::unique_ptr<findings_layer> repaired_findings_;
+  bool show_repaired_ = false;
   bool show_wireframe_ = true, show_boundary_ = true, show_non_manifold_ = true;
   bool show_vertex_normals_ = false, show_face_normals_ = false;
 };

@@ -87,6 +87,19 @@ pub enum IoError {
         /// What the problem is, naming the offending token or count.
         message: String,
     },
+    /// A 2D point file is malformed: a token that is not a number, a line without a point, a
+    /// header announcing more points than follow, and so on.
+    #[error("{}line {line}: {message} ({format} point file)", file_prefix(path))]
+    PointParse {
+        /// The file, when the points were read from one.
+        path: Option<std::path::PathBuf>,
+        /// The format being read.
+        format: super::PointFormat,
+        /// The 1-based line of the problem.
+        line: u64,
+        /// What the problem is, naming the offending token or count.
+        message: String,
+    },
     /// A format, variant or file extension halfwing does not read or write (binary OFF, 4D OFF, an
     /// unknown extension, …).
     #[error("unsupported format: {0}")]
@@ -104,6 +117,13 @@ fn system_message(error: &std::io::Error) -> String {
         (Some(_), Some(suffix)) => text[..suffix].to_string(),
         _ => text,
     }
+}
+
+/// `'path' ` before a located message, or nothing.
+fn file_prefix(path: &Option<std::path::PathBuf>) -> String {
+    path.as_ref()
+        .map(|p| format!("'{}' ", p.display()))
+        .unwrap_or_default()
 }
 
 impl IoError {
@@ -127,7 +147,26 @@ impl IoError {
                 location: Location::Line(line),
                 ..
             } => Some(*line),
+            IoError::PointParse { line, .. } => Some(*line),
             _ => None,
+        }
+    }
+
+    /// This error, a point file's parse error naming the file `path`.
+    pub(crate) fn in_file(self, path: &std::path::Path) -> IoError {
+        match self {
+            IoError::PointParse {
+                format,
+                line,
+                message,
+                ..
+            } => IoError::PointParse {
+                path: Some(path.to_path_buf()),
+                format,
+                line,
+                message,
+            },
+            other => other,
         }
     }
 

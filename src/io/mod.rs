@@ -1,4 +1,5 @@
-//! Reading and writing meshes: Wavefront OBJ, Geomview OFF and Stanford PLY.
+//! Reading and writing meshes: Wavefront OBJ, Geomview OFF and Stanford PLY; reading 2D point
+//! files ([`read_points2d`]).
 //!
 //! Readers produce a [`PolygonSoup`]: positions, polygon sizes and 0-based vertex indices exactly
 //! as the file numbers its vertices (nothing is welded, reordered, triangulated or dropped,
@@ -33,6 +34,7 @@ mod off_write;
 mod ply_header;
 mod ply_read;
 mod ply_write;
+mod points2d_read;
 mod text;
 
 pub use error::{FileAction, IoError, Location};
@@ -44,6 +46,7 @@ pub use off_write::write_off;
 pub use ply_header::PlyEncoding;
 pub use ply_read::{read_ply, read_ply_bytes};
 pub use ply_write::write_ply;
+pub use points2d_read::{PointFormat, read_points2d, read_points2d_bytes};
 
 use std::path::Path;
 

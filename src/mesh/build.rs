@@ -252,6 +252,7 @@ impl FaceLoops {
             face_halfedge: fit(self.face_halfedge, n_faces),
             deleted: Deletions::default(),
             may_have_pinched_vertices: true,
+            pinched_fan_starts: Vec::new(),
             attributes: Default::default(),
         };
         // Every corner has a half-edge with a face; the other half-edges are boundary twins.
@@ -259,7 +260,7 @@ impl FaceLoops {
             let boundary = boundary_twins(&mesh.face);
             mesh.link_boundary(&boundary);
         }
-        mesh.may_have_pinched_vertices = !mesh.non_manifold_vertices().is_empty();
+        mesh.note_pinched_vertices();
         mesh
     }
 }

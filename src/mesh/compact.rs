@@ -84,9 +84,10 @@ impl Mesh {
             face_halfedge,
             deleted: Deletions::default(),
             may_have_pinched_vertices: true,
+            pinched_fan_starts: Vec::new(),
             attributes: std::mem::take(&mut self.attributes),
         };
-        self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
+        self.note_pinched_vertices();
         IndexMaps {
             vertices,
             halfedges,

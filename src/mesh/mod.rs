@@ -17,6 +17,7 @@ mod edit;
 mod ids;
 mod navigation;
 mod normals;
+mod pinched_fans;
 mod raw_parts;
 mod soup_conversion;
 mod structure;

@@ -54,10 +54,11 @@ impl Mesh {
             },
             // Until the vertices are looked at below, operators must not assume single fans.
             may_have_pinched_vertices: true,
+            pinched_fan_starts: Vec::new(),
             attributes: Default::default(),
         };
         mesh.check()?;
-        mesh.may_have_pinched_vertices = !mesh.non_manifold_vertices().is_empty();
+        mesh.note_pinched_vertices();
         Ok(mesh)
     }
 }

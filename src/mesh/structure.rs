@@ -36,6 +36,9 @@ pub struct Mesh {
     /// cycle, which its circulator walks whole. Operators that must see a vertex's every
     /// half-edge check the slow way while it is set.
     pub(super) may_have_pinched_vertices: bool,
+    /// Pairs `(vertex, half-edge)`, sorted: one half-edge of every fan of each pinched vertex
+    /// (see [`pinched_fans`](super::pinched_fans)); empty when no vertex is pinched.
+    pub(super) pinched_fan_starts: Vec<(u32, u32)>,
     /// Named per-element columns, corner normals and texture coordinates (see
     /// [`attributes`](super::attributes)); empty sets cost nothing.
     pub(super) attributes: Attributes,

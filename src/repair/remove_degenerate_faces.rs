@@ -1,5 +1,5 @@
-//! Removing degenerate triangles: collapsing their short edges, flipping caps away, removing
-//! what cannot be mended in place.
+//! Removing degenerate faces: collapsing their short edges, flipping caps away, removing what
+//! cannot be mended in place.
 
 use super::mesh_maps::identity_maps;
 use super::tolerance::absolute_on_mesh;
@@ -26,16 +26,23 @@ use crate::mesh::{FaceId, HalfedgeId, Mesh, VertexId};
 /// - otherwise (a collapse the mesh's link condition refuses, a cap on the boundary or beside
 ///   a polygon): the triangle is removed, which leaves a boundary where it was.
 ///
+/// A polygon (more than 3 corners) is degenerate when it has an edge of zero length (or at most
+/// the tolerance), when two of its corners are at the same position (a pinched polygon), or
+/// when all its corners lie on one line (zero area; exactly, or within the tolerance of the line
+/// through its first corner and the corner farthest from it). A short edge is collapsed as a triangle's is: the polygon
+/// loses a corner, the faces around stay closed, and the polygon is judged again (a triangle
+/// now, perhaps). A pinched or flat polygon, or one whose collapse the mesh refuses, is removed.
+///
 /// Every removed face is in [`RepairReport::removed_faces`], whether collapsed or removed.
-/// Faces with more than 3 corners are left as they are. Vertices that only removed faces named
-/// stay, isolated (see [`remove_unreferenced_vertices`](super::remove_unreferenced_vertices)).
+/// Vertices that only removed faces named stay, isolated (see
+/// [`remove_unreferenced_vertices`](super::remove_unreferenced_vertices)).
 ///
 /// Corner data follows its corner: a face's corner at a merged vertex keeps its normal and
 /// texture coordinate, now at the kept vertex; a flip's two faces keep the corners of the
 /// vertices they still name, and each takes the other's corner at the new edge's far end (as
 /// [`Mesh::flip_edge`] does). A kept vertex keeps its attributes.
 ///
-/// Afterwards no triangle is degenerate, so a second run changes nothing. Each edit removes a
+/// Afterwards no face is degenerate, so a second run changes nothing. Each edit removes a
 /// vertex or a face, or replaces a degenerate triangle by two that are not: the work is linear
 /// in the faces, times the valence of the vertices that collapses merge. Refused (the mesh
 /// unchanged) for a tolerance that is negative, NaN, infinite or relative above 1; a
@@ -59,10 +66,15 @@ pub fn remove_degenerate_faces(
     let mut is_pending = vec![true; n_faces];
     while let Some(f) = pending.pop() {
         is_pending[f.index()] = false;
-        if mesh.is_face_deleted(f) || mesh.face_degree(f) != 3 {
+        if mesh.is_face_deleted(f) {
             continue;
         }
-        let Some(shape) = triangle_shape(corners(mesh, mesh.face_halfedge(f)), tolerance) else {
+        let shape = if mesh.face_degree(f) == 3 {
+            triangle_shape(corners(mesh, mesh.face_halfedge(f)), tolerance)
+        } else {
+            polygon_shape(mesh, f, tolerance)
+        };
+        let Some(shape) = shape else {
             continue;
         };
         changed = true;
@@ -79,6 +91,7 @@ pub fn remove_degenerate_faces(
                 flipped_faces.push([f.0, across.0]);
                 VertexId::INVALID
             }),
+            Shape::Flat => None,
         };
         if mended.is_none() {
             // Only a live face is deleted, which cannot fail.
@@ -117,6 +130,8 @@ enum Shape {
     ShortEdge(HalfedgeId),
     /// Its corner opposite this half-edge (its longest edge) lies on the edge.
     Cap(HalfedgeId),
+    /// A polygon with two corners at one position, or all its corners on one line.
+    Flat,
 }
 
 /// The half-edges of the triangle of `h`, from `h`, with their origins' positions.
@@ -145,6 +160,52 @@ fn triangle_shape(corners: [(HalfedgeId, [f64; 3]); 3], tolerance: f64) -> Optio
     let [a, b, c] = [0, 1, 2].map(|k| points[(longest + k) % 3]);
     let on_line = are_collinear(a, b, c) || (tolerance > 0.0 && height(a, b, c) <= tolerance);
     on_line.then_some(Shape::Cap(corners[longest].0))
+}
+
+/// How the polygon `f` (more than 3 corners) is degenerate, if it is: its shortest edge when
+/// that is of zero length or at most `tolerance` (a zero-length one first), else flat when two
+/// corners share a position or every corner lies on one line. Polygons with a non-finite
+/// coordinate are not judged. O(k log k) for k corners.
+fn polygon_shape(mesh: &Mesh, f: FaceId, tolerance: f64) -> Option<Shape> {
+    let start = mesh.face_halfedge(f);
+    let corners: Vec<(HalfedgeId, [f64; 3])> =
+        std::iter::successors(Some(start), |&h| Some(mesh.next(h)).filter(|&g| g != start))
+            .map(|h| (h, mesh.position(mesh.origin(h))))
+            .collect();
+    if !corners.iter().flat_map(|(_, p)| p).all(|x| x.is_finite()) {
+        return None;
+    }
+    let k = corners.len();
+    let edge = |i: usize| (corners[i].1, corners[(i + 1) % k].1);
+    if let Some(i) = (0..k).find(|&i| edge(i).0 == edge(i).1) {
+        return Some(Shape::ShortEdge(corners[i].0));
+    }
+    let shortest = (0..k).min_by(|&i, &j| {
+        let (a, b) = (edge(i), edge(j));
+        distance(a.0, a.1).total_cmp(&distance(b.0, b.1))
+    })?;
+    if distance(edge(shortest).0, edge(shortest).1) <= tolerance {
+        return Some(Shape::ShortEdge(corners[shortest].0));
+    }
+    let mut positions: Vec<[f64; 3]> = corners.iter().map(|&(_, p)| p).collect();
+    positions.sort_unstable_by(|a, b| {
+        (a[0].total_cmp(&b[0]))
+            .then(a[1].total_cmp(&b[1]))
+            .then(a[2].total_cmp(&b[2]))
+    });
+    if positions.windows(2).any(|w| w[0] == w[1]) {
+        return Some(Shape::Flat);
+    }
+    // Every corner on the line through the first corner and the corner farthest from it.
+    let a = corners[0].1;
+    let far = corners
+        .iter()
+        .map(|&(_, p)| p)
+        .max_by(|p, q| distance(a, *p).total_cmp(&distance(a, *q)))?;
+    let on_line = corners.iter().all(|&(_, c)| {
+        are_collinear(a, far, c) || (tolerance > 0.0 && height(a, far, c) <= tolerance)
+    });
+    on_line.then_some(Shape::Flat)
 }
 
 /// The distance from `c` to the line through `a` and `b` (distinct), from a unit direction so

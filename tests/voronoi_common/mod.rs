@@ -10,57 +10,10 @@ use std::path::Path;
 #[path = "../../benches/common/points.rs"]
 mod points;
 
-/// Reads a 2D point file of `data/points2d/` by extension: `.json` (array of `[x, y]`),
-/// `.xy` / `.cin` (one point per line, extra columns ignored), `.node` / `.poly` (Triangle's
-/// vertex section), `boostpoly_*.txt` (count, then points; segments ignored).
+/// Reads a 2D point file of `data/points2d/` with the library's reader (the format by the
+/// extension).
 pub fn read_points(path: &Path) -> Vec<[f64; 2]> {
-    let text = std::fs::read_to_string(path).expect("readable point file");
-    let name = path.file_name().unwrap().to_string_lossy().to_string();
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_string())
-        .unwrap_or_default();
-    let numbers = |line: &str| -> Vec<f64> {
-        line.split(|c: char| c.is_whitespace() || c == ',' || c == '[' || c == ']')
-            .filter(|t| !t.is_empty())
-            .map(|t| {
-                t.parse::<f64>()
-                    .unwrap_or_else(|_| panic!("{name}: bad number {t:?}"))
-            })
-            .collect()
-    };
-    let lines: Vec<&str> = text
-        .lines()
-        .map(|l| l.split('#').next().unwrap_or("").trim())
-        .filter(|l| !l.is_empty())
-        .collect();
-    match ext.as_str() {
-        "json" => numbers(&text).chunks(2).map(|c| [c[0], c[1]]).collect(),
-        "xy" | "cin" => lines
-            .iter()
-            .map(|l| numbers(l))
-            .map(|v| [v[0], v[1]])
-            .collect(),
-        "node" | "poly" => {
-            let header = numbers(lines[0]);
-            let count = header[0] as usize;
-            assert_eq!(header[1], 2.0, "{name}: two-dimensional");
-            lines[1..=count]
-                .iter()
-                .map(|l| numbers(l))
-                .map(|v| [v[1], v[2]])
-                .collect()
-        }
-        "txt" => {
-            let count = numbers(lines[0])[0] as usize;
-            lines[1..=count]
-                .iter()
-                .map(|l| numbers(l))
-                .map(|v| [v[0], v[1]])
-                .collect()
-        }
-        _ => panic!("{name}: unknown point format"),
-    }
+    halfwing::io::read_points2d(path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Every triangle counter-clockwise and locally (or, for `against_all`, globally) Delaunay,

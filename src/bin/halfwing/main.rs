@@ -8,7 +8,6 @@ mod doctor;
 mod failure;
 mod files;
 mod info;
-mod points;
 mod progress;
 mod repair;
 mod voronoi;

@@ -2,7 +2,6 @@
 
 use crate::args::Args;
 use crate::failure::{Failure, Outcome};
-use crate::points::read_points;
 use crate::progress::Progress;
 use halfwing::voronoi::{ClipPolygon, LloydOptions, SvgOptions, Voronoi, lloyd_relaxation, to_svg};
 
@@ -30,7 +29,8 @@ pub fn run(args: &[String]) -> Outcome {
         .ok_or_else(|| Failure::usage("--svg OUT is required".into()))?;
     let clip = args.value("--clip").map(rectangle).transpose()?;
     let lloyd = args.parsed::<u32>("--lloyd")?.unwrap_or(0);
-    let mut points = read_points(input)?;
+    let mut points =
+        halfwing::io::read_points2d(input).map_err(|e| Failure::input(e.to_string()))?;
     if points.is_empty() {
         return Err(Failure::refused(format!("{input}: no points")));
     }

@@ -202,8 +202,8 @@ pub unsafe extern "C" fn hw_mesh_split_face(
 }
 
 /// Collapses half-edge `h`: its origin merges into its target (which keeps its position, given in
-/// `*out_vertex`). Refused unless the link condition holds and the triangles beside the edge can
-/// vanish without breaking the surface.
+/// `*out_vertex`); a polygon beside the edge loses a corner. Refused unless the link condition
+/// holds and the triangles beside the edge can vanish without breaking the surface.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh no other thread uses; `out_vertex` writable.

@@ -33,7 +33,7 @@ impl From<IoError> for FfiError {
                 HW_ERR_OUT_OF_MEMORY
             }
             IoError::Io(_) | IoError::File { .. } => HW_ERR_IO,
-            IoError::Parse { .. } => HW_ERR_PARSE,
+            IoError::Parse { .. } | IoError::PointParse { .. } => HW_ERR_PARSE,
             IoError::OutOfMemory(_) => HW_ERR_OUT_OF_MEMORY,
             _ => HW_ERR_INVALID_INPUT,
         };

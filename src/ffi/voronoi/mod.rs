@@ -1,5 +1,8 @@
-//! The Voronoi diagram's C functions (`hw_voronoi_*`, `hw_delaunay_*`): the diagram, the bare
-//! triangulation, clipped cells, Lloyd relaxation, then pictures.
+//! The Voronoi diagram's C functions (`hw_points2d_*`, `hw_voronoi_*`, `hw_delaunay_*`): the
+//! sites read from a point file, the diagram, the bare triangulation, clipped cells, Lloyd
+//! relaxation, then pictures.
+
+pub(crate) mod points2d;
 
 pub(crate) mod diagram;
 
@@ -16,3 +19,4 @@ pub use delaunay::*;
 pub use diagram::*;
 pub use images::*;
 pub use lloyd::*;
+pub use points2d::*;

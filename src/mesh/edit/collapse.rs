@@ -1,4 +1,5 @@
-//! Half-edge collapse with the link condition (triangle meshes).
+//! Half-edge collapse with the link condition: the triangles beside the edge vanish, polygons
+//! beside it lose a corner.
 
 use super::{EditError, refuse};
 use crate::mesh::{HalfedgeId, Mesh, VertexId};
@@ -6,10 +7,11 @@ use crate::mesh::{HalfedgeId, Mesh, VertexId};
 const COLLAPSE: &str = "edge collapse";
 
 impl Mesh {
-    /// `Ok(())` when [`Mesh::collapse_halfedge`] would succeed on `h`: the faces beside the edge
-    /// are triangles, and the link condition holds — the only vertices adjacent to both ends are
-    /// the opposite corners of those triangles, an interior edge does not join two boundary
-    /// vertices, and no triangle beside the edge has its two other edges on the boundary.
+    /// `Ok(())` when [`Mesh::collapse_halfedge`] would succeed on `h`: the link condition holds —
+    /// the only vertices adjacent to both ends are the opposite corners of the triangles beside
+    /// the edge, an interior edge does not join two boundary vertices, and no triangle beside the
+    /// edge has its two other edges on the boundary. A polygon beside the edge (more than 3
+    /// corners) loses a corner and has no opposite corner.
     pub fn can_collapse_halfedge(&self, h: HalfedgeId) -> Result<(), EditError> {
         self.check_halfedge(h)?;
         let o = h.twin();
@@ -20,7 +22,7 @@ impl Mesh {
                 continue;
             }
             if self.face_degree(self.face(g)) != 3 {
-                return refuse(COLLAPSE, "a face beside the edge is not a triangle");
+                continue;
             }
             let (g1, g2) = (self.next(g), self.prev(g));
             if self.is_boundary_halfedge(g1.twin()) && self.is_boundary_halfedge(g2.twin()) {
@@ -31,7 +33,7 @@ impl Mesh {
             }
             opposite[side] = self.target(g1);
         }
-        if opposite[0] == opposite[1] {
+        if opposite[0].is_valid() && opposite[0] == opposite[1] {
             return refuse(
                 COLLAPSE,
                 "the edge is a boundary edge of a lone triangle or its sides close up",
@@ -96,30 +98,34 @@ impl Mesh {
     }
 
     /// Collapses half-edge `h`: its origin is removed and merged into its target, which keeps
-    /// its position; the triangles beside the edge vanish with one of their other edges each.
+    /// its position; the triangles beside the edge vanish with one of their other edges each, and
+    /// a polygon beside it loses the corner at the origin.
     /// Deleted elements are marked (see [`Mesh::garbage_collect`]). Returns the kept vertex.
     /// Refused, with the mesh unchanged, when [`Mesh::can_collapse_halfedge`] fails: that
     /// includes a face other than the two beside the edge holding both ends (polygon meshes), and
-    /// an origin with several fans that its circulator does not link (found by a linear scan, run
-    /// only while the mesh may have such vertices: after a build that reported some, until a
-    /// [`Mesh::garbage_collect`] finds none).
+    /// an origin with several fans that its circulator does not link. Work in the degrees of the
+    /// edge's ends and of the corners opposite it, pinched vertices included (their fans are
+    /// recorded: see [`Mesh::non_manifold_vertices`]).
     pub fn collapse_halfedge(&mut self, h: HalfedgeId) -> Result<VertexId, EditError> {
         self.can_collapse_halfedge(h)?;
         let kept = self.target(h);
-        let (before_h, after_twin) = (self.prev(h), self.next(h.twin()));
+        let o = h.twin();
+        let (before_h, after_twin) = (self.prev(h), self.next(o));
+        let (after_h, before_twin) = (self.next(h), self.prev(o));
+        // The vertices that may lose a recorded fan start: the kept end and the corners across.
+        let touched = [kept, self.origin(before_h), self.target(after_twin)];
         self.remove_collapsed_edge(h);
         for g in [before_h, after_twin] {
             if self.next(self.next(g)) == g {
                 self.remove_two_sided_loop(g);
             }
         }
+        let survivors = [after_h, after_h.twin(), before_twin, before_twin.twin()]
+            .into_iter()
+            .chain(touched.iter().map(|&v| self.vertex_halfedge(v)));
+        let survivors: Vec<HalfedgeId> = survivors.collect();
+        self.renew_fan_starts(&touched, &survivors);
         Ok(kept)
-    }
-
-    /// `true` when some live half-edge leaves `v` outside the fan of its stored half-edge (a scan
-    /// of all half-edges: only needed while the mesh may have pinched vertices).
-    pub(super) fn fan_misses_halfedges(&self, v: VertexId) -> bool {
-        self.scan_halfedges_leaving(v).count() != self.outgoing_halfedges(v).count()
     }
 
     /// Removes edge `h` (from `gone` to `kept`), moving `gone`'s half-edges to `kept`.

@@ -60,14 +60,11 @@ impl Mesh {
     }
 
     /// Whether an edge joins `u` and `v`, in any of their fans. Every edge has a half-edge leaving
-    /// each end, so looking round `u` is enough: its fan walk, or a scan while the mesh may
-    /// have vertices whose fans the builder kept apart.
+    /// each end, so looking round `u` is enough: its fans' walks.
     pub(super) fn are_joined(&self, u: VertexId, v: VertexId) -> bool {
-        if self.may_have_pinched_vertices {
-            self.scan_halfedges_leaving(u).any(|h| self.target(h) == v)
-        } else {
-            self.find_halfedge(u, v).is_some()
-        }
+        self.halfedges_leaving_every_fan(u)
+            .into_iter()
+            .any(|h| self.target(h) == v)
     }
 
     /// Every live half-edge leaving `v`, whatever its fan: a scan of all half-edges. The fan walk
@@ -80,16 +77,6 @@ impl Mesh {
         (0..self.n_halfedge_slots() as u32)
             .map(HalfedgeId)
             .filter(move |&h| self.origin(h) == v && !self.is_halfedge_deleted(h))
-    }
-
-    /// The live half-edges leaving `v` in all its fans: its fan walk, or a scan while the mesh
-    /// may have vertices whose fans the builder kept apart.
-    pub(super) fn halfedges_leaving_every_fan(&self, v: VertexId) -> Vec<HalfedgeId> {
-        if self.may_have_pinched_vertices {
-            self.scan_halfedges_leaving(v).collect()
-        } else {
-            self.outgoing_halfedges(v).collect()
-        }
     }
 
     /// Appends a pair of half-edges (fields to be set by the caller; attributes zero); returns the
