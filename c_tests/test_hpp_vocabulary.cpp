@@ -226,6 +226,21 @@ static void winged_bulk_calls() {
   CHECK(faces.size() == 12 && vertices.size() == 12);
   for (uint32_t f = 0; f < 4; ++f)
     for (int k = 0; k < 3; ++k) CHECK(faces[3 * f + k] == w.face_normal(hw_wface{f})[k]);
+  // The half-edge mesh of the same faces has the same normals, bit for bit, under every
+  // weighting, with the same calls.
+  const hw::mesh m = hw::mesh::from_indexed(positions, sizes, indices);
+  CHECK(m.face_normals() == faces && m.vertex_normals() == vertices);
+  for (hw::NormalWeighting weighting :
+       {hw::NormalWeighting::Uniform, hw::NormalWeighting::Area, hw::NormalWeighting::Angle}) {
+    const std::vector<double> by_mesh = m.vertex_normals(weighting);
+    CHECK(w.vertex_normals(weighting) == by_mesh);
+    for (uint32_t v = 0; v < 4; ++v) {
+      const auto one = w.vertex_normal(hw_wvertex{v}, weighting);
+      CHECK((m.vertex_normal(hw_vertex{v}, weighting) == one));
+      for (int k = 0; k < 3; ++k) CHECK(one[k] == by_mesh[3 * v + k]);
+    }
+  }
+  for (uint32_t f = 0; f < 4; ++f) CHECK((m.face_normal(hw_face{f}) == w.face_normal(hw_wface{f})));
 
   w.set_vertex_position(hw_wvertex{3}, {0, 0, 2});
   CHECK(w.position(hw_wvertex{3})[2] == 2);

@@ -101,7 +101,7 @@
  * Reading and moving vertex positions.
  *
  * @defgroup winged_normals Winged-edge normals
- * Face normals and Baumgart's vertex normals.
+ * Face normals and vertex normals with the half-edge kernel's weightings (Baumgart's is uniform).
  *
  * @defgroup winged_io Winged-edge tables
  * The vertex, face and edge tables in three naming conventions, as text, Markdown or CSV.
@@ -1931,6 +1931,31 @@ typedef uint32_t hw_normal_weighting;
 #define HW_NORMAL_WEIGHTING_ANGLE 2
 
 /**
+ * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
+ * degenerate face), written to `out_normal[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`):
+ * what hw_mesh_face_normals() gives `f`, bit for bit.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+ * \ingroup normals
+ */
+hw_status hw_mesh_face_normal(const hw_mesh *mesh, hw_face f, double *out_normal);
+
+/**
+ * Unit normal of vertex `v` with the chosen weighting (the faces of every fan of a non-manifold
+ * vertex count; zero when it has none), written to `out_normal[0..3]` (required: NULL gives
+ * `HW_ERR_NULL_ARGUMENT`): what hw_mesh_vertex_normals() gives `v`, bit for bit.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+ * \ingroup normals
+ */
+hw_status hw_mesh_vertex_normal(const hw_mesh *mesh,
+                                hw_vertex v,
+                                hw_normal_weighting weighting,
+                                double *out_normal);
+
+/**
  * Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
  *
  * # Safety
@@ -1953,7 +1978,7 @@ hw_status hw_mesh_face_normals(const hw_mesh *mesh,
  * \ingroup normals
  */
 hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
-                                 hw_normal_weighting weighting_kind,
+                                 hw_normal_weighting weighting,
                                  double *out_normals,
                                  size_t capacity,
                                  size_t *out_needed);
@@ -1972,7 +1997,7 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
  * \ingroup normals
  */
 hw_status hw_mesh_normals(const hw_mesh *mesh,
-                          hw_normal_weighting weighting_kind,
+                          hw_normal_weighting weighting,
                           double *out_face_normals,
                           size_t face_capacity,
                           size_t *out_face_needed,
@@ -2651,7 +2676,8 @@ hw_status hw_winged_set_vertex_position(hw_winged *winged, hw_wvertex v, const d
 /**
  * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
  * degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
- * `HW_ERR_NULL_ARGUMENT`).
+ * `HW_ERR_NULL_ARGUMENT`): what hw_winged_face_normals() gives `f`, bit for bit, and
+ * hw_mesh_face_normal() the same face of a mesh.
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
@@ -2660,15 +2686,20 @@ hw_status hw_winged_set_vertex_position(hw_winged *winged, hw_wvertex v, const d
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
 /**
- * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
- * normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
- * (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
+ * Unit normal of vertex `v` with the chosen weighting, as hw_mesh_vertex_normal() computes a
+ * mesh's: the normalised sum of the weighted normals of the faces around it (every fan of a
+ * non-manifold vertex; holes left out; zero if none), written to `out_normal[0..3]` (required:
+ * NULL gives `HW_ERR_NULL_ARGUMENT`). Baumgart's vertex normal, the unit face normals summed, is
+ * ::HW_NORMAL_WEIGHTING_UNIFORM.
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  * \ingroup winged_normals
  */
-hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+hw_status hw_winged_vertex_normal(const hw_winged *winged,
+                                  hw_wvertex v,
+                                  hw_normal_weighting weighting,
+                                  double *out_normal);
 
 /**
  * The unit normals of all faces by Newell's method, indexed by face id, copied into
@@ -2688,15 +2719,16 @@ hw_status hw_winged_face_normals(const hw_winged *winged,
                                  size_t *out_needed);
 
 /**
- * The unit normals of all vertices as hw_winged_vertex_normal() computes them, indexed by vertex
- * id (zero for deleted vertices and those without faces), copied as hw_winged_face_normals()
- * copies the faces'.
+ * The unit normals of all vertices with the chosen weighting, as hw_winged_vertex_normal()
+ * computes them, in one pass over the faces, indexed by vertex id (zero for deleted vertices
+ * and those without faces), copied as hw_winged_face_normals() copies the faces'.
  *
  * # Safety
  * As for hw_winged_face_normals().
  * \ingroup winged_normals
  */
 hw_status hw_winged_vertex_normals(const hw_winged *winged,
+                                   hw_normal_weighting weighting,
                                    double *out_normals,
                                    size_t capacity,
                                    size_t *out_needed);

@@ -1236,6 +1236,19 @@ class mesh {
   }
 
   // Normals, x y z per element slot.
+  /// The unit normal of face `f` (see hw_mesh_face_normal()).
+  std::array<double, 3> face_normal(hw_face f) const {
+    std::array<double, 3> n{};
+    check(hw_mesh_face_normal(get(), f, n.data()));
+    return n;
+  }
+  /// The unit normal of vertex `v` with this weighting (see hw_mesh_vertex_normal()).
+  std::array<double, 3> vertex_normal(hw_vertex v,
+                                      NormalWeighting weighting = NormalWeighting::Uniform) const {
+    std::array<double, 3> n{};
+    check(hw_mesh_vertex_normal(get(), v, to_c(weighting), n.data()));
+    return n;
+  }
   /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
     std::vector<double> out(3 * n_face_slots());
@@ -1260,11 +1273,11 @@ class mesh {
     std::vector<double> vertices;  ///< x y z per vertex slot
   };
   /// Face and vertex normals in one pass (see hw_mesh_normals()).
-  face_and_vertex_normals normals(NormalWeighting weighting_kind) const {
+  face_and_vertex_normals normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
     face_and_vertex_normals out;
     out.faces.resize(3 * n_face_slots());
     out.vertices.resize(3 * n_vertex_slots());
-    check(hw_mesh_normals(get(), to_c(weighting_kind), out.faces.data(), out.faces.size() / 3,
+    check(hw_mesh_normals(get(), to_c(weighting), out.faces.data(), out.faces.size() / 3,
                           nullptr, out.vertices.data(), out.vertices.size() / 3, nullptr));
     return out;
   }
@@ -1622,20 +1635,24 @@ class winged {
 
   /// The position of vertex `v`.
   point position(hw_wvertex v) const { return triple(hw_winged_vertex_position, v); }
-  /// The unit normal of face `f`.
+  /// The unit normal of face `f` (see hw_winged_face_normal()).
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
-  /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
-  point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
+  /// The unit normal of vertex `v` with this weighting (see hw_winged_vertex_normal()).
+  point vertex_normal(hw_wvertex v, NormalWeighting weighting = NormalWeighting::Uniform) const {
+    point n{};
+    check(hw_winged_vertex_normal(get(), v, to_c(weighting), n.data()));
+    return n;
+  }
   /// Face normals, x y z per face slot (see hw_winged_face_normals()).
   std::vector<double> face_normals() const {
     std::vector<double> out(3 * n_face_slots());
     check(hw_winged_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
-  /// Vertex normals, x y z per vertex slot (see hw_winged_vertex_normals()).
-  std::vector<double> vertex_normals() const {
+  /// Vertex normals with this weighting, x y z per vertex slot (see hw_winged_vertex_normals()).
+  std::vector<double> vertex_normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
     std::vector<double> out(3 * n_vertex_slots());
-    check(hw_winged_vertex_normals(get(), out.data(), out.size() / 3, nullptr));
+    check(hw_winged_vertex_normals(get(), to_c(weighting), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Moves vertex `v` to `p` (finite).
