@@ -344,7 +344,7 @@ static void bad_face_lists(void) {
                                       HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NON_MANIFOLD, "not an oriented manifold");
   CHECK(w == SENTINEL && d != NULL);
-  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
+  CHECK(hw_diagnostic_count_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
   hw_diagnostic_free(d);
   d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 9, &w, &d),

@@ -885,15 +885,16 @@ hw_status hw_diagnostic_ids(const hw_diagnostic *diagnostic,
                             size_t *out_len);
 
 /**
- * The number of edges in one edge list.
+ * Counts the edges in one edge list into `*out_count`; `HW_ERR_INVALID_INPUT` for an unknown
+ * list.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_count` writable.
  * \ingroup mesh
  */
-hw_status hw_diagnostic_n_edges(const hw_diagnostic *diagnostic,
-                                hw_diagnostic_edges edges,
-                                size_t *out_count);
+hw_status hw_diagnostic_count_edges(const hw_diagnostic *diagnostic,
+                                    hw_diagnostic_edges edges,
+                                    size_t *out_count);
 
 /**
  * Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
@@ -1501,13 +1502,14 @@ hw_status hw_circ_visit(hw_circulator *circulator,
 hw_status hw_mesh_check(const hw_mesh *mesh);
 
 /**
- * Number of boundary loops (holes and open borders).
+ * Counts the boundary loops (holes and open borders) into `*out_count`: a walk over the
+ * half-edges, not a stored count.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup topology
  */
-hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
+hw_status hw_mesh_count_boundary_loops(const hw_mesh *mesh, size_t *out_count);
 
 /**
  * One half-edge of every boundary loop (the lowest id of the loop), ascending, copied into
@@ -1525,14 +1527,15 @@ hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
                                  size_t *out_needed);
 
 /**
- * Number of connected components (faces connected across edges, as CGAL and OpenMesh count
- * them; fans that only touch at a vertex are separate).
+ * Counts the connected components (faces connected across edges, as CGAL and OpenMesh count
+ * them; fans that only touch at a vertex are separate) into `*out_count`: a pass over the
+ * faces, not a stored count.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup topology
  */
-hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
+hw_status hw_mesh_count_components(const hw_mesh *mesh, size_t *out_count);
 
 /**
  * The component of every face (`0..count`, numbered by lowest face; `HW_INVALID_INDEX` for a
@@ -1825,13 +1828,14 @@ hw_status hw_mesh_attribute_data(hw_mesh *mesh,
                                  size_t *out_len);
 
 /**
- * Number of attributes of `kind` (halfwing's own `hw:` ones included).
+ * Counts the attributes of `kind` (halfwing's own `hw:` ones included) into `*out_count`;
+ * `HW_ERR_INVALID_INPUT` for an unknown kind.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup attributes
  */
-hw_status hw_mesh_n_attributes(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
+hw_status hw_mesh_count_attributes(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
 
 /**
  * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
@@ -3872,13 +3876,13 @@ hw_status hw_doctor_report_finding(const hw_doctor_report *report,
 hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_verdict *out_verdict);
 
 /**
- * The number of components (`*out_count`).
+ * The number of components; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_components(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_components(const hw_doctor_report *report);
 
 /**
  * Component `index` (components in order of their lowest face).
@@ -3892,13 +3896,13 @@ hw_status hw_doctor_report_component(const hw_doctor_report *report,
                                      hw_doctor_component *out_component);
 
 /**
- * The number of boundary loops (`*out_count`).
+ * The number of boundary loops; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_boundary_loops(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_boundary_loops(const hw_doctor_report *report);
 
 /**
  * Boundary loop `index`: a zero-copy view of its vertices in order (each joined by a boundary
@@ -3917,14 +3921,14 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
                                          uint32_t *out_face);
 
 /**
- * The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
- * ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order.
+ * The number of non-manifold vertices whose fans the report lists: those of
+ * ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_vertex_fans(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_vertex_fans(const hw_doctor_report *report);
 
 /**
  * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,

@@ -635,10 +635,10 @@ class diagnostic {
     std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
   };
   /// The number of edges in one edge list; 0 for an empty diagnostic.
-  std::size_t n_edges(DiagnosticEdges edges) const {
+  std::size_t count_edges(DiagnosticEdges edges) const {
     if (!raw_) return 0;
     std::size_t n = 0;
-    check(hw_diagnostic_n_edges(raw_.get(), to_c(edges), &n));
+    check(hw_diagnostic_count_edges(raw_.get(), to_c(edges), &n));
     return n;
   }
   /// Edge `index` of an edge list (see hw_diagnostic_edge()).
@@ -725,8 +725,7 @@ class doctor_report {
   }
   /// Every connected component.
   std::vector<hw_doctor_component> components() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_components(raw_.get(), &n));
+    const std::size_t n = hw_doctor_report_n_components(raw_.get());
     std::vector<hw_doctor_component> components(n);
     for (std::size_t i = 0; i < n; ++i)
       check(hw_doctor_report_component(raw_.get(), i, &components[i]));
@@ -734,8 +733,7 @@ class doctor_report {
   }
   /// Every boundary loop.
   std::vector<boundary_loop> boundary_loops() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_boundary_loops(raw_.get(), &n));
+    const std::size_t n = hw_doctor_report_n_boundary_loops(raw_.get());
     std::vector<boundary_loop> loops(n);
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t* vertices = nullptr;
@@ -753,11 +751,7 @@ class doctor_report {
     std::vector<uint32_t> faces;  ///< The faces of this fan, ascending.
   };
   /// The number of non-manifold vertices whose fans the report lists.
-  std::size_t n_vertex_fans() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_vertex_fans(raw_.get(), &n));
-    return n;
-  }
+  std::size_t n_vertex_fans() const { return hw_doctor_report_n_vertex_fans(raw_.get()); }
   /// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fan()).
   vertex_fan_view vertex_fan(std::size_t index, std::size_t fan) const {
     vertex_fan_view view;
@@ -1194,16 +1188,16 @@ class mesh {
     check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
     return loops;
   }
-  /// The number of boundary loops (see hw_mesh_n_boundary_loops()).
-  std::size_t n_boundary_loops() const {
+  /// Counts the boundary loops (see hw_mesh_count_boundary_loops()).
+  std::size_t count_boundary_loops() const {
     std::size_t n = 0;
-    check(hw_mesh_n_boundary_loops(get(), &n));
+    check(hw_mesh_count_boundary_loops(get(), &n));
     return n;
   }
-  /// The number of connected components.
-  std::size_t n_components() const {
+  /// Counts the connected components (see hw_mesh_count_components()).
+  std::size_t count_components() const {
     std::size_t n = 0;
-    check(hw_mesh_n_components(get(), &n));
+    check(hw_mesh_count_components(get(), &n));
     return n;
   }
   /// The component of every face slot (see hw_mesh_face_components()).
@@ -1441,7 +1435,7 @@ class mesh {
   /// Names of the attributes of `kind`, in the order they were added.
   std::vector<std::string> attribute_names(ElementKind kind) const {
     std::size_t count = 0;
-    check(hw_mesh_n_attributes(get(), to_c(kind), &count));
+    check(hw_mesh_count_attributes(get(), to_c(kind), &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
       names.push_back(detail::copied_text([&](char* out_text, std::size_t capacity,
