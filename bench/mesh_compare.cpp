@@ -283,7 +283,7 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   SurfaceMesh sm = cgal_build_soup(soup);
   std::vector<SurfaceMesh::Halfedge_index> cycles;
   const auto [hw_loops_ms, om_loops_ms, cgal_loops_ms] = best_ms(
-      repeats, [&] { hw::check(hw_mesh_n_boundary_loops(mesh.get(), &hw_loops)); },
+      repeats, [&] { hw::check(hw_mesh_count_boundary_loops(mesh.get(), &hw_loops)); },
       [&] { om_loops = openmesh_boundary_loops(om); },
       [&] {
         cycles.clear();
@@ -299,7 +299,7 @@ void compare_with(const bench::IndexedMesh& m, int repeats, const char* openmesh
   std::size_t hw_components = 0, cgal_components = 0;
   auto face_component = sm.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:cc").first;
   const auto [hw_cc, cgal_cc] = best_ms(
-      repeats, [&] { hw::check(hw_mesh_n_components(mesh.get(), &hw_components)); },
+      repeats, [&] { hw::check(hw_mesh_count_components(mesh.get(), &hw_components)); },
       [&] { cgal_components = PMP::connected_components(sm, face_component); });
   sm.remove_property_map(face_component);
   expect_equal("component counts", hw_components, cgal_components);

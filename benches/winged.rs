@@ -1,6 +1,6 @@
 //! The winged-edge kernel beside the half-edge kernel, in one run on the same ~1M-triangle torus:
-//! construction from an indexed face list, face loops over all faces and vertex rings over all
-//! vertices; and the memory per face of both structures.
+//! construction from an indexed face list, face loops over all faces, vertex rings over all
+//! vertices, face and vertex normals; and the memory per face of both structures.
 //!
 //!   cargo bench --bench winged
 //!
@@ -9,6 +9,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use halfwing::geom::VertexNormalWeighting;
 use halfwing::mesh::{self, BuildPolicy, Mesh};
 use halfwing::soup::PolygonSoup;
 use halfwing::surfaces::{CellFaces, Torus, torus};
@@ -82,6 +83,14 @@ fn bench_winged(c: &mut Criterion) {
                 .flat_map(|v| w.vertex_neighbors(VertexId(v)).expect("live vertex"))
                 .fold(0u64, |sum, v| sum + u64::from(v.0))
         })
+    });
+    group.bench_function("face-normals/half-edge", |b| b.iter(|| m.face_normals()));
+    group.bench_function("face-normals/winged", |b| b.iter(|| w.face_normals()));
+    group.bench_function("vertex-normals/half-edge", |b| {
+        b.iter(|| m.vertex_normals(VertexNormalWeighting::Uniform))
+    });
+    group.bench_function("vertex-normals/winged", |b| {
+        b.iter(|| w.vertex_normals(VertexNormalWeighting::Uniform))
     });
     group.finish();
 }

@@ -99,7 +99,7 @@ void compare(const std::filesystem::path& path) {
   CHECK(loops == cgal_boundary_cycle_lengths(sm));
 
   std::size_t components = 0;
-  hw::check(hw_mesh_n_components(mesh.get(), &components));
+  hw::check(hw_mesh_count_components(mesh.get(), &components));
   SurfaceMesh copy = sm;
   auto fcc = copy.add_property_map<SurfaceMesh::Face_index, std::size_t>("f:cc").first;
   const std::size_t cgal_components = PMP::connected_components(copy, fcc);

@@ -89,7 +89,7 @@ std::size_t count_of(const hw::doctor_report& report, hw_diagnostic_list list) {
 
 std::size_t edge_count_of(const hw::doctor_report& report, hw_diagnostic_edges list) {
   std::size_t n = 0;
-  hw::check(hw_diagnostic_n_edges(report.input_diagnostic(), list, &n));
+  hw::check(hw_diagnostic_count_edges(report.input_diagnostic(), list, &n));
   return n;
 }
 
@@ -164,8 +164,8 @@ void compare(const std::filesystem::path& path) {
   if (non_manifold_vertices > 0 && !malformed &&
       edge_count_of(report, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD) == 0 &&
       edge_count_of(report, HW_DIAGNOSTIC_EDGES_INCONSISTENT) == 0) {
-    std::size_t extra_fans = 0, n = 0;
-    hw::check(hw_doctor_report_n_vertex_fans(report.get(), &n));
+    std::size_t extra_fans = 0;
+    const std::size_t n = hw_doctor_report_n_vertex_fans(report.get());
     for (std::size_t i = 0; i < n; ++i) {
       uint32_t vertex = 0;
       std::size_t n_fans = 0, n_faces = 0;

@@ -144,7 +144,7 @@ void compare_clean(const std::filesystem::path& path) {
   const std::vector<std::size_t> hw_loops = halfwing_boundary_loop_lengths(mesh);
   CHECK(hw_loops == openmesh_boundary_loop_lengths(om));
   std::size_t components = 0;
-  hw::check(hw_mesh_n_components(mesh.get(), &components));
+  hw::check(hw_mesh_count_components(mesh.get(), &components));
   CHECK(components == openmesh_components(om));
 
   // Uniform vertex normals against OpenMesh's.
@@ -196,7 +196,7 @@ void compare_broken(const std::filesystem::path& path) {
   for (hw_diagnostic_edges which :
        {HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, HW_DIAGNOSTIC_EDGES_INCONSISTENT}) {
     std::size_t n = 0;
-    hw::check(hw_diagnostic_n_edges(raw, which, &n));
+    hw::check(hw_diagnostic_count_edges(raw, which, &n));
     for (std::size_t i = 0; i < n; ++i) {
       uint32_t ends[2];
       const uint32_t* faces = nullptr;

@@ -320,7 +320,7 @@ void compare(const std::filesystem::path& path) {
   // Whether the welded surface fits a half-edge mesh: no collapsed face, no edge of 3 faces.
   const hw::diagnostic welded = hw::diagnostic::of(after.positions, after.face_sizes, after.indices);
   std::size_t non_manifold_edges = 0;
-  hw::check(hw_diagnostic_n_edges(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
+  hw::check(hw_diagnostic_count_edges(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
                                      &non_manifold_edges));
   const bool comparable = merged.list(hw::RepairList::RemovedFaces).empty() &&
                           proper == after.n_faces() && non_manifold_edges == 0;

@@ -71,7 +71,7 @@ static void circulation_and_normals() {
     for (hw_face g : m.faces_across(hw_face{f})) across += g.idx != f;
     CHECK(sides == 3 && across == 3);
   }
-  CHECK(m.boundary_loops().empty() && m.n_components() == 1);
+  CHECK(m.boundary_loops().empty() && m.count_components() == 1);
   const std::vector<double> normals = m.vertex_normals(hw::NormalWeighting::Angle);
   for (uint32_t i = 0; i < m.n_vertices(); ++i) {
     // An icosahedron centred at the origin (coordinates rounded in the file): the normal points

@@ -151,10 +151,10 @@ static bool close(const std::vector<double>& a, const std::vector<double>& b) {
 static void topology_views_and_normals() {
   const hw::mesh m =
       hw::mesh::read(std::string(HALFWING_DATA_DIR) + "/meshes/open/cgal_elephant-with-holes.off");
-  CHECK(m.n_boundary_loops() == m.boundary_loops().size() && m.n_boundary_loops() > 0);
+  CHECK(m.count_boundary_loops() == m.boundary_loops().size() && m.count_boundary_loops() > 0);
   const std::vector<uint32_t> components = m.face_components();
   CHECK(components.size() == m.n_faces());
-  CHECK(std::set<uint32_t>(components.begin(), components.end()).size() == m.n_components());
+  CHECK(std::set<uint32_t>(components.begin(), components.end()).size() == m.count_components());
 
   // The connectivity views hold the arrays the navigation reads.
   const auto next = m.view(hw::MeshArray::HalfedgeNext);
@@ -180,11 +180,11 @@ static void diagnostic_edges_and_vertex_fans() {
   // Three triangles on edge 0-1.
   const std::vector<double> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
   const hw::diagnostic d = hw::diagnostic::of(positions, {3, 3, 3}, {0, 1, 2, 1, 0, 3, 0, 1, 4});
-  CHECK(d.n_edges(hw::DiagnosticEdges::NonManifold) == 1);
+  CHECK(d.count_edges(hw::DiagnosticEdges::NonManifold) == 1);
   const hw::diagnostic::edge_report edge = d.edge(hw::DiagnosticEdges::NonManifold, 0);
   CHECK(edge.vertices[0] == 0 && edge.vertices[1] == 1);
   CHECK((edge.faces == std::vector<uint32_t>{0, 1, 2}));
-  CHECK(hw::diagnostic().n_edges(hw::DiagnosticEdges::NonManifold) == 0);
+  CHECK(hw::diagnostic().count_edges(hw::DiagnosticEdges::NonManifold) == 0);
   CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2})
         .edge(hw::DiagnosticEdges::NonManifold, 0);
@@ -226,6 +226,21 @@ static void winged_bulk_calls() {
   CHECK(faces.size() == 12 && vertices.size() == 12);
   for (uint32_t f = 0; f < 4; ++f)
     for (int k = 0; k < 3; ++k) CHECK(faces[3 * f + k] == w.face_normal(hw_wface{f})[k]);
+  // The half-edge mesh of the same faces has the same normals, bit for bit, under every
+  // weighting, with the same calls.
+  const hw::mesh m = hw::mesh::from_indexed(positions, sizes, indices);
+  CHECK(m.face_normals() == faces && m.vertex_normals() == vertices);
+  for (hw::NormalWeighting weighting :
+       {hw::NormalWeighting::Uniform, hw::NormalWeighting::Area, hw::NormalWeighting::Angle}) {
+    const std::vector<double> by_mesh = m.vertex_normals(weighting);
+    CHECK(w.vertex_normals(weighting) == by_mesh);
+    for (uint32_t v = 0; v < 4; ++v) {
+      const auto one = w.vertex_normal(hw_wvertex{v}, weighting);
+      CHECK((m.vertex_normal(hw_vertex{v}, weighting) == one));
+      for (int k = 0; k < 3; ++k) CHECK(one[k] == by_mesh[3 * v + k]);
+    }
+  }
+  for (uint32_t f = 0; f < 4; ++f) CHECK((m.face_normal(hw_face{f}) == w.face_normal(hw_wface{f})));
 
   w.set_vertex_position(hw_wvertex{3}, {0, 0, 2});
   CHECK(w.position(hw_wvertex{3})[2] == 2);

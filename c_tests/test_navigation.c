@@ -177,7 +177,7 @@ static void seed_loops_on(const char *relative) {
     hw_halfedge he = {(uint32_t)h};
     boundary_halfedges += hw_mesh_he_is_boundary(mesh, he);
   }
-  CHECK(hw_mesh_n_boundary_loops(mesh, &loops) == HW_OK);
+  CHECK(hw_mesh_count_boundary_loops(mesh, &loops) == HW_OK);
   if (loops > 0) {
     hw_halfedge *starts = (hw_halfedge *)malloc(loops * sizeof *starts);
     size_t l;
@@ -280,7 +280,7 @@ static void bad_arguments(void) {
   CHECK_STATUS(hw_mesh_view(mesh, 42u, &data, &len), HW_ERR_INVALID_INPUT, "array 42");
   CHECK_STATUS(hw_mesh_view(mesh, HW_MESH_ARRAY_HALFEDGE_NEXT, NULL, &len), HW_ERR_NULL_ARGUMENT,
                "out_data");
-  CHECK_STATUS(hw_mesh_n_boundary_loops(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_count_boundary_loops(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_boundary_loops(mesh, NULL, 0, &count), HW_ERR_BUFFER_TOO_SMALL, "needed");
   CHECK(count == 1);
   CHECK_STATUS(hw_mesh_vertex_position(mesh, bad_vertex, xyz), HW_ERR_INVALID_HANDLE, "vertex");
@@ -347,8 +347,8 @@ static void whole_mesh_query_bad_arguments(void) {
   memset(normals, 0, sizeof normals);
   CHECK_STATUS(hw_mesh_boundary_loops(NULL, loops, 2, &needed), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK(loops[0].idx == 4242 && needed == 4242);
-  CHECK_STATUS(hw_mesh_n_components(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
-  CHECK_STATUS(hw_mesh_n_components(mesh, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
+  CHECK_STATUS(hw_mesh_count_components(NULL, &count), HW_ERR_NULL_ARGUMENT, "mesh");
+  CHECK_STATUS(hw_mesh_count_components(mesh, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK(count == 4242);
   CHECK_STATUS(hw_mesh_face_components(NULL, components, 8, &needed), HW_ERR_NULL_ARGUMENT,
                "mesh");

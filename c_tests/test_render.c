@@ -448,7 +448,7 @@ static void check_topology(hw_mesh *mesh, long euler, size_t loops) {
   CHECK(mesh != NULL && mesh != MESH_SENTINEL);
   CHECK((long)hw_mesh_n_vertices(mesh) - (long)hw_mesh_n_edges(mesh) + (long)hw_mesh_n_faces(mesh) == euler);
   CHECK(hw_mesh_check(mesh) == HW_OK);
-  CHECK(hw_mesh_n_boundary_loops(mesh, &n_loops) == HW_OK && n_loops == loops);
+  CHECK(hw_mesh_count_boundary_loops(mesh, &n_loops) == HW_OK && n_loops == loops);
   hw_mesh_free(mesh);
 }
 

@@ -318,7 +318,7 @@ static void fill_holes(void) {
   CHECK(faces == 0 && hw_mesh_n_faces(mesh) == 10);
   CHECK(hw_mesh_fill_hole(mesh, hole, &faces) == HW_OK && faces == 2);
   CHECK(hw_mesh_n_faces(mesh) == 12 && hw_mesh_check(mesh) == HW_OK);
-  CHECK(hw_mesh_n_boundary_loops(mesh, &n) == HW_OK && n == 0);
+  CHECK(hw_mesh_count_boundary_loops(mesh, &n) == HW_OK && n == 0);
   hw_mesh_free(mesh);
 
   CHECK(hw_mesh_from_indexed(p, 8, s, 10, ix, 30, HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 
@@ -182,27 +183,98 @@ static void normals(void) {
   const double third = 1.0 / sqrt(3.0);
   CHECK(hw_winged_face_normal(w, f1, n) == HW_OK);
   CHECK(near(n[0], 0) && near(n[1], 0) && near(n[2], -1));
-  CHECK(hw_winged_vertex_normal(w, v1, n) == HW_OK);
+  CHECK(hw_winged_vertex_normal(w, v1, HW_NORMAL_WEIGHTING_UNIFORM, n) == HW_OK);
   CHECK(near(n[0], -third) && near(n[1], -third) && near(n[2], -third));
   CHECK_STATUS(hw_winged_face_normals(w, all, 1, &needed), HW_ERR_BUFFER_TOO_SMALL,
                "6 are needed");
   CHECK(needed == 6);
   CHECK(hw_winged_face_normals(w, all, 6, NULL) == HW_OK);
   CHECK(near(all[2], -1) && near(all[5], 1));
-  CHECK(hw_winged_vertex_normals(w, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL);
+  CHECK(hw_winged_vertex_normals(w, HW_NORMAL_WEIGHTING_AREA, NULL, 0, &needed) ==
+        HW_ERR_BUFFER_TOO_SMALL);
   CHECK(needed == 8);
-  CHECK(hw_winged_vertex_normals(w, vertex_normals, 8, NULL) == HW_OK);
+  CHECK(hw_winged_vertex_normals(w, HW_NORMAL_WEIGHTING_ANGLE, vertex_normals, 8, NULL) == HW_OK);
   CHECK(near(vertex_normals[3 * v1.idx], -third) && near(vertex_normals[3 * v1.idx + 1], -third) &&
         near(vertex_normals[3 * v1.idx + 2], -third));
   CHECK_STATUS(hw_winged_face_normal(w, f1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
-  CHECK_STATUS(hw_winged_vertex_normal(w, v1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
-  CHECK_STATUS(hw_winged_vertex_normal(NULL, v1, n), HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_vertex_normal(w, v1, HW_NORMAL_WEIGHTING_UNIFORM, NULL),
+               HW_ERR_NULL_ARGUMENT, "out_normal");
+  CHECK_STATUS(hw_winged_vertex_normal(NULL, v1, HW_NORMAL_WEIGHTING_UNIFORM, n),
+               HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_vertex_normal(w, v1, 7u, n), HW_ERR_INVALID_INPUT, "weighting 7");
+  CHECK_STATUS(hw_winged_vertex_normals(w, 7u, vertex_normals, 8, NULL), HW_ERR_INVALID_INPUT,
+               "weighting 7");
   {
     hw_wface missing = {40};
     CHECK_STATUS(hw_winged_face_normal(w, missing, n), HW_ERR_INVALID_HANDLE,
                  "face 40 does not exist");
   }
   hw_winged_free(w);
+}
+
+/* The same faces in both kernels give the same normals, bit for bit, for every weighting, all
+ * at once and one by one: a non-planar strip with a border (two quads, a triangle, a pentagon)
+ * and, apart, a triangle whose corners lie on a line beside a proper one. */
+static void normals_mirror_the_mesh_kernel(void) {
+  static const double positions[] = {0, 0, 0,   1, 0, 0.2, 2, 0, 0,   0, 1, 0.1, 1, 1, 0,
+                                     2, 1, 0.4, 3, 0.5, 0,  2.5, 1.5, 0.3,
+                                     10, 0, 0,  11, 0, 0,  12, 0, 0,  11, -1, 0,
+                                     1.2, 1.8, 0.2};
+  static const uint32_t sizes[] = {4, 4, 3, 5, 3, 3};
+  static const uint32_t indices[] = {0, 1, 4, 3, 1, 2, 5, 4, 2, 6, 5, 4, 5, 6, 7, 12,
+                                     8, 9, 10, 9, 8, 11};
+  const hw_normal_weighting weightings[] = {HW_NORMAL_WEIGHTING_UNIFORM, HW_NORMAL_WEIGHTING_AREA,
+                                            HW_NORMAL_WEIGHTING_ANGLE};
+  enum { N_VERTICES = 13, N_FACES = 6 };
+  hw_mesh *mesh = NULL;
+  hw_winged *w = NULL;
+  double by_mesh[3 * N_VERTICES], by_winged[3 * N_VERTICES], one_mesh[3], one_winged[3];
+  CHECK(hw_mesh_from_indexed(positions, N_VERTICES, sizes, N_FACES, indices, 22,
+                             HW_BUILD_POLICY_STRICT, &mesh, NULL) == HW_OK);
+  CHECK(hw_winged_from_indexed(positions, N_VERTICES, sizes, N_FACES, indices, 22,
+                               HW_BUILD_POLICY_STRICT, &w, NULL) == HW_OK);
+  CHECK(hw_mesh_face_normals(mesh, by_mesh, N_FACES, NULL) == HW_OK);
+  CHECK(hw_winged_face_normals(w, by_winged, N_FACES, NULL) == HW_OK);
+  CHECK(memcmp(by_mesh, by_winged, sizeof(double) * 3 * N_FACES) == 0);
+  CHECK(by_mesh[3 * 4] == 0 && by_mesh[3 * 4 + 1] == 0 && by_mesh[3 * 4 + 2] == 0);
+  for (uint32_t f = 0; f < N_FACES; ++f) {
+    hw_face mf = {f};
+    hw_wface wf = {f};
+    CHECK(hw_mesh_face_normal(mesh, mf, one_mesh) == HW_OK);
+    CHECK(hw_winged_face_normal(w, wf, one_winged) == HW_OK);
+    CHECK(memcmp(one_mesh, by_mesh + 3 * f, sizeof one_mesh) == 0);
+    CHECK(memcmp(one_winged, by_mesh + 3 * f, sizeof one_winged) == 0);
+  }
+  for (size_t k = 0; k < 3; ++k) {
+    CHECK(hw_mesh_vertex_normals(mesh, weightings[k], by_mesh, N_VERTICES, NULL) == HW_OK);
+    CHECK(hw_winged_vertex_normals(w, weightings[k], by_winged, N_VERTICES, NULL) == HW_OK);
+    CHECK(memcmp(by_mesh, by_winged, sizeof by_mesh) == 0);
+    for (uint32_t v = 0; v < N_VERTICES; ++v) {
+      hw_vertex mv = {v};
+      hw_wvertex wv = {v};
+      CHECK(hw_mesh_vertex_normal(mesh, mv, weightings[k], one_mesh) == HW_OK);
+      CHECK(hw_winged_vertex_normal(w, wv, weightings[k], one_winged) == HW_OK);
+      CHECK(memcmp(one_mesh, by_mesh + 3 * v, sizeof one_mesh) == 0);
+      CHECK(memcmp(one_winged, by_mesh + 3 * v, sizeof one_winged) == 0);
+    }
+  }
+  {
+    hw_vertex missing = {N_VERTICES};
+    hw_face no_face = {N_FACES};
+    CHECK_STATUS(hw_mesh_vertex_normal(mesh, missing, HW_NORMAL_WEIGHTING_UNIFORM, one_mesh),
+                 HW_ERR_INVALID_HANDLE, "vertex id 13");
+    CHECK_STATUS(hw_mesh_face_normal(mesh, no_face, one_mesh), HW_ERR_INVALID_HANDLE, "face id 6");
+    CHECK_STATUS(hw_mesh_vertex_normal(mesh, missing, 7u, one_mesh), HW_ERR_INVALID_INPUT,
+                 "weighting 7");
+    missing.idx = 0;
+    CHECK_STATUS(hw_mesh_vertex_normal(mesh, missing, 7u, one_mesh), HW_ERR_INVALID_INPUT,
+                 "weighting 7");
+    CHECK_STATUS(hw_mesh_vertex_normal(mesh, missing, HW_NORMAL_WEIGHTING_UNIFORM, NULL),
+                 HW_ERR_NULL_ARGUMENT, "out_normal");
+    CHECK_STATUS(hw_mesh_face_normal(NULL, no_face, one_mesh), HW_ERR_NULL_ARGUMENT, "mesh");
+  }
+  hw_winged_free(w);
+  hw_mesh_free(mesh);
 }
 
 /* The tetrahedron of seed 000, as in test_mesh_api.c. */
@@ -272,7 +344,7 @@ static void bad_face_lists(void) {
                                       HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NON_MANIFOLD, "not an oriented manifold");
   CHECK(w == SENTINEL && d != NULL);
-  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
+  CHECK(hw_diagnostic_count_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
   hw_diagnostic_free(d);
   d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 9, &w, &d),
@@ -451,7 +523,8 @@ static void null_and_freed_handles(void) {
   CHECK_STATUS(hw_winged_edge_records(NULL, &view, &n), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_vertex_position(NULL, v, p), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_face_normals(NULL, p, 1, NULL), HW_ERR_NULL_ARGUMENT, "winged");
-  CHECK_STATUS(hw_winged_vertex_normals(NULL, p, 1, NULL), HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_vertex_normals(NULL, HW_NORMAL_WEIGHTING_UNIFORM, p, 1, NULL),
+               HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_check(NULL), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(
       hw_winged_table(NULL, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, buf, 8, NULL),
@@ -531,7 +604,8 @@ static void killed_ids(void) {
   CHECK_STATUS(hw_winged_edge(w, e1, &r), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(r.start.idx == 0xA5A5A5A5u);
   CHECK_STATUS(hw_winged_vertex_position(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
-  CHECK_STATUS(hw_winged_vertex_normal(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_vertex_normal(w, v1, HW_NORMAL_WEIGHTING_UNIFORM, xyz),
+               HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(xyz[0] == 7 && xyz[1] == 7 && xyz[2] == 7);
   CHECK_STATUS(hw_winged_set_vertex_position(w, v1, p0), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(hw_winged_vertex_edge(w, v1).idx == HW_INVALID_INDEX);
@@ -566,6 +640,7 @@ int main(void) {
   records_and_views();
   walks();
   normals();
+  normals_mirror_the_mesh_kernel();
   conversions();
   bad_face_lists();
   euler_cube();

@@ -101,7 +101,7 @@
  * Reading and moving vertex positions.
  *
  * @defgroup winged_normals Winged-edge normals
- * Face normals and Baumgart's vertex normals.
+ * Face normals and vertex normals with the half-edge kernel's weightings (Baumgart's is uniform).
  *
  * @defgroup winged_io Winged-edge tables
  * The vertex, face and edge tables in three naming conventions, as text, Markdown or CSV.
@@ -892,15 +892,16 @@ hw_status hw_diagnostic_ids(const hw_diagnostic *diagnostic,
                             size_t *out_len);
 
 /**
- * The number of edges in one edge list.
+ * Counts the edges in one edge list into `*out_count`; `HW_ERR_INVALID_INPUT` for an unknown
+ * list.
  *
  * # Safety
  * `diagnostic` must be NULL or live; `out_count` writable.
  * \ingroup mesh
  */
-hw_status hw_diagnostic_n_edges(const hw_diagnostic *diagnostic,
-                                hw_diagnostic_edges edges,
-                                size_t *out_count);
+hw_status hw_diagnostic_count_edges(const hw_diagnostic *diagnostic,
+                                    hw_diagnostic_edges edges,
+                                    size_t *out_count);
 
 /**
  * Edge `index` of an edge list: its two input vertices (smaller first) in `out_vertices[0..2]`
@@ -1508,13 +1509,14 @@ hw_status hw_circ_visit(hw_circulator *circulator,
 hw_status hw_mesh_check(const hw_mesh *mesh);
 
 /**
- * Number of boundary loops (holes and open borders).
+ * Counts the boundary loops (holes and open borders) into `*out_count`: a walk over the
+ * half-edges, not a stored count.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup topology
  */
-hw_status hw_mesh_n_boundary_loops(const hw_mesh *mesh, size_t *out_count);
+hw_status hw_mesh_count_boundary_loops(const hw_mesh *mesh, size_t *out_count);
 
 /**
  * One half-edge of every boundary loop (the lowest id of the loop), ascending, copied into
@@ -1532,14 +1534,15 @@ hw_status hw_mesh_boundary_loops(const hw_mesh *mesh,
                                  size_t *out_needed);
 
 /**
- * Number of connected components (faces connected across edges, as CGAL and OpenMesh count
- * them; fans that only touch at a vertex are separate).
+ * Counts the connected components (faces connected across edges, as CGAL and OpenMesh count
+ * them; fans that only touch at a vertex are separate) into `*out_count`: a pass over the
+ * faces, not a stored count.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup topology
  */
-hw_status hw_mesh_n_components(const hw_mesh *mesh, size_t *out_count);
+hw_status hw_mesh_count_components(const hw_mesh *mesh, size_t *out_count);
 
 /**
  * The component of every face (`0..count`, numbered by lowest face; `HW_INVALID_INDEX` for a
@@ -1832,13 +1835,14 @@ hw_status hw_mesh_attribute_data(hw_mesh *mesh,
                                  size_t *out_len);
 
 /**
- * Number of attributes of `kind` (halfwing's own `hw:` ones included).
+ * Counts the attributes of `kind` (halfwing's own `hw:` ones included) into `*out_count`;
+ * `HW_ERR_INVALID_INPUT` for an unknown kind.
  *
  * # Safety
  * `mesh` must be NULL or a live mesh; `out_count` writable.
  * \ingroup attributes
  */
-hw_status hw_mesh_n_attributes(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
+hw_status hw_mesh_count_attributes(const hw_mesh *mesh, hw_element_kind kind, size_t *out_count);
 
 /**
  * Copies the name of attribute number `index` (`0 .. count`, in the order they were added) of
@@ -1938,6 +1942,31 @@ typedef uint32_t hw_normal_weighting;
 #define HW_NORMAL_WEIGHTING_ANGLE 2
 
 /**
+ * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
+ * degenerate face), written to `out_normal[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`):
+ * what hw_mesh_face_normals() gives `f`, bit for bit.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+ * \ingroup normals
+ */
+hw_status hw_mesh_face_normal(const hw_mesh *mesh, hw_face f, double *out_normal);
+
+/**
+ * Unit normal of vertex `v` with the chosen weighting (the faces of every fan of a non-manifold
+ * vertex count; zero when it has none), written to `out_normal[0..3]` (required: NULL gives
+ * `HW_ERR_NULL_ARGUMENT`): what hw_mesh_vertex_normals() gives `v`, bit for bit.
+ *
+ * # Safety
+ * `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+ * \ingroup normals
+ */
+hw_status hw_mesh_vertex_normal(const hw_mesh *mesh,
+                                hw_vertex v,
+                                hw_normal_weighting weighting,
+                                double *out_normal);
+
+/**
  * Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
  *
  * # Safety
@@ -1960,7 +1989,7 @@ hw_status hw_mesh_face_normals(const hw_mesh *mesh,
  * \ingroup normals
  */
 hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
-                                 hw_normal_weighting weighting_kind,
+                                 hw_normal_weighting weighting,
                                  double *out_normals,
                                  size_t capacity,
                                  size_t *out_needed);
@@ -1979,7 +2008,7 @@ hw_status hw_mesh_vertex_normals(const hw_mesh *mesh,
  * \ingroup normals
  */
 hw_status hw_mesh_normals(const hw_mesh *mesh,
-                          hw_normal_weighting weighting_kind,
+                          hw_normal_weighting weighting,
                           double *out_face_normals,
                           size_t face_capacity,
                           size_t *out_face_needed,
@@ -2658,7 +2687,8 @@ hw_status hw_winged_set_vertex_position(hw_winged *winged, hw_wvertex v, const d
 /**
  * Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
  * degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
- * `HW_ERR_NULL_ARGUMENT`).
+ * `HW_ERR_NULL_ARGUMENT`): what hw_winged_face_normals() gives `f`, bit for bit, and
+ * hw_mesh_face_normal() the same face of a mesh.
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
@@ -2667,15 +2697,20 @@ hw_status hw_winged_set_vertex_position(hw_winged *winged, hw_wvertex v, const d
 hw_status hw_winged_face_normal(const hw_winged *winged, hw_wface f, double *out_normal);
 
 /**
- * Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
- * normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
- * (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
+ * Unit normal of vertex `v` with the chosen weighting, as hw_mesh_vertex_normal() computes a
+ * mesh's: the normalised sum of the weighted normals of the faces around it (every fan of a
+ * non-manifold vertex; holes left out; zero if none), written to `out_normal[0..3]` (required:
+ * NULL gives `HW_ERR_NULL_ARGUMENT`). Baumgart's vertex normal, the unit face normals summed, is
+ * ::HW_NORMAL_WEIGHTING_UNIFORM.
  *
  * # Safety
  * `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
  * \ingroup winged_normals
  */
-hw_status hw_winged_vertex_normal(const hw_winged *winged, hw_wvertex v, double *out_normal);
+hw_status hw_winged_vertex_normal(const hw_winged *winged,
+                                  hw_wvertex v,
+                                  hw_normal_weighting weighting,
+                                  double *out_normal);
 
 /**
  * The unit normals of all faces by Newell's method, indexed by face id, copied into
@@ -2695,15 +2730,16 @@ hw_status hw_winged_face_normals(const hw_winged *winged,
                                  size_t *out_needed);
 
 /**
- * The unit normals of all vertices as hw_winged_vertex_normal() computes them, indexed by vertex
- * id (zero for deleted vertices and those without faces), copied as hw_winged_face_normals()
- * copies the faces'.
+ * The unit normals of all vertices with the chosen weighting, as hw_winged_vertex_normal()
+ * computes them, in one pass over the faces, indexed by vertex id (zero for deleted vertices
+ * and those without faces), copied as hw_winged_face_normals() copies the faces'.
  *
  * # Safety
  * As for hw_winged_face_normals().
  * \ingroup winged_normals
  */
 hw_status hw_winged_vertex_normals(const hw_winged *winged,
+                                   hw_normal_weighting weighting,
                                    double *out_normals,
                                    size_t capacity,
                                    size_t *out_needed);
@@ -3882,13 +3918,13 @@ hw_status hw_doctor_report_finding(const hw_doctor_report *report,
 hw_status hw_doctor_report_verdict(const hw_doctor_report *report, hw_doctor_verdict *out_verdict);
 
 /**
- * The number of components (`*out_count`).
+ * The number of components; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_components(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_components(const hw_doctor_report *report);
 
 /**
  * Component `index` (components in order of their lowest face).
@@ -3902,13 +3938,13 @@ hw_status hw_doctor_report_component(const hw_doctor_report *report,
                                      hw_doctor_component *out_component);
 
 /**
- * The number of boundary loops (`*out_count`).
+ * The number of boundary loops; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_boundary_loops(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_boundary_loops(const hw_doctor_report *report);
 
 /**
  * Boundary loop `index`: a zero-copy view of its vertices in order (each joined by a boundary
@@ -3927,14 +3963,14 @@ hw_status hw_doctor_report_boundary_loop(const hw_doctor_report *report,
                                          uint32_t *out_face);
 
 /**
- * The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
- * ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order.
+ * The number of non-manifold vertices whose fans the report lists: those of
+ * ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order; 0 for a NULL report.
  *
  * # Safety
- * `report` must be NULL or live; `out_count` writable.
+ * `report` must be NULL or live.
  * \ingroup doctor
  */
-hw_status hw_doctor_report_n_vertex_fans(const hw_doctor_report *report, size_t *out_count);
+size_t hw_doctor_report_n_vertex_fans(const hw_doctor_report *report);
 
 /**
  * Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,

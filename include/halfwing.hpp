@@ -635,10 +635,10 @@ class diagnostic {
     std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
   };
   /// The number of edges in one edge list; 0 for an empty diagnostic.
-  std::size_t n_edges(DiagnosticEdges edges) const {
+  std::size_t count_edges(DiagnosticEdges edges) const {
     if (!raw_) return 0;
     std::size_t n = 0;
-    check(hw_diagnostic_n_edges(raw_.get(), to_c(edges), &n));
+    check(hw_diagnostic_count_edges(raw_.get(), to_c(edges), &n));
     return n;
   }
   /// Edge `index` of an edge list (see hw_diagnostic_edge()).
@@ -725,8 +725,7 @@ class doctor_report {
   }
   /// Every connected component.
   std::vector<hw_doctor_component> components() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_components(raw_.get(), &n));
+    const std::size_t n = hw_doctor_report_n_components(raw_.get());
     std::vector<hw_doctor_component> components(n);
     for (std::size_t i = 0; i < n; ++i)
       check(hw_doctor_report_component(raw_.get(), i, &components[i]));
@@ -734,8 +733,7 @@ class doctor_report {
   }
   /// Every boundary loop.
   std::vector<boundary_loop> boundary_loops() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_boundary_loops(raw_.get(), &n));
+    const std::size_t n = hw_doctor_report_n_boundary_loops(raw_.get());
     std::vector<boundary_loop> loops(n);
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t* vertices = nullptr;
@@ -753,11 +751,7 @@ class doctor_report {
     std::vector<uint32_t> faces;  ///< The faces of this fan, ascending.
   };
   /// The number of non-manifold vertices whose fans the report lists.
-  std::size_t n_vertex_fans() const {
-    std::size_t n = 0;
-    check(hw_doctor_report_n_vertex_fans(raw_.get(), &n));
-    return n;
-  }
+  std::size_t n_vertex_fans() const { return hw_doctor_report_n_vertex_fans(raw_.get()); }
   /// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fan()).
   vertex_fan_view vertex_fan(std::size_t index, std::size_t fan) const {
     vertex_fan_view view;
@@ -1194,16 +1188,16 @@ class mesh {
     check(hw_mesh_boundary_loops(get(), loops.data(), loops.size(), &n));
     return loops;
   }
-  /// The number of boundary loops (see hw_mesh_n_boundary_loops()).
-  std::size_t n_boundary_loops() const {
+  /// Counts the boundary loops (see hw_mesh_count_boundary_loops()).
+  std::size_t count_boundary_loops() const {
     std::size_t n = 0;
-    check(hw_mesh_n_boundary_loops(get(), &n));
+    check(hw_mesh_count_boundary_loops(get(), &n));
     return n;
   }
-  /// The number of connected components.
-  std::size_t n_components() const {
+  /// Counts the connected components (see hw_mesh_count_components()).
+  std::size_t count_components() const {
     std::size_t n = 0;
-    check(hw_mesh_n_components(get(), &n));
+    check(hw_mesh_count_components(get(), &n));
     return n;
   }
   /// The component of every face slot (see hw_mesh_face_components()).
@@ -1236,6 +1230,19 @@ class mesh {
   }
 
   // Normals, x y z per element slot.
+  /// The unit normal of face `f` (see hw_mesh_face_normal()).
+  std::array<double, 3> face_normal(hw_face f) const {
+    std::array<double, 3> n{};
+    check(hw_mesh_face_normal(get(), f, n.data()));
+    return n;
+  }
+  /// The unit normal of vertex `v` with this weighting (see hw_mesh_vertex_normal()).
+  std::array<double, 3> vertex_normal(hw_vertex v,
+                                      NormalWeighting weighting = NormalWeighting::Uniform) const {
+    std::array<double, 3> n{};
+    check(hw_mesh_vertex_normal(get(), v, to_c(weighting), n.data()));
+    return n;
+  }
   /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
     std::vector<double> out(3 * n_face_slots());
@@ -1260,11 +1267,11 @@ class mesh {
     std::vector<double> vertices;  ///< x y z per vertex slot
   };
   /// Face and vertex normals in one pass (see hw_mesh_normals()).
-  face_and_vertex_normals normals(NormalWeighting weighting_kind) const {
+  face_and_vertex_normals normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
     face_and_vertex_normals out;
     out.faces.resize(3 * n_face_slots());
     out.vertices.resize(3 * n_vertex_slots());
-    check(hw_mesh_normals(get(), to_c(weighting_kind), out.faces.data(), out.faces.size() / 3,
+    check(hw_mesh_normals(get(), to_c(weighting), out.faces.data(), out.faces.size() / 3,
                           nullptr, out.vertices.data(), out.vertices.size() / 3, nullptr));
     return out;
   }
@@ -1428,7 +1435,7 @@ class mesh {
   /// Names of the attributes of `kind`, in the order they were added.
   std::vector<std::string> attribute_names(ElementKind kind) const {
     std::size_t count = 0;
-    check(hw_mesh_n_attributes(get(), to_c(kind), &count));
+    check(hw_mesh_count_attributes(get(), to_c(kind), &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
       names.push_back(detail::copied_text([&](char* out_text, std::size_t capacity,
@@ -1622,20 +1629,24 @@ class winged {
 
   /// The position of vertex `v`.
   point position(hw_wvertex v) const { return triple(hw_winged_vertex_position, v); }
-  /// The unit normal of face `f`.
+  /// The unit normal of face `f` (see hw_winged_face_normal()).
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
-  /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
-  point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
+  /// The unit normal of vertex `v` with this weighting (see hw_winged_vertex_normal()).
+  point vertex_normal(hw_wvertex v, NormalWeighting weighting = NormalWeighting::Uniform) const {
+    point n{};
+    check(hw_winged_vertex_normal(get(), v, to_c(weighting), n.data()));
+    return n;
+  }
   /// Face normals, x y z per face slot (see hw_winged_face_normals()).
   std::vector<double> face_normals() const {
     std::vector<double> out(3 * n_face_slots());
     check(hw_winged_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
-  /// Vertex normals, x y z per vertex slot (see hw_winged_vertex_normals()).
-  std::vector<double> vertex_normals() const {
+  /// Vertex normals with this weighting, x y z per vertex slot (see hw_winged_vertex_normals()).
+  std::vector<double> vertex_normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
     std::vector<double> out(3 * n_vertex_slots());
-    check(hw_winged_vertex_normals(get(), out.data(), out.size() / 3, nullptr));
+    check(hw_winged_vertex_normals(get(), to_c(weighting), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Moves vertex `v` to `p` (finite).

@@ -3,6 +3,7 @@
 //! The faces are derived from each seed's own edge table (vertex and face columns only); the
 //! structure built from them must then reproduce every column, wings included.
 
+use halfwing::geom::VertexNormalWeighting;
 use halfwing::soup::{BuildPolicy, FaceList};
 use halfwing::winged::{EdgeId, FaceId, Naming, TableFormat, VertexId, Winged};
 
@@ -237,13 +238,16 @@ fn cube_normals_point_outward() {
         let outward: f64 = (0..3).map(|k| n[k] * (p[k] - centre[k])).sum();
         assert!((outward - 0.5).abs() < 1e-12, "face {f:?} normal {n:?}");
     }
-    // A cube corner's normal is the normalised sum of its three axis-aligned face normals.
+    // A cube corner's normal is the normalised sum of its three axis-aligned face normals
+    // (Baumgart's loop: the uniform weighting); the area and angle weightings agree on a cube.
     let third = 1.0 / 3f64.sqrt();
-    assert_vec_eq(
-        w.vertex_normal(VertexId(0)).unwrap(),
-        [-third, -third, -third],
-    );
-    assert_vec_eq(w.vertex_normals()[7], [third, third, third]);
+    for weighting in VertexNormalWeighting::ALL {
+        assert_vec_eq(
+            w.vertex_normal(VertexId(0), weighting).unwrap(),
+            [-third, -third, -third],
+        );
+        assert_vec_eq(w.vertex_normals(weighting)[7], [third, third, third]);
+    }
 }
 
 fn assert_vec_eq(a: [f64; 3], b: [f64; 3]) {

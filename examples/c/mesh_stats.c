@@ -104,7 +104,7 @@ int main(int argc, char **argv) {
     printf("V = %zu, E = %zu, F = %zu, half-edges = %zu\n", v, e, f, hw_mesh_n_halfedges(mesh));
     printf("Euler characteristic V - E + F = %ld\n", (long)v - (long)e + (long)f);
     print_loops(mesh);
-    if (hw_mesh_n_components(mesh, &components) == HW_OK) printf("components: %zu\n", components);
+    if (hw_mesh_count_components(mesh, &components) == HW_OK) printf("components: %zu\n", components);
     print_valences(mesh);
     printf("invariants: %s\n", hw_mesh_check(mesh) == HW_OK ? "ok" : "BROKEN");
 

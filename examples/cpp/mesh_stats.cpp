@@ -31,7 +31,7 @@ int main(int argc, char** argv) try {
     for (hw_halfedge h : mesh.loop(loops[i])) length += mesh.is_boundary(h) ? 1 : 0;
     std::printf("  loop %zu: starts at half-edge %u, %zu edges\n", i, loops[i].idx, length);
   }
-  std::printf("components: %zu\n", mesh.n_components());
+  std::printf("components: %zu\n", mesh.count_components());
 
   // The one-ring of vertex 0, counter-clockwise: its neighbours and the faces between them.
   const hw_vertex first{0};

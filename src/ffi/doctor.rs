@@ -390,18 +390,15 @@ pub struct hw_doctor_component {
     pub bounding_box: [f64; 6],
 }
 
-/// The number of components (`*out_count`).
+/// The number of components; 0 for a NULL report.
 ///
 /// # Safety
-/// `report` must be NULL or live; `out_count` writable.
+/// `report` must be NULL or live.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_n_components(
-    report: *const hw_doctor_report,
-    out_count: *mut usize,
-) -> hw_status {
+pub unsafe extern "C" fn hw_doctor_report_n_components(report: *const hw_doctor_report) -> usize {
     // SAFETY: forwarded from the caller.
-    unsafe { give_count(report, out_count, |r| r.components.len()) }
+    unsafe { count(report, |r| r.components.len()) }
 }
 
 /// Component `index` (components in order of their lowest face).
@@ -444,18 +441,17 @@ pub unsafe extern "C" fn hw_doctor_report_component(
     })
 }
 
-/// The number of boundary loops (`*out_count`).
+/// The number of boundary loops; 0 for a NULL report.
 ///
 /// # Safety
-/// `report` must be NULL or live; `out_count` writable.
+/// `report` must be NULL or live.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_n_boundary_loops(
     report: *const hw_doctor_report,
-    out_count: *mut usize,
-) -> hw_status {
+) -> usize {
     // SAFETY: forwarded from the caller.
-    unsafe { give_count(report, out_count, |r| r.boundary_loops.len()) }
+    unsafe { count(report, |r| r.boundary_loops.len()) }
 }
 
 /// Boundary loop `index`: a zero-copy view of its vertices in order (each joined by a boundary
@@ -493,19 +489,16 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
     })
 }
 
-/// The number of non-manifold vertices whose fans the report lists (`*out_count`): those of
-/// ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order.
+/// The number of non-manifold vertices whose fans the report lists: those of
+/// ::HW_DIAGNOSTIC_LIST_NON_MANIFOLD_VERTICES, in the same order; 0 for a NULL report.
 ///
 /// # Safety
-/// `report` must be NULL or live; `out_count` writable.
+/// `report` must be NULL or live.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_n_vertex_fans(
-    report: *const hw_doctor_report,
-    out_count: *mut usize,
-) -> hw_status {
+pub unsafe extern "C" fn hw_doctor_report_n_vertex_fans(report: *const hw_doctor_report) -> usize {
     // SAFETY: forwarded from the caller.
-    unsafe { give_count(report, out_count, |r| r.non_manifold_vertex_fans.len()) }
+    unsafe { count(report, |r| r.non_manifold_vertex_fans.len()) }
 }
 
 /// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,
@@ -621,23 +614,16 @@ unsafe fn give_text(
     })
 }
 
-/// Writes `count(report)` to `out_count`: the body of the `_count` calls.
+/// `count(report)`, or 0 for a NULL report (the error recorded): the body of the `_n_` calls.
 ///
 /// # Safety
-/// `report` must be NULL or live; `out_count` writable.
-unsafe fn give_count(
+/// `report` must be NULL or live.
+unsafe fn count(
     report: *const hw_doctor_report,
-    out_count: *mut usize,
     count: impl FnOnce(&DoctorReport) -> usize,
-) -> hw_status {
-    guard(|| {
-        let out = Out::new(out_count, "out_count")?;
-        // SAFETY: forwarded from the caller.
-        let report = unsafe { report_ref(report) }?;
-        // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(count(report)) };
-        Ok(())
-    })
+) -> usize {
+    // SAFETY: forwarded from the caller.
+    guard_value(0, || Ok(count(unsafe { report_ref(report) }?)))
 }
 
 fn item<'a, T>(list: &'a [T], index: usize, what: &str) -> Result<&'a T, FfiError> {

@@ -17,7 +17,7 @@ use crate::ffi::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_valu
 use crate::ffi::doctor::{finding_kind, hw_doctor_finding, hw_doctor_report, report_ref};
 use crate::ffi::mesh::diagnostic::hw_diagnostic;
 use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
-use crate::ffi::mesh::normals::{HW_NORMAL_WEIGHTING_ANGLE, hw_normal_weighting, weighting};
+use crate::ffi::mesh::normals::{HW_NORMAL_WEIGHTING_ANGLE, hw_normal_weighting, normal_weighting};
 use crate::ffi::voronoi::cells::{cells_ref, hw_voronoi_cells};
 
 /// Where the normals of hw_render_buffers_build() come from.
@@ -259,9 +259,11 @@ fn index_array(contents: &Contents, which: hw_render_indices) -> Result<&[u32], 
 fn shading(options: &hw_render_options) -> Result<Shading, FfiError> {
     match options.shading {
         HW_SHADING_FLAT => Ok(Shading::Flat),
-        HW_SHADING_SMOOTH => Ok(Shading::Smooth(weighting(options.weighting)?)),
+        HW_SHADING_SMOOTH => Ok(Shading::Smooth(normal_weighting(options.weighting)?)),
         HW_SHADING_CREASE => Ok(Shading::Crease(options.crease_angle)),
-        HW_SHADING_CORNER_NORMALS => Ok(Shading::CornerNormals(weighting(options.weighting)?)),
+        HW_SHADING_CORNER_NORMALS => {
+            Ok(Shading::CornerNormals(normal_weighting(options.weighting)?))
+        }
         other => Err(FfiError::invalid_input(format!("unknown shading {other}"))),
     }
 }
@@ -318,7 +320,7 @@ pub unsafe extern "C" fn hw_render_buffers_build(
         });
         let corner_uvs =
             corner_uvs.or_else(|| options.mesh_corner_uvs.then(|| mesh.corner_uvs()).flatten());
-        let glyph_weighting: VertexNormalWeighting = weighting(options.weighting)?;
+        let glyph_weighting: VertexNormalWeighting = normal_weighting(options.weighting)?;
         let mesh_options = MeshBufferOptions {
             surface: SurfaceOptions {
                 shading: shading(&options)?,

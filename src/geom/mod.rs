@@ -6,8 +6,11 @@ pub(crate) use newell::{
     triangle_squared_size,
 };
 mod normals;
-pub(crate) use newell::{cross, difference, rescued_area_vector};
+mod polygon_faces;
+pub(crate) use newell::{cross, difference};
 pub(crate) use normals::{dot, normalized};
+pub(crate) use normals::{face_normal_of, face_normals_of, vertex_normal_of, vertex_normals_of};
+pub(crate) use polygon_faces::{PolygonFaces, SmallFace};
 pub(crate) mod box_tree;
 mod embedded_stars;
 pub(crate) mod exact_orientation;

@@ -1,4 +1,4 @@
-//! Face, vertex and corner normals of a half-edge mesh.
+//! Face, vertex and corner normals of a polygon mesh.
 //!
 //! - Face normals: Newell's method (Baumgart's loop), so non-planar polygons get their best-fit
 //!   plane's normal; degenerate faces get the zero vector.
@@ -10,16 +10,23 @@
 //!   boundary or an edge sharper than the crease angle.
 //!
 //! Isolated vertices and boundary half-edges get the zero vector.
+//!
+//! Face and vertex normals come from one set of passes over a [`PolygonFaces`], which both
+//! kernels give: the half-edge [`Mesh`] and the winged structure
+//! ([`Winged`](crate::winged::Winged)) get the same normals, bit for bit, for the same faces with
+//! the same first corners. A vertex sums its faces in face id order, each face's corners in loop
+//! order, whether every vertex is computed or one alone.
 
 use crate::mesh::{FaceId, HalfedgeId, Mesh};
 
 use super::newell::rescued_area_vector;
+use super::polygon_faces::{PolygonFaces, SmallFace, gather};
 use super::{face_corners_area_vector, quad_area_vector, triangle_area_vector};
 
 /// How a vertex normal weighs the normals of the faces around the vertex.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum VertexNormalWeighting {
-    /// Unit face normals summed (OpenMesh's default).
+    /// Unit face normals summed (OpenMesh's default; Baumgart's winged-edge vertex normal).
     #[default]
     Uniform,
     /// Face normals weighted by face area (the raw Newell vectors summed).
@@ -28,11 +35,18 @@ pub enum VertexNormalWeighting {
     Angle,
 }
 
+impl VertexNormalWeighting {
+    /// Every weighting.
+    pub const ALL: [VertexNormalWeighting; 3] = [
+        VertexNormalWeighting::Uniform,
+        VertexNormalWeighting::Area,
+        VertexNormalWeighting::Angle,
+    ];
+}
+
 /// Unit normal of every face slot (zero for degenerate and deleted faces), indexed by face id.
 pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
-    let mut normals = vec![[0.0; 3]; mesh.n_face_slots()];
-    face_normals_into(mesh, &mut normals);
-    normals
+    face_normals_of(mesh)
 }
 
 /// [`face_normals`] written into `out`, one entry per face slot (`mesh.n_face_slots()`): the
@@ -41,13 +55,72 @@ pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
 /// # Panics
 /// When `out.len() != mesh.n_face_slots()`.
 pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
-    assert_eq!(out.len(), mesh.n_face_slots(), "one normal per face slot");
+    face_normals_into_of(mesh, out)
+}
+
+/// Newell vector of face `f`: along its normal, twice its area long; when that length would
+/// overflow or underflow a double (coordinates near 1e308, faces smaller than about 1e-154),
+/// along its normal at another length. Zero for no face.
+pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
+    if f.index() >= mesh.n_face_slots() {
+        return [0.0; 3];
+    }
+    area_vector_of(mesh, f.0)
+}
+
+/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
+/// the faces, with no per-face array: each face's normal is computed and scattered to its corners.
+pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
+    vertex_normals_of(mesh, weighting)
+}
+
+/// Face normals (as [`face_normals`]) and vertex normals (as [`vertex_normals`]) in one pass,
+/// as OpenMesh's `update_normals` gives them.
+pub fn face_and_vertex_normals(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    face_and_vertex_normals_of(mesh, weighting)
+}
+
+/// Vertex normals, and face normals when `faces` is given, written into caller buffers (one
+/// entry per vertex slot, one per face slot) in one pass.
+///
+/// # Panics
+/// When a buffer's length is not the slot count.
+pub fn normals_into(
+    mesh: &Mesh,
+    weighting: VertexNormalWeighting,
+    faces: Option<&mut [[f64; 3]]>,
+    vertices: &mut [[f64; 3]],
+) {
+    assert_eq!(
+        vertices.len(),
+        mesh.n_vertex_slots(),
+        "one normal per vertex slot"
+    );
+    normals_into_of(mesh, weighting, faces, vertices)
+}
+
+/// [`face_normals`] of either kernel.
+pub(crate) fn face_normals_of(mesh: &impl PolygonFaces) -> Vec<[f64; 3]> {
+    let mut normals = vec![[0.0; 3]; mesh.face_slot_count()];
+    face_normals_into_of(mesh, &mut normals);
+    normals
+}
+
+/// [`face_normals_into`] of either kernel.
+fn face_normals_into_of(mesh: &impl PolygonFaces, out: &mut [[f64; 3]]) {
+    assert_eq!(
+        out.len(),
+        mesh.face_slot_count(),
+        "one normal per face slot"
+    );
     let normal = |f: usize| {
-        let f = FaceId(f as u32);
-        if mesh.is_face_deleted(f) {
-            [0.0; 3]
+        if mesh.is_live_face(f as u32) {
+            normalized(area_vector_of(mesh, f as u32))
         } else {
-            normalized(face_area_vector(mesh, f))
+            [0.0; 3]
         }
     };
     #[cfg(feature = "parallel")]
@@ -64,53 +137,223 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
     }
 }
 
-/// Newell vector of face `f`: along its normal, twice its area long; when that length would
-/// overflow or underflow a double (coordinates near 1e308, faces smaller than about 1e-154),
-/// along its normal at another length.
-pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    let h0 = mesh.face_halfedges().get(f.index()).copied();
-    let corners = || mesh.face_vertices(f).map(|v| mesh.position(v));
-    let area_vector = SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
+/// The unit normal of live face `f` of either kernel: what [`face_normals_of`] gives it.
+pub(crate) fn face_normal_of(mesh: &impl PolygonFaces, f: u32) -> [f64; 3] {
+    normalized(area_vector_of(mesh, f))
+}
+
+/// [`face_area_vector`] of live face `f` of either kernel.
+fn area_vector_of(mesh: &impl PolygonFaces, f: u32) -> [f64; 3] {
+    let corners = || mesh.corners(f).map(|v| mesh.positions()[v as usize]);
+    let area_vector = mesh
+        .small_face(f)
         .area_vector(mesh.positions())
         .unwrap_or_else(|| face_corners_area_vector(corners()));
     rescued_area_vector(area_vector, || corners().collect())
 }
 
-/// The corner vertices of a triangle or a quad, read straight from the raw arrays: these make
-/// up nearly every real mesh, and fixed-size lists cost half the time of a walk through the face
-/// iterators (face normals of a 1M-triangle grid: 8.6 against 18.4 ms).
-enum SmallFace {
-    Triangle([u32; 3]),
-    Quad([u32; 4]),
-    /// Five corners or more: walk the face.
-    Larger,
+/// [`vertex_normals`] of either kernel.
+pub(crate) fn vertex_normals_of(
+    mesh: &impl PolygonFaces,
+    weighting: VertexNormalWeighting,
+) -> Vec<[f64; 3]> {
+    let mut vertices = vec![[0.0; 3]; mesh.positions().len()];
+    normals_into_of(mesh, weighting, None, &mut vertices);
+    vertices
+}
+
+/// [`face_and_vertex_normals`] of either kernel.
+fn face_and_vertex_normals_of(
+    mesh: &impl PolygonFaces,
+    weighting: VertexNormalWeighting,
+) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let mut faces = vec![[0.0; 3]; mesh.face_slot_count()];
+    let mut vertices = vec![[0.0; 3]; mesh.positions().len()];
+    normals_into_of(mesh, weighting, Some(&mut faces), &mut vertices);
+    (faces, vertices)
+}
+
+/// [`normals_into`] of either kernel; `vertices` has one entry per position.
+fn normals_into_of(
+    mesh: &impl PolygonFaces,
+    weighting: VertexNormalWeighting,
+    faces: Option<&mut [[f64; 3]]>,
+    vertices: &mut [[f64; 3]],
+) {
+    match faces {
+        Some(faces) => {
+            assert_eq!(
+                faces.len(),
+                mesh.face_slot_count(),
+                "one normal per face slot"
+            );
+            faces.fill([0.0; 3]);
+            accumulate_normals(
+                mesh,
+                weighting,
+                |f, unit| faces[f as usize] = unit,
+                vertices,
+            );
+        }
+        None => accumulate_normals(mesh, weighting, |_, _| {}, vertices),
+    }
+}
+
+/// The unit normal of vertex `v` of either kernel under `weighting`: what [`vertex_normals_of`]
+/// gives it, bit for bit (its faces in id order, each by the pass's own arithmetic).
+pub(crate) fn vertex_normal_of(
+    mesh: &impl PolygonFaces,
+    v: u32,
+    weighting: VertexNormalWeighting,
+) -> [f64; 3] {
+    let mut faces = mesh.faces_at(v);
+    faces.sort_unstable();
+    faces.dedup();
+    let mut sum = [0.0; 3];
+    for f in faces {
+        share_face(
+            mesh,
+            f,
+            weighting,
+            &mut |_, _| {},
+            &mut |at, normal, weight| {
+                if at == v {
+                    add_scaled(&mut sum, normal, weight);
+                }
+            },
+        );
+    }
+    normalized(sum)
+}
+
+/// The shared pass: for each live face, its unit normal goes to `visit_face` and its weighted
+/// normal to each corner's vertex sum in `sums`; the sums are normalised at the end.
+fn accumulate_normals(
+    mesh: &impl PolygonFaces,
+    weighting: VertexNormalWeighting,
+    mut visit_face: impl FnMut(u32, [f64; 3]),
+    sums: &mut [[f64; 3]],
+) {
+    assert_eq!(
+        sums.len(),
+        mesh.positions().len(),
+        "one normal per vertex slot"
+    );
+    sums.fill([0.0; 3]);
+    for f in mesh.live_faces() {
+        share_face(
+            mesh,
+            f,
+            weighting,
+            &mut visit_face,
+            &mut |v, normal, weight| add_scaled(&mut sums[v as usize], normal, weight),
+        );
+    }
+    for sum in sums.iter_mut() {
+        *sum = normalized(*sum);
+    }
+}
+
+/// What live face `f` gives the normals: its unit normal to `visit_face`, then corner by corner
+/// in loop order the corner's vertex, the face's weighted normal and the corner's weight to
+/// `add` (the vertex's sum gains the normal times the weight). Triangles and quads under the
+/// weightings that give all corners one normal take the fixed-size reads of [`SmallFace`]; other
+/// faces take [`share_polygon`].
+#[inline(always)]
+fn share_face(
+    mesh: &impl PolygonFaces,
+    f: u32,
+    weighting: VertexNormalWeighting,
+    visit_face: &mut impl FnMut(u32, [f64; 3]),
+    add: &mut impl FnMut(u32, [f64; 3], f64),
+) {
+    if weighting != VertexNormalWeighting::Angle {
+        let corners = mesh.small_face(f);
+        if let Some(area_vector) = corners.area_vector(mesh.positions()) {
+            let unit = normalized(area_vector);
+            // No area, or a length out of a double's range: the general walk rescues the latter.
+            if unit != [0.0; 3] {
+                visit_face(f, unit);
+                let normal = face_weighted(weighting, area_vector, unit);
+                corners.for_each_corner(|v| add(v, normal, 1.0));
+                return;
+            }
+        }
+    }
+    share_polygon(mesh, f, weighting, visit_face, add);
+}
+
+/// [`share_face`] by the general walk around the face: any degree, any weighting.
+#[inline(never)]
+fn share_polygon(
+    mesh: &impl PolygonFaces,
+    f: u32,
+    weighting: VertexNormalWeighting,
+    visit_face: &mut impl FnMut(u32, [f64; 3]),
+    add: &mut impl FnMut(u32, [f64; 3], f64),
+) {
+    let positions = mesh.positions();
+    let area_vector = area_vector_of(mesh, f);
+    let unit = normalized(area_vector);
+    visit_face(f, unit);
+    let face_normal = face_weighted(weighting, area_vector, unit);
+    match mesh.small_face(f) {
+        SmallFace::Triangle(corners) => {
+            share_corners(positions, corners.into_iter(), weighting, face_normal, add)
+        }
+        SmallFace::Quad(corners) => {
+            share_corners(positions, corners.into_iter(), weighting, face_normal, add)
+        }
+        SmallFace::Larger => share_corners(positions, mesh.corners(f), weighting, face_normal, add),
+    }
+}
+
+/// Gives `add` each of `corners` (a face's, in loop order) with `face_normal` and the corner's
+/// weight: its angle between the corners before and after it under `Angle`, else 1.
+#[inline(always)]
+fn share_corners(
+    positions: &[[f64; 3]],
+    corners: impl Iterator<Item = u32> + Clone,
+    weighting: VertexNormalWeighting,
+    face_normal: [f64; 3],
+    add: &mut impl FnMut(u32, [f64; 3], f64),
+) {
+    if weighting != VertexNormalWeighting::Angle {
+        corners.for_each(|v| add(v, face_normal, 1.0));
+        return;
+    }
+    let (Some(first), Some(last)) = (corners.clone().next(), corners.clone().last()) else {
+        return;
+    };
+    let (mut previous, mut at) = (last, first);
+    for next in corners.skip(1).chain(std::iter::once(first)) {
+        let weight = angle_between(
+            positions[at as usize],
+            positions[next as usize],
+            positions[previous as usize],
+        );
+        add(at, face_normal, weight);
+        (previous, at) = (at, next);
+    }
+}
+
+/// The normal a face gives each of its corners under `weighting`, before the corner's own weight
+/// (its angle, under `Angle`).
+#[inline(always)]
+fn face_weighted(
+    weighting: VertexNormalWeighting,
+    area_vector: [f64; 3],
+    unit: [f64; 3],
+) -> [f64; 3] {
+    match weighting {
+        VertexNormalWeighting::Area => area_vector,
+        _ => unit,
+    }
 }
 
 impl SmallFace {
-    /// The face whose half-edge is `h0`, with its corners in loop order from `origin(h0)`;
-    /// `Larger` too when `h0` or `next(h0)` is no half-edge, for the bounded walk to judge.
-    #[inline(always)]
-    fn of(mesh: &Mesh, h0: u32) -> SmallFace {
-        let (next, prev) = (mesh.halfedge_nexts(), mesh.halfedge_prevs());
-        // The last corner comes from `prev`, loaded beside `next(h0)` rather than after it:
-        // a triangle's corners then wait on one load each, not on a chain of two.
-        let (Some(&h1), Some(&last)) = (next.get(h0 as usize), prev.get(h0 as usize)) else {
-            return SmallFace::Larger;
-        };
-        let Some(&h2) = next.get(h1 as usize) else {
-            return SmallFace::Larger;
-        };
-        let origin = mesh.halfedge_origins();
-        if h2 == last {
-            SmallFace::Triangle(gather(origin, [h0, h1, last]))
-        } else if next[h2 as usize] == last {
-            SmallFace::Quad(gather(origin, [h0, h1, h2, last]))
-        } else {
-            SmallFace::Larger
-        }
-    }
-
-    /// The face's area vector, as [`newell_vector`] gives it (`None` for a larger face).
+    /// The face's area vector, as [`face_corners_area_vector`] gives it for the same corners
+    /// (`None` for a larger face).
     #[inline(always)]
     fn area_vector(&self, positions: &[[f64; 3]]) -> Option<[f64; 3]> {
         match *self {
@@ -126,169 +369,14 @@ impl SmallFace {
         }
     }
 
-    /// Adds `normal` to the sum of each corner (nothing for a larger face).
+    /// Calls `visit` with each corner in loop order (none for a larger face).
     #[inline(always)]
-    fn add_to_corners(&self, sums: &mut [[f64; 3]], normal: [f64; 3]) {
+    fn for_each_corner(&self, visit: impl FnMut(u32)) {
         match *self {
-            SmallFace::Triangle(corners) => scatter(sums, corners, normal),
-            SmallFace::Quad(corners) => scatter(sums, corners, normal),
+            SmallFace::Triangle(corners) => corners.into_iter().for_each(visit),
+            SmallFace::Quad(corners) => corners.into_iter().for_each(visit),
             SmallFace::Larger => {}
         }
-    }
-}
-
-/// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
-/// the faces, with no per-face array: each face's normal is computed and scattered to its corners.
-pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
-    let mut vertices = vec![[0.0; 3]; mesh.n_vertex_slots()];
-    accumulate_normals(mesh, weighting, |_, _| {}, &mut vertices);
-    vertices
-}
-
-/// Face normals (as [`face_normals`]) and vertex normals (as [`vertex_normals`]) in one pass,
-/// as OpenMesh's `update_normals` gives them.
-pub fn face_and_vertex_normals(
-    mesh: &Mesh,
-    weighting: VertexNormalWeighting,
-) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
-    let mut faces = vec![[0.0; 3]; mesh.n_face_slots()];
-    let mut vertices = vec![[0.0; 3]; mesh.n_vertex_slots()];
-    normals_into(mesh, weighting, Some(&mut faces), &mut vertices);
-    (faces, vertices)
-}
-
-/// Vertex normals, and face normals when `faces` is given, written into caller buffers (one
-/// entry per vertex slot, one per face slot) in one pass.
-///
-/// # Panics
-/// When a buffer's length is not the slot count.
-pub fn normals_into(
-    mesh: &Mesh,
-    weighting: VertexNormalWeighting,
-    faces: Option<&mut [[f64; 3]]>,
-    vertices: &mut [[f64; 3]],
-) {
-    match faces {
-        Some(faces) => {
-            assert_eq!(faces.len(), mesh.n_face_slots(), "one normal per face slot");
-            accumulate_normals(mesh, weighting, |f, unit| faces[f.index()] = unit, vertices);
-        }
-        None => accumulate_normals(mesh, weighting, |_, _| {}, vertices),
-    }
-}
-
-/// The shared pass: for each live face, its unit normal goes to `visit_face` and its weighted
-/// normal to each corner's vertex sum in `sums`; the sums are normalised at the end.
-fn accumulate_normals(
-    mesh: &Mesh,
-    weighting: VertexNormalWeighting,
-    mut visit_face: impl FnMut(FaceId, [f64; 3]),
-    sums: &mut [[f64; 3]],
-) {
-    assert_eq!(
-        sums.len(),
-        mesh.n_vertex_slots(),
-        "one normal per vertex slot"
-    );
-    sums.fill([0.0; 3]);
-    match weighting {
-        VertexNormalWeighting::Uniform | VertexNormalWeighting::Area => {
-            accumulate_face_weighted(mesh, weighting, &mut visit_face, sums)
-        }
-        VertexNormalWeighting::Angle => {
-            for (f, _) in live_faces(mesh) {
-                add_polygon(mesh, f, weighting, &mut visit_face, sums);
-            }
-        }
-    }
-    for sum in sums.iter_mut() {
-        *sum = normalized(*sum);
-    }
-}
-
-/// The pass for the weightings that give all of a face's corners one normal (`Area`: its area
-/// vector; `Uniform`: its unit normal). Triangles and quads take the fixed-size reads of
-/// [`SmallFace`]; other faces take [`add_polygon`].
-fn accumulate_face_weighted(
-    mesh: &Mesh,
-    weighting: VertexNormalWeighting,
-    visit_face: &mut impl FnMut(FaceId, [f64; 3]),
-    sums: &mut [[f64; 3]],
-) {
-    let positions = mesh.positions();
-    for (f, h0) in live_faces(mesh) {
-        let corners = SmallFace::of(mesh, h0);
-        let Some(area_vector) = corners.area_vector(positions) else {
-            add_polygon(mesh, f, weighting, visit_face, sums);
-            continue;
-        };
-        let unit = normalized(area_vector);
-        if unit == [0.0; 3] {
-            // No area, or a length out of a double's range: the general walk rescues the latter.
-            add_polygon(mesh, f, weighting, visit_face, sums);
-            continue;
-        }
-        visit_face(f, unit);
-        corners.add_to_corners(sums, face_weighted(weighting, area_vector, unit));
-    }
-}
-
-/// The normal a face gives each of its corners under `weighting`, before the corner's own weight
-/// (its angle, under `Angle`).
-fn face_weighted(
-    weighting: VertexNormalWeighting,
-    area_vector: [f64; 3],
-    unit: [f64; 3],
-) -> [f64; 3] {
-    match weighting {
-        VertexNormalWeighting::Area => area_vector,
-        _ => unit,
-    }
-}
-
-/// The live faces of `mesh` in id order, each with its half-edge.
-fn live_faces(mesh: &Mesh) -> impl Iterator<Item = (FaceId, u32)> + '_ {
-    let check_deleted = mesh.has_deleted_elements();
-    let faces = mesh.face_halfedges().iter().enumerate();
-    faces
-        .map(|(f, &h)| (FaceId(f as u32), h))
-        .filter(move |&(f, _)| !(check_deleted && mesh.is_face_deleted(f)))
-}
-
-/// Face `f`'s unit normal to `visit_face` and its weighted normal to its corners' sums, by the
-/// general walk around the face: any degree, any weighting.
-#[inline(never)]
-fn add_polygon(
-    mesh: &Mesh,
-    f: FaceId,
-    weighting: VertexNormalWeighting,
-    visit_face: &mut impl FnMut(FaceId, [f64; 3]),
-    sums: &mut [[f64; 3]],
-) {
-    let area_vector = face_area_vector(mesh, f);
-    let unit = normalized(area_vector);
-    visit_face(f, unit);
-    let face_normal = face_weighted(weighting, area_vector, unit);
-    for h in mesh.face_loop(f) {
-        let weight = match weighting {
-            VertexNormalWeighting::Angle => corner_angle(mesh, h),
-            _ => 1.0,
-        };
-        add_scaled(&mut sums[mesh.origin(h).index()], face_normal, weight);
-    }
-}
-
-/// `array[i]` for each of `indices`.
-#[inline(always)]
-fn gather<T: Copy, const N: usize>(array: &[T], indices: [u32; N]) -> [T; N] {
-    indices.map(|i| array[i as usize])
-}
-
-/// Adds `normal` to the sum of each of `vertices`.
-#[inline(always)]
-fn scatter<const N: usize>(sums: &mut [[f64; 3]], vertices: [u32; N], normal: [f64; 3]) {
-    for v in vertices {
-        add_scaled(&mut sums[v as usize], normal, 1.0);
     }
 }
 
@@ -364,7 +452,17 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
 /// Interior angle of `face(h)` at `origin(h)`, between the edges to `target(h)` and to
 /// `origin(prev(h))`, in radians (0 for a zero-length edge).
 pub fn corner_angle(mesh: &Mesh, h: HalfedgeId) -> f64 {
-    let at = mesh.position(mesh.origin(h));
+    angle_between(
+        mesh.position(mesh.origin(h)),
+        mesh.position(mesh.target(h)),
+        mesh.position(mesh.origin(mesh.prev(h))),
+    )
+}
+
+/// The angle at corner `at` between the edges to `next` and to `previous`, in radians (0 for a
+/// zero-length edge).
+#[inline]
+fn angle_between(at: [f64; 3], next: [f64; 3], previous: [f64; 3]) -> f64 {
     // Each edge vector scaled to a largest component of 1 (halved first, so no difference
     // overflows): the angle does not change, and no product over- or underflows at any scale.
     let direction = |to: [f64; 3]| {
@@ -377,8 +475,8 @@ pub fn corner_angle(mesh: &Mesh, h: HalfedgeId) -> f64 {
             half
         }
     };
-    let to_next = direction(mesh.position(mesh.target(h)));
-    let to_prev = direction(mesh.position(mesh.origin(mesh.prev(h))));
+    let to_next = direction(next);
+    let to_prev = direction(previous);
     let c = cross(to_next, to_prev);
     // atan2 of |a×b| and a·b is accurate for small and near-π angles alike.
     dot(c, c).sqrt().atan2(dot(to_next, to_prev))
@@ -460,11 +558,7 @@ mod tests {
     fn cube_vertex_normals_are_diagonals_for_every_weighting() {
         let mesh = cube();
         let diagonal = 1.0 / 3f64.sqrt();
-        for weighting in [
-            VertexNormalWeighting::Uniform,
-            VertexNormalWeighting::Area,
-            VertexNormalWeighting::Angle,
-        ] {
+        for weighting in VertexNormalWeighting::ALL {
             let normals = vertex_normals(&mesh, weighting);
             for v in 0..8 {
                 let p = mesh.position(VertexId(v));
@@ -481,11 +575,7 @@ mod tests {
     #[test]
     fn one_pass_normals_match_the_separate_ones() {
         let mesh = cube();
-        for weighting in [
-            VertexNormalWeighting::Uniform,
-            VertexNormalWeighting::Area,
-            VertexNormalWeighting::Angle,
-        ] {
+        for weighting in VertexNormalWeighting::ALL {
             let (faces, vertices) = face_and_vertex_normals(&mesh, weighting);
             assert_eq!(faces, face_normals(&mesh));
             assert_eq!(vertices, vertex_normals(&mesh, weighting));

@@ -1,84 +1,125 @@
-//! Face normals (Newell's method) and vertex normals, as Baumgart's structure computes them.
+//! Face and vertex normals, by the passes of [`crate::geom`] that the half-edge kernel runs: the
+//! same formulas over the same corners, so a structure and the mesh built from the same faces
+//! have the same normals, bit for bit.
 
 use super::error::WingedError;
-use super::ids::{FaceId, VertexId};
+use super::ids::{FaceId, Side, VertexId};
 use super::structure::Winged;
-use crate::geom::{face_corners_area_vector, normalized, rescued_area_vector};
+use crate::geom::{
+    PolygonFaces, VertexNormalWeighting, face_normal_of, face_normals_of, vertex_normal_of,
+    vertex_normals_of,
+};
 
 impl Winged {
-    /// The unit normal of `f` from its area vector (Newell's method: exact for planar
-    /// polygons, a least-squares plane normal for non-planar ones); zero for a degenerate face.
-    /// The half-edge kernel's formula ([`face_corners_area_vector`]), so the two kernels give
-    /// the same normals for the same faces.
-    ///
-    /// Points outward for a counter-clockwise face.
+    /// The unit normal of `f` (Newell's method: exact for planar polygons, the best-fit plane's
+    /// normal for non-planar ones); zero for a degenerate or point face. Points outward for a
+    /// counter-clockwise face. What [`Winged::face_normals`] gives `f`, bit for bit.
     pub fn face_normal(&self, f: FaceId) -> Result<[f64; 3], WingedError> {
-        let corners = self
-            .face_loop(f)?
-            .map(|u| self.positions[self.tail_of(u).index()]);
-        // One walk for the area vector; its unwalked copy serves the rare rescaling.
-        let area_vector = face_corners_area_vector(corners.clone());
-        Ok(normalized(rescued_area_vector(area_vector, || {
-            corners.collect()
-        })))
+        self.require_face(f)?;
+        Ok(face_normal_of(self, f.0))
     }
 
     /// Unit normals of all faces, indexed by face id (zero for deleted and degenerate faces).
     pub fn face_normals(&self) -> Vec<[f64; 3]> {
-        let normal = |f: u32| self.face_normal(FaceId(f)).unwrap_or([0.0; 3]);
-        #[cfg(feature = "parallel")]
-        {
-            use rayon::prelude::*;
-            (0..self.n_face_slots())
-                .into_par_iter()
-                .map(normal)
-                .collect()
-        }
-        #[cfg(not(feature = "parallel"))]
-        {
-            (0..self.n_face_slots()).map(normal).collect()
-        }
+        face_normals_of(self)
     }
 
-    /// The unit normal of `v`: the normalised sum of the unit normals of the faces around it
-    /// (Baumgart's `v->norm += e->f->norm; e = e->prev->sym`), holes left out; zero if none.
-    pub fn vertex_normal(&self, v: VertexId) -> Result<[f64; 3], WingedError> {
-        self.vertex_normal_from(v, |f| self.face_normal(f).unwrap_or([0.0; 3]))
-    }
-
-    /// Unit normals of all vertices, indexed by vertex id (face normals are computed once).
-    pub fn vertex_normals(&self) -> Vec<[f64; 3]> {
-        let face_normals = self.face_normals();
-        let normal = |v: u32| {
-            self.vertex_normal_from(VertexId(v), |f| face_normals[f.index()])
-                .unwrap_or([0.0; 3])
-        };
-        #[cfg(feature = "parallel")]
-        {
-            use rayon::prelude::*;
-            (0..self.n_vertex_slots())
-                .into_par_iter()
-                .map(normal)
-                .collect()
-        }
-        #[cfg(not(feature = "parallel"))]
-        {
-            (0..self.n_vertex_slots()).map(normal).collect()
-        }
-    }
-
-    fn vertex_normal_from(
+    /// The unit normal of `v`: the normalised sum of the normals of the faces around it, in
+    /// every fan of a non-manifold vertex, weighed by `weighting` (holes left out); zero when it
+    /// has no face. Baumgart's vertex normal, the unit face normals summed around the vertex, is
+    /// [`VertexNormalWeighting::Uniform`]. What [`Winged::vertex_normals`] gives `v`, bit for
+    /// bit.
+    pub fn vertex_normal(
         &self,
         v: VertexId,
-        face_normal: impl Fn(FaceId) -> [f64; 3],
+        weighting: VertexNormalWeighting,
     ) -> Result<[f64; 3], WingedError> {
-        let mut sum = [0.0; 3];
-        for f in self.vertex_faces(v)? {
-            let n = face_normal(f);
-            for k in 0..3 {
-                sum[k] += n[k];
-            }
+        self.require_vertex(v)?;
+        Ok(vertex_normal_of(self, v.0, weighting))
+    }
+
+    /// Unit normals of all vertices under `weighting`, indexed by vertex id, in one pass over the
+    /// faces (zero for deleted vertices and those without faces).
+    pub fn vertex_normals(&self, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
+        vertex_normals_of(self, weighting)
+    }
+}
+
+/// The faces and corners the normal passes read: a face's corners are the tails of its loop's
+/// uses, from its stored edge (the corners the half-edge mesh of the same faces gives it).
+impl PolygonFaces for Winged {
+    fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    fn face_slot_count(&self) -> usize {
+        self.face_edge.len()
+    }
+
+    fn is_live_face(&self, f: u32) -> bool {
+        self.is_face(FaceId(f))
+    }
+
+    fn live_faces(&self) -> impl Iterator<Item = u32> + '_ {
+        self.faces().map(|f| f.0)
+    }
+
+    fn corners(&self, f: u32) -> impl Iterator<Item = u32> + Clone + '_ {
+        let uses = self.face_loop(FaceId(f)).into_iter().flatten();
+        uses.map(|u| self.tail_of(u).0)
+    }
+
+    /// The faces of `v`'s ring; while the structure may have pinched vertices (whose other fans
+    /// a ring does not reach), of every edge at `v`, found by a scan of the edges.
+    fn faces_at(&self, v: u32) -> Vec<u32> {
+        let v = VertexId(v);
+        if !self.may_have_pinched_vertices {
+            let ring = self.vertex_faces(v).into_iter().flatten();
+            return ring.map(|f| f.0).collect();
         }
-        Ok(normalized(sum))
+        let uses = self
+            .edges()
+            .flat_map(|e| [Side::Left, Side::Right].map(|s| (e, s)));
+        uses.filter(|&(e, side)| self.rec(e).tail(side) == v)
+            .map(|(e, side)| self.rec(e).face(side))
+            .filter(|f| f.is_valid())
+            .map(|f| f.0)
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::soup::{BuildPolicy, FaceList};
+
+    #[test]
+    fn a_vertex_alone_scans_the_edges_while_fans_may_be_apart() {
+        // Two fans of triangles at vertex 0: a strict build refuses them, a skipping one gives
+        // the second fan a copy of the vertex; the scan must find the faces of both rings.
+        let positions = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.2],
+            [1.0, 1.0, 0.0],
+            [-1.0, 0.0, 0.5],
+            [-1.0, -1.0, 0.0],
+        ];
+        let list = FaceList::triangles(&positions, &[0, 1, 2, 0, 3, 4]);
+        let (mut w, _) = Winged::from_face_list(&list, BuildPolicy::Skip).unwrap();
+        for weighting in VertexNormalWeighting::ALL {
+            let all = w.vertex_normals(weighting);
+            w.may_have_pinched_vertices = true;
+            for v in w.vertices().collect::<Vec<_>>() {
+                let one = w.vertex_normal(v, weighting).unwrap();
+                assert_eq!(one, all[v.index()], "{weighting:?} {v}");
+                assert_ne!(one, [0.0; 3]);
+            }
+            w.may_have_pinched_vertices = false;
+        }
+        assert_eq!(
+            w.faces_at(0),
+            [0],
+            "one face at vertex 0, its copy has the other"
+        );
     }
 }

@@ -246,13 +246,14 @@ pub unsafe extern "C" fn hw_mesh_attribute_data(
     }
 }
 
-/// Number of attributes of `kind` (halfwing's own `hw:` ones included).
+/// Counts the attributes of `kind` (halfwing's own `hw:` ones included) into `*out_count`;
+/// `HW_ERR_INVALID_INPUT` for an unknown kind.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
 /// \ingroup attributes
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_mesh_n_attributes(
+pub unsafe extern "C" fn hw_mesh_count_attributes(
     mesh: *const hw_mesh,
     kind: hw_element_kind,
     out_count: *mut usize,

@@ -294,13 +294,14 @@ pub unsafe extern "C" fn hw_diagnostic_ids(
     }
 }
 
-/// The number of edges in one edge list.
+/// Counts the edges in one edge list into `*out_count`; `HW_ERR_INVALID_INPUT` for an unknown
+/// list.
 ///
 /// # Safety
 /// `diagnostic` must be NULL or live; `out_count` writable.
 /// \ingroup mesh
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_diagnostic_n_edges(
+pub unsafe extern "C" fn hw_diagnostic_count_edges(
     diagnostic: *const hw_diagnostic,
     edges: hw_diagnostic_edges,
     out_count: *mut usize,
@@ -446,7 +447,7 @@ mod tests {
             hw_diagnostic_ids(handle, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &mut ids, &mut len)
         };
         let wrong_edges = unsafe {
-            hw_diagnostic_n_edges(handle, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &mut count)
+            hw_diagnostic_count_edges(handle, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &mut count)
         };
         assert_eq!(
             (wrong_list, wrong_edges),

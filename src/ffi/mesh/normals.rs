@@ -10,7 +10,8 @@ use crate::geom::{VertexNormalWeighting, corner_normals, face_normals_into, norm
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::status::*;
 use crate::ffi::boundary::threads::with_threads;
-use crate::ffi::boundary::{copy_items, guard, out_array};
+use crate::ffi::boundary::{Out, copy_items, guard, out_array};
+use crate::ffi::mesh::elements::{hw_face, hw_vertex};
 use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
 
 /// How a vertex normal weighs the faces around it.
@@ -26,7 +27,9 @@ pub const HW_NORMAL_WEIGHTING_AREA: hw_normal_weighting = 1;
 /// \ingroup normals
 pub const HW_NORMAL_WEIGHTING_ANGLE: hw_normal_weighting = 2;
 
-pub(crate) fn weighting(raw: hw_normal_weighting) -> Result<VertexNormalWeighting, FfiError> {
+pub(crate) fn normal_weighting(
+    raw: hw_normal_weighting,
+) -> Result<VertexNormalWeighting, FfiError> {
     match raw {
         HW_NORMAL_WEIGHTING_UNIFORM => Ok(VertexNormalWeighting::Uniform),
         HW_NORMAL_WEIGHTING_AREA => Ok(VertexNormalWeighting::Area),
@@ -51,6 +54,54 @@ unsafe fn normal_buffer<'a>(
 ) -> Result<&'a mut [[f64; 3]], FfiError> {
     // SAFETY: forwarded from the caller; `[f64; 3]` has the alignment of `f64`.
     unsafe { out_array(out.cast::<[f64; 3]>(), capacity, slots, out_needed, name) }
+}
+
+/// Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
+/// degenerate face), written to `out_normal[0..3]` (required: NULL gives `HW_ERR_NULL_ARGUMENT`):
+/// what hw_mesh_face_normals() gives `f`, bit for bit.
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+/// \ingroup normals
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_face_normal(
+    mesh: *const hw_mesh,
+    f: hw_face,
+    out_normal: *mut f64,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_normal.cast::<[f64; 3]>(), "out_normal")?;
+        // SAFETY: forwarded from the caller.
+        let normal = unsafe { mesh_ref(mesh) }?.face_normal(f.into())?;
+        // SAFETY: checked non-NULL, 3 writable doubles per the caller.
+        unsafe { out.write(normal) };
+        Ok(())
+    })
+}
+
+/// Unit normal of vertex `v` with the chosen weighting (the faces of every fan of a non-manifold
+/// vertex count; zero when it has none), written to `out_normal[0..3]` (required: NULL gives
+/// `HW_ERR_NULL_ARGUMENT`): what hw_mesh_vertex_normals() gives `v`, bit for bit.
+///
+/// # Safety
+/// `mesh` must be NULL or live; `out_normal` must point to 3 writable doubles.
+/// \ingroup normals
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn hw_mesh_vertex_normal(
+    mesh: *const hw_mesh,
+    v: hw_vertex,
+    weighting: hw_normal_weighting,
+    out_normal: *mut f64,
+) -> hw_status {
+    guard(|| {
+        let out = Out::new(out_normal.cast::<[f64; 3]>(), "out_normal")?;
+        // SAFETY: forwarded from the caller.
+        let mesh = unsafe { mesh_ref(mesh) }?;
+        let normal = mesh.vertex_normal(v.into(), normal_weighting(weighting)?)?;
+        // SAFETY: checked non-NULL, 3 writable doubles per the caller.
+        unsafe { out.write(normal) };
+        Ok(())
+    })
 }
 
 /// Unit face normals by Newell's method (the best-fit plane of non-planar polygons).
@@ -94,7 +145,7 @@ pub unsafe extern "C" fn hw_mesh_face_normals(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_mesh_vertex_normals(
     mesh: *const hw_mesh,
-    weighting_kind: hw_normal_weighting,
+    weighting: hw_normal_weighting,
     out_normals: *mut f64,
     capacity: usize,
     out_needed: *mut usize,
@@ -102,7 +153,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
     guard(|| {
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
-        let weighting = weighting(weighting_kind)?;
+        let weighting = normal_weighting(weighting)?;
         // SAFETY: forwarded from the caller.
         let out = unsafe {
             normal_buffer(
@@ -133,7 +184,7 @@ pub unsafe extern "C" fn hw_mesh_vertex_normals(
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn hw_mesh_normals(
     mesh: *const hw_mesh,
-    weighting_kind: hw_normal_weighting,
+    weighting: hw_normal_weighting,
     out_face_normals: *mut f64,
     face_capacity: usize,
     out_face_needed: *mut usize,
@@ -144,7 +195,7 @@ pub unsafe extern "C" fn hw_mesh_normals(
     guard(|| {
         // SAFETY: forwarded from the caller.
         let mesh = unsafe { mesh_ref(mesh) }?;
-        let weighting = weighting(weighting_kind)?;
+        let weighting = normal_weighting(weighting)?;
         // Both arrays are checked (and both sizes reported) before either result is looked at.
         // SAFETY: forwarded from the caller.
         let faces = unsafe {

@@ -24,13 +24,14 @@ pub unsafe extern "C" fn hw_mesh_check(mesh: *const hw_mesh) -> hw_status {
     })
 }
 
-/// Number of boundary loops (holes and open borders).
+/// Counts the boundary loops (holes and open borders) into `*out_count`: a walk over the
+/// half-edges, not a stored count.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
 /// \ingroup topology
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_mesh_n_boundary_loops(
+pub unsafe extern "C" fn hw_mesh_count_boundary_loops(
     mesh: *const hw_mesh,
     out_count: *mut usize,
 ) -> hw_status {
@@ -71,14 +72,15 @@ pub unsafe extern "C" fn hw_mesh_boundary_loops(
     })
 }
 
-/// Number of connected components (faces connected across edges, as CGAL and OpenMesh count
-/// them; fans that only touch at a vertex are separate).
+/// Counts the connected components (faces connected across edges, as CGAL and OpenMesh count
+/// them; fans that only touch at a vertex are separate) into `*out_count`: a pass over the
+/// faces, not a stored count.
 ///
 /// # Safety
 /// `mesh` must be NULL or a live mesh; `out_count` writable.
 /// \ingroup topology
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_mesh_n_components(
+pub unsafe extern "C" fn hw_mesh_count_components(
     mesh: *const hw_mesh,
     out_count: *mut usize,
 ) -> hw_status {

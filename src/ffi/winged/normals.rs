@@ -1,13 +1,16 @@
 //! Normals of an `hw_winged`: one face's or vertex's, or every face's or vertex's at once.
 
+use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::status::*;
 use crate::ffi::boundary::{copy_items, guard};
+use crate::ffi::mesh::normals::{hw_normal_weighting, normal_weighting};
 use crate::ffi::winged::lifecycle::{hw_wface, hw_winged, hw_wvertex, winged_ref, write_triple};
 use crate::winged::Winged;
 
 /// Unit normal of face `f` by Newell's method (outward for a counter-clockwise face; zero for a
 /// degenerate or point face), written to `out_normal[0..3]` (required: NULL gives
-/// `HW_ERR_NULL_ARGUMENT`).
+/// `HW_ERR_NULL_ARGUMENT`): what hw_winged_face_normals() gives `f`, bit for bit, and
+/// hw_mesh_face_normal() the same face of a mesh.
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
@@ -26,9 +29,11 @@ pub unsafe extern "C" fn hw_winged_face_normal(
     }
 }
 
-/// Unit normal of vertex `v` as Baumgart's structure computes it: the normalised sum of the unit
-/// normals of the faces around it (holes left out; zero if none), written to `out_normal[0..3]`
-/// (required: NULL gives `HW_ERR_NULL_ARGUMENT`).
+/// Unit normal of vertex `v` with the chosen weighting, as hw_mesh_vertex_normal() computes a
+/// mesh's: the normalised sum of the weighted normals of the faces around it (every fan of a
+/// non-manifold vertex; holes left out; zero if none), written to `out_normal[0..3]` (required:
+/// NULL gives `HW_ERR_NULL_ARGUMENT`). Baumgart's vertex normal, the unit face normals summed, is
+/// ::HW_NORMAL_WEIGHTING_UNIFORM.
 ///
 /// # Safety
 /// `winged` must be NULL or a live structure; `out_normal` must point to 3 writable doubles.
@@ -37,12 +42,13 @@ pub unsafe extern "C" fn hw_winged_face_normal(
 pub unsafe extern "C" fn hw_winged_vertex_normal(
     winged: *const hw_winged,
     v: hw_wvertex,
+    weighting: hw_normal_weighting,
     out_normal: *mut f64,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
     unsafe {
         write_triple(winged, out_normal, "out_normal", |w| {
-            Ok(w.vertex_normal(v.into())?)
+            Ok(w.vertex_normal(v.into(), normal_weighting(weighting)?)?)
         })
     }
 }
@@ -66,19 +72,15 @@ pub unsafe extern "C" fn hw_winged_face_normals(
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
     unsafe {
-        give_normals(
-            winged,
-            out_normals,
-            capacity,
-            out_needed,
-            Winged::face_normals,
-        )
+        give_normals(winged, out_normals, capacity, out_needed, |w| {
+            Ok(w.face_normals())
+        })
     }
 }
 
-/// The unit normals of all vertices as hw_winged_vertex_normal() computes them, indexed by vertex
-/// id (zero for deleted vertices and those without faces), copied as hw_winged_face_normals()
-/// copies the faces'.
+/// The unit normals of all vertices with the chosen weighting, as hw_winged_vertex_normal()
+/// computes them, in one pass over the faces, indexed by vertex id (zero for deleted vertices
+/// and those without faces), copied as hw_winged_face_normals() copies the faces'.
 ///
 /// # Safety
 /// As for hw_winged_face_normals().
@@ -86,19 +88,16 @@ pub unsafe extern "C" fn hw_winged_face_normals(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_winged_vertex_normals(
     winged: *const hw_winged,
+    weighting: hw_normal_weighting,
     out_normals: *mut f64,
     capacity: usize,
     out_needed: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
     unsafe {
-        give_normals(
-            winged,
-            out_normals,
-            capacity,
-            out_needed,
-            Winged::vertex_normals,
-        )
+        give_normals(winged, out_normals, capacity, out_needed, |w| {
+            Ok(w.vertex_normals(normal_weighting(weighting)?))
+        })
     }
 }
 
@@ -112,11 +111,11 @@ unsafe fn give_normals(
     out_normals: *mut f64,
     capacity: usize,
     out_needed: *mut usize,
-    compute: impl FnOnce(&Winged) -> Vec<[f64; 3]>,
+    compute: impl FnOnce(&Winged) -> Result<Vec<[f64; 3]>, FfiError>,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
-        let normals = compute(unsafe { winged_ref(winged) }?);
+        let normals = compute(unsafe { winged_ref(winged) }?)?;
         // SAFETY: forwarded from the caller; `[f64; 3]` has the alignment of `f64`.
         unsafe {
             copy_items(
