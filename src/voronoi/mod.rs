@@ -17,6 +17,7 @@ mod cell_sides;
 mod clip_frame;
 mod clip_region;
 mod clipped;
+mod crossing_order;
 mod dcel;
 mod delaunay;
 mod diagram;
