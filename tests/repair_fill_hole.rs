@@ -92,7 +92,7 @@ fn largest_angle_to_neighbours(mesh: &Mesh, faces: &[FaceId]) -> f64 {
 
 /// The mesh's faces as triangles (fans), for the self-intersection search.
 fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let positions = (0..mesh.vertex_capacity() as u32)
+    let positions = (0..mesh.n_vertex_slots() as u32)
         .map(|v| {
             let v = halfwing::mesh::VertexId(v);
             if mesh.check_vertex(v).is_ok() {
@@ -103,7 +103,7 @@ fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
         })
         .collect();
     let mut tris = Vec::new();
-    for f in 0..mesh.face_capacity() as u32 {
+    for f in 0..mesh.n_face_slots() as u32 {
         let f = FaceId(f);
         if mesh.check_face(f).is_err() {
             continue;
@@ -397,4 +397,96 @@ fn fill_open_models(no_new_intersections: bool) {
     // each other (453 intersecting pairs before any fill): every fill tried crosses them, and
     // they are refused. The eight other open models are filled.
     assert!(filled_models >= 8, "{filled_models} models filled");
+}
+
+/// A flat 4 × 4 grid of unit squares (corners `(i, j, 0)`, vertex `5j + i`) without the squares
+/// at (1, 1) and (2, 2), then `extra` triangles (corners appended after the grid's): the build
+/// splits vertex 12 at (2, 2), where the two squares meet, into two copies, one per fan, and the
+/// two squares make one hole whose boundary passes twice through (2, 2).
+fn figure_eight_hole(extra: &[[f64; 3]]) -> Mesh {
+    let mut positions: Vec<[f64; 3]> = (0..25)
+        .map(|k| [f64::from(k % 5), f64::from(k / 5), 0.0])
+        .collect();
+    let mut indices = Vec::new();
+    for (i, j) in (0..4u32).flat_map(|j| (0..4u32).map(move |i| (i, j))) {
+        if (i, j) != (1, 1) && (i, j) != (2, 2) {
+            let v = 5 * j + i;
+            indices.extend([v, v + 1, v + 6, v, v + 6, v + 5]);
+        }
+    }
+    for corners in extra.chunks(3) {
+        indices.extend((0..3).map(|k| (positions.len() + k) as u32));
+        positions.extend_from_slice(corners);
+    }
+    let (mesh, diagnostic) = Mesh::from_face_list(
+        &FaceList::triangles(&positions, &indices),
+        BuildPolicy::Repair,
+    )
+    .unwrap();
+    assert_eq!(diagnostic.vertex_copies.len(), 1);
+    let lengths: Vec<usize> = mesh
+        .boundary_loops()
+        .iter()
+        .map(|&h| mesh.halfedge_loop(h).count())
+        .collect();
+    assert!(lengths.contains(&8), "{lengths:?}");
+    mesh
+}
+
+/// Holes only up to the figure eight's 8 edges (the grid's outer border has 16).
+const INNER_HOLES: HoleFillOptions = HoleFillOptions {
+    max_edges: 8,
+    max_perimeter: f64::INFINITY,
+};
+
+#[test]
+fn a_hole_through_one_point_twice_is_filled_as_two() {
+    let mut mesh = figure_eight_hole(&[]);
+    let vertices = mesh.n_vertices();
+    let report = fill_holes(&mut mesh, &INNER_HOLES).unwrap();
+    assert_eq!(report.filled.len(), 2);
+    assert!(report.filled.iter().all(|h| h.edges == 4));
+    assert!(report.refused.is_empty(), "{:?}", report.refused);
+    assert_eq!(report.faces_added(), 4);
+    assert_eq!(report.welded_vertices.len(), 1);
+    let [gone, kept] = report.welded_vertices[0];
+    assert_eq!(mesh.position(kept), [2.0, 2.0, 0.0]);
+    assert!(mesh.is_vertex_deleted(gone));
+    mesh.check().unwrap();
+    assert_eq!(mesh.n_vertices(), vertices - 1);
+    assert!(mesh.non_manifold_vertices().is_empty());
+    assert_eq!(
+        mesh.boundary_loops().len(),
+        1,
+        "only the outer border is left"
+    );
+    let faces: Vec<FaceId> = report.filled.iter().flat_map(|h| h.faces.clone()).collect();
+    assert_not_folded(&mesh, &faces);
+}
+
+#[test]
+fn a_hole_through_one_point_twice_is_left_whole_when_no_part_fills() {
+    // A vertical triangle through both squares: every fill of either part crosses it.
+    let blade = [[1.2, 1.2, -1.0], [2.8, 2.8, -1.0], [2.0, 2.0, 1.0]];
+    let mut mesh = figure_eight_hole(&blade);
+    let before = shape(&mesh);
+    let loops = mesh.boundary_loops();
+    let report = fill_holes(&mut mesh, &INNER_HOLES).unwrap();
+    assert!(report.filled.is_empty());
+    assert!(report.welded_vertices.is_empty());
+    // Refused once, as one hole (the blade's own border, a flat triangle's, is refused too).
+    let crossing: Vec<HalfedgeId> = report
+        .refused
+        .iter()
+        .filter(|(_, why)| matches!(why, FillError::SelfIntersecting))
+        .map(|&(h, _)| h)
+        .collect();
+    assert_eq!(crossing.len(), 1, "{:?}", report.refused);
+    assert_eq!(mesh.halfedge_loop(crossing[0]).count(), 8);
+    assert_eq!(report.refused.len(), 2);
+    let refused: Vec<HalfedgeId> = report.refused.iter().map(|r| r.0).collect();
+    assert_eq!(refused, loops[1..], "the outer border is beyond the bounds");
+    assert_eq!(shape(&mesh), before);
+    assert_eq!(mesh.boundary_loops(), loops);
+    mesh.check().unwrap();
 }
