@@ -6,6 +6,7 @@ use super::crossing_order::{bisector_meets, compare_crossings, crosses_edge};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::exact_cell::cell_has_interior;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
 use crate::soup::PolygonSoup;
@@ -421,9 +422,11 @@ impl Voronoi {
                     cell_pieces.extend(sides.iter().map(|&side| piece(side)));
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
-                    // Fewer than three corners: the cell meets the region only along its
-                    // boundary, in a segment or a point (see `ClippedCells`).
-                    if local.len() - first < 3 {
+                    // Fewer than three corners, or corners in a line that are the rounding of
+                    // no interior: the cell meets the region only along its boundary, in a
+                    // segment or a point (see `ClippedCells`).
+                    if local.len() - first < 3 || !self.has_interior(s, &sides, &local[first..], &b)
+                    {
                         local.truncate(first);
                     }
                     !sides.is_empty()
@@ -471,6 +474,38 @@ impl Voronoi {
             indices,
             clip: clip.clone(),
         }
+    }
+
+    /// Does the assembled cell `cell` of `site` (with sides `sides`) have an interior? Its area
+    /// in floating point says so when it is not zero; a zero area is decided exactly.
+    fn has_interior(&self, site: u32, sides: &[Side], cell: &[u32], b: &Builder) -> bool {
+        let points = cell.iter().map(|&i| b.positions[i as usize]);
+        let origin = b.positions[cell[0] as usize];
+        let (mut twice_area, mut previous) = (0.0, origin);
+        for p in points.skip(1) {
+            let (u, w) = (
+                [0, 1].map(|k| previous[k] - origin[k]),
+                [0, 1].map(|k| p[k] - origin[k]),
+            );
+            twice_area += u[0] * w[1] - u[1] * w[0];
+            previous = p;
+        }
+        if twice_area != 0.0 {
+            return true;
+        }
+        let neighbours: Vec<[f64; 2]> = sides
+            .iter()
+            .map(|side| {
+                let ends = self.edge_ends(side.edge);
+                let other = if ends.left == site {
+                    ends.right
+                } else {
+                    ends.left
+                };
+                b.input.sites[other as usize]
+            })
+            .collect();
+        cell_has_interior(b.input.sites[site as usize], &neighbours, b.input.corners)
     }
 
     /// Gives every Voronoi vertex inside the region (closed test; the same test decides every

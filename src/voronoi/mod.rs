@@ -22,6 +22,7 @@ mod dcel;
 mod delaunay;
 mod diagram;
 mod error;
+mod exact_cell;
 mod exact_distance;
 mod expansion;
 mod incremental;
