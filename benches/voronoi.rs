@@ -1,7 +1,7 @@
 //! Delaunay and clipped-Voronoi construction times on 10k, 100k and 1M uniform random sites and
 //! on the 1000×1000 integer grid (the inputs of issue 5's benchmark table).
 //!
-//! Run: `cargo bench --bench voronoi`. The triangulation is single-threaded; the Voronoi dual and
+//! Run: `cargo bench --bench voronoi` (`-- voronoi_clip/` for the clipping alone). The triangulation is single-threaded; the Voronoi dual and
 //! the clipping run their per-element passes on rayon's pool (the `parallel` feature).
 
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
@@ -61,6 +61,16 @@ fn bench(c: &mut Criterion) {
                 |d| black_box(Voronoi::from_delaunay(d).clip(clip)),
                 BatchSize::LargeInput,
             )
+        });
+    }
+    group.finish();
+    // The clipping alone, from a finished diagram: 100k and 1M sites in their box.
+    let mut group = c.benchmark_group("voronoi_clip");
+    group.sample_size(10);
+    for (name, sites, clip) in inputs.iter().filter(|(_, s, _)| s.len() >= 100_000) {
+        let diagram = Voronoi::new(sites).expect("finite sites");
+        group.bench_with_input(BenchmarkId::from_parameter(name), clip, |b, clip| {
+            b.iter(|| black_box(diagram.clip(black_box(clip))))
         });
     }
     group.finish();

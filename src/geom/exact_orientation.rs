@@ -237,18 +237,33 @@ fn wide_orient2d(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Sign {
 /// The finite `values` as integers, all multiplied by one power of two (the smallest unit among
 /// them), so that their differences and products keep the signs of the values'.
 pub(crate) fn integers<const N: usize>(values: [f64; N]) -> [WideInteger; N] {
-    let parts = values.map(dyadic);
-    let unit = parts
+    let unit = smallest_unit(&values);
+    values.map(|x| integer_in_unit(x, unit))
+}
+
+/// [`integers`] of any number of values.
+pub(crate) fn integer_list(values: &[f64]) -> Vec<WideInteger> {
+    let unit = smallest_unit(values);
+    values.iter().map(|&x| integer_in_unit(x, unit)).collect()
+}
+
+/// The exponent of the smallest unit among the non-zero `values` (0 when there are none).
+fn smallest_unit(values: &[f64]) -> i32 {
+    values
         .iter()
-        .filter(|&&(_, mantissa, _)| mantissa != 0)
-        .map(|&(_, _, exponent)| exponent)
+        .map(|&x| dyadic(x))
+        .filter(|&(_, mantissa, _)| mantissa != 0)
+        .map(|(_, _, exponent)| exponent)
         .min()
-        .unwrap_or(0);
-    parts.map(|(negative, mantissa, exponent)| {
-        // Exponents of finite doubles lie in [-1074, 971]: the shift is below 2^12.
-        let shift = if mantissa == 0 { 0 } else { exponent - unit };
-        WideInteger::from_dyadic(negative, mantissa, shift as u32)
-    })
+        .unwrap_or(0)
+}
+
+/// `x` as an integer multiple of `2^unit` (`unit` at most its own exponent).
+fn integer_in_unit(x: f64, unit: i32) -> WideInteger {
+    let (negative, mantissa, exponent) = dyadic(x);
+    // Exponents of finite doubles lie in [-1074, 971]: the shift is below 2^12.
+    let shift = if mantissa == 0 { 0 } else { exponent - unit };
+    WideInteger::from_dyadic(negative, mantissa, shift as u32)
 }
 
 /// A finite `x` as `±mantissa · 2^exponent` with an odd mantissa (or zero).

@@ -10,8 +10,8 @@ pub struct ClipPolygon {
     /// `edges[i]` runs from vertex `i` to the next: the edge functions of every Voronoi vertex
     /// read them, so they are computed once here.
     edges: Vec<[f64; 2]>,
-    /// Half of every edge with each axis times its own power of two (`axis_units`), which brings
-    /// the longest extent along that axis near 1: edge functions (an edge times an offset)
+    /// Half of every edge with each axis times its own power of two (`side_units`), which brings
+    /// the longest extent along that axis near 1 (see [`scaled_half_difference`]): edge functions (an edge times an offset)
     /// neither overflow nor underflow for regions of any size or shape (a box `1e-323` wide and
     /// `1` tall). Scaling each axis by a positive factor multiplies every edge function by one
     /// and the same positive number, so their signs and ratios are kept.
@@ -61,7 +61,7 @@ impl ClipPolygon {
         }
         // The sign of the area, from vertices whose axes are brought near 1 by powers of two
         // (which keeps the sign): the area itself may under- or overflow for a valid region.
-        let units = axis_units(&v);
+        let units = point_units(&v);
         let signed_area = shoelace(
             &v.iter()
                 .map(|p| [p[0] * units[0], p[1] * units[1]])
@@ -106,19 +106,26 @@ impl ClipPolygon {
             return Err(VoronoiError::NonConvexClip { vertex: 0 });
         }
         let area = shoelace(&v);
-        let edges: Vec<[f64; 2]> = (0..n)
-            .map(|i| {
-                let (a, b) = (v[i], v[(i + 1) % n]);
-                // Halves first: a side from -1e308 to 1e308 stays finite.
-                [0.5 * b[0] - 0.5 * a[0], 0.5 * b[1] - 0.5 * a[1]]
+        let sides: Vec<[[f64; 2]; 2]> = (0..n).map(|i| [v[i], v[(i + 1) % n]]).collect();
+        let units = side_units(&sides);
+        let unit_edges = sides
+            .iter()
+            .map(|&[a, b]| [0, 1].map(|k| scaled_half_difference(b[k], a[k], units[k])))
+            .collect();
+        let edges = sides
+            .iter()
+            .map(|&[a, b]| {
+                [0, 1].map(|k| {
+                    let d = b[k] - a[k];
+                    // Halves first where the side spans more than the doubles' range.
+                    if d.is_finite() {
+                        d
+                    } else {
+                        2.0 * (0.5 * b[k] - 0.5 * a[k])
+                    }
+                })
             })
             .collect();
-        let units = axis_units(&edges);
-        let unit_edges = edges
-            .iter()
-            .map(|e| [e[0] * units[0], e[1] * units[1]])
-            .collect();
-        let edges = edges.iter().map(|e| e.map(|x| 2.0 * x)).collect();
         Ok(ClipPolygon {
             vertices: v,
             edges,
@@ -166,7 +173,7 @@ impl ClipPolygon {
     #[inline(always)]
     pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
         let e = self.unit_edges[i];
-        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, 0.5 * d[k]));
+        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, d[k], 0.0));
         e[0] * dy - e[1] * dx
     }
 
@@ -181,22 +188,23 @@ impl ClipPolygon {
         } else {
             1
         };
-        (0.5 * x[k] - 0.5 * a[k]) / (e[k] / self.axis_units[k])
+        scaled_half_difference(x[k], a[k], self.axis_units[k]) / e[k]
     }
 
     /// Edge function of `p` for the edge from `a` along the scaled half-edge `e`.
     #[inline(always)]
     fn half_plane(&self, a: [f64; 2], e: [f64; 2], p: [f64; 2]) -> f64 {
-        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, 0.5 * p[k] - 0.5 * a[k]));
+        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, p[k], a[k]));
         e[0] * dy - e[1] * dx
     }
 
-    /// `d` along axis `k` in the scaled frame of `unit_edges`, kept within `±1e300` so that the
-    /// edge functions of points astronomically far from the region stay finite (their sign is
-    /// all that is read of them).
+    /// Half of `to - from` along axis `k` in the scaled frame of `unit_edges`, kept within
+    /// `±1e300` so that the edge functions of points astronomically far from the region stay
+    /// finite (their sign is all that is read of them).
     #[inline(always)]
-    fn scaled_offset(&self, k: usize, d: f64) -> f64 {
-        (d * self.axis_units[k]).clamp(-FARTHEST_OFFSET, FARTHEST_OFFSET)
+    fn scaled_offset(&self, k: usize, to: f64, from: f64) -> f64 {
+        scaled_half_difference(to, from, self.axis_units[k])
+            .clamp(-FARTHEST_OFFSET, FARTHEST_OFFSET)
     }
 
     /// The vector from vertex `i` to the next.
@@ -215,8 +223,39 @@ impl ClipPolygon {
 /// finite.
 const FARTHEST_OFFSET: f64 = 1.0e300;
 
-/// Per axis, the power of two that brings the largest magnitude of `points` along it near 1.
-fn axis_units(points: &[[f64; 2]]) -> [f64; 2] {
+/// Per axis, the power of two that brings the longest of the sides `[a, b]` near 1: their
+/// whole extent where it is finite, half of it where it overflows.
+fn side_units(sides: &[[[f64; 2]; 2]]) -> [f64; 2] {
+    [0, 1].map(|k| {
+        let full = sides
+            .iter()
+            .fold(0.0_f64, |m, [a, b]| m.max((b[k] - a[k]).abs()));
+        let largest = if full.is_finite() {
+            full
+        } else {
+            sides
+                .iter()
+                .fold(0.0_f64, |m, [a, b]| m.max((0.5 * b[k] - 0.5 * a[k]).abs()))
+        };
+        normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]])
+    })
+}
+
+/// `(b - a) / 2` times the power of two `unit`: from the difference itself where it is finite
+/// (halving first would round a difference of one subnormal to zero, and every edge function of
+/// a region that narrow to 0), from the halves where it overflows.
+#[inline(always)]
+pub(crate) fn scaled_half_difference(b: f64, a: f64, unit: f64) -> f64 {
+    let d = b - a;
+    if d.is_finite() {
+        (d * unit) * 0.5
+    } else {
+        (0.5 * b - 0.5 * a) * unit
+    }
+}
+
+/// Per axis, the power of two that brings the largest magnitude of `points` near 1.
+fn point_units(points: &[[f64; 2]]) -> [f64; 2] {
     [0, 1].map(|k| {
         let largest = points.iter().fold(0.0_f64, |m, p| m.max(p[k].abs()));
         normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]])
@@ -288,6 +327,20 @@ mod tests {
             .unwrap();
         assert_eq!(p.vertices().len(), 4);
         assert_eq!(p.area(), 1.0);
+    }
+
+    #[test]
+    fn a_region_one_subnormal_wide_tells_inside_from_outside() {
+        // Halving a side one subnormal long rounded it to zero: every edge function was 0 and
+        // every point of the plane inside.
+        let tiny = f64::from_bits(1);
+        let r = ClipPolygon::rectangle([0.0, 0.0], [tiny, 1.0]).unwrap();
+        assert!(r.contains([0.0, 0.5]) && r.contains([tiny, 1.0]));
+        assert!(!r.contains([2.0 * tiny, 0.5]) && !r.contains([-tiny, 0.5]));
+        assert!(!r.contains([0.0, 2.0]) && !r.contains([0.0, -1.0]));
+        assert!(r.edge_function(0, [0.0, 0.5]) > 0.0);
+        assert!(r.edge_rate(1, [-1.0, 0.0]) > 0.0);
+        assert_eq!(r.edge_parameter(0, [tiny, 0.0]), 1.0);
     }
 
     #[test]

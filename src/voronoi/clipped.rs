@@ -2,13 +2,16 @@
 
 use super::cell_sides::Side;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
+use super::crossing_order::{bisector_meets, compare_crossings, crosses_edge};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::exact_cell::cell_has_interior;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
 use crate::soup::PolygonSoup;
 use crate::support::large_arrays;
+use std::cmp::Ordering;
 
 /// Every cell of a Voronoi diagram clipped to a convex polygon.
 ///
@@ -18,6 +21,14 @@ use crate::support::large_arrays;
 /// Each edge is clipped once for both of its cells, so neighbours always agree. Cells are
 /// counter-clockwise and indexed by site; a site whose cell misses the region (possible for sites
 /// outside it) and every duplicate site have an empty polygon.
+///
+/// A cell is the part of the region nearest to its site, and it is listed when that part has an
+/// interior, however thin: a cell that meets the region only along its boundary (in a segment or
+/// a point) is empty, and every other cell has at least three positions. Where a cell is
+/// narrower than the spacing of doubles there (sites an ulp apart far from the origin, or far
+/// closer together than the region is wide), it keeps its own positions, in their exact order
+/// along the region's boundary, but some of them may coincide once rounded: such a cell has zero
+/// area in floating point and is never clockwise.
 #[derive(Clone, Debug)]
 pub struct ClippedCells {
     positions: Vec<[f64; 2]>,
@@ -26,16 +37,43 @@ pub struct ClippedCells {
     clip: ClipPolygon,
 }
 
-/// A point on the clip boundary: edge index and parameter in `[0, 1)` along it.
+/// A point on the clip boundary: edge index, parameter in `[0, 1]` along it, what lies there,
+/// and its rank in the order along the edge (see [`Builder::order_crossings`]).
 #[derive(Clone, Copy, Debug)]
 struct Perimeter {
     edge: u32,
     t: f64,
+    kind: PerimeterKind,
+    rank: u32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum PerimeterKind {
+    /// The corner at the start of the edge (`t = 0`).
+    Corner,
+    /// Where the bisector of these two sites crosses the edge, strictly after its start corner
+    /// even where `t` rounds to 0, and ordered exactly among crossings of close `t`.
+    Bisector([u32; 2]),
+    /// A Voronoi vertex lying on the edge (in floating point).
+    Vertex,
+}
+
+/// Crossings on one edge whose parameters lie within this of each other (in a chain) are ordered
+/// exactly: their rounded parameters may be equal or in the wrong order.
+const EXACT_ORDER_BAND: f64 = 1.0e-6;
+
+/// The sites and the region's corners in the input's own coordinates, where the exact order of
+/// crossings is decided (clipping may run in a local frame; see `clip_frame`).
+#[derive(Clone, Copy)]
+struct InputPlaces<'a> {
+    sites: &'a [[f64; 2]],
+    corners: &'a [[f64; 2]],
 }
 
 /// Positions under construction: `[corners][Voronoi vertices inside][boundary crossings]`.
 struct Builder<'a> {
     clip: &'a ClipPolygon,
+    input: InputPlaces<'a>,
     reach: Reach,
     positions: Vec<[f64; 2]>,
     first_crossing: usize,
@@ -81,6 +119,8 @@ impl Builder<'_> {
             Some(Perimeter {
                 edge: p as u32,
                 t: 0.0,
+                kind: PerimeterKind::Corner,
+                rank: 0,
             })
         } else if p >= self.first_crossing {
             Some(self.crossings[p - self.first_crossing])
@@ -89,39 +129,185 @@ impl Builder<'_> {
         }
     }
 
-    /// Adds the crossing of clip edge `edge` near `x`, snapped onto the edge (or onto a corner).
-    fn crossing(&mut self, edge: usize, x: [f64; 2]) -> u32 {
+    /// Adds the point of clip edge `edge` near `x`, snapped onto the edge: where the bisector of
+    /// `sites` crosses it, or a Voronoi vertex (`sites` is `None`). A crossing goes onto a corner
+    /// only when it lies exactly there: one whose parameter merely rounds to a corner is kept
+    /// as a point of its own at the corner's position (see [`ClippedCells`]).
+    fn crossing(&mut self, edge: usize, x: [f64; 2], sites: Option<[u32; 2]>) -> u32 {
         let m = self.clip.vertices().len();
-        let a = self.clip.vertices()[edge];
-        let e = self.clip.edge_vector(edge);
         let t = self.clip.edge_parameter(edge, x).clamp(0.0, 1.0);
-        if t == 0.0 {
+        let at_corner = |corner: usize| {
+            sites.is_none_or(|[p, q]| {
+                let sites = self.input.sites;
+                bisector_meets(
+                    self.input.corners[corner],
+                    [sites[p as usize], sites[q as usize]],
+                )
+            })
+        };
+        if t == 0.0 && at_corner(edge) {
             return edge as u32;
         }
-        if t == 1.0 {
+        if t == 1.0 && at_corner((edge + 1) % m) {
             return ((edge + 1) % m) as u32;
         }
-        self.positions.push([a[0] + t * e[0], a[1] + t * e[1]]);
+        self.positions.push(self.edge_point(edge, t));
         self.crossings.push(Perimeter {
             edge: edge as u32,
             t,
+            kind: sites.map_or(PerimeterKind::Vertex, PerimeterKind::Bisector),
+            rank: 0,
         });
         (self.positions.len() - 1) as u32
+    }
+
+    /// The point at parameter `t` along clip edge `edge`: the corners themselves at the ends
+    /// (`a + e` may round off a corner far smaller than the edge), and monotone in `t`.
+    fn edge_point(&self, edge: usize, t: f64) -> [f64; 2] {
+        let corners = self.clip.vertices();
+        let a = corners[edge];
+        let e = self.clip.edge_vector(edge);
+        if t == 0.0 {
+            a
+        } else if t == 1.0 {
+            corners[(edge + 1) % corners.len()]
+        } else {
+            [a[0] + t * e[0], a[1] + t * e[1]]
+        }
+    }
+
+    /// Ranks the crossings along each edge. They are sorted by parameter; runs of crossings
+    /// within [`EXACT_ORDER_BAND`] of each other, where rounding may have swapped or merged
+    /// them, are sorted again by the exact order of their bisectors, and their parameters and
+    /// positions made monotone in that order, so that no cell between two of them is clockwise.
+    /// Crossings at the same place share a rank. O(k log k) for k crossings; the exact
+    /// arithmetic runs only inside such runs.
+    fn order_crossings(&mut self) {
+        let keys: Vec<(u32, f64)> = self.crossings.iter().map(|c| (c.edge, c.t)).collect();
+        let mut order: Vec<u32> = (0..keys.len() as u32).collect();
+        let key = |i: u32| keys[i as usize];
+        order.sort_unstable_by(|&i, &j| {
+            let ((e, t), (f, u)) = (key(i), key(j));
+            e.cmp(&f).then(t.total_cmp(&u))
+        });
+        let mut ranks = vec![0u32; order.len()];
+        let mut start = 0;
+        while start < order.len() {
+            let (edge, _) = key(order[start]);
+            let mut end = start + 1;
+            while end < order.len() && {
+                let ((e, t), (_, previous)) = (key(order[end]), key(order[end - 1]));
+                e == edge && t - previous <= EXACT_ORDER_BAND
+            } {
+                end += 1;
+            }
+            let run = &mut order[start..end];
+            let exact = run.len() > 1 && self.sort_exactly(edge as usize, run);
+            for k in 0..run.len() {
+                let (i, rank) = (run[k] as usize, (start + k + 1) as u32);
+                ranks[i] = rank;
+                if k > 0 {
+                    let previous = run[k - 1] as usize;
+                    let same_place = if exact {
+                        self.exact_order(edge as usize, previous, i) == Ordering::Equal
+                    } else {
+                        self.crossings[previous].t == self.crossings[i].t
+                    };
+                    if same_place {
+                        ranks[i] = ranks[previous];
+                    }
+                }
+            }
+            if exact {
+                self.make_monotone(edge as usize, run);
+            }
+            start = end;
+        }
+        for (crossing, rank) in self.crossings.iter_mut().zip(ranks) {
+            crossing.rank = rank;
+        }
+    }
+
+    /// Sorts `run` (crossings of edge `edge`) by the exact order of their bisectors; `false`
+    /// (and `run` left as it is) when one is not a bisector crossing or is parallel to the edge.
+    #[cold]
+    fn sort_exactly(&self, edge: usize, run: &mut [u32]) -> bool {
+        let ends = self.input_edge(edge);
+        let all_cross = run.iter().all(|&i| {
+            self.input_sites(i as usize)
+                .is_some_and(|sites| crosses_edge(ends, sites))
+        });
+        if all_cross {
+            run.sort_by(|&i, &j| self.exact_order(edge, i as usize, j as usize));
+        }
+        all_cross
+    }
+
+    /// The exact order of crossings `i` and `j` of edge `edge`, both bisector crossings that
+    /// are not parallel to it.
+    fn exact_order(&self, edge: usize, i: usize, j: usize) -> Ordering {
+        let (first, second) = (self.input_sites(i), self.input_sites(j));
+        first
+            .zip(second)
+            .and_then(|(first, second)| compare_crossings(self.input_edge(edge), first, second))
+            .unwrap_or(Ordering::Equal)
+    }
+
+    /// Parameters and positions of `run` (crossings of edge `edge` in their exact order) made
+    /// non-decreasing.
+    fn make_monotone(&mut self, edge: usize, run: &[u32]) {
+        let mut lowest = 0.0_f64;
+        for &i in run {
+            let i = i as usize;
+            let t = self.crossings[i].t;
+            if t < lowest {
+                self.crossings[i].t = lowest;
+                self.positions[self.first_crossing + i] = self.edge_point(edge, lowest);
+            }
+            lowest = lowest.max(t);
+        }
+    }
+
+    /// The two sites of crossing `i` in the input's coordinates, if it is a bisector crossing.
+    fn input_sites(&self, i: usize) -> Option<[[f64; 2]; 2]> {
+        match self.crossings[i].kind {
+            PerimeterKind::Bisector(sites) => Some(sites.map(|s| self.input.sites[s as usize])),
+            _ => None,
+        }
+    }
+
+    /// The corners that edge `edge` runs between, in the input's coordinates.
+    fn input_edge(&self, edge: usize) -> [[f64; 2]; 2] {
+        let m = self.input.corners.len();
+        [edge, (edge + 1) % m].map(|k| self.input.corners[k])
+    }
+
+    /// Is `to` at or after `from`, both on the same edge?
+    fn is_at_or_after(&self, from: Perimeter, to: Perimeter) -> bool {
+        match (from.kind, to.kind) {
+            (_, PerimeterKind::Corner) => from.kind == PerimeterKind::Corner,
+            (PerimeterKind::Corner, _) => true,
+            _ => to.rank >= from.rank,
+        }
     }
 
     /// Corners met going counter-clockwise along the boundary strictly after `from` and strictly
     /// before `to` (both on the perimeter).
     fn corners_between(&self, from: Perimeter, to: Perimeter, out: &mut Vec<u32>) {
         let m = self.clip.vertices().len() as u32;
-        let steps = if from.edge == to.edge && to.t >= from.t {
+        let steps = if from.edge == to.edge && self.is_at_or_after(from, to) {
             0
         } else {
             let mut s = (to.edge + m - from.edge) % m;
             if s == 0 {
                 s = m;
             }
-            // Corner `to.edge` is `to` itself when `to` sits at the start of its edge.
-            if to.t == 0.0 { s - 1 } else { s }
+            // Corner `to.edge` is `to` itself when `to` is that corner.
+            if to.kind == PerimeterKind::Corner {
+                s - 1
+            } else {
+                s
+            }
         };
         for k in 1..=steps {
             out.push((from.edge + k) % m);
@@ -133,20 +319,28 @@ impl Voronoi {
     /// Clips every cell to `clip` (see [`ClippedCells`]).
     pub fn clip(&self, clip: &ClipPolygon) -> ClippedCells {
         let region_owner = || self.owner_of(clip.centroid());
-        let Some(local) = self.local_clip_frame(clip) else {
-            return self.clip_in_own_frame(clip, region_owner);
+        let input = InputPlaces {
+            sites: self.delaunay.sites(),
+            corners: clip.vertices(),
         };
-        let mut cells = local.diagram.clip_in_own_frame(&local.clip, region_owner);
+        let Some(local) = self.local_clip_frame(clip) else {
+            return self.clip_in_own_frame(clip, input, region_owner);
+        };
+        let mut cells = local
+            .diagram
+            .clip_in_own_frame(&local.clip, input, region_owner);
         local.to_diagram(&mut cells.positions, clip.vertices());
         cells.clip = clip.clone();
         cells
     }
 
-    /// [`Voronoi::clip`] in the diagram's coordinates; `region_owner` gives the site whose cell
-    /// holds the whole region when no edge reaches it.
+    /// [`Voronoi::clip`] in the diagram's coordinates; `input` has the sites and corners in the
+    /// input's coordinates (the same as the diagram's, or those it is a local frame of);
+    /// `region_owner` gives the site whose cell holds the whole region when no edge reaches it.
     fn clip_in_own_frame(
         &self,
         clip: &ClipPolygon,
+        input: InputPlaces,
         region_owner: impl Fn() -> u32,
     ) -> ClippedCells {
         let m = clip.vertices().len();
@@ -157,6 +351,7 @@ impl Voronoi {
         positions.extend_from_slice(clip.vertices());
         let mut b = Builder {
             clip,
+            input,
             reach: Reach::of(clip),
             positions,
             first_crossing: 0,
@@ -176,6 +371,7 @@ impl Voronoi {
                 )
             })
             .collect();
+        b.order_crossings();
         // A side with both ends placed is its own piece.
         let placed_piece = |side: Side| -> Option<[u32; 2]> {
             if side.from == INVALID || side.to == INVALID {
@@ -226,6 +422,13 @@ impl Voronoi {
                     cell_pieces.extend(sides.iter().map(|&side| piece(side)));
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
+                    // Fewer than three corners, or corners in a line that are the rounding of
+                    // no interior: the cell meets the region only along its boundary, in a
+                    // segment or a point (see `ClippedCells`).
+                    if local.len() - first < 3 || !self.has_interior(s, &sides, &local[first..], &b)
+                    {
+                        local.truncate(first);
+                    }
                     !sides.is_empty()
                 };
                 if has_sides {
@@ -273,6 +476,38 @@ impl Voronoi {
         }
     }
 
+    /// Does the assembled cell `cell` of `site` (with sides `sides`) have an interior? Its area
+    /// in floating point says so when it is not zero; a zero area is decided exactly.
+    fn has_interior(&self, site: u32, sides: &[Side], cell: &[u32], b: &Builder) -> bool {
+        let points = cell.iter().map(|&i| b.positions[i as usize]);
+        let origin = b.positions[cell[0] as usize];
+        let (mut twice_area, mut previous) = (0.0, origin);
+        for p in points.skip(1) {
+            let (u, w) = (
+                [0, 1].map(|k| previous[k] - origin[k]),
+                [0, 1].map(|k| p[k] - origin[k]),
+            );
+            twice_area += u[0] * w[1] - u[1] * w[0];
+            previous = p;
+        }
+        if twice_area != 0.0 {
+            return true;
+        }
+        let neighbours: Vec<[f64; 2]> = sides
+            .iter()
+            .map(|side| {
+                let ends = self.edge_ends(side.edge);
+                let other = if ends.left == site {
+                    ends.right
+                } else {
+                    ends.left
+                };
+                b.input.sites[other as usize]
+            })
+            .collect();
+        cell_has_interior(b.input.sites[site as usize], &neighbours, b.input.corners)
+    }
+
     /// Gives every Voronoi vertex inside the region (closed test; the same test decides every
     /// edge) a position, and returns the vertex → position map ([`INVALID`] outside) and the
     /// list of vertices outside. Those exactly on the boundary become perimeter points (or the
@@ -306,7 +541,7 @@ impl Voronoi {
             } else if zero(i + m - 1) {
                 i as u32
             } else {
-                b.crossing(i, p)
+                b.crossing(i, p, None)
             };
         }
         (vertex_position, outside)
@@ -325,6 +560,7 @@ impl Voronoi {
         let clip = b.clip;
         let m = clip.vertices().len();
         let (o, t) = (ends.from, ends.to);
+        let sites = Some([ends.left, ends.right]);
         // Parametrise as base + s·dir with s in [lo, hi]; the finite end (if any) is at s = 0.
         // An in-ray (from infinity) is clipped as the ray from its finite end, then reversed.
         let (base, dir, far, mut lo, mut hi, reversed) = match self.near_geometry(ends, b.reach) {
@@ -395,13 +631,13 @@ impl Voronoi {
             let v = if reversed { t } else { o };
             vertex_position.get(v as usize).copied().unwrap_or(INVALID)
         } else {
-            b.crossing(enter, at(lo))
+            b.crossing(enter, at(lo), sites)
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if exit == usize::MAX {
             vertex_position.get(t as usize).copied().unwrap_or(INVALID)
         } else {
-            b.crossing(exit, at(hi))
+            b.crossing(exit, at(hi), sites)
         };
         if start == INVALID || end == INVALID || start == end {
             return NONE;
@@ -566,4 +802,64 @@ fn unit_direction(direction: [f64; 2]) -> [f64; 2] {
     let largest = direction[0].abs().max(direction[1].abs());
     let unit = normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]]);
     direction.map(|x| x * unit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every cell counter-clockwise (in floating point: zero area allowed) and made of at least
+    /// three positions or none, and the areas summing to the region's.
+    fn check_tiling(cells: &ClippedCells, clip: &ClipPolygon) {
+        let mut total = 0.0;
+        for site in 0..cells.n_cells() as u32 {
+            let cell = cells.cell(site).unwrap();
+            assert!(cell.is_empty() || cell.len() >= 3, "cell {site}: {cell:?}");
+            let area = cells.cell_area(site).unwrap();
+            assert!(area >= 0.0, "cell {site} clockwise: {area}");
+            total += area;
+        }
+        assert!(
+            (total - clip.area()).abs() <= 1e-9 * clip.area(),
+            "{total} vs {}",
+            clip.area()
+        );
+    }
+
+    #[test]
+    fn parallel_cells_far_narrower_than_an_ulp_stay_counter_clockwise() {
+        // Collinear sites a few units apart on the diagonal and one 1e117 out along it: the
+        // cells of the near sites are parallel strips crossing the region's corner 1e100 times
+        // narrower than an ulp there, whose crossings rounded out of order (one cell covered
+        // the region twice, others came out clockwise).
+        let sites = [
+            [45.0, -45.0],
+            [-18.0, 18.0],
+            [3.0, -3.0],
+            [12.0, -12.0],
+            [-57.0, 57.0],
+            [-4.500000000000001e117, 4.500000000000001e117],
+        ];
+        let clip = ClipPolygon::rectangle(
+            [-4.9500000000000014e117, -4.5000000000000016e116],
+            [4.5000000000000016e116, 4.9500000000000014e117],
+        )
+        .unwrap();
+        let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+        check_tiling(&cells, &clip);
+        for site in 0..sites.len() as u32 {
+            assert!(cells.cell(site).unwrap().len() >= 3, "cell {site}");
+        }
+    }
+
+    #[test]
+    fn a_cell_meeting_the_region_along_its_side_only_is_empty() {
+        // The bisector of the two sites above the region is its top side: the upper site's
+        // cell meets the region in that segment only.
+        let sites = [[0.5, 0.5], [0.5, 1.5], [0.25, -1.0]];
+        let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap();
+        let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+        check_tiling(&cells, &clip);
+        assert!(cells.cell(1).unwrap().is_empty());
+    }
 }

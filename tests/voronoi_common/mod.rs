@@ -3,9 +3,13 @@
 
 use halfwing::voronoi::predicates::{incircle, orient2d};
 use halfwing::voronoi::{
-    ClipPolygon, Delaunay, Dimension, EdgeGeometry, INVALID, Voronoi, polygon_area_centroid,
+    ClipPolygon, Delaunay, Dimension, EdgeGeometry, INVALID, Metric, Voronoi, polygon_area_centroid,
 };
+use std::cmp::Ordering;
 use std::path::Path;
+
+mod exact_cells;
+use exact_cells::ExactPlane;
 
 #[path = "../../benches/common/points.rs"]
 mod points;
@@ -92,11 +96,17 @@ pub fn check_voronoi(v: &Voronoi) {
     }
 }
 
-/// Clipped cells: counter-clockwise, each distinct site inside the region lies in its own cell,
-/// areas sum to the region's area (1e-9 relative). Returns the cells' total area.
+/// Clipped cells: counter-clockwise; a cell for exactly the distinct sites whose part of the
+/// region has an interior, decided exactly (`exact_cells`), so a sliver far narrower than an ulp
+/// must be there and a cell meeting the region only along its boundary must not; each distinct
+/// site in the region (exact test) lies in its own cell; areas sum to the region's area (1e-9
+/// relative). Returns the cells' total area.
 pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
     let cells = v.clip(clip);
     let d = v.delaunay();
+    let corners = clip.vertices();
+    let exact = ExactPlane::new(d.sites(), corners);
+    let neighbours = delaunay_neighbours(d);
     let mut total = 0.0;
     for site in 0..d.n_sites() as u32 {
         let poly = cells.cell_polygon(site).unwrap();
@@ -104,11 +114,20 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
         assert!(area >= 0.0, "cell {site} clockwise");
         total += area;
         let p = d.sites()[site as usize];
-        if d.representative()[site as usize] == site && clip.contains(p) {
-            assert!(
-                poly.len() >= 3,
-                "site {site} inside the region has an empty cell"
-            );
+        if d.representative()[site as usize] != site {
+            assert!(poly.is_empty(), "duplicate site {site} has a cell");
+            continue;
+        }
+        let has_interior = exact.cell_has_interior(site as usize, neighbours(site));
+        assert_eq!(
+            !poly.is_empty(),
+            has_interior,
+            "site {site} at {p:?}: its part of the region has an interior: {has_interior}, \
+             its cell {poly:?}"
+        );
+        let m = corners.len();
+        let inside = (0..m).all(|i| orient2d(corners[i], corners[(i + 1) % m], p) >= 0.0);
+        if inside {
             let n = poly.len();
             let size = clip.area().sqrt();
             for i in 0..n {
@@ -134,9 +153,34 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
     total
 }
 
+/// The sites that decide each distinct site's cell: its Delaunay neighbours, or every other
+/// distinct site when there are no triangles (collinear sites).
+fn delaunay_neighbours(d: &Delaunay) -> impl Fn(u32) -> Vec<usize> + '_ {
+    let mut lists = vec![Vec::new(); d.n_sites()];
+    for t in d.triangles().chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            lists[a].push(b);
+            lists[b].push(a);
+        }
+    }
+    let planar = d.dimension() == Dimension::Plane;
+    move |site| {
+        if planar {
+            lists[site as usize].clone()
+        } else {
+            (0..d.n_sites())
+                .filter(|&s| s != site as usize && d.representative()[s] == s as u32)
+                .collect()
+        }
+    }
+}
+
 /// Points of an 8×8 grid across the region's bounding box (those inside it) lie in the cell of
 /// their nearest site, with the tolerance of the site test above (a point on a cell's side may
-/// go to either neighbour).
+/// go to either neighbour). A cell that meets the region only along its boundary is empty (see
+/// `ClippedCells`): a point there nearest to its site must be exactly as near to another site
+/// whose cell holds it.
 pub fn check_cells_hold_their_nearest_points(
     v: &Voronoi,
     cells: &halfwing::voronoi::ClippedCells,
@@ -161,20 +205,34 @@ pub fn check_cells_hold_their_nearest_points(
                 continue;
             };
             let poly = cells.cell_polygon(owner).unwrap();
-            let n = poly.len();
-            assert!(
-                n >= 3,
-                "point {q:?} is nearest to site {owner}, whose cell is empty"
-            );
-            for k in 0..n {
-                let o = orient2d(poly[k], poly[(k + 1) % n], q);
+            if poly.is_empty() {
+                let sites = v.delaunay().sites();
+                let tied_holder = (0..sites.len() as u32).find(|&s| {
+                    let ordering =
+                        Metric::Euclidean.compare(q, sites[s as usize], sites[owner as usize]);
+                    s != owner
+                        && ordering == Ordering::Equal
+                        && holds(&cells.cell_polygon(s).unwrap(), q, size)
+                });
                 assert!(
-                    o >= -1e-9 * size * size,
-                    "point {q:?} is nearest to site {owner} but outside its cell {poly:?}"
+                    tied_holder.is_some(),
+                    "point {q:?} is nearest to site {owner}, whose cell is empty"
                 );
+                continue;
             }
+            assert!(
+                holds(&poly, q, size),
+                "point {q:?} is nearest to site {owner} but outside its cell {poly:?}"
+            );
         }
     }
+}
+
+/// Does the counter-clockwise polygon `poly` (at least a triangle) hold `q`, to within 1e-9 of
+/// `size` squared?
+fn holds(poly: &[[f64; 2]], q: [f64; 2], size: f64) -> bool {
+    let n = poly.len();
+    n >= 3 && (0..n).all(|k| orient2d(poly[k], poly[(k + 1) % n], q) >= -1e-9 * size * size)
 }
 
 /// Bounding box of the points, widened by `margin` of its size, and by at least one ulp on
