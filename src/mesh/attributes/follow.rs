@@ -30,6 +30,14 @@ impl Mesh {
         self.attributes.vertex.blend(a.idx(), b.idx(), t, to.idx());
     }
 
+    /// Sets vertex `to`'s attributes to the mean of those of `from` (a vertex added inside
+    /// their triangle, as hole refinement adds them).
+    pub(crate) fn interpolate_vertex_attributes(&mut self, from: [VertexId; 3], to: VertexId) {
+        let [a, b, c] = from;
+        self.blend_vertex_attributes(a, b, 0.5, to);
+        self.blend_vertex_attributes(to, c, 1.0 / 3.0, to);
+    }
+
     pub(in crate::mesh) fn copy_halfedge_attributes(&mut self, from: HalfedgeId, to: HalfedgeId) {
         self.attributes.halfedge.copy(from.idx(), to.idx());
     }
