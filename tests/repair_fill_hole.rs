@@ -305,6 +305,7 @@ fn size_limits_choose_the_holes() {
         &HoleFillOptions {
             max_edges: 8,
             max_perimeter: 6.2,
+            ..Default::default()
         },
     )
     .unwrap();
