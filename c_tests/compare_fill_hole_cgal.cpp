@@ -1,12 +1,12 @@
 // Hole filling against CGAL 5 Polygon Mesh Processing's triangulate_hole and
-// triangulate_refine_and_fair_hole, on holes cut into the closed models of the test data (the
+// triangulate_and_refine_hole, on holes cut into the closed models of the test data (the
 // faces around one vertex removed) and on generated ones (a sphere's cap, a tube's wavy rim):
 // - both close every hole: no boundary left;
 // - triangulated: the same number of new triangles (edges − 2: both use the corners only), and
 //   the fill's area within 25% of CGAL's (both minimise something, not the same thing: CGAL the
 //   largest dihedral angle then the area, halfwing the largest turn from the hole's mean plane;
 //   on the generated holes they differ by a few percent, and a cap around one vertex is small);
-// - refined and faired: the new triangles' count within a factor 2 of CGAL's (the same density
+// - refined: the new triangles' count within a factor 2 of CGAL's (the same density
 //   rule, √2, but different flips and splitting orders) and the area within 25%;
 // - ours never folds: no new triangle turned more than 150° from a face beside it, and no new
 //   pair of intersecting faces (halfwing's self-intersection search before and after).
@@ -124,7 +124,7 @@ Fill ours(const indexed::Mesh& m, hw::FillMode mode) {
   return fill;
 }
 
-Fill theirs(const indexed::Mesh& m, bool refine_and_fair) {
+Fill theirs(const indexed::Mesh& m, bool refine) {
   const cgal_soup::Soup soup = cgal_soup::of(m);
   std::vector<Kernel::Point_3> points;
   for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
@@ -140,9 +140,9 @@ Fill theirs(const indexed::Mesh& m, bool refine_and_fair) {
   for (auto h : borders) {
     if (done[h.idx()] || !mesh.is_border(h)) continue;
     for (auto g : CGAL::halfedges_around_face(h, mesh)) done[g.idx()] = true;
-    if (refine_and_fair)
-      PMP::triangulate_refine_and_fair_hole(mesh, h, std::back_inserter(faces),
-                                            std::back_inserter(vertices));
+    if (refine)
+      PMP::triangulate_and_refine_hole(mesh, h, std::back_inserter(faces),
+                                       std::back_inserter(vertices));
     else
       PMP::triangulate_hole(mesh, h, std::back_inserter(faces));
   }
@@ -165,11 +165,11 @@ Fill theirs(const indexed::Mesh& m, bool refine_and_fair) {
 
 void compare(const indexed::Mesh& m) {
   for (bool refine : {false, true}) {
-    const Fill a = ours(m, refine ? hw::FillMode::Fair : hw::FillMode::Triangulate);
+    const Fill a = ours(m, refine ? hw::FillMode::Refine : hw::FillMode::Triangulate);
     const Fill b = theirs(m, refine);
     std::printf("%-28s %-10s ours %6zu faces %6zu vertices area %.6g | CGAL %6zu faces %6zu "
                 "vertices area %.6g\n",
-                m.name.c_str(), refine ? "faired" : "triangles", a.faces, a.vertices, a.area,
+                m.name.c_str(), refine ? "refined" : "triangles", a.faces, a.vertices, a.area,
                 b.faces, b.vertices, b.area);
     CHECK(a.closed && b.closed);
     if (refine) {
@@ -186,13 +186,17 @@ void compare(const indexed::Mesh& m) {
 }  // namespace
 
 int main() {
-  for (const auto& path : models::files("closed")) {
+  for (const auto& path : models::files("meshes/closed")) {
     const indexed::Mesh m = models::read(path);
     bool triangles = true;
     for (uint32_t size : m.face_sizes) triangles = triangles && size == 3;
     // CGAL's refinement takes triangle meshes only; a hole around vertex 0.
     if (!triangles || m.n_vertices() == 0 || m.n_vertices() > 200000) continue;
-    compare(without_fan(m, 0));
+    const indexed::Mesh holed = without_fan(m, 0);
+    // A tetrahedron keeps one triangle whose own edges are the hole: a fill would be that face
+    // again (halfwing refuses, CGAL adds it), not a hole filling to compare.
+    if (holed.face_sizes.size() < 4) continue;
+    compare(holed);
   }
   compare(hole_models::capless_sphere(200, 20));
   compare(hole_models::wavy_tube(200, 10));

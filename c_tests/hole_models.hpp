@@ -45,7 +45,7 @@ inline indexed::Mesh capless_sphere(uint32_t segments, uint32_t rings) {
   return m;
 }
 
-/// A tube of radius 1 and `rows` bands from z = −1 up to a rim at z = 0.2 sin(5θ), closed at
+/// A tube of radius 1 and `rows` bands from z = −1 up to a rim at z = 0.1 sin(5θ), closed at
 /// the bottom by a fan: one non-planar hole of `segments` edges.
 inline indexed::Mesh wavy_tube(uint32_t segments, uint32_t rows) {
   indexed::Mesh m;
@@ -54,7 +54,7 @@ inline indexed::Mesh wavy_tube(uint32_t segments, uint32_t rows) {
   for (uint32_t r = 0; r <= rows; ++r)
     for (uint32_t s = 0; s < segments; ++s) {
       const double t = 2 * pi * s / segments;
-      const double top = 0.2 * std::sin(5 * t);
+      const double top = 0.1 * std::sin(5 * t);
       m.positions.insert(m.positions.end(),
                          {std::cos(t), std::sin(t), -1.0 + (top + 1.0) * r / rows});
     }

@@ -3,7 +3,8 @@
 //! split, so that the new triangles' edges match the lengths of the hole's boundary edges.
 //!
 //! Each corner has a *scale*: a rim corner the mean length of its two boundary edges, a new
-//! vertex the mean scale of the triangle it split. A triangle is split when, for each of its
+//! vertex the mean scale of the triangle it split; no scale is below [`SCALE_FLOOR`] times the
+//! rim's mean. A triangle is split when, for each of its
 //! corners, [`DENSITY`] times the distance from its centroid to the corner exceeds both the
 //! corner's scale and the centroid's. An interior edge is flipped when the two angles facing
 //! it sum to more than π, unless the other diagonal is an edge already (here or in the mesh)
@@ -23,6 +24,10 @@ pub const DENSITY: f64 = std::f64::consts::SQRT_2;
 /// triangles grows geometrically and a fill reaches its density in about log₃ of its final
 /// triangle count rounds; the cap bounds the work whatever the input.
 pub const REFINE_ROUNDS_MAX: usize = 48;
+
+/// No corner's scale is below this fraction of the rim's mean scale, so that the fill has
+/// at most about the hole's area over (this × the mean boundary edge)² triangles.
+pub const SCALE_FLOOR: f64 = 0.25;
 
 /// Flips tried per edge in one round at most; keeps a round linear even where flips on a
 /// non-planar patch would cycle.
@@ -47,9 +52,13 @@ impl Patch {
     pub(super) fn new(points: &[[f64; 3]], triangles: Vec<[u32; 3]>) -> Patch {
         let n = points.len();
         let side = |i: usize| norm(sub(points[(i + 1) % n], points[i]));
-        let scales = (0..n)
+        let mut scales: Vec<f64> = (0..n)
             .map(|i| 0.5 * (side(i) + side((i + n - 1) % n)))
             .collect();
+        // A floor on the scales: a corner between (near) zero-length sides would otherwise
+        // have splits go on towards zero size.
+        let floor = SCALE_FLOOR * scales.iter().sum::<f64>() / n.max(1) as f64;
+        scales.iter_mut().for_each(|s| *s = s.max(floor));
         let mut edges = HashMap::with_capacity(3 * triangles.len());
         for (t, tri) in triangles.iter().enumerate() {
             for k in 0..3 {
