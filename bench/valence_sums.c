@@ -2,7 +2,7 @@
 #include "valence_sums.h"
 
 size_t valence_sum_checked_circulator(const hw_mesh *mesh) {
-  const size_t n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX);
+  const size_t n_vertices = hw_mesh_n_vertex_slots(mesh);
   size_t sum = 0;
   uint32_t v;
   for (v = 0; v < n_vertices; ++v) {

@@ -79,8 +79,8 @@ fn bench_mesh(c: &mut Criterion) {
         group.sample_size(10);
         group.bench_function("build", |b| b.iter(|| build(black_box(&soup))));
         let mesh = build(&soup);
-        let mut face_normals = vec![[0.0; 3]; mesh.face_capacity()];
-        let mut vertex_normals = vec![[0.0; 3]; mesh.vertex_capacity()];
+        let mut face_normals = vec![[0.0; 3]; mesh.n_face_slots()];
+        let mut vertex_normals = vec![[0.0; 3]; mesh.n_vertex_slots()];
         group.bench_function("face+vertex normals", |b| {
             b.iter(|| {
                 normals_into(
@@ -94,7 +94,7 @@ fn bench_mesh(c: &mut Criterion) {
         group.bench_function("valence sum", |b| b.iter(|| valence_sum(black_box(&mesh))));
         group.bench_function("valence sum (Mesh::valence)", |b| {
             b.iter(|| {
-                (0..mesh.vertex_capacity() as u32)
+                (0..mesh.n_vertex_slots() as u32)
                     .map(|v| mesh.valence(VertexId(v)))
                     .sum::<usize>()
             })

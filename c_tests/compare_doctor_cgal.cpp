@@ -89,7 +89,7 @@ std::size_t count_of(const hw::doctor_report& report, hw_diagnostic_list list) {
 
 std::size_t edge_count_of(const hw::doctor_report& report, hw_diagnostic_edges list) {
   std::size_t n = 0;
-  hw::check(hw_diagnostic_edge_count(report.input_diagnostic(), list, &n));
+  hw::check(hw_diagnostic_n_edges(report.input_diagnostic(), list, &n));
   return n;
 }
 
@@ -165,7 +165,7 @@ void compare(const std::filesystem::path& path) {
       edge_count_of(report, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD) == 0 &&
       edge_count_of(report, HW_DIAGNOSTIC_EDGES_INCONSISTENT) == 0) {
     std::size_t extra_fans = 0, n = 0;
-    hw::check(hw_doctor_report_vertex_fans_count(report.get(), &n));
+    hw::check(hw_doctor_report_n_vertex_fans(report.get(), &n));
     for (std::size_t i = 0; i < n; ++i) {
       uint32_t vertex = 0;
       std::size_t n_fans = 0, n_faces = 0;

@@ -196,7 +196,7 @@ void compare_broken(const std::filesystem::path& path) {
   for (hw_diagnostic_edges which :
        {HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, HW_DIAGNOSTIC_EDGES_INCONSISTENT}) {
     std::size_t n = 0;
-    hw::check(hw_diagnostic_edge_count(raw, which, &n));
+    hw::check(hw_diagnostic_n_edges(raw, which, &n));
     for (std::size_t i = 0; i < n; ++i) {
       uint32_t ends[2];
       const uint32_t* faces = nullptr;

@@ -71,7 +71,7 @@ std::size_t cgal_boundary_halfedges(const SurfaceMesh& mesh) {
 // A mesh fresh from a build or a stitch has no deleted slot.
 std::size_t our_boundary_halfedges(const hw::mesh& mesh) {
   std::size_t n = 0;
-  for (std::size_t h = 0; h < hw_mesh_slot_count(mesh.get(), HW_ELEMENT_KIND_HALFEDGE); ++h)
+  for (std::size_t h = 0; h < hw_mesh_n_halfedge_slots(mesh.get()); ++h)
     n += hw_mesh_he_is_boundary(mesh.get(), hw_halfedge{static_cast<uint32_t>(h)});
   return n;
 }
@@ -320,7 +320,7 @@ void compare(const std::filesystem::path& path) {
   // Whether the welded surface fits a half-edge mesh: no collapsed face, no edge of 3 faces.
   const hw::diagnostic welded = hw::diagnostic::of(after.positions, after.face_sizes, after.indices);
   std::size_t non_manifold_edges = 0;
-  hw::check(hw_diagnostic_edge_count(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
+  hw::check(hw_diagnostic_n_edges(welded.get(), HW_DIAGNOSTIC_EDGES_NON_MANIFOLD,
                                      &non_manifold_edges));
   const bool comparable = merged.list(hw::RepairList::RemovedFaces).empty() &&
                           proper == after.n_faces() && non_manifold_edges == 0;

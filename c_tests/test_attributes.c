@@ -60,7 +60,7 @@ static void add_face_links_and_refuses(void) {
 
 static void corner_normals_and_uvs(void) {
   hw_mesh *mesh = square();
-  size_t n = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE);
+  size_t n = hw_mesh_n_halfedge_slots(mesh);
   double normals[30], uvs[20];
   const double *view = NULL;
   size_t len = 0;
@@ -159,7 +159,7 @@ static void named_attributes(void) {
   CHECK(shade[3 * w.idx] == 0.5f && shade[3 * w.idx + 1] == 0.5f && shade[3 * w.idx + 2] == 0.0f);
 
   /* Listing. */
-  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_VERTEX, &count) == HW_OK && count == 1);
+  CHECK(hw_mesh_n_attributes(mesh, HW_ELEMENT_KIND_VERTEX, &count) == HW_OK && count == 1);
   CHECK(hw_mesh_attribute_name(mesh, HW_ELEMENT_KIND_VERTEX, 0, name, sizeof name, &needed) ==
         HW_OK);
   CHECK(strcmp(name, "colour") == 0 && needed == 7);
@@ -207,7 +207,7 @@ static void named_attributes(void) {
       HW_ERR_INVALID_INPUT, "not i32");
   CHECK_STATUS(hw_mesh_attribute_info(mesh, HW_ELEMENT_KIND_EDGE, "nothing", &type, &components),
                HW_ERR_NOT_FOUND, "nothing");
-  CHECK_STATUS(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_mesh_n_attributes(mesh, HW_ELEMENT_KIND_VERTEX, NULL), HW_ERR_NULL_ARGUMENT,
                "out_count");
   CHECK_STATUS(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_FACE, "colour"), HW_ERR_NOT_FOUND,
                "colour");
@@ -266,7 +266,7 @@ static void named_attributes(void) {
                                &len) == HW_OK);
   CHECK(len == 1 && ((const int32_t *)view)[0] == -5);
   CHECK(hw_mesh_attribute_remove(mesh, HW_ELEMENT_KIND_FACE, "label") == HW_OK);
-  CHECK(hw_mesh_attribute_count(mesh, HW_ELEMENT_KIND_FACE, &count) == HW_OK && count == 0);
+  CHECK(hw_mesh_n_attributes(mesh, HW_ELEMENT_KIND_FACE, &count) == HW_OK && count == 0);
   CHECK(hw_mesh_check(mesh) == HW_OK);
   hw_mesh_free(mesh);
 }

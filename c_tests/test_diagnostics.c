@@ -28,12 +28,12 @@ static void diagnose_without_building(void) {
   CHECK(n == 1 && ids[0] == 6);
   CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_SKIPPED_FACES, &ids, &n) == HW_OK);
   CHECK(n == 0);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
+  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
   CHECK(hw_diagnostic_edge(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, 0, ends, &faces, &n_faces) ==
         HW_OK);
   CHECK(ends[0] == 0 && ends[1] == 1 && n_faces == 3);
   CHECK(faces[0] == 0 && faces[1] == 1 && faces[2] == 2);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_INCONSISTENT, &n) == HW_OK);
+  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_INCONSISTENT, &n) == HW_OK);
 
   /* The summary, with the copy-into-buffer protocol. */
   CHECK(hw_diagnostic_summary(d, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL && needed > 1);
@@ -76,7 +76,7 @@ static void diagnose_without_building(void) {
                  HW_ERR_INVALID_INPUT, "edge 1 of a list of 1");
     CHECK(ends[0] == 77 && ends[1] == 77 && faces == sentinel_faces && n_faces == 77);
   }
-  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, NULL),
+  CHECK_STATUS(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, NULL),
                HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK_STATUS(hw_diagnostic_summary(NULL, NULL, 0, NULL), HW_ERR_NULL_ARGUMENT, "diagnostic");
   CHECK(!hw_diagnostic_is_clean(NULL));
@@ -125,7 +125,7 @@ static void policies_report_what_they_did(void) {
   CHECK(mesh == NULL && d != NULL);
   CHECK(hw_diagnostic_ids(d, HW_DIAGNOSTIC_LIST_FACES_REPEATED_VERTEX, &ids, &n) == HW_OK);
   CHECK(n == 1 && ids[0] == 3);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
+  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 1);
   hw_diagnostic_free(d);
   /* A cube with five of six faces flipped comes back whole and facing outward. */
   {
@@ -307,7 +307,7 @@ static void list_kinds_are_named_and_kept_apart(void) {
        list < HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT; ++list) {
     CHECK(hw_diagnostic_edges_name(list) != NULL);
     CHECK(hw_diagnostic_list_name(list) == NULL && hw_doctor_finding_name(list) == NULL);
-    CHECK(hw_diagnostic_edge_count(d, list, &n) == HW_OK);
+    CHECK(hw_diagnostic_n_edges(d, list, &n) == HW_OK);
   }
   CHECK(strcmp(hw_diagnostic_list_name(HW_DIAGNOSTIC_LIST_ISOLATED_VERTICES),
                "isolated vertices") == 0);
@@ -317,7 +317,7 @@ static void list_kinds_are_named_and_kept_apart(void) {
   CHECK(hw_diagnostic_edges_name(HW_DIAGNOSTIC_EDGES_FIRST + HW_DIAGNOSTIC_EDGES_COUNT) == NULL);
   CHECK_STATUS(hw_diagnostic_ids(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &ids, &n),
                HW_ERR_INVALID_INPUT, "unknown diagnostic list");
-  CHECK_STATUS(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &n),
+  CHECK_STATUS(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_LIST_FACES_TOO_SMALL, &n),
                HW_ERR_INVALID_INPUT, "unknown diagnostic edge list");
   CHECK_STATUS(hw_diagnostic_ids(d, HW_DOCTOR_FINDING_NEEDLES, &ids, &n), HW_ERR_INVALID_INPUT,
                "unknown diagnostic list");

@@ -24,7 +24,7 @@ static void a_cube_is_a_closed_polyhedron(void) {
   CHECK(hw_doctor_report_verdict(report, &verdict) == HW_OK);
   CHECK(verdict.manifold && verdict.closed && verdict.oriented && verdict.closed_polyhedron);
   CHECK(verdict.reason == NULL);
-  CHECK(hw_doctor_report_component_count(report, &n) == HW_OK && n == 1);
+  CHECK(hw_doctor_report_n_components(report, &n) == HW_OK && n == 1);
   CHECK(hw_doctor_report_component(report, 0, &component) == HW_OK);
   CHECK(component.n_faces == 6 && component.n_edges == 12 && component.n_vertices == 8);
   CHECK(component.euler_characteristic == 2 && component.genus == 0);
@@ -32,7 +32,7 @@ static void a_cube_is_a_closed_polyhedron(void) {
   CHECK(component.consistently_oriented && component.outward == 1);
   CHECK(component.volume == 8.0 && component.area == 24.0);
   CHECK(component.bounding_box[0] == -1.0 && component.bounding_box[5] == 1.0);
-  CHECK(hw_doctor_report_boundary_loop_count(report, &n) == HW_OK && n == 0);
+  CHECK(hw_doctor_report_n_boundary_loops(report, &n) == HW_OK && n == 0);
   CHECK(hw_diagnostic_is_clean(hw_doctor_report_diagnostic(report)));
   hw_doctor_report_free(report);
 
@@ -107,7 +107,7 @@ static void defects_are_named(void) {
 
   /* Vertex 0, where the triangles touch the left square, has two fans; so have vertices 1 and 2,
    * where the right square's triangles meet the left square at a corner only (the crack). */
-  CHECK(hw_doctor_report_vertex_fans_count(report, &n) == HW_OK && n == 3);
+  CHECK(hw_doctor_report_n_vertex_fans(report, &n) == HW_OK && n == 3);
   CHECK(hw_doctor_report_vertex_fan(report, 0, 1, &vertex, &n_fans, &ids, &n_faces) == HW_OK);
   CHECK(vertex == 0 && n_fans == 2 && n_faces == 2 && ids[0] == 4 && ids[1] == 5);
   CHECK(hw_diagnostic_ids(hw_doctor_report_diagnostic(report),
@@ -115,7 +115,7 @@ static void defects_are_named(void) {
   CHECK(n == 3 && ids[0] == 0 && ids[1] == 1 && ids[2] == 2);
 
   /* Boundary loops: the two squares' rim, and the triangle pair's. */
-  CHECK(hw_doctor_report_boundary_loop_count(report, &n) == HW_OK && n >= 2);
+  CHECK(hw_doctor_report_n_boundary_loops(report, &n) == HW_OK && n >= 2);
   CHECK(hw_doctor_report_boundary_loop(report, 0, &ids, &n, &perimeter, &face) == HW_OK);
   CHECK(n >= 3 && perimeter > 0 && face == 0);
 
@@ -178,13 +178,13 @@ static void bad_arguments_are_refused(void) {
   CHECK_STATUS(hw_doctor_report_verdict(report, NULL), HW_ERR_NULL_ARGUMENT, "out_verdict");
   CHECK_STATUS(hw_doctor_report_component(report, 1, &component), HW_ERR_INVALID_INPUT,
                "component 1 of 1");
-  CHECK_STATUS(hw_doctor_report_component_count(report, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
+  CHECK_STATUS(hw_doctor_report_n_components(report, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK_STATUS(hw_doctor_report_boundary_loop(report, 0, &ids, &n, &perimeter, &face),
                HW_ERR_INVALID_INPUT, "boundary loop 0 of 0");
   CHECK_STATUS(hw_doctor_report_vertex_fan(report, 0, 0, &vertex, &n, &ids, &n), HW_ERR_INVALID_INPUT,
                "non-manifold vertex 0 of 0");
-  CHECK_STATUS(hw_doctor_report_vertex_fans_count(NULL, &n), HW_ERR_NULL_ARGUMENT, "report");
-  CHECK_STATUS(hw_doctor_report_boundary_loop_count(report, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
+  CHECK_STATUS(hw_doctor_report_n_vertex_fans(NULL, &n), HW_ERR_NULL_ARGUMENT, "report");
+  CHECK_STATUS(hw_doctor_report_n_boundary_loops(report, NULL), HW_ERR_NULL_ARGUMENT, "out_count");
   CHECK_STATUS(hw_doctor_report_text(NULL, NULL, 0, &n), HW_ERR_NULL_ARGUMENT, "report");
   CHECK_STATUS(hw_doctor_report_json(NULL, NULL, 0, &n), HW_ERR_NULL_ARGUMENT, "report");
   CHECK(hw_doctor_report_diagnostic(NULL) == NULL);

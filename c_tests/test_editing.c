@@ -113,8 +113,8 @@ static void normals(void) {
   }
   CHECK_STATUS(hw_mesh_corner_normals(mesh, -1.0, corners, 24, NULL), HW_ERR_INVALID_INPUT,
                "crease");
-  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE) == 24);
-  CHECK(hw_mesh_slot_count(mesh, 17u) == 0 && last_error_contains("kind 17"));
+  CHECK(hw_mesh_n_halfedge_slots(mesh) == 24);
+  CHECK(hw_mesh_n_edge_slots(mesh) == 12);
   hw_mesh_free(mesh);
 }
 
@@ -166,7 +166,7 @@ static void editing(void) {
   CHECK(hw_mesh_garbage_collect(mesh, &maps) == HW_OK);
   CHECK(hw_index_maps_view(maps, HW_ELEMENT_KIND_FACE, &map, &len) == HW_OK);
   CHECK(len >= 1 && map[0] == HW_INVALID_INDEX);
-  CHECK(hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE) == hw_mesh_n_faces(mesh));
+  CHECK(hw_mesh_n_face_slots(mesh) == hw_mesh_n_faces(mesh));
   CHECK_STATUS(hw_index_maps_view(maps, 8u, &map, &len), HW_ERR_INVALID_INPUT, "kind 8");
   {
     /* NULL maps or outputs: refused, nothing written. */

@@ -411,9 +411,9 @@ static hw_circulator around(const hw::mesh& m, hw_face f, hw_circulator_kind kin
 /// number of walks compared.
 static std::size_t ranges_match_checked(const hw::mesh& m) {
   const hw::nav_view nav = m.nav();
-  CHECK(nav.n_vertex_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_VERTEX));
-  CHECK(nav.n_halfedge_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_HALFEDGE));
-  CHECK(nav.n_face_slots() == hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_FACE));
+  CHECK(nav.n_vertex_slots() == hw_mesh_n_vertex_slots(m.get()));
+  CHECK(nav.n_halfedge_slots() == hw_mesh_n_halfedge_slots(m.get()));
+  CHECK(nav.n_face_slots() == hw_mesh_n_face_slots(m.get()));
   CHECK(nav.raw().origin != nullptr || nav.n_halfedge_slots() == 0);
   std::size_t walks = 0;
   auto same = [&](const std::vector<uint32_t>& want, const std::vector<uint32_t>& got) {

@@ -180,11 +180,11 @@ static void diagnostic_edges_and_vertex_fans() {
   // Three triangles on edge 0-1.
   const std::vector<double> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
   const hw::diagnostic d = hw::diagnostic::of(positions, {3, 3, 3}, {0, 1, 2, 1, 0, 3, 0, 1, 4});
-  CHECK(d.edge_count(hw::DiagnosticEdges::NonManifold) == 1);
+  CHECK(d.n_edges(hw::DiagnosticEdges::NonManifold) == 1);
   const hw::diagnostic::edge_report edge = d.edge(hw::DiagnosticEdges::NonManifold, 0);
   CHECK(edge.vertices[0] == 0 && edge.vertices[1] == 1);
   CHECK((edge.faces == std::vector<uint32_t>{0, 1, 2}));
-  CHECK(hw::diagnostic().edge_count(hw::DiagnosticEdges::NonManifold) == 0);
+  CHECK(hw::diagnostic().n_edges(hw::DiagnosticEdges::NonManifold) == 0);
   CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::diagnostic::of({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2})
         .edge(hw::DiagnosticEdges::NonManifold, 0);
@@ -193,7 +193,7 @@ static void diagnostic_edges_and_vertex_fans() {
   // Two triangles meeting at their corner 0 only: two fans there.
   const hw::doctor_report report = hw::doctor_report::of(
       {0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0}, {3, 3}, {0, 1, 2, 0, 3, 4});
-  CHECK(report.vertex_fans_count() == 1);
+  CHECK(report.n_vertex_fans() == 1);
   const hw::doctor_report::vertex_fan_view first = report.vertex_fan(0, 0);
   const hw::doctor_report::vertex_fan_view second = report.vertex_fan(0, 1);
   CHECK(first.vertex == 0 && first.n_fans == 2 && second.vertex == 0);
@@ -221,17 +221,17 @@ static void winged_bulk_calls() {
     hw::winged::from_indexed_ordered({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2}, {0, 1, 1, 2});
   }));
 
-  const std::vector<double> faces = w.normals(hw::WNormals::Faces);
-  const std::vector<double> vertices = w.normals(hw::WNormals::Vertices);
+  const std::vector<double> faces = w.face_normals();
+  const std::vector<double> vertices = w.vertex_normals();
   CHECK(faces.size() == 12 && vertices.size() == 12);
   for (uint32_t f = 0; f < 4; ++f)
     for (int k = 0; k < 3; ++k) CHECK(faces[3 * f + k] == w.face_normal(hw_wface{f})[k]);
 
-  w.set_position(hw_wvertex{3}, {0, 0, 2});
+  w.set_vertex_position(hw_wvertex{3}, {0, 0, 2});
   CHECK(w.position(hw_wvertex{3})[2] == 2);
   CHECK(refused_with(hw::Status::InvalidInput, [] {
     hw::winged t = hw::winged::from_indexed({0, 0, 0, 1, 0, 0, 0, 1, 0}, {3}, {0, 1, 2});
-    t.set_position(hw_wvertex{0}, {INFINITY, 0, 0});
+    t.set_vertex_position(hw_wvertex{0}, {INFINITY, 0, 0});
   }));
 
   // The kill operators' garbage collection gives its maps.
@@ -265,7 +265,7 @@ static void scoped_enumerations() {
 
   // The wrapper's call with the scoped value is the C call with the C value.
   const hw::mesh m = square();
-  std::vector<double> by_c(3 * hw_mesh_slot_count(m.get(), HW_ELEMENT_KIND_VERTEX));
+  std::vector<double> by_c(3 * hw_mesh_n_vertex_slots(m.get()));
   CHECK(hw_mesh_vertex_normals(m.get(), HW_NORMAL_WEIGHTING_ANGLE, by_c.data(), by_c.size() / 3,
                                nullptr) == HW_OK);
   CHECK(m.vertex_normals(hw::NormalWeighting::Angle) == by_c);

@@ -206,9 +206,9 @@ static size_t inline_matches_checked(const hw_mesh *mesh) {
   size_t boundary = 0;
   uint32_t h;
   CHECK(hw_mesh_nav(mesh, &nav) == HW_OK);
-  CHECK(nav.n_vertex_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX));
-  CHECK(nav.n_halfedge_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE));
-  CHECK(nav.n_face_slots == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE));
+  CHECK(nav.n_vertex_slots == hw_mesh_n_vertex_slots(mesh));
+  CHECK(nav.n_halfedge_slots == hw_mesh_n_halfedge_slots(mesh));
+  CHECK(nav.n_face_slots == hw_mesh_n_face_slots(mesh));
   w = walks_new(nav.n_halfedge_slots);
   vertices_walk_alike(mesh, &nav, &w);
   faces_walk_alike(mesh, &nav, &w);
@@ -264,7 +264,7 @@ static void after_edits_and_garbage_collection(void) {
   hw_vertex isolated;
   const double xyz[3] = {0.25, 0.5, 0.75};
   if (!mesh) return;
-  n_faces = (uint32_t)hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE);
+  n_faces = (uint32_t)hw_mesh_n_face_slots(mesh);
   /* Holes: every 37th face, dropping the vertices they isolate. */
   for (f = 0; f < n_faces; f += 37) {
     hw_face face = {f};

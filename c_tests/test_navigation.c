@@ -353,8 +353,9 @@ static void whole_mesh_query_bad_arguments(void) {
   CHECK_STATUS(hw_mesh_face_components(NULL, components, 8, &needed), HW_ERR_NULL_ARGUMENT,
                "mesh");
   CHECK(components[0] == 77 && needed == 4242);
-  CHECK(hw_mesh_slot_count(NULL, HW_ELEMENT_KIND_VERTEX) == 0 && last_error_contains("mesh"));
-  CHECK(hw_mesh_slot_count(mesh, 9u) == 0 && last_error_contains("kind 9"));
+  CHECK(hw_mesh_n_vertex_slots(NULL) == 0 && last_error_contains("mesh"));
+  CHECK(hw_mesh_n_halfedge_slots(NULL) == 0 && hw_mesh_n_edge_slots(NULL) == 0 &&
+        hw_mesh_n_face_slots(NULL) == 0 && last_error_contains("mesh"));
   CHECK_STATUS(hw_mesh_view_positions(NULL, &xyz, &count), HW_ERR_NULL_ARGUMENT, "mesh");
   CHECK_STATUS(hw_mesh_view_positions(mesh, NULL, &count), HW_ERR_NULL_ARGUMENT, "out_xyz");
   CHECK_STATUS(hw_mesh_view_positions(mesh, &xyz, NULL), HW_ERR_NULL_ARGUMENT,
@@ -374,7 +375,7 @@ static void whole_mesh_query_bad_arguments(void) {
                                normals + 18, 6, &vertex_needed),
                HW_ERR_BUFFER_TOO_SMALL, "7 are needed");
   CHECK(face_needed == 6 && vertex_needed == 7);
-  corner_slots = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE);
+  corner_slots = hw_mesh_n_halfedge_slots(mesh);
   CHECK(corner_slots == 24);
   CHECK_STATUS(hw_mesh_corner_normals(mesh, 0.5, normals, corner_slots - 1, &needed),
                HW_ERR_BUFFER_TOO_SMALL, "24 are needed");

@@ -82,7 +82,7 @@ static void shading_modes_split_vertices(void) {
 static void interleaved_layout_with_corner_attributes(void) {
   hw_mesh *mesh = unit_cube();
   hw_render_options options = hw_render_options_default();
-  size_t slots = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE), h;
+  size_t slots = hw_mesh_n_halfedge_slots(mesh), h;
   double normals[24 * 3], uvs[24 * 2];
   const float *data = NULL;
   size_t n = 0, r;
@@ -189,7 +189,7 @@ static void explicit_shadings_win_over_a_files_normals(void) {
                      &mesh, NULL) == HW_OK);
   CHECK(hw_mesh_corner_normals_view(mesh, &file_normals, &n_file_normals) == HW_OK);
   CHECK(file_normals != NULL &&
-        n_file_normals == hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE));
+        n_file_normals == hw_mesh_n_halfedge_slots(mesh));
   for (i = 0; i < 4; ++i) normals[i] = normals_of(mesh, shadings[i], &n[i]);
   for (i = 0; i < 4; ++i)
     for (j = i + 1; j < 4; ++j)

@@ -213,7 +213,7 @@ static void clipping(void) {
   const double with_nan[] = {0, 0, 1, 0, NAN, 1};
 
   CHECK(hw_voronoi_clip_rect(v, -1, -1, 5, 5, &cells) == HW_OK);
-  CHECK(hw_voronoi_cells_count(cells) == N_SITES);
+  CHECK(hw_voronoi_cells_n_cells(cells) == N_SITES);
   CHECK(hw_voronoi_cells_positions(cells, &xy, &n_positions) == HW_OK && n_positions >= 4);
   for (s = 0; s < N_SITES; ++s) {
     size_t k;
@@ -269,7 +269,7 @@ static void clipping(void) {
   CHECK_STATUS(hw_voronoi_cells_area_centroid(cells, 7, &area, NULL), HW_ERR_INVALID_HANDLE,
                "out of range");
   CHECK_STATUS(hw_voronoi_cells_positions(cells, NULL, &len), HW_ERR_NULL_ARGUMENT, "out_xy");
-  CHECK(hw_voronoi_cells_count(NULL) == 0 && last_error_contains("cells"));
+  CHECK(hw_voronoi_cells_n_cells(NULL) == 0 && last_error_contains("cells"));
 
   hw_voronoi_cells_free(cells);
   hw_voronoi_cells_free(cells);

@@ -98,10 +98,10 @@ static void records_and_views(void) {
     double p[3];
     CHECK(hw_winged_vertex_edge(w, v2).idx == 2);
     CHECK(hw_winged_face_edge(w, f2).idx == 10);
-    CHECK(hw_winged_position(w, v2, p) == HW_OK && p[0] == 1 && p[1] == 1 && p[2] == 0);
+    CHECK(hw_winged_vertex_position(w, v2, p) == HW_OK && p[0] == 1 && p[1] == 1 && p[2] == 0);
     CHECK(hw_winged_is_vertex(w, v2) && !hw_winged_is_edge(w, bad_edge) && hw_winged_is_face(w, f2));
-    CHECK(hw_winged_vertex_capacity(w) == 8 && hw_winged_edge_capacity(w) == 12 &&
-          hw_winged_face_capacity(w) == 6);
+    CHECK(hw_winged_n_vertex_slots(w) == 8 && hw_winged_n_edge_slots(w) == 12 &&
+          hw_winged_n_face_slots(w) == 6);
   }
   hw_winged_free(w);
 }
@@ -177,21 +177,23 @@ static void normals(void) {
   hw_wface f1 = {0};
   hw_wvertex v1 = {0};
   double n[3];
-  double all[18];
+  double all[18], vertex_normals[24];
   size_t needed = 0;
   const double third = 1.0 / sqrt(3.0);
   CHECK(hw_winged_face_normal(w, f1, n) == HW_OK);
   CHECK(near(n[0], 0) && near(n[1], 0) && near(n[2], -1));
   CHECK(hw_winged_vertex_normal(w, v1, n) == HW_OK);
   CHECK(near(n[0], -third) && near(n[1], -third) && near(n[2], -third));
-  CHECK_STATUS(hw_winged_normals(w, HW_WNORMALS_FACES, all, 3, &needed), HW_ERR_BUFFER_TOO_SMALL,
-               "18 are needed");
-  CHECK(needed == 18);
-  CHECK(hw_winged_normals(w, HW_WNORMALS_FACES, all, 18, NULL) == HW_OK);
+  CHECK_STATUS(hw_winged_face_normals(w, all, 1, &needed), HW_ERR_BUFFER_TOO_SMALL,
+               "6 are needed");
+  CHECK(needed == 6);
+  CHECK(hw_winged_face_normals(w, all, 6, NULL) == HW_OK);
   CHECK(near(all[2], -1) && near(all[5], 1));
-  CHECK(hw_winged_normals(w, HW_WNORMALS_VERTICES, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL);
-  CHECK(needed == 24);
-  CHECK_STATUS(hw_winged_normals(w, 2, all, 18, NULL), HW_ERR_INVALID_INPUT, "normals kind 2");
+  CHECK(hw_winged_vertex_normals(w, NULL, 0, &needed) == HW_ERR_BUFFER_TOO_SMALL);
+  CHECK(needed == 8);
+  CHECK(hw_winged_vertex_normals(w, vertex_normals, 8, NULL) == HW_OK);
+  CHECK(near(vertex_normals[3 * v1.idx], -third) && near(vertex_normals[3 * v1.idx + 1], -third) &&
+        near(vertex_normals[3 * v1.idx + 2], -third));
   CHECK_STATUS(hw_winged_face_normal(w, f1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
   CHECK_STATUS(hw_winged_vertex_normal(w, v1, NULL), HW_ERR_NULL_ARGUMENT, "out_normal");
   CHECK_STATUS(hw_winged_vertex_normal(NULL, v1, n), HW_ERR_NULL_ARGUMENT, "winged");
@@ -270,7 +272,7 @@ static void bad_face_lists(void) {
                                       HW_BUILD_POLICY_STRICT, &w, &d),
                HW_ERR_NON_MANIFOLD, "not an oriented manifold");
   CHECK(w == SENTINEL && d != NULL);
-  CHECK(hw_diagnostic_edge_count(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
+  CHECK(hw_diagnostic_n_edges(d, HW_DIAGNOSTIC_EDGES_NON_MANIFOLD, &n) == HW_OK && n == 2);
   hw_diagnostic_free(d);
   d = NULL;
   CHECK_STATUS(hw_winged_from_indexed(tet_positions, 4, tet_sizes, 4, tet_indices, 12, 9, &w, &d),
@@ -402,7 +404,7 @@ static void euler_cube(void) {
   /* Killing the last face's edge merges two faces; the count follows Euler's formula. */
   CHECK(hw_winged_kef(w, made_edge, made_face) == HW_OK);
   CHECK(hw_winged_n_faces(w) == 5 && hw_winged_n_edges(w) == 11);
-  CHECK(hw_winged_edge_capacity(w) == 12);
+  CHECK(hw_winged_n_edge_slots(w) == 12);
   {
     hw_index_maps *maps = NULL;
     const uint32_t *edge_map = NULL;
@@ -415,12 +417,12 @@ static void euler_cube(void) {
     /* The killed edge maps to nothing; the other eleven keep their order. */
     CHECK(n_map == 12 && edge_map[made_edge.idx] == HW_INVALID_INDEX);
     hw_index_maps_free(maps);
-    CHECK(hw_winged_set_position(w, first, moved) == HW_OK);
-    CHECK(hw_winged_position(w, first, at) == HW_OK && at[0] == 0.25 && at[2] == 0.25);
-    CHECK_STATUS(hw_winged_set_position(w, first, nowhere), HW_ERR_INVALID_INPUT, "not finite");
-    CHECK_STATUS(hw_winged_set_position(NULL, first, moved), HW_ERR_NULL_ARGUMENT, "winged");
+    CHECK(hw_winged_set_vertex_position(w, first, moved) == HW_OK);
+    CHECK(hw_winged_vertex_position(w, first, at) == HW_OK && at[0] == 0.25 && at[2] == 0.25);
+    CHECK_STATUS(hw_winged_set_vertex_position(w, first, nowhere), HW_ERR_INVALID_INPUT, "not finite");
+    CHECK_STATUS(hw_winged_set_vertex_position(NULL, first, moved), HW_ERR_NULL_ARGUMENT, "winged");
   }
-  CHECK(hw_winged_edge_capacity(w) == 11 && hw_winged_check(w) == HW_OK);
+  CHECK(hw_winged_n_edge_slots(w) == 11 && hw_winged_check(w) == HW_OK);
   hw_winged_free(w);
 }
 
@@ -439,17 +441,17 @@ static void null_and_freed_handles(void) {
   hw_wedge made_edge;
   CHECK(hw_winged_n_vertices(NULL) == 0 && last_error_contains("winged"));
   CHECK(hw_winged_n_edges(NULL) == 0 && hw_winged_n_faces(NULL) == 0);
-  CHECK(hw_winged_vertex_capacity(NULL) == 0 && hw_winged_edge_capacity(NULL) == 0 &&
-        hw_winged_face_capacity(NULL) == 0);
+  CHECK(hw_winged_n_vertex_slots(NULL) == 0 && hw_winged_n_edge_slots(NULL) == 0 &&
+        hw_winged_n_face_slots(NULL) == 0);
   CHECK(!hw_winged_is_vertex(NULL, v) && !hw_winged_is_edge(NULL, e) &&
         !hw_winged_is_face(NULL, f));
   CHECK(hw_winged_vertex_edge(NULL, v).idx == HW_INVALID_INDEX);
   CHECK(hw_winged_face_edge(NULL, f).idx == HW_INVALID_INDEX && last_error_contains("winged"));
   CHECK_STATUS(hw_winged_edge(NULL, e, &r), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_edge_records(NULL, &view, &n), HW_ERR_NULL_ARGUMENT, "winged");
-  CHECK_STATUS(hw_winged_position(NULL, v, p), HW_ERR_NULL_ARGUMENT, "winged");
-  CHECK_STATUS(hw_winged_normals(NULL, HW_WNORMALS_FACES, p, 3, NULL), HW_ERR_NULL_ARGUMENT,
-               "winged");
+  CHECK_STATUS(hw_winged_vertex_position(NULL, v, p), HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_face_normals(NULL, p, 1, NULL), HW_ERR_NULL_ARGUMENT, "winged");
+  CHECK_STATUS(hw_winged_vertex_normals(NULL, p, 1, NULL), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(hw_winged_check(NULL), HW_ERR_NULL_ARGUMENT, "winged");
   CHECK_STATUS(
       hw_winged_table(NULL, HW_WTABLE_ALL, HW_WNAMING_CW_CCW, HW_TABLE_FORMAT_TEXT, buf, 8, NULL),
@@ -468,7 +470,7 @@ static void null_and_freed_handles(void) {
   CHECK_STATUS(hw_winged_edge(w, e, NULL), HW_ERR_NULL_ARGUMENT, "out_record");
   CHECK_STATUS(hw_winged_edge_records(w, NULL, &n), HW_ERR_NULL_ARGUMENT, "out_records");
   CHECK_STATUS(hw_winged_edge_records(w, &view, NULL), HW_ERR_NULL_ARGUMENT, "out_len");
-  CHECK_STATUS(hw_winged_position(w, v, NULL), HW_ERR_NULL_ARGUMENT, "out_xyz");
+  CHECK_STATUS(hw_winged_vertex_position(w, v, NULL), HW_ERR_NULL_ARGUMENT, "out_xyz");
   CHECK_STATUS(hw_winged_mvfs(w, NULL, &made_vertex, &made_face), HW_ERR_NULL_ARGUMENT,
                "position");
   CHECK_STATUS(hw_winged_mvfs(w, p, NULL, &made_face), HW_ERR_NULL_ARGUMENT, "out_vertex");
@@ -480,7 +482,7 @@ static void null_and_freed_handles(void) {
     hw_wvertex missing_vertex = {8};
     CHECK_STATUS(hw_winged_edge(w, missing_edge, &r), HW_ERR_INVALID_HANDLE,
                  "edge 12 does not exist");
-    CHECK_STATUS(hw_winged_position(w, missing_vertex, p), HW_ERR_INVALID_HANDLE,
+    CHECK_STATUS(hw_winged_vertex_position(w, missing_vertex, p), HW_ERR_INVALID_HANDLE,
                  "vertex 8 does not exist");
     CHECK(hw_winged_vertex_edge(w, missing_vertex).idx == HW_INVALID_INDEX);
     CHECK(last_error_contains("does not exist"));
@@ -521,17 +523,17 @@ static void killed_ids(void) {
   CHECK(hw_winged_mvfs(w, p0, &v0, &f0) == HW_OK);
   CHECK(hw_winged_mev(w, f0, v0, p1, &e1, &v1) == HW_OK);
   CHECK(hw_winged_kev(w, e1, v1) == HW_OK); /* v1 and e1 are dead, their slots remain */
-  CHECK(hw_winged_vertex_capacity(w) == 2 && hw_winged_edge_capacity(w) == 1);
+  CHECK(hw_winged_n_vertex_slots(w) == 2 && hw_winged_n_edge_slots(w) == 1);
   CHECK(!hw_winged_is_vertex(w, v1) && !hw_winged_is_edge(w, e1));
   memset(&r, 0xA5, sizeof r);
   memset(&c, 0xA5, sizeof c);
   c_before = c;
   CHECK_STATUS(hw_winged_edge(w, e1, &r), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(r.start.idx == 0xA5A5A5A5u);
-  CHECK_STATUS(hw_winged_position(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_vertex_position(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK_STATUS(hw_winged_vertex_normal(w, v1, xyz), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(xyz[0] == 7 && xyz[1] == 7 && xyz[2] == 7);
-  CHECK_STATUS(hw_winged_set_position(w, v1, p0), HW_ERR_INVALID_HANDLE, "does not exist");
+  CHECK_STATUS(hw_winged_set_vertex_position(w, v1, p0), HW_ERR_INVALID_HANDLE, "does not exist");
   CHECK(hw_winged_vertex_edge(w, v1).idx == HW_INVALID_INDEX);
   CHECK(last_error_contains("does not exist"));
   CHECK_STATUS(hw_wcirc_around_vertex(w, v1, HW_WCIRCULATOR_KIND_EDGES, &c), HW_ERR_INVALID_HANDLE,

@@ -5,7 +5,7 @@
 //
 // One vocabulary with C: every function of halfwing.h has a counterpart here with the C name
 // minus the `hw_` and kernel prefix the class gives (hw_mesh_split_face() is
-// hw::mesh::split_face(), hw_winged_set_position() is hw::winged::set_position()), the same
+// hw::mesh::split_face(), hw_winged_set_vertex_position() is hw::winged::set_vertex_position()), the same
 // argument order and the same defaults (C's `*_default()` option structs); outputs become return
 // values. c_tests/every_function_wrapped.cmake checks it and lists the few exceptions.
 //
@@ -262,11 +262,6 @@ enum class RenderIndices : uint32_t {
   BoundarySources = HW_RENDER_INDICES_BOUNDARY_SOURCES,  ///< ::HW_RENDER_INDICES_BOUNDARY_SOURCES
   PointSources = HW_RENDER_INDICES_POINT_SOURCES,        ///< ::HW_RENDER_INDICES_POINT_SOURCES
 };
-/// ::hw_wnormals, scoped: each value is the C constant it names.
-enum class WNormals : uint32_t {
-  Faces = HW_WNORMALS_FACES,        ///< ::HW_WNORMALS_FACES
-  Vertices = HW_WNORMALS_VERTICES,  ///< ::HW_WNORMALS_VERTICES
-};
 /// ::hw_wtable, scoped: each value is the C constant it names.
 enum class WTable : uint32_t {
   Vertices = HW_WTABLE_VERTICES,  ///< ::HW_WTABLE_VERTICES
@@ -431,8 +426,8 @@ class owned {
   T* raw_ = nullptr;
 };
 
-/// The text of a copy-into-buffer call: `copy(buf, len, &needed)` is asked for the size, then
-/// for the text.
+/// The text of a copy-into-buffer call: `copy(out_text, capacity, &out_needed)` is asked for the
+/// size, then for the text.
 template <class Copy>
 std::string copied_text(Copy copy) {
   std::size_t needed = 0;
@@ -647,10 +642,10 @@ class diagnostic {
     std::vector<uint32_t> faces;         ///< The input faces using the edge, ascending.
   };
   /// The number of edges in one edge list; 0 for an empty diagnostic.
-  std::size_t edge_count(DiagnosticEdges edges) const {
+  std::size_t n_edges(DiagnosticEdges edges) const {
     if (!raw_) return 0;
     std::size_t n = 0;
-    check(hw_diagnostic_edge_count(raw_.get(), to_c(edges), &n));
+    check(hw_diagnostic_n_edges(raw_.get(), to_c(edges), &n));
     return n;
   }
   /// Edge `index` of an edge list (see hw_diagnostic_edge()).
@@ -666,8 +661,9 @@ class diagnostic {
   /// The human-readable account; empty for an empty diagnostic.
   std::string summary() const {
     if (!raw_) return std::string();
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_diagnostic_summary(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_diagnostic_summary(raw_.get(), out_text, capacity, out_needed);
     });
   }
   ///@{
@@ -737,7 +733,7 @@ class doctor_report {
   /// Every connected component.
   std::vector<hw_doctor_component> components() const {
     std::size_t n = 0;
-    check(hw_doctor_report_component_count(raw_.get(), &n));
+    check(hw_doctor_report_n_components(raw_.get(), &n));
     std::vector<hw_doctor_component> components(n);
     for (std::size_t i = 0; i < n; ++i)
       check(hw_doctor_report_component(raw_.get(), i, &components[i]));
@@ -746,7 +742,7 @@ class doctor_report {
   /// Every boundary loop.
   std::vector<boundary_loop> boundary_loops() const {
     std::size_t n = 0;
-    check(hw_doctor_report_boundary_loop_count(raw_.get(), &n));
+    check(hw_doctor_report_n_boundary_loops(raw_.get(), &n));
     std::vector<boundary_loop> loops(n);
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t* vertices = nullptr;
@@ -764,9 +760,9 @@ class doctor_report {
     std::vector<uint32_t> faces;  ///< The faces of this fan, ascending.
   };
   /// The number of non-manifold vertices whose fans the report lists.
-  std::size_t vertex_fans_count() const {
+  std::size_t n_vertex_fans() const {
     std::size_t n = 0;
-    check(hw_doctor_report_vertex_fans_count(raw_.get(), &n));
+    check(hw_doctor_report_n_vertex_fans(raw_.get(), &n));
     return n;
   }
   /// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fan()).
@@ -783,14 +779,16 @@ class doctor_report {
   const hw_diagnostic* input_diagnostic() const { return hw_doctor_report_diagnostic(raw_.get()); }
   /// The report as text.
   std::string text() const {
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_doctor_report_text(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_doctor_report_text(raw_.get(), out_text, capacity, out_needed);
     });
   }
   /// The report as JSON.
   std::string json() const {
-    return detail::copied_text([this](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_doctor_report_json(raw_.get(), buf, len, needed);
+    return detail::copied_text([this](char* out_text, std::size_t capacity,
+                                      std::size_t* out_needed) {
+      return hw_doctor_report_json(raw_.get(), out_text, capacity, out_needed);
     });
   }
   ///@{
@@ -1120,6 +1118,14 @@ class mesh {
   std::size_t n_halfedges() const { return hw_mesh_n_halfedges(get()); }
   std::size_t n_faces() const { return hw_mesh_n_faces(get()); }
   ///@}
+  ///@{
+  /// Slots of each kind, deleted ones included: valid ids are below these, and arrays indexed by
+  /// id (normals, components) have these lengths.
+  std::size_t n_vertex_slots() const { return hw_mesh_n_vertex_slots(get()); }
+  std::size_t n_halfedge_slots() const { return hw_mesh_n_halfedge_slots(get()); }
+  std::size_t n_edge_slots() const { return hw_mesh_n_edge_slots(get()); }
+  std::size_t n_face_slots() const { return hw_mesh_n_face_slots(get()); }
+  ///@}
 
   // Navigation (invalid ids give HW_INVALID_INDEX, as in C).
   ///@{
@@ -1209,7 +1215,7 @@ class mesh {
   }
   /// The component of every face slot (see hw_mesh_face_components()).
   std::vector<uint32_t> face_components() const {
-    std::vector<uint32_t> out(slots(ElementKind::Face));
+    std::vector<uint32_t> out(n_face_slots());
     std::size_t n = 0;
     check(hw_mesh_face_components(get(), out.data(), out.size(), &n));
     out.resize(n);
@@ -1239,19 +1245,19 @@ class mesh {
   // Normals, x y z per element slot.
   /// Face normals, x y z per face slot.
   std::vector<double> face_normals() const {
-    std::vector<double> out(3 * slots(ElementKind::Face));
+    std::vector<double> out(3 * n_face_slots());
     check(hw_mesh_face_normals(get(), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Vertex normals with this weighting, x y z per vertex slot.
   std::vector<double> vertex_normals(NormalWeighting weighting = NormalWeighting::Uniform) const {
-    std::vector<double> out(3 * slots(ElementKind::Vertex));
+    std::vector<double> out(3 * n_vertex_slots());
     check(hw_mesh_vertex_normals(get(), to_c(weighting), out.data(), out.size() / 3, nullptr));
     return out;
   }
   /// Normals per corner (x y z per half-edge slot), split at edges sharper than `crease_angle` radians (see hw_mesh_corner_normals()).
   std::vector<double> corner_normals(double crease_angle) const {
-    std::vector<double> out(3 * slots(ElementKind::Halfedge));
+    std::vector<double> out(3 * n_halfedge_slots());
     check(hw_mesh_corner_normals(get(), crease_angle, out.data(), out.size() / 3, nullptr));
     return out;
   }
@@ -1263,8 +1269,8 @@ class mesh {
   /// Face and vertex normals in one pass (see hw_mesh_normals()).
   face_and_vertex_normals normals(NormalWeighting weighting_kind) const {
     face_and_vertex_normals out;
-    out.faces.resize(3 * slots(ElementKind::Face));
-    out.vertices.resize(3 * slots(ElementKind::Vertex));
+    out.faces.resize(3 * n_face_slots());
+    out.vertices.resize(3 * n_vertex_slots());
     check(hw_mesh_normals(get(), to_c(weighting_kind), out.faces.data(), out.faces.size() / 3,
                           nullptr, out.vertices.data(), out.vertices.size() / 3, nullptr));
     return out;
@@ -1437,11 +1443,12 @@ class mesh {
   /// Names of the attributes of `kind`, in the order they were added.
   std::vector<std::string> attribute_names(ElementKind kind) const {
     std::size_t count = 0;
-    check(hw_mesh_attribute_count(get(), to_c(kind), &count));
+    check(hw_mesh_n_attributes(get(), to_c(kind), &count));
     std::vector<std::string> names;
     for (std::size_t i = 0; i < count; ++i) {
-      names.push_back(detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-        return hw_mesh_attribute_name(get(), to_c(kind), i, buf, len, needed);
+      names.push_back(detail::copied_text([&](char* out_text, std::size_t capacity,
+                                              std::size_t* out_needed) {
+        return hw_mesh_attribute_name(get(), to_c(kind), i, out_text, capacity, out_needed);
       }));
     }
     return names;
@@ -1504,7 +1511,6 @@ class mesh {
     check(hw_circ_around_face(get(), f, HW_CIRCULATOR_KIND_HALFEDGES, &c));
     return nav();
   }
-  std::size_t slots(ElementKind kind) const { return hw_mesh_slot_count(get(), to_c(kind)); }
   detail::owned<hw_mesh, hw_mesh_free> raw_;
 };
 
@@ -1590,9 +1596,9 @@ class winged {
   ///@}
   ///@{
   /// Slots of each kind, deleted ones included: valid ids are below these.
-  std::size_t vertex_capacity() const { return hw_winged_vertex_capacity(get()); }
-  std::size_t edge_capacity() const { return hw_winged_edge_capacity(get()); }
-  std::size_t face_capacity() const { return hw_winged_face_capacity(get()); }
+  std::size_t n_vertex_slots() const { return hw_winged_n_vertex_slots(get()); }
+  std::size_t n_edge_slots() const { return hw_winged_n_edge_slots(get()); }
+  std::size_t n_face_slots() const { return hw_winged_n_face_slots(get()); }
   ///@}
 
   /// The record of edge `e`: vertices, faces and the four wings.
@@ -1630,27 +1636,26 @@ class winged {
   }
 
   /// The position of vertex `v`.
-  point position(hw_wvertex v) const { return triple(hw_winged_position, v); }
+  point position(hw_wvertex v) const { return triple(hw_winged_vertex_position, v); }
   /// The unit normal of face `f`.
   point face_normal(hw_wface f) const { return triple(hw_winged_face_normal, f); }
   /// The unit normal of vertex `v` (see hw_winged_vertex_normal()).
   point vertex_normal(hw_wvertex v) const { return triple(hw_winged_vertex_normal, v); }
-  /// The unit normals of all faces or all vertices (WNormals::Faces, WNormals::Vertices), x
-  /// y z per id (see hw_winged_normals()).
-  std::vector<double> normals(WNormals which) const {
-    std::size_t needed = 0;
-    const hw_status sized = hw_winged_normals(get(), to_c(which), nullptr, 0, &needed);
-    if (needed == 0) {
-      check(sized);
-      return {};
-    }
-    std::vector<double> xyz(needed);
-    check(hw_winged_normals(get(), to_c(which), xyz.data(), xyz.size(), &needed));
-    return xyz;
+  /// Face normals, x y z per face slot (see hw_winged_face_normals()).
+  std::vector<double> face_normals() const {
+    std::vector<double> out(3 * n_face_slots());
+    check(hw_winged_face_normals(get(), out.data(), out.size() / 3, nullptr));
+    return out;
+  }
+  /// Vertex normals, x y z per vertex slot (see hw_winged_vertex_normals()).
+  std::vector<double> vertex_normals() const {
+    std::vector<double> out(3 * n_vertex_slots());
+    check(hw_winged_vertex_normals(get(), out.data(), out.size() / 3, nullptr));
+    return out;
   }
   /// Moves vertex `v` to `p` (finite).
-  void set_position(hw_wvertex v, const point& p) {
-    check(hw_winged_set_position(get(), v, p.data()));
+  void set_vertex_position(hw_wvertex v, const point& p) {
+    check(hw_winged_set_vertex_position(get(), v, p.data()));
   }
 
   /// The edges of `f`'s loop, counter-clockwise from its stored edge.
@@ -1711,8 +1716,9 @@ class winged {
   /// A table in a textbook layout; see hw_winged_table().
   std::string table(WTable which, WNaming naming = WNaming::CwCcw,
                     TableFormat format = TableFormat::Text) const {
-    return detail::copied_text([&](char* buf, std::size_t len, std::size_t* needed) {
-      return hw_winged_table(get(), to_c(which), to_c(naming), to_c(format), buf, len, needed);
+    return detail::copied_text([&](char* out_text, std::size_t capacity, std::size_t* out_needed) {
+      return hw_winged_table(get(), to_c(which), to_c(naming), to_c(format), out_text, capacity,
+                             out_needed);
     });
   }
 
@@ -1754,7 +1760,7 @@ using point2 = std::array<double, 2>;
 class voronoi_cells {
  public:
   /// Number of cells (one per input site, empty ones included).
-  std::size_t size() const { return hw_voronoi_cells_count(get()); }
+  std::size_t size() const { return hw_voronoi_cells_n_cells(get()); }
 
   /// All cell corners (x, y each), shared between neighbouring cells.
   values_view<const point2> positions() const {

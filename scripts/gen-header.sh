@@ -9,17 +9,31 @@ if ! have=$(cbindgen --version 2>/dev/null) || [ "$have" != "cbindgen $want" ]; 
   echo "  cargo install cbindgen --locked --version $want" >&2
   exit 2
 fi
+# cbindgen writes constants, then types, then functions; scripts/header-sections.awk regroups
+# them by topic (each section a Doxygen group under a banner, each type and enumeration's
+# constants before the first function using them).
+# Writes the header to $1, which is left alone on failure.
+generate() {
+  local raw laid_out status=0
+  raw=$(mktemp)
+  laid_out=$(mktemp)
+  cbindgen --config cbindgen.toml --crate halfwing --output "$raw" --quiet &&
+    awk -f scripts/header-sections.awk "$raw" >"$laid_out" || status=1
+  [ "$status" = 0 ] && cp "$laid_out" "$1"
+  rm -f "$raw" "$laid_out"
+  [ "$status" = 0 ] || exit 1
+}
 if [ "${1:-}" = "--check" ]; then
   tmp=$(mktemp)
   trap 'rm -f "$tmp"' EXIT
-  cbindgen --config cbindgen.toml --crate halfwing --output "$tmp" --quiet
+  generate "$tmp"
   if ! diff -u include/halfwing.h "$tmp"; then
     echo "gen-header: include/halfwing.h is stale; run scripts/gen-header.sh and commit it" >&2
     exit 1
   fi
   echo "gen-header: include/halfwing.h is up to date"
 else
-  cbindgen --config cbindgen.toml --crate halfwing --output include/halfwing.h --quiet
+  generate include/halfwing.h
 fi
 # Every name the header gives C (macros and type names) starts with hw_ / HW_ (DESIGN.md): a
 # public Rust item that slipped in must be excluded in cbindgen.toml.

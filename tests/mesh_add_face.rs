@@ -19,7 +19,7 @@ fn canonical(cycle: Vec<u32>) -> Vec<u32> {
 }
 
 fn face_cycles(mesh: &Mesh) -> Vec<Vec<u32>> {
-    let mut cycles: Vec<Vec<u32>> = (0..mesh.face_capacity() as u32)
+    let mut cycles: Vec<Vec<u32>> = (0..mesh.n_face_slots() as u32)
         .map(FaceId)
         .filter(|&f| !mesh.is_face_deleted(f))
         .map(|f| canonical(mesh.face_vertices(f).map(|v| v.0).collect()))
@@ -79,7 +79,7 @@ fn assert_same_topology(incremental: &Mesh, bulk: &Mesh) {
     );
     assert_eq!(face_cycles(incremental), face_cycles(bulk));
     assert_eq!(boundary_cycles(incremental), boundary_cycles(bulk));
-    for v in 0..bulk.vertex_capacity() as u32 {
+    for v in 0..bulk.n_vertex_slots() as u32 {
         assert_eq!(incremental.valence(VertexId(v)), bulk.valence(VertexId(v)));
         assert_eq!(
             incremental.is_boundary_vertex(VertexId(v)),
@@ -109,7 +109,7 @@ fn faces_in_file_order_rebuild_the_seed_mesh_and_real_models() {
         let reference = bulk(&soup);
         assert_same_topology(&built, &reference);
         // In file order, face ids agree with the bulk build's too.
-        for f in 0..reference.face_capacity() as u32 {
+        for f in 0..reference.n_face_slots() as u32 {
             assert_eq!(
                 canonical(built.face_vertices(FaceId(f)).map(|v| v.0).collect()),
                 canonical(reference.face_vertices(FaceId(f)).map(|v| v.0).collect())

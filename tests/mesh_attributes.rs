@@ -82,14 +82,14 @@ fn corners_keep_their_values_when_policies_skip_reorient_and_copy() {
         let kept: Vec<u32> = (0..soup.n_faces() as u32)
             .filter(|f| !diagnostic.skipped_faces.contains(f))
             .collect();
-        for f in 0..mesh.face_capacity() as u32 {
+        for f in 0..mesh.n_face_slots() as u32 {
             let mut seen = Vec::new();
             for h in mesh.face_loop(FaceId(f)) {
-                let [corner, vertex, face] = normals[h.idx()];
+                let [corner, vertex, face] = normals[h.index()];
                 assert_eq!(vertex as u32, original(mesh.origin(h)), "{policy:?}");
                 assert_eq!(face as u32, kept[f as usize], "{policy:?}");
                 assert_eq!(soup.indices[corner as usize], vertex as u32);
-                assert_eq!(uvs[h.idx()], [corner, 0.5]);
+                assert_eq!(uvs[h.index()], [corner, 0.5]);
                 seen.push(corner);
             }
             seen.dedup();
@@ -102,7 +102,7 @@ fn corners_keep_their_values_when_policies_skip_reorient_and_copy() {
         } else {
             assert!(!diagnostic.skipped_faces.is_empty());
         }
-        for h in 0..mesh.halfedge_capacity() as u32 {
+        for h in 0..mesh.n_halfedge_slots() as u32 {
             if mesh.is_boundary_halfedge(HalfedgeId(h)) {
                 assert_eq!(normals[h as usize], [0.0; 3]);
             }
@@ -156,7 +156,7 @@ fn ids(mesh: &Mesh, kind: ElementKind) -> &[u32] {
 #[test]
 fn split_edge_blends_at_the_projected_position_and_keeps_the_ends() {
     let mut mesh = tagged_grid();
-    let e = (0..mesh.edge_capacity() as u32)
+    let e = (0..mesh.n_edge_slots() as u32)
         .map(EdgeId)
         .find(|&e| !mesh.is_boundary_edge(e))
         .unwrap();
@@ -169,7 +169,7 @@ fn split_edge_blends_at_the_projected_position_and_keeps_the_ends() {
         0.0,
     ];
     let before = mesh.clone();
-    let uv = |m: &Mesh, h: HalfedgeId| m.corner_uvs().unwrap()[h.idx()][0];
+    let uv = |m: &Mesh, h: HalfedgeId| m.corner_uvs().unwrap()[h.index()][0];
     let w = mesh.split_edge(e, point).unwrap();
     assert_eq!(mesh.check(), Ok(()));
 
@@ -178,12 +178,12 @@ fn split_edge_blends_at_the_projected_position_and_keeps_the_ends() {
         .unwrap();
     let expected = point.map(|x| x as f32);
     for k in 0..3 {
-        assert!((colour[3 * w.idx() + k] - expected[k]).abs() < 1e-6);
+        assert!((colour[3 * w.index() + k] - expected[k]).abs() < 1e-6);
     }
     // Integers take the nearer end (a, a quarter of the way).
-    assert_eq!(ids(&mesh, ElementKind::Vertex)[w.idx()], a.0);
+    assert_eq!(ids(&mesh, ElementKind::Vertex)[w.index()], a.0);
     let n = mesh.next(h0); // the new half-edge w → b beside h0
-    assert_eq!(ids(&mesh, ElementKind::Edge)[n.edge().idx()], e.0);
+    assert_eq!(ids(&mesh, ElementKind::Edge)[n.edge().index()], e.0);
     let corner_a = uv(&before, h0);
     let corner_b = uv(&before, before.next(h0));
     assert_eq!(uv(&mesh, h0), corner_a);
@@ -191,7 +191,11 @@ fn split_edge_blends_at_the_projected_position_and_keeps_the_ends() {
     // Beside h1 (was b → a, now w → a) the corner at b moved to twin(n).
     assert_eq!(uv(&mesh, n.twin()), uv(&before, h1));
     let normals = mesh.corner_normals().unwrap();
-    let length = normals[h1.idx()].iter().map(|x| x * x).sum::<f64>().sqrt();
+    let length = normals[h1.index()]
+        .iter()
+        .map(|x| x * x)
+        .sum::<f64>()
+        .sqrt();
     assert!((length - 1.0).abs() < 1e-12, "blended normals are unit");
 }
 
@@ -212,8 +216,8 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
     quad.add_attribute::<i32>(ElementKind::Face, "label", 1)
         .unwrap();
     quad.attribute_mut::<i32>(ElementKind::Face, "label")
-        .unwrap()[f.idx()] = -7;
-    let corners: Vec<[f64; 2]> = (0..quad.halfedge_capacity())
+        .unwrap()[f.index()] = -7;
+    let corners: Vec<[f64; 2]> = (0..quad.n_halfedge_slots())
         .map(|h| [quad.origin(HalfedgeId(h as u32)).0 as f64, 0.0])
         .collect();
     quad.set_corner_uvs(&corners).unwrap();
@@ -222,12 +226,12 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
     let uvs = quad.corner_uvs().unwrap();
     for &t in &faces {
         assert_eq!(
-            quad.attribute::<i32>(ElementKind::Face, "label").unwrap()[t.idx()],
+            quad.attribute::<i32>(ElementKind::Face, "label").unwrap()[t.index()],
             -7
         );
         for h in quad.face_loop(t) {
             assert_eq!(
-                uvs[h.idx()][0],
+                uvs[h.index()][0],
                 quad.origin(h).0 as f64,
                 "corner of its own vertex"
             );
@@ -241,7 +245,7 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
     let uvs = quad.corner_uvs().unwrap();
     for &t in &faces {
         for h in quad.face_loop(t) {
-            assert_eq!(uvs[h.idx()][0], quad.origin(h).0 as f64, "after the flip");
+            assert_eq!(uvs[h.index()][0], quad.origin(h).0 as f64, "after the flip");
         }
     }
 }
@@ -249,26 +253,26 @@ fn face_split_flip_and_triangulate_carry_corners_and_faces() {
 #[test]
 fn collapse_delete_and_compaction_keep_values_with_their_elements() {
     let mut mesh = tagged_grid();
-    let h = (0..mesh.halfedge_capacity() as u32)
+    let h = (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .find(|&h| mesh.can_collapse_halfedge(h).is_ok())
         .unwrap();
     let (removed, kept) = (mesh.origin(h), mesh.target(h));
     assert_eq!(mesh.collapse_halfedge(h).unwrap(), kept);
-    assert_eq!(ids(&mesh, ElementKind::Vertex)[kept.idx()], kept.0);
+    assert_eq!(ids(&mesh, ElementKind::Vertex)[kept.index()], kept.0);
     let normals = mesh.corner_normals().unwrap();
-    for f in (0..mesh.face_capacity() as u32).map(FaceId) {
+    for f in (0..mesh.n_face_slots() as u32).map(FaceId) {
         if mesh.is_face_deleted(f) {
             continue;
         }
         for g in mesh.face_loop(f) {
             // Corner tags name the vertex the corner had before the collapse.
-            let tagged = VertexId(normals[g.idx()][1] as u32);
+            let tagged = VertexId(normals[g.index()][1] as u32);
             let moved = mesh.origin(g) == kept && tagged == removed;
             assert!(tagged == mesh.origin(g) || moved, "{g}: {tagged}");
         }
     }
-    let live = (0..mesh.face_capacity() as u32)
+    let live = (0..mesh.n_face_slots() as u32)
         .map(FaceId)
         .find(|&f| !mesh.is_face_deleted(f));
     mesh.delete_face(live.unwrap(), true).unwrap();
@@ -284,7 +288,7 @@ fn collapse_delete_and_compaction_keep_values_with_their_elements() {
     for (kind, map) in pairs {
         let old = ids(&before, kind);
         let new = ids(&mesh, kind);
-        assert_eq!(new.len(), mesh.capacity_of(kind));
+        assert_eq!(new.len(), mesh.n_slots(kind));
         for (old_id, &new_id) in map.iter().enumerate() {
             if new_id != u32::MAX {
                 assert_eq!(new[new_id as usize], old[old_id], "{kind}");

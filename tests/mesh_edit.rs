@@ -39,7 +39,7 @@ fn square() -> Mesh {
 #[test]
 fn flipping_the_diagonal_of_a_square() {
     let mut mesh = square();
-    let diagonal = (0..mesh.edge_capacity() as u32)
+    let diagonal = (0..mesh.n_edge_slots() as u32)
         .map(EdgeId)
         .find(|&e| !mesh.is_boundary_edge(e))
         .unwrap();
@@ -55,7 +55,7 @@ fn flipping_the_diagonal_of_a_square() {
     );
     // Boundary edges cannot flip; the mesh is untouched.
     let before = mesh.clone();
-    let boundary = (0..mesh.edge_capacity() as u32)
+    let boundary = (0..mesh.n_edge_slots() as u32)
         .map(EdgeId)
         .find(|&e| mesh.is_boundary_edge(e))
         .unwrap();
@@ -117,7 +117,7 @@ fn deleting_faces_and_collecting_garbage() {
         (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
         (v, e, f)
     );
-    assert_eq!(mesh.vertex_capacity(), v);
+    assert_eq!(mesh.n_vertex_slots(), v);
     assert_eq!(maps.vertices[0], u32::MAX);
     assert_eq!(maps.vertices[1], 0);
     assert_eq!(maps.faces[..2], [u32::MAX, 0]);
@@ -242,7 +242,7 @@ fn fans_that_cannot_be_linked_are_built_apart_and_edited_apart() {
                 }
             }
         }
-        for h in (0..built.halfedge_capacity() as u32).map(HalfedgeId) {
+        for h in (0..built.n_halfedge_slots() as u32).map(HalfedgeId) {
             let mut mesh = built.clone();
             let _ = mesh.collapse_halfedge(h);
             assert_eq!(mesh.check(), Ok(()));
@@ -294,8 +294,8 @@ fn edit() -> impl Strategy<Value = Edit> {
 
 /// Applies `edit` with ids taken modulo the capacities; returns whether it succeeded.
 fn apply(mesh: &mut Mesh, edit: &Edit) -> bool {
-    let edge = |i: u32, mesh: &Mesh| EdgeId(i % mesh.edge_capacity().max(1) as u32);
-    let face = |i: u32, mesh: &Mesh| FaceId(i % mesh.face_capacity().max(1) as u32);
+    let edge = |i: u32, mesh: &Mesh| EdgeId(i % mesh.n_edge_slots().max(1) as u32);
+    let face = |i: u32, mesh: &Mesh| FaceId(i % mesh.n_face_slots().max(1) as u32);
     match *edit {
         Edit::Flip(e) => mesh.flip_edge(edge(e, mesh)).is_ok(),
         Edit::SplitEdge(e) => {
@@ -326,7 +326,7 @@ fn apply(mesh: &mut Mesh, edit: &Edit) -> bool {
         Edit::Triangulate(f) => mesh.triangulate_face(face(f, mesh)).is_ok(),
         Edit::DeleteFace(f, isolated) => mesh.delete_face(face(f, mesh), isolated).is_ok(),
         Edit::Collapse(h) => {
-            let h = HalfedgeId(h % mesh.halfedge_capacity().max(1) as u32);
+            let h = HalfedgeId(h % mesh.n_halfedge_slots().max(1) as u32);
             mesh.collapse_halfedge(h).is_ok()
         }
     }
@@ -536,7 +536,7 @@ fn triangulating_faces_that_visit_vertices_twice_keeps_the_mesh_valid() {
         let (v0, _) = w.mvfs([0.0, 0.0, 0.0]).unwrap();
         let mut vertices = vec![v0];
         for _ in 0..3 + below(8) {
-            let f = halfwing::winged::FaceId(below(w.face_capacity() as usize) as u32);
+            let f = halfwing::winged::FaceId(below(w.n_face_slots() as usize) as u32);
             let v = vertices[below(vertices.len())];
             if below(2) == 0 {
                 let at = [below(9) as f64 - 4.0, below(9) as f64 - 4.0, 0.0];
@@ -549,7 +549,7 @@ fn triangulating_faces_that_visit_vertices_twice_keeps_the_mesh_valid() {
         }
         // MEF may join two vertices joined already: no mesh has such a second edge.
         let Ok(mesh) = w.to_mesh() else { continue };
-        for f in (0..mesh.face_capacity() as u32).map(FaceId) {
+        for f in (0..mesh.n_face_slots() as u32).map(FaceId) {
             let mut edited = mesh.clone();
             match edited.triangulate_face(f) {
                 Ok(_) => {

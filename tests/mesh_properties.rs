@@ -106,7 +106,7 @@ proptest! {
         }).collect::<Vec<_>>());
         prop_assert_eq!(diagnostic.isolated_vertices.len(), mesh.isolated_vertices().len());
         let boundary: usize = mesh.boundary_loops().iter().map(|&h| mesh.halfedge_loop(h).count()).sum();
-        let boundary_halfedges = (0..mesh.halfedge_capacity() as u32)
+        let boundary_halfedges = (0..mesh.n_halfedge_slots() as u32)
             .filter(|&h| mesh.is_boundary_halfedge(halfwing::mesh::HalfedgeId(h)))
             .count();
         prop_assert_eq!(boundary, boundary_halfedges);

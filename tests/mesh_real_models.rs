@@ -210,7 +210,7 @@ fn broken_models_are_diagnosed_as_the_manifest_says() {
             assert_eq!(split.len(), non_manifold_vertices, "{file}: {diagnostic}");
             // Each copy's valence adds to its original's: together, the file's valence.
             let mut total = vec![0; soup.positions.len()];
-            for v in 0..mesh.vertex_capacity() as u32 {
+            for v in 0..mesh.n_vertex_slots() as u32 {
                 let original = match (v as usize).checked_sub(soup.positions.len()) {
                     Some(copy) => diagnostic.vertex_copies[copy] as usize,
                     None => v as usize,

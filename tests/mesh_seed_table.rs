@@ -101,7 +101,7 @@ fn seed_table_topology_matches_through_the_halfedge_map() {
     let map: Vec<HalfedgeId> = (0..24)
         .map(|e| {
             let (from, to) = (VertexId(HALFEDGES[e][0]), VertexId(target(e)));
-            (0..mesh.halfedge_capacity() as u32)
+            (0..mesh.n_halfedge_slots() as u32)
                 .map(HalfedgeId)
                 .find(|&h| mesh.origin(h) == from && mesh.target(h) == to)
                 .unwrap_or_else(|| panic!("no half-edge {from:?}→{to:?}"))
@@ -145,7 +145,7 @@ fn seed_vertices_store_their_boundary_halfedge() {
     // Counter-clockwise around v4 from e15's twin side: neighbours in CCW order about (2, 2).
     let ring: Vec<VertexId> = mesh.vertex_vertices(VertexId(3)).collect();
     let angle = |v: VertexId| {
-        let p = POSITIONS[v.idx()];
+        let p = POSITIONS[v.index()];
         (p[1] - 2.0).atan2(p[0] - 2.0)
     };
     let turns = (0..ring.len())

@@ -46,7 +46,7 @@ fn check_buffers(name: &str, mesh: &Mesh, buffers: &MeshBuffers, expected_non_ma
     );
 
     // Every live face of n corners gives n - 2 triangles, face after face.
-    let expected: usize = (0..mesh.face_capacity())
+    let expected: usize = (0..mesh.n_face_slots())
         .map(|f| FaceId(f as u32))
         .filter(|&f| !mesh.is_face_deleted(f))
         .map(|f| mesh.face_degree(f) - 2)
@@ -73,7 +73,7 @@ fn check_buffers(name: &str, mesh: &Mesh, buffers: &MeshBuffers, expected_non_ma
         );
     }
 
-    let boundary_edges = (0..mesh.edge_capacity())
+    let boundary_edges = (0..mesh.n_edge_slots())
         .map(|e| EdgeId(e as u32))
         .filter(|&e| !mesh.is_edge_deleted(e) && mesh.is_boundary_edge(e))
         .count();

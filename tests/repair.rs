@@ -33,7 +33,7 @@ fn unwelded(soup: &PolygonSoup) -> PolygonSoup {
 }
 
 fn boundary_edges(mesh: &Mesh) -> usize {
-    (0..mesh.halfedge_capacity() as u32)
+    (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .filter(|&h| !mesh.is_halfedge_deleted(h) && mesh.is_boundary_halfedge(h))
         .count()
@@ -382,7 +382,7 @@ fn stitching_a_cut_grid_closes_the_cut() {
     let soup = cut_grid();
     let (mut mesh, _) = Mesh::from_soup(&soup, BuildPolicy::Strict).unwrap();
     mesh.set_corner_uvs(
-        &(0..mesh.halfedge_capacity())
+        &(0..mesh.n_halfedge_slots())
             .map(|h| [h as f64, 0.0])
             .collect::<Vec<_>>(),
     )
@@ -396,7 +396,7 @@ fn stitching_a_cut_grid_closes_the_cut() {
                 let mut out = vec![];
                 let mut h = start;
                 loop {
-                    out.push(mesh.corner_uvs().unwrap()[h.idx()][0]);
+                    out.push(mesh.corner_uvs().unwrap()[h.index()][0]);
                     h = mesh.next(h);
                     if h == start {
                         break;

@@ -48,7 +48,7 @@ fn faces(mesh: &Mesh) -> Vec<Vec<u32>> {
 }
 
 fn boundary_edges(mesh: &Mesh) -> usize {
-    (0..mesh.halfedge_capacity() as u32)
+    (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .filter(|&h| !mesh.is_halfedge_deleted(h) && mesh.is_boundary_halfedge(h))
         .count()

@@ -9,7 +9,8 @@ use std::time::{Duration, Instant};
 use halfwing::geom::self_intersections;
 use halfwing::mesh::{BuildPolicy, FaceId, HalfedgeId, Mesh};
 use halfwing::repair::{
-    DEGENERATE_RATIO, FOLD_ANGLE_DEGREES, FillError, HoleFillOptions, fill_hole, fill_holes,
+    DEGENERATE_RATIO, FOLD_ANGLE_DEGREES, FillError, FillMode, HoleFillOptions, fill_hole,
+    fill_holes,
 };
 use halfwing::soup::FaceList;
 use mesh_support::{data_dir, load};
@@ -92,7 +93,7 @@ fn largest_angle_to_neighbours(mesh: &Mesh, faces: &[FaceId]) -> f64 {
 
 /// The mesh's faces as triangles (fans), for the self-intersection search.
 fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let positions = (0..mesh.vertex_capacity() as u32)
+    let positions = (0..mesh.n_vertex_slots() as u32)
         .map(|v| {
             let v = halfwing::mesh::VertexId(v);
             if mesh.check_vertex(v).is_ok() {
@@ -103,7 +104,7 @@ fn triangles(mesh: &Mesh) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
         })
         .collect();
     let mut tris = Vec::new();
-    for f in 0..mesh.face_capacity() as u32 {
+    for f in 0..mesh.n_face_slots() as u32 {
         let f = FaceId(f);
         if mesh.check_face(f).is_err() {
             continue;
@@ -398,4 +399,143 @@ fn fill_open_models(no_new_intersections: bool) {
     // each other (453 intersecting pairs before any fill): every fill tried crosses them, and
     // they are refused. The eight other open models are filled.
     assert!(filled_models >= 8, "{filled_models} models filled");
+}
+
+/// A flat 4 × 4 grid of unit squares (corners `(i, j, 0)`, vertex `5j + i`) without the squares
+/// at (1, 1) and (2, 2), then `extra` triangles (corners appended after the grid's): the build
+/// splits vertex 12 at (2, 2), where the two squares meet, into two copies, one per fan, and the
+/// two squares make one hole whose boundary passes twice through (2, 2).
+fn figure_eight_hole(extra: &[[f64; 3]]) -> Mesh {
+    figure_eight_of_blocks(1, extra)
+}
+
+/// [`figure_eight_hole`] with every square of the grid cut into `block` × `block` unit squares:
+/// a hole of `8 × block` edges through `(2 block, 2 block)` twice.
+fn figure_eight_of_blocks(block: u32, extra: &[[f64; 3]]) -> Mesh {
+    let side = 4 * block;
+    let mut positions: Vec<[f64; 3]> = (0..(side + 1) * (side + 1))
+        .map(|k| [f64::from(k % (side + 1)), f64::from(k / (side + 1)), 0.0])
+        .collect();
+    let mut indices = Vec::new();
+    for (i, j) in (0..side).flat_map(|j| (0..side).map(move |i| (i, j))) {
+        let square = (i / block, j / block);
+        if square != (1, 1) && square != (2, 2) {
+            let v = (side + 1) * j + i;
+            indices.extend([v, v + 1, v + side + 2, v, v + side + 2, v + side + 1]);
+        }
+    }
+    for corners in extra.chunks(3) {
+        indices.extend((0..3).map(|k| (positions.len() + k) as u32));
+        positions.extend_from_slice(corners);
+    }
+    let (mesh, diagnostic) = Mesh::from_face_list(
+        &FaceList::triangles(&positions, &indices),
+        BuildPolicy::Repair,
+    )
+    .unwrap();
+    assert_eq!(diagnostic.vertex_copies.len(), 1);
+    let lengths: Vec<usize> = mesh
+        .boundary_loops()
+        .iter()
+        .map(|&h| mesh.halfedge_loop(h).count())
+        .collect();
+    assert!(lengths.contains(&(8 * block as usize)), "{lengths:?}");
+    mesh
+}
+
+/// Holes only up to the figure eight's 8 edges (the grid's outer border has 16).
+const INNER_HOLES: HoleFillOptions = HoleFillOptions {
+    max_edges: 8,
+    max_perimeter: f64::INFINITY,
+    mode: FillMode::Triangulate,
+};
+
+#[test]
+fn each_part_of_a_hole_through_one_point_twice_is_refined_and_faired() {
+    for mode in [FillMode::Refine, FillMode::Fair] {
+        let mut mesh = figure_eight_of_blocks(3, &[]);
+        let options = HoleFillOptions {
+            max_edges: 24,
+            mode,
+            ..HoleFillOptions::default()
+        };
+        let report = fill_holes(&mut mesh, &options).unwrap();
+        assert!(report.refused.is_empty(), "{mode:?}: {:?}", report.refused);
+        assert_eq!(report.filled.len(), 2, "{mode:?}");
+        assert_eq!(report.welded_vertices.len(), 1, "{mode:?}");
+        for hole in &report.filled {
+            assert_eq!(hole.edges, 12);
+            assert!(
+                !hole.vertices.is_empty(),
+                "{mode:?}: a 3 × 3 hole is refined"
+            );
+            assert_eq!(hole.faces.len(), hole.edges - 2 + 2 * hole.vertices.len());
+            for &v in &hole.vertices {
+                let [x, y, z] = mesh.position(v);
+                // Inside one of the two squares, on their plane (fairing a flat rim keeps it).
+                let inside = |lo: f64| x > lo && x < lo + 3.0 && y > lo && y < lo + 3.0;
+                assert!(inside(3.0) || inside(6.0), "{mode:?}: ({x}, {y})");
+                assert!(z.abs() < 1e-9, "{mode:?}: z = {z}");
+            }
+        }
+        mesh.check().unwrap();
+        assert_eq!(
+            mesh.boundary_loops().len(),
+            1,
+            "{mode:?}: the outer border is left"
+        );
+        assert!(mesh.non_manifold_vertices().is_empty());
+    }
+}
+
+#[test]
+fn a_hole_through_one_point_twice_is_filled_as_two() {
+    let mut mesh = figure_eight_hole(&[]);
+    let vertices = mesh.n_vertices();
+    let report = fill_holes(&mut mesh, &INNER_HOLES).unwrap();
+    assert_eq!(report.filled.len(), 2);
+    assert!(report.filled.iter().all(|h| h.edges == 4));
+    assert!(report.refused.is_empty(), "{:?}", report.refused);
+    assert_eq!(report.faces_added(), 4);
+    assert_eq!(report.welded_vertices.len(), 1);
+    let [gone, kept] = report.welded_vertices[0];
+    assert_eq!(mesh.position(kept), [2.0, 2.0, 0.0]);
+    assert!(mesh.is_vertex_deleted(gone));
+    mesh.check().unwrap();
+    assert_eq!(mesh.n_vertices(), vertices - 1);
+    assert!(mesh.non_manifold_vertices().is_empty());
+    assert_eq!(
+        mesh.boundary_loops().len(),
+        1,
+        "only the outer border is left"
+    );
+    let faces: Vec<FaceId> = report.filled.iter().flat_map(|h| h.faces.clone()).collect();
+    assert_not_folded(&mesh, &faces);
+}
+
+#[test]
+fn a_hole_through_one_point_twice_is_left_whole_when_no_part_fills() {
+    // A vertical triangle through both squares: every fill of either part crosses it.
+    let blade = [[1.2, 1.2, -1.0], [2.8, 2.8, -1.0], [2.0, 2.0, 1.0]];
+    let mut mesh = figure_eight_hole(&blade);
+    let before = shape(&mesh);
+    let loops = mesh.boundary_loops();
+    let report = fill_holes(&mut mesh, &INNER_HOLES).unwrap();
+    assert!(report.filled.is_empty());
+    assert!(report.welded_vertices.is_empty());
+    // Refused once, as one hole (the blade's own border, a flat triangle's, is refused too).
+    let crossing: Vec<HalfedgeId> = report
+        .refused
+        .iter()
+        .filter(|(_, why)| matches!(why, FillError::SelfIntersecting))
+        .map(|&(h, _)| h)
+        .collect();
+    assert_eq!(crossing.len(), 1, "{:?}", report.refused);
+    assert_eq!(mesh.halfedge_loop(crossing[0]).count(), 8);
+    assert_eq!(report.refused.len(), 2);
+    let refused: Vec<HalfedgeId> = report.refused.iter().map(|r| r.0).collect();
+    assert_eq!(refused, loops[1..], "the outer border is beyond the bounds");
+    assert_eq!(shape(&mesh), before);
+    assert_eq!(mesh.boundary_loops(), loops);
+    mesh.check().unwrap();
 }

@@ -18,7 +18,7 @@ use halfwing::surfaces::icosphere;
 fn capless_sphere(level: u32, height: f64) -> Mesh {
     let (mut mesh, _) =
         Mesh::from_soup(&icosphere(1.0, level).unwrap(), BuildPolicy::Strict).unwrap();
-    let cap: Vec<FaceId> = (0..mesh.face_capacity() as u32)
+    let cap: Vec<FaceId> = (0..mesh.n_face_slots() as u32)
         .map(FaceId)
         .filter(|&f| {
             let z: f64 = mesh.face_vertices(f).map(|v| mesh.position(v)[2]).sum();
@@ -73,7 +73,7 @@ fn largest_turn(mesh: &Mesh, faces: &[FaceId]) -> f64 {
 
 fn no_self_intersection(mesh: &Mesh) {
     // The fills are on a mesh without deleted elements: ids are indices.
-    let triangles: Vec<[u32; 3]> = (0..mesh.face_capacity() as u32)
+    let triangles: Vec<[u32; 3]> = (0..mesh.n_face_slots() as u32)
         .map(|f| {
             let c: Vec<u32> = mesh.face_vertices(FaceId(f)).map(|v| v.0).collect();
             [c[0], c[1], c[2]]
@@ -160,7 +160,7 @@ fn fill_cap(level: u32, height: f64, mode: FillMode) -> (Mesh, HoleFillReport) {
     let heights = mesh
         .attribute::<f64>(ElementKind::Vertex, "height")
         .unwrap();
-    let rim: Vec<f64> = (0..mesh.vertex_capacity() as u32)
+    let rim: Vec<f64> = (0..mesh.n_vertex_slots() as u32)
         .map(VertexId)
         .filter(|&v| !hole.vertices.contains(&v))
         .filter(|&v| mesh.position(v)[2] > height - 0.1)

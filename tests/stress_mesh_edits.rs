@@ -57,9 +57,9 @@ fn case(rng: &mut TestRng) {
     mesh.check().expect("a built mesh passes its check");
     for step in 0..rng.random_range(1..64) {
         let before = mesh.clone();
-        let h = HalfedgeId(index_below(rng, mesh.halfedge_capacity() + 1));
-        let e = EdgeId(index_below(rng, mesh.edge_capacity() + 1));
-        let f = FaceId(index_below(rng, mesh.face_capacity() + 1));
+        let h = HalfedgeId(index_below(rng, mesh.n_halfedge_slots() + 1));
+        let e = EdgeId(index_below(rng, mesh.n_edge_slots() + 1));
+        let f = FaceId(index_below(rng, mesh.n_face_slots() + 1));
         let (operation, done) = match rng.random_range(0..8) {
             0 => ("flip", mesh.flip_edge(e).is_ok()),
             1 => {
@@ -67,7 +67,7 @@ fn case(rng: &mut TestRng) {
                 ("split edge", mesh.split_edge(e, [t, 1.0 - t, 0.5]).is_ok())
             }
             2 => {
-                let other = HalfedgeId(index_below(rng, mesh.halfedge_capacity()));
+                let other = HalfedgeId(index_below(rng, mesh.n_halfedge_slots()));
                 ("split face", mesh.split_face(h, other).is_ok())
             }
             3 => ("triangulate", mesh.triangulate_face(f).is_ok()),
@@ -79,7 +79,7 @@ fn case(rng: &mut TestRng) {
             6 => {
                 let n = rng.random_range(0..6);
                 let corners: Vec<VertexId> = (0..n)
-                    .map(|_| VertexId(index_below(rng, mesh.vertex_capacity() + 1)))
+                    .map(|_| VertexId(index_below(rng, mesh.n_vertex_slots() + 1)))
                     .collect();
                 ("add face", mesh.add_face(&corners).is_ok())
             }

@@ -28,7 +28,7 @@ fn case(rng: &mut TestRng) {
         let faces: Vec<FaceId> = w.faces().collect();
         let edges: Vec<EdgeId> = w.edges().collect();
         let vertices: Vec<VertexId> = w.vertices().collect();
-        let face = live_or_any(rng, &faces, FaceId, w.face_capacity());
+        let face = live_or_any(rng, &faces, FaceId, w.n_face_slots());
         // A vertex of `face` when it has any, so that MEV and MEF mostly apply.
         let on_face: Vec<VertexId> = w
             .face_vertices(face)
@@ -38,11 +38,11 @@ fn case(rng: &mut TestRng) {
             if !on_face.is_empty() && rng.random_bool(0.8) {
                 *choose(rng, &on_face)
             } else {
-                live_or_any(rng, &vertices, VertexId, w.vertex_capacity())
+                live_or_any(rng, &vertices, VertexId, w.n_vertex_slots())
             }
         };
         let (v1, v2) = (vertex(rng), vertex(rng));
-        let edge = live_or_any(rng, &edges, EdgeId, w.edge_capacity());
+        let edge = live_or_any(rng, &edges, EdgeId, w.n_edge_slots());
         let (operation, done) = match rng.random_range(0..10) {
             0 => ("mvfs", w.mvfs(position(rng)).is_ok()),
             1..=3 => ("mev", w.mev(face, v1, position(rng)).is_ok()),

@@ -253,7 +253,7 @@ fn point_faces_do_not_convert_and_deleted_elements_are_left_out_of_the_round_tri
     w.mef(f0, v2, v0).unwrap();
     let (spare, tip) = w.mev(f0, v1, [2.0, 2.0, 0.0]).unwrap();
     w.kev(spare, tip).unwrap();
-    assert!(w.edge_capacity() > w.n_edges());
+    assert!(w.n_edge_slots() > w.n_edges());
     let mesh = w.to_mesh().unwrap();
     mesh.check().unwrap();
     assert_eq!(
@@ -310,7 +310,7 @@ fn non_finite_vertices_keep_their_ids_through_the_conversion() {
         assert_eq!(converted.halfedge_origins(), mesh.halfedge_origins());
         assert_eq!(converted, mesh, "{policy:?}");
         assert_eq!(converted.n_vertices(), 4);
-        assert_eq!(converted.vertex_capacity(), 5);
+        assert_eq!(converted.n_vertex_slots(), 5);
     }
 }
 

@@ -315,13 +315,17 @@ fn garbage_collect_compacts_after_kills() {
     let before = w.to_soup();
     let map = w.garbage_collect();
     w.check().unwrap();
-    assert_eq!(w.vertex_capacity(), w.n_vertices());
-    assert_eq!(w.edge_capacity(), w.n_edges());
-    assert_eq!(w.face_capacity(), w.n_faces());
-    assert_eq!(map.faces[f.index()], FaceId::INVALID);
-    assert_eq!(map.vertices[v.index()], VertexId::INVALID);
+    assert_eq!(w.n_vertex_slots(), w.n_vertices());
+    assert_eq!(w.n_edge_slots(), w.n_edges());
+    assert_eq!(w.n_face_slots(), w.n_faces());
+    assert_eq!(map.faces[f.index()], FaceId::INVALID.0);
+    assert_eq!(map.vertices[v.index()], VertexId::INVALID.0);
+    assert!(map.halfedges.is_empty());
     assert_eq!(
-        map.edges.iter().filter(|e| e.is_valid()).count(),
+        map.edges
+            .iter()
+            .filter(|&&e| e != EdgeId::INVALID.0)
+            .count(),
         w.n_edges() as usize
     );
     assert_eq!(w.to_soup(), before);

@@ -55,7 +55,7 @@ static void print_loops(const hw_mesh *mesh) {
 static void print_valences(const hw_mesh *mesh) {
     uint32_t min = UINT32_MAX, max = 0;
     size_t total = 0,
-           n = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX); /* ids run 0 .. slots-1 */
+           n = hw_mesh_n_vertex_slots(mesh); /* ids run 0 .. slots-1 */
     for (uint32_t v = 0; v < n; ++v) {
         hw_vertex vertex = {v};
         uint32_t valence = hw_mesh_vertex_valence(mesh, vertex);
@@ -68,8 +68,8 @@ static void print_valences(const hw_mesh *mesh) {
 
 /* The normals of the first few faces and vertices (arrays are indexed by element id). */
 static int print_normals(const hw_mesh *mesh) {
-  size_t n_faces = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_FACE),
-         n_vertices = hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_VERTEX);
+  size_t n_faces = hw_mesh_n_face_slots(mesh),
+         n_vertices = hw_mesh_n_vertex_slots(mesh);
   double *faces = malloc(3 * n_faces * sizeof *faces),
          *vertices = malloc(3 * n_vertices * sizeof *vertices);
   hw_status status = faces && vertices ? hw_mesh_normals(mesh, HW_NORMAL_WEIGHTING_ANGLE, faces,

@@ -85,7 +85,7 @@ int main(int argc, char **argv) {
         hw_voronoi_free(voronoi);
         return fail("hw_voronoi_clip_rect", status);
     }
-    for (site = 0; site < hw_voronoi_cells_count(cells); ++site) {
+    for (site = 0; site < hw_voronoi_cells_n_cells(cells); ++site) {
         double area = 0;
         status = hw_voronoi_cells_area_centroid(cells, site, &area, NULL);
         if (status != HW_OK) break;
@@ -98,7 +98,7 @@ int main(int argc, char **argv) {
     }
     if (status == HW_OK) {
         printf("%zu non-empty cells of %zu (the duplicate has none)\n", non_empty,
-               hw_voronoi_cells_count(cells));
+               hw_voronoi_cells_n_cells(cells));
         printf("total area %.6f (rectangle %.0f x %.0f: %.6f)\n", total_area, WIDTH, HEIGHT,
                WIDTH * HEIGHT);
         printf("largest cell: site %u, area %.4f\n", largest, largest_area);

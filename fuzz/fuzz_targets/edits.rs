@@ -29,22 +29,22 @@ fuzz_target!(|bytes: &[u8]| {
     for edit in edits.chunks_exact(3).take(64) {
         let before = mesh.clone();
         let (kind, a, b) = (edit[0] % 7, edit[1], edit[2]);
-        let h = HalfedgeId(pick(a, mesh.halfedge_capacity()));
+        let h = HalfedgeId(pick(a, mesh.n_halfedge_slots()));
         let done = match kind {
-            0 => mesh.flip_edge(EdgeId(pick(a, mesh.edge_capacity()))).is_ok(),
+            0 => mesh.flip_edge(EdgeId(pick(a, mesh.n_edge_slots()))).is_ok(),
             1 => {
                 let t = f64::from(b) / 255.0;
-                mesh.split_edge(EdgeId(pick(a, mesh.edge_capacity())), [t, 1.0 - t, 0.0])
+                mesh.split_edge(EdgeId(pick(a, mesh.n_edge_slots())), [t, 1.0 - t, 0.0])
                     .is_ok()
             }
             2 => {
-                let other = HalfedgeId(pick(b, mesh.halfedge_capacity()));
+                let other = HalfedgeId(pick(b, mesh.n_halfedge_slots()));
                 mesh.split_face(h, other).is_ok()
             }
-            3 => mesh.triangulate_face(FaceId(pick(a, mesh.face_capacity()))).is_ok(),
+            3 => mesh.triangulate_face(FaceId(pick(a, mesh.n_face_slots()))).is_ok(),
             4 => mesh.collapse_halfedge(h).is_ok(),
             5 => mesh
-                .delete_face(FaceId(pick(a, mesh.face_capacity())), b & 1 == 1)
+                .delete_face(FaceId(pick(a, mesh.n_face_slots())), b & 1 == 1)
                 .is_ok(),
             _ => {
                 mesh.garbage_collect();

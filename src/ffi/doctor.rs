@@ -2,14 +2,14 @@
 
 use crate::doctor::{DoctorOptions, DoctorReport, Finding, examine};
 
-use super::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, view_start};
-use super::diagnostic::hw_diagnostic;
-use super::error::FfiError;
-use super::face_list::face_list_arg;
-use super::handle::{free_handle, into_handle};
-use super::mesh::{hw_mesh, mesh_ref};
-use super::status::*;
-use super::threads::with_threads;
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::face_list::face_list_arg;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::threads::with_threads;
+use crate::ffi::boundary::{Out, arg_ref, copy_text, guard, guard_value, guard_void, view_start};
+use crate::ffi::mesh::diagnostic::hw_diagnostic;
+use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
 
 /// The doctor's thresholds; hw_doctor_options_default() gives the documented defaults.
 /// \ingroup doctor
@@ -396,7 +396,7 @@ pub struct hw_doctor_component {
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_component_count(
+pub unsafe extern "C" fn hw_doctor_report_n_components(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -450,7 +450,7 @@ pub unsafe extern "C" fn hw_doctor_report_component(
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_boundary_loop_count(
+pub unsafe extern "C" fn hw_doctor_report_n_boundary_loops(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -500,7 +500,7 @@ pub unsafe extern "C" fn hw_doctor_report_boundary_loop(
 /// `report` must be NULL or live; `out_count` writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
+pub unsafe extern "C" fn hw_doctor_report_n_vertex_fans(
     report: *const hw_doctor_report,
     out_count: *mut usize,
 ) -> hw_status {
@@ -508,7 +508,7 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fans_count(
     unsafe { give_count(report, out_count, |r| r.non_manifold_vertex_fans.len()) }
 }
 
-/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_vertex_fans_count()): the vertex,
+/// Fan `fan` of non-manifold vertex `index` (see hw_doctor_report_n_vertex_fans()): the vertex,
 /// its number of fans, and a zero-copy view of the fan's faces (ascending; fans in order of their
 /// lowest face), valid as long as the report.
 ///
@@ -550,22 +550,31 @@ pub unsafe extern "C" fn hw_doctor_report_vertex_fan(
 }
 
 /// The report as text (a summary line, the diagnostic, a line per component and per non-empty
-/// finding naming its first few elements), copied NUL-terminated into `buf`; `*needed` receives
-/// the size needed even when `buf` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and nothing is
-/// written to `buf`).
+/// finding naming its first few elements), copied NUL-terminated into `out_text`; `*out_needed`
+/// receives the size needed even when `out_text` is too small (then `HW_ERR_BUFFER_TOO_SMALL` and
+/// nothing is written to `out_text`).
 ///
 /// # Safety
-/// `report` must be NULL or live; `buf` NULL or `len` writable bytes; `needed` NULL or writable.
+/// `report` must be NULL or live; `out_text` NULL or `capacity` writable bytes; `out_needed` NULL
+/// or writable.
 /// \ingroup doctor
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_text(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { give_text(report, buf, len, needed, DoctorReport::to_string) }
+    unsafe {
+        give_text(
+            report,
+            out_text,
+            capacity,
+            out_needed,
+            DoctorReport::to_string,
+        )
+    }
 }
 
 /// The whole report as one JSON object (every element of every finding), copied as
@@ -577,12 +586,20 @@ pub unsafe extern "C" fn hw_doctor_report_text(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_doctor_report_json(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
-    unsafe { give_text(report, buf, len, needed, DoctorReport::to_json) }
+    unsafe {
+        give_text(
+            report,
+            out_text,
+            capacity,
+            out_needed,
+            DoctorReport::to_json,
+        )
+    }
 }
 
 /// Copies `render(report)` into the caller's buffer: the body of the text calls.
@@ -591,16 +608,16 @@ pub unsafe extern "C" fn hw_doctor_report_json(
 /// As for hw_doctor_report_text().
 unsafe fn give_text(
     report: *const hw_doctor_report,
-    buf: *mut std::ffi::c_char,
-    len: usize,
-    needed: *mut usize,
+    out_text: *mut std::ffi::c_char,
+    capacity: usize,
+    out_needed: *mut usize,
     render: impl FnOnce(&DoctorReport) -> String,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let report = unsafe { report_ref(report) }?;
         // SAFETY: forwarded from the caller.
-        unsafe { copy_text(&render(report), buf, len, needed) }
+        unsafe { copy_text(&render(report), out_text, capacity, out_needed) }
     })
 }
 

@@ -8,17 +8,17 @@ use crate::render::{
     polygon_buffer, polygon_buffer_2d, voronoi_cell_buffer,
 };
 
-use super::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
-use super::diagnostic::hw_diagnostic;
-use super::doctor::{finding_kind, hw_doctor_finding, hw_doctor_report, report_ref};
-use super::error::FfiError;
-use super::face_list::face_list_arg;
-use super::handle::{free_handle, into_handle};
-use super::mesh::{hw_mesh, mesh_ref};
-use super::normals::{HW_NORMAL_WEIGHTING_ANGLE, hw_normal_weighting, weighting};
-use super::status::*;
-use super::threads::with_threads;
-use super::voronoi_cells::{cells_ref, hw_voronoi_cells};
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::face_list::face_list_arg;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::threads::with_threads;
+use crate::ffi::boundary::{Out, arg_ref, arg_slice, give_view, guard, guard_value, guard_void};
+use crate::ffi::doctor::{finding_kind, hw_doctor_finding, hw_doctor_report, report_ref};
+use crate::ffi::mesh::diagnostic::hw_diagnostic;
+use crate::ffi::mesh::lifecycle::{hw_mesh, mesh_ref};
+use crate::ffi::mesh::normals::{HW_NORMAL_WEIGHTING_ANGLE, hw_normal_weighting, weighting};
+use crate::ffi::voronoi::cells::{cells_ref, hw_voronoi_cells};
 
 /// Where the normals of hw_render_buffers_build() come from.
 /// \ingroup render
@@ -78,7 +78,7 @@ pub struct hw_render_options {
     /// then carry uvs, as given.
     pub corner_uvs: *const f64,
     /// Half-edge slots in `corner_normals` and `corner_uvs`: must be
-    /// `hw_mesh_slot_count(mesh, HW_ELEMENT_KIND_HALFEDGE)` when either is given.
+    /// `hw_mesh_n_halfedge_slots(mesh)` when either is given.
     pub n_corners: usize,
 }
 

@@ -15,15 +15,15 @@ use crate::repair::{
 };
 use crate::soup::PolygonSoup;
 
-use super::boundary::{Out, arg_mut, arg_ref, give_view, guard, guard_void};
-use super::edit::hw_index_maps;
-use super::elements::hw_halfedge;
-use super::error::FfiError;
-use super::face_list::face_list_arg;
-use super::handle::{free_handle, into_handle};
-use super::io::hw_soup;
-use super::mesh::hw_mesh;
-use super::status::*;
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::face_list::face_list_arg;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::{Out, arg_mut, arg_ref, give_view, guard, guard_void};
+use crate::ffi::mesh::edit::hw_index_maps;
+use crate::ffi::mesh::elements::hw_halfedge;
+use crate::ffi::mesh::io::hw_soup;
+use crate::ffi::mesh::lifecycle::hw_mesh;
 
 /// What a repair changed. Opaque; from the `hw_soup_*` repairs, hw_mesh_remove_degenerate_faces(),
 /// hw_mesh_remove_t_vertices() and hw_mesh_stitch_borders();

@@ -7,17 +7,17 @@ use crate::repair::{
     VertexFate, repair_mesh,
 };
 
-use super::boundary::{Out, arg_ref, give_view, guard, guard_void};
-use super::error::FfiError;
-use super::handle::{free_handle, into_handle};
-use super::io::hw_soup;
-use super::mesh::hw_mesh;
-use super::repair::{
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::{Out, arg_ref, give_view, guard, guard_void};
+use crate::ffi::mesh::io::hw_soup;
+use crate::ffi::mesh::lifecycle::hw_mesh;
+use crate::ffi::repair::{
     HW_FILL_MODE_TRIANGULATE, HW_SMALL_COMPONENTS_BY_FACE_COUNT,
     HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER, fill_mode_arg, hw_fill_mode, hw_small_components,
     tolerance_arg,
 };
-use super::status::*;
 
 /// Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
 /// duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices

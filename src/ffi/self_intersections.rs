@@ -3,12 +3,12 @@
 
 use crate::geom::{SelfIntersectionError, face_self_intersections};
 
-use super::boundary::{Out, arg_ref, guard, guard_void, view_start};
-use super::error::FfiError;
-use super::face_list::face_list_arg;
-use super::handle::{free_handle, into_handle};
-use super::status::*;
-use super::threads::with_threads;
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::face_list::face_list_arg;
+use crate::ffi::boundary::handle::{free_handle, into_handle};
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::threads::with_threads;
+use crate::ffi::boundary::{Out, arg_ref, guard, guard_void, view_start};
 
 /// Pairs of faces. Opaque; from hw_self_intersections_indexed(); read with hw_face_pairs_view();
 /// release with hw_face_pairs_free().

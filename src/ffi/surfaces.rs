@@ -11,11 +11,11 @@ use crate::surfaces::{
     cylindrical_surface, grid, icosphere, revolution_surface, ruled_surface, tetrahedron, torus,
 };
 
-use super::boundary::{Out, arg_ref, arg_slice, guard};
-use super::error::FfiError;
-use super::handle::into_handle;
-use super::mesh::hw_mesh;
-use super::status::*;
+use crate::ffi::boundary::error::FfiError;
+use crate::ffi::boundary::handle::into_handle;
+use crate::ffi::boundary::status::*;
+use crate::ffi::boundary::{Out, arg_ref, arg_slice, guard};
+use crate::ffi::mesh::lifecycle::hw_mesh;
 
 /// How the cells of a parametric surface become faces.
 /// \ingroup surfaces

@@ -30,18 +30,18 @@ pub enum VertexNormalWeighting {
 
 /// Unit normal of every face slot (zero for degenerate and deleted faces), indexed by face id.
 pub fn face_normals(mesh: &Mesh) -> Vec<[f64; 3]> {
-    let mut normals = vec![[0.0; 3]; mesh.face_capacity()];
+    let mut normals = vec![[0.0; 3]; mesh.n_face_slots()];
     face_normals_into(mesh, &mut normals);
     normals
 }
 
-/// [`face_normals`] written into `out`, one entry per face slot (`mesh.face_capacity()`): the
+/// [`face_normals`] written into `out`, one entry per face slot (`mesh.n_face_slots()`): the
 /// form for callers that own the buffer (the C API).
 ///
 /// # Panics
-/// When `out.len() != mesh.face_capacity()`.
+/// When `out.len() != mesh.n_face_slots()`.
 pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
-    assert_eq!(out.len(), mesh.face_capacity(), "one normal per face slot");
+    assert_eq!(out.len(), mesh.n_face_slots(), "one normal per face slot");
     let normal = |f: usize| {
         let f = FaceId(f as u32);
         if mesh.is_face_deleted(f) {
@@ -68,7 +68,7 @@ pub fn face_normals_into(mesh: &Mesh, out: &mut [[f64; 3]]) {
 /// overflow or underflow a double (coordinates near 1e308, faces smaller than about 1e-154),
 /// along its normal at another length.
 pub fn face_area_vector(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    let h0 = mesh.face_halfedges().get(f.idx()).copied();
+    let h0 = mesh.face_halfedges().get(f.index()).copied();
     let corners = || mesh.face_vertices(f).map(|v| mesh.position(v));
     let area_vector = SmallFace::of(mesh, h0.unwrap_or(u32::MAX))
         .area_vector(mesh.positions())
@@ -140,7 +140,7 @@ impl SmallFace {
 /// Unit normal of every vertex slot, indexed by vertex id, from the faces' normals. One pass over
 /// the faces, with no per-face array: each face's normal is computed and scattered to its corners.
 pub fn vertex_normals(mesh: &Mesh, weighting: VertexNormalWeighting) -> Vec<[f64; 3]> {
-    let mut vertices = vec![[0.0; 3]; mesh.vertex_capacity()];
+    let mut vertices = vec![[0.0; 3]; mesh.n_vertex_slots()];
     accumulate_normals(mesh, weighting, |_, _| {}, &mut vertices);
     vertices
 }
@@ -151,8 +151,8 @@ pub fn face_and_vertex_normals(
     mesh: &Mesh,
     weighting: VertexNormalWeighting,
 ) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
-    let mut faces = vec![[0.0; 3]; mesh.face_capacity()];
-    let mut vertices = vec![[0.0; 3]; mesh.vertex_capacity()];
+    let mut faces = vec![[0.0; 3]; mesh.n_face_slots()];
+    let mut vertices = vec![[0.0; 3]; mesh.n_vertex_slots()];
     normals_into(mesh, weighting, Some(&mut faces), &mut vertices);
     (faces, vertices)
 }
@@ -170,12 +170,8 @@ pub fn normals_into(
 ) {
     match faces {
         Some(faces) => {
-            assert_eq!(
-                faces.len(),
-                mesh.face_capacity(),
-                "one normal per face slot"
-            );
-            accumulate_normals(mesh, weighting, |f, unit| faces[f.idx()] = unit, vertices);
+            assert_eq!(faces.len(), mesh.n_face_slots(), "one normal per face slot");
+            accumulate_normals(mesh, weighting, |f, unit| faces[f.index()] = unit, vertices);
         }
         None => accumulate_normals(mesh, weighting, |_, _| {}, vertices),
     }
@@ -191,7 +187,7 @@ fn accumulate_normals(
 ) {
     assert_eq!(
         sums.len(),
-        mesh.vertex_capacity(),
+        mesh.n_vertex_slots(),
         "one normal per vertex slot"
     );
     sums.fill([0.0; 3]);
@@ -278,7 +274,7 @@ fn add_polygon(
             VertexNormalWeighting::Angle => corner_angle(mesh, h),
             _ => 1.0,
         };
-        add_scaled(&mut sums[mesh.origin(h).idx()], face_normal, weight);
+        add_scaled(&mut sums[mesh.origin(h).index()], face_normal, weight);
     }
 }
 
@@ -307,7 +303,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
     let smooth_across = |a: FaceId, b: FaceId| {
         b.is_valid()
             && (crease_angle >= std::f64::consts::PI
-                || dot(unit_face_normals[a.idx()], unit_face_normals[b.idx()]) >= cos_crease)
+                || dot(unit_face_normals[a.index()], unit_face_normals[b.index()]) >= cos_crease)
     };
     let corner = |h: usize| -> [f64; 3] {
         let h = HalfedgeId(h as u32);
@@ -318,12 +314,12 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
         let mut sum = [0.0; 3];
         add_scaled(
             &mut sum,
-            unit_face_normals[face.idx()],
+            unit_face_normals[face.index()],
             corner_angle(mesh, h),
         );
         // Turns from h by `turn`, adding each corner met while the faces stay smooth; `true` when
         // the turn came back to h (a closed fan: nothing is left to gather the other way).
-        let budget = mesh.halfedge_capacity();
+        let budget = mesh.n_halfedge_slots();
         let gather = |sum: &mut [f64; 3], turn: &dyn Fn(HalfedgeId) -> HalfedgeId| -> bool {
             let mut g = h;
             for _ in 0..budget {
@@ -336,7 +332,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
                 }
                 add_scaled(
                     sum,
-                    unit_face_normals[mesh.face(rotated).idx()],
+                    unit_face_normals[mesh.face(rotated).index()],
                     corner_angle(mesh, rotated),
                 );
                 g = rotated;
@@ -353,7 +349,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
     #[cfg(feature = "parallel")]
     {
         use rayon::prelude::*;
-        (0..mesh.halfedge_capacity())
+        (0..mesh.n_halfedge_slots())
             .into_par_iter()
             .with_min_len(4096)
             .map(corner)
@@ -361,7 +357,7 @@ pub fn corner_normals(mesh: &Mesh, crease_angle: f64) -> Vec<[f64; 3]> {
     }
     #[cfg(not(feature = "parallel"))]
     {
-        (0..mesh.halfedge_capacity()).map(corner).collect()
+        (0..mesh.n_halfedge_slots()).map(corner).collect()
     }
 }
 
@@ -551,10 +547,10 @@ mod tests {
         let sharp = corner_normals(&mesh, 30f64.to_radians());
         let smooth = corner_normals(&mesh, std::f64::consts::PI);
         let vertex = vertex_normals(&mesh, VertexNormalWeighting::Angle);
-        for h in 0..mesh.halfedge_capacity() as u32 {
+        for h in 0..mesh.n_halfedge_slots() as u32 {
             let h = HalfedgeId(h);
-            assert!(close(sharp[h.idx()], faces[mesh.face(h).idx()]));
-            assert!(close(smooth[h.idx()], vertex[mesh.origin(h).idx()]));
+            assert!(close(sharp[h.index()], faces[mesh.face(h).index()]));
+            assert!(close(smooth[h.index()], vertex[mesh.origin(h).index()]));
         }
     }
 
@@ -583,10 +579,10 @@ mod tests {
         let corners = corner_normals(&mesh, 45f64.to_radians());
         let merged = corner_normals(&mesh, 100f64.to_radians());
         let h = mesh.face_halfedge(FaceId(0));
-        assert!(close(corners[h.idx()], faces[0]));
-        assert!(!close(merged[h.idx()], faces[0]));
+        assert!(close(corners[h.index()], faces[0]));
+        assert!(!close(merged[h.index()], faces[0]));
         let boundary =
-            (0..mesh.halfedge_capacity()).find(|&h| !mesh.face(HalfedgeId(h as u32)).is_valid());
+            (0..mesh.n_halfedge_slots()).find(|&h| !mesh.face(HalfedgeId(h as u32)).is_valid());
         assert_eq!(corners[boundary.unwrap()], [0.0; 3]);
     }
 }

@@ -25,8 +25,8 @@ use crate::support::large_arrays::{filled, fit, with_capacity_written};
 use crate::support::rare_hits::rare_hits;
 
 use super::Mesh;
-use super::connectivity::Deletions;
 use super::ids::{INVALID_INDEX, VertexId};
+use super::structure::Deletions;
 use super::vertex_fans::vertices_without_halfedge;
 
 impl Mesh {
@@ -576,7 +576,7 @@ mod tests {
             (mesh.n_vertices(), mesh.n_edges(), mesh.n_faces()),
             (4, 5, 2)
         );
-        let boundary: Vec<_> = (0..mesh.halfedge_capacity() as u32)
+        let boundary: Vec<_> = (0..mesh.n_halfedge_slots() as u32)
             .map(HalfedgeId)
             .filter(|&h| mesh.face(h) == FaceId::INVALID)
             .collect();

@@ -228,7 +228,7 @@ impl Mesh {
             }
             let mut walk = self.face_loop(id);
             for g in walk.by_ref() {
-                if self.face[g.idx()] != f {
+                if self.face[g.index()] != f {
                     return fail(Invariant::LoopOnOneFace, Element::Halfedge(g));
                 }
                 in_loops += 1;
@@ -282,7 +282,7 @@ impl Mesh {
                 return fail(Invariant::VertexHalfedgeOnBoundary, Element::Vertex(id));
             }
             let mut walk = self.outgoing_halfedges(id);
-            if let Some(g) = walk.by_ref().find(|g| self.origin[g.idx()] != v) {
+            if let Some(g) = walk.by_ref().find(|g| self.origin[g.index()] != v) {
                 return fail(Invariant::VertexHalfedge, Element::Halfedge(g));
             }
             if walk.was_cut_short() {
@@ -402,7 +402,7 @@ mod tests {
 
         let error = broken(|m| m.vertex_halfedge[4] = 0);
         assert_eq!(error.invariant, Invariant::VertexHalfedge);
-        assert!(error.to_string().contains("v4"), "{error}");
+        assert!(error.to_string().contains("vertex 4"), "{error}");
     }
 
     #[test]
@@ -415,7 +415,7 @@ mod tests {
         let third = mesh.next[second] as usize;
         mesh.next[third] = second as u32;
         let walk = mesh.face_loop(FaceId(0));
-        assert!(walk.clone().count() <= mesh.halfedge_capacity());
+        assert!(walk.clone().count() <= mesh.n_halfedge_slots());
         let mut walk = walk;
         walk.by_ref().for_each(drop);
         assert!(walk.was_cut_short());

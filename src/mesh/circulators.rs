@@ -22,16 +22,16 @@ use crate::support::id_set::IdSet;
 /// How a walk steps from one half-edge to the following one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Step {
-    /// `h → next(h)`: around a face or a boundary loop.
-    Next,
-    /// `h → twin(prev(h))`: counter-clockwise around the origin.
-    RotateCcw,
+    /// Along a loop, `h → next(h)`: a face's sides or a boundary loop.
+    Loop,
+    /// Counter-clockwise about the origin, `h → twin(prev(h))`: the vertex's ring.
+    Ring,
 }
 
-/// Where a [`HalfedgeWalk`] stands, so that it can be kept outside Rust (the C circulators live
-/// on the caller's stack) and resumed with [`HalfedgeWalk::resume`].
+/// Where a [`Walk`] stands, so that it can be kept outside Rust (the C circulators live on the
+/// caller's stack) and resumed with [`Mesh::resume_walk`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct WalkProgress {
+pub struct WalkState {
     /// The half-edge the walk started at; reaching it again ends the walk.
     pub start: u32,
     /// The half-edge the walk yields next, or `INVALID_INDEX` when it is over.
@@ -44,7 +44,7 @@ pub struct WalkProgress {
 
 /// A bounded walk over half-edges that ends when it returns to its start.
 #[derive(Clone, Debug)]
-pub struct HalfedgeWalk<'m> {
+pub struct Walk<'m> {
     mesh: &'m Mesh,
     start: u32,
     current: u32,
@@ -53,32 +53,26 @@ pub struct HalfedgeWalk<'m> {
     cut_short: bool,
 }
 
-impl<'m> HalfedgeWalk<'m> {
+impl<'m> Walk<'m> {
     fn new(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
-        let start = if start.idx() < mesh.halfedge_capacity() {
+        let start = if start.index() < mesh.n_halfedge_slots() {
             start.0
         } else {
             INVALID_INDEX
         };
-        HalfedgeWalk {
+        Walk {
             mesh,
             start,
             current: start,
-            remaining: mesh.halfedge_capacity(),
+            remaining: mesh.n_halfedge_slots(),
             step,
             cut_short: false,
         }
     }
 
-    /// A walk of `mesh` from `start` stepping by `step` (a vertex's outgoing half-edges with
-    /// [`Step::RotateCcw`], a face or boundary loop with [`Step::Next`]).
-    pub fn with_step(mesh: &'m Mesh, start: HalfedgeId, step: Step) -> Self {
-        HalfedgeWalk::new(mesh, start, step)
-    }
-
-    /// Where the walk stands now.
-    pub fn progress(&self) -> WalkProgress {
-        WalkProgress {
+    /// Where the walk stands now, to resume it later with [`Mesh::resume_walk`].
+    pub fn state(&self) -> WalkState {
+        WalkState {
             start: self.start,
             current: self.current,
             remaining: self.remaining,
@@ -86,16 +80,13 @@ impl<'m> HalfedgeWalk<'m> {
         }
     }
 
-    /// Continues a walk from a [`WalkProgress`]. Progress that does not fit `mesh` (ids out of
-    /// range, a bound above the half-edge count: stale or forged state) gives an ended walk that
-    /// reports [`HalfedgeWalk::was_cut_short`], never an out-of-bounds access.
-    pub fn resume(mesh: &'m Mesh, progress: WalkProgress) -> Self {
-        let capacity = mesh.halfedge_capacity();
+    fn resume(mesh: &'m Mesh, progress: WalkState) -> Self {
+        let capacity = mesh.n_halfedge_slots();
         let fits = |h: u32| (h as usize) < capacity;
         let sound = fits(progress.start)
             && (progress.current == INVALID_INDEX || fits(progress.current))
             && progress.remaining <= capacity;
-        HalfedgeWalk {
+        Walk {
             mesh,
             start: progress.start,
             current: if sound {
@@ -115,7 +106,7 @@ impl<'m> HalfedgeWalk<'m> {
     }
 }
 
-impl Iterator for HalfedgeWalk<'_> {
+impl Iterator for Walk<'_> {
     type Item = HalfedgeId;
 
     #[inline]
@@ -126,12 +117,12 @@ impl Iterator for HalfedgeWalk<'_> {
         self.remaining -= 1;
         let h = self.current;
         let following = match self.step {
-            Step::Next => self.mesh.next[h as usize],
-            Step::RotateCcw => self.mesh.prev[h as usize] ^ 1,
+            Step::Loop => self.mesh.next[h as usize],
+            Step::Ring => self.mesh.prev[h as usize] ^ 1,
         };
         self.current = if following == self.start {
             INVALID_INDEX
-        } else if following as usize >= self.mesh.halfedge_capacity() {
+        } else if following as usize >= self.mesh.n_halfedge_slots() {
             self.cut_short = true;
             INVALID_INDEX
         } else {
@@ -142,17 +133,31 @@ impl Iterator for HalfedgeWalk<'_> {
 }
 
 impl Mesh {
-    fn vertex_walk(&self, v: VertexId) -> HalfedgeWalk<'_> {
+    /// A walk from `start` stepping by `step`: with [`Step::Ring`] the outgoing half-edges of
+    /// `start`'s origin, with [`Step::Loop`] the loop of `start` (a face's sides or a boundary
+    /// loop). Empty when `start` is out of range.
+    pub fn walk(&self, start: HalfedgeId, step: Step) -> Walk<'_> {
+        Walk::new(self, start, step)
+    }
+
+    /// Continues a walk paused with [`Walk::state`]. A state that does not fit the mesh (ids out
+    /// of range, a bound above the half-edge count: stale or forged state) gives an ended walk
+    /// that reports [`Walk::was_cut_short`], never an out-of-bounds access.
+    pub fn resume_walk(&self, state: WalkState) -> Walk<'_> {
+        Walk::resume(self, state)
+    }
+
+    fn vertex_walk(&self, v: VertexId) -> Walk<'_> {
         let start = self
             .vertex_halfedge
-            .get(v.idx())
+            .get(v.index())
             .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
-        HalfedgeWalk::new(self, start, Step::RotateCcw)
+        Walk::new(self, start, Step::Ring)
     }
 
     /// Outgoing half-edges of `v`, counter-clockwise from [`Mesh::vertex_halfedge`]. Empty for an
     /// isolated or out-of-range vertex.
-    pub fn outgoing_halfedges(&self, v: VertexId) -> HalfedgeWalk<'_> {
+    pub fn outgoing_halfedges(&self, v: VertexId) -> Walk<'_> {
         self.vertex_walk(v)
     }
 
@@ -179,16 +184,16 @@ impl Mesh {
     }
 
     /// The loop of half-edges through `h` by `next`: its face's sides, or its boundary loop.
-    pub fn halfedge_loop(&self, h: HalfedgeId) -> HalfedgeWalk<'_> {
-        HalfedgeWalk::new(self, h, Step::Next)
+    pub fn halfedge_loop(&self, h: HalfedgeId) -> Walk<'_> {
+        Walk::new(self, h, Step::Loop)
     }
 
     /// Half-edges of `f`, counter-clockwise from [`Mesh::face_halfedge`]. Empty for an
     /// out-of-range face.
-    pub fn face_loop(&self, f: FaceId) -> HalfedgeWalk<'_> {
+    pub fn face_loop(&self, f: FaceId) -> Walk<'_> {
         let start = self
             .face_halfedge
-            .get(f.idx())
+            .get(f.index())
             .map_or(HalfedgeId::INVALID, |&h| HalfedgeId(h));
         self.halfedge_loop(start)
     }
@@ -218,7 +223,7 @@ impl Mesh {
         // read for boundary half-edges, so few of their pages are touched (with a byte per
         // half-edge, every one read: 1M-triangle torus 3.3 ms, grid 2.5 ms; so: 1.3 and 1.5 ms,
         // against CGAL's 3.0 and 3.1).
-        let mut visited = IdSet::new(self.halfedge_capacity());
+        let mut visited = IdSet::new(self.n_halfedge_slots());
         let mut loops = Vec::new();
         let boundary = self
             .face

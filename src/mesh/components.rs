@@ -24,7 +24,7 @@ impl Mesh {
     /// array is read in order except the forest itself. Roots are always the smallest face of
     /// their set, so the forest turns into the component numbering in place, in one more pass.
     pub fn connected_components(&self) -> Components {
-        let n_faces = self.face_capacity();
+        let n_faces = self.n_face_slots();
         // parent[f] <= f; a root is its own parent.
         let mut parent: Vec<u32> = (0..n_faces as u32).collect();
         let check_deleted = self.has_deleted_elements();

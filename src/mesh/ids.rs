@@ -5,92 +5,28 @@
 //! Half-edges come in pairs: the twin of half-edge `h` is `h ^ 1` and its edge is `h >> 1`, so
 //! edge `e` owns half-edges `2e` and `2e + 1`.
 
-use std::fmt;
+pub use crate::support::ids::INVALID_INDEX;
+use crate::support::ids::typed_id;
 
-/// The index that means "no element" (`u32::MAX`), as in the C API's `HW_INVALID_INDEX`.
-pub const INVALID_INDEX: u32 = u32::MAX;
-
-macro_rules! element_id {
-    ($(#[$doc:meta])* $name:ident, $prefix:literal) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-        #[repr(transparent)]
-        pub struct $name(pub u32);
-
-        impl $name {
-            /// The id that names no element.
-            pub const INVALID: Self = Self(INVALID_INDEX);
-
-            /// Wraps a raw index.
-            #[inline]
-            pub const fn new(index: u32) -> Self {
-                Self(index)
-            }
-
-            /// The raw index as a `usize`, for indexing the storage arrays.
-            #[inline]
-            pub const fn idx(self) -> usize {
-                self.0 as usize
-            }
-
-            /// `false` only for [`Self::INVALID`]. A valid id may still be out of range or
-            /// deleted in a given mesh; the mesh's `try_*` accessors check that.
-            #[inline]
-            pub const fn is_valid(self) -> bool {
-                self.0 != INVALID_INDEX
-            }
-        }
-
-        impl Default for $name {
-            /// The invalid id.
-            fn default() -> Self {
-                Self::INVALID
-            }
-        }
-
-        impl fmt::Debug for $name {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                if self.is_valid() {
-                    write!(f, concat!($prefix, "{}"), self.0)
-                } else {
-                    f.write_str(concat!($prefix, "∅"))
-                }
-            }
-        }
-
-        impl fmt::Display for $name {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                fmt::Debug::fmt(self, f)
-            }
-        }
-
-        impl From<$name> for u32 {
-            fn from(id: $name) -> u32 {
-                id.0
-            }
-        }
-    };
-}
-
-element_id!(
+typed_id!(
     /// A vertex of a half-edge mesh.
     VertexId,
-    "v"
+    "vertex"
 );
-element_id!(
+typed_id!(
     /// A half-edge (a directed edge side). Its twin is `h ^ 1`, its edge `h >> 1`.
     HalfedgeId,
-    "h"
+    "half-edge"
 );
-element_id!(
+typed_id!(
     /// An undirected edge: the pair of half-edges `2e` and `2e + 1`.
     EdgeId,
-    "e"
+    "edge"
 );
-element_id!(
+typed_id!(
     /// A face (polygon) of a half-edge mesh.
     FaceId,
-    "f"
+    "face"
 );
 
 impl HalfedgeId {
@@ -141,7 +77,10 @@ mod tests {
         assert_eq!(FaceId::default(), FaceId::INVALID);
         assert_eq!(EdgeId::INVALID.halfedge(0), HalfedgeId::INVALID);
         assert_eq!(EdgeId::new(u32::MAX / 2).halfedge(1), HalfedgeId::INVALID);
-        assert_eq!(format!("{:?}", HalfedgeId::INVALID), "h∅");
-        assert_eq!(format!("{}", VertexId::new(4)), "v4");
+        assert_eq!(
+            format!("{:?}", HalfedgeId::INVALID),
+            "half-edge 4294967295 (the invalid id)"
+        );
+        assert_eq!(format!("{}", VertexId::new(4)), "vertex 4");
     }
 }

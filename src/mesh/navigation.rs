@@ -57,13 +57,13 @@ impl Mesh {
     /// The vertex half-edge `h` leaves.
     #[inline]
     pub fn origin(&self, h: HalfedgeId) -> VertexId {
-        VertexId(self.origin[h.idx()])
+        VertexId(self.origin[h.index()])
     }
 
     /// The vertex half-edge `h` points to (`origin(twin(h))`).
     #[inline]
     pub fn target(&self, h: HalfedgeId) -> VertexId {
-        VertexId(self.origin[h.twin().idx()])
+        VertexId(self.origin[h.twin().index()])
     }
 
     /// The opposite half-edge (`h ^ 1`); never fails for an in-range `h`.
@@ -75,19 +75,19 @@ impl Mesh {
     /// The next half-edge around `h`'s face (counter-clockwise), or along its boundary loop.
     #[inline]
     pub fn next(&self, h: HalfedgeId) -> HalfedgeId {
-        HalfedgeId(self.next[h.idx()])
+        HalfedgeId(self.next[h.index()])
     }
 
     /// The previous half-edge around `h`'s face or boundary loop.
     #[inline]
     pub fn prev(&self, h: HalfedgeId) -> HalfedgeId {
-        HalfedgeId(self.prev[h.idx()])
+        HalfedgeId(self.prev[h.index()])
     }
 
     /// The face to the left of `h`; [`FaceId::INVALID`] for a boundary half-edge.
     #[inline]
     pub fn face(&self, h: HalfedgeId) -> FaceId {
-        FaceId(self.face[h.idx()])
+        FaceId(self.face[h.index()])
     }
 
     /// The edge of `h` (`h >> 1`).
@@ -100,13 +100,13 @@ impl Mesh {
     /// is isolated. Circulators around `v` start here.
     #[inline]
     pub fn vertex_halfedge(&self, v: VertexId) -> HalfedgeId {
-        HalfedgeId(self.vertex_halfedge[v.idx()])
+        HalfedgeId(self.vertex_halfedge[v.index()])
     }
 
     /// A half-edge of face `f`; face circulators start here.
     #[inline]
     pub fn face_halfedge(&self, f: FaceId) -> HalfedgeId {
-        HalfedgeId(self.face_halfedge[f.idx()])
+        HalfedgeId(self.face_halfedge[f.index()])
     }
 
     /// Half-edge `side` (0 or 1) of edge `e`.
@@ -118,13 +118,13 @@ impl Mesh {
     /// Position of `v`.
     #[inline]
     pub fn position(&self, v: VertexId) -> [f64; 3] {
-        self.positions[v.idx()]
+        self.positions[v.index()]
     }
 
     /// `true` when `h` has no face.
     #[inline]
     pub fn is_boundary_halfedge(&self, h: HalfedgeId) -> bool {
-        self.face[h.idx()] == INVALID_INDEX
+        self.face[h.index()] == INVALID_INDEX
     }
 
     /// `true` when either side of `e` has no face.
@@ -137,7 +137,7 @@ impl Mesh {
     /// `true` when `v` is on a boundary or isolated (its half-edge is a boundary one or none).
     #[inline]
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
-        let h = self.vertex_halfedge[v.idx()];
+        let h = self.vertex_halfedge[v.index()];
         h == INVALID_INDEX || self.face[h as usize] == INVALID_INDEX
     }
 
@@ -164,7 +164,7 @@ impl Mesh {
         resolve(
             ElementKind::Vertex,
             v.0,
-            self.vertex_capacity(),
+            self.n_vertex_slots(),
             self.is_vertex_deleted(v),
         )
         .map(|_| v)
@@ -175,7 +175,7 @@ impl Mesh {
         resolve(
             ElementKind::Halfedge,
             h.0,
-            self.halfedge_capacity(),
+            self.n_halfedge_slots(),
             self.is_halfedge_deleted(h),
         )
         .map(|_| h)
@@ -186,7 +186,7 @@ impl Mesh {
         resolve(
             ElementKind::Edge,
             e.0,
-            self.edge_capacity(),
+            self.n_edge_slots(),
             self.is_edge_deleted(e),
         )
         .map(|_| e)
@@ -197,7 +197,7 @@ impl Mesh {
         resolve(
             ElementKind::Face,
             f.0,
-            self.face_capacity(),
+            self.n_face_slots(),
             self.is_face_deleted(f),
         )
         .map(|_| f)

@@ -2,7 +2,7 @@
 //! kernel's conversion), checked before it is handed out.
 
 use super::check::InvariantError;
-use super::connectivity::{Deletions, Mesh};
+use super::structure::{Deletions, Mesh};
 
 /// The arrays of a mesh without deletions or attributes, in [`Mesh`]'s layout: per half-edge `origin`,
 /// `next`, `prev`, `face` (half-edge `2e` and `2e + 1` form edge `e`), per vertex its outgoing

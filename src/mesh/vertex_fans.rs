@@ -24,14 +24,14 @@ impl Mesh {
     /// otherwise are per-vertex out-degrees counted.
     pub fn non_manifold_vertices(&self) -> Vec<VertexId> {
         // This runs after every build, over every half-edge.
-        let n_vertices = self.vertex_capacity();
+        let n_vertices = self.n_vertex_slots();
         let interleaved = !self.fans_follow_vertices();
         let walked_in = |vertices: Range<usize>| {
             if interleaved {
                 let starts = self.fan_starts(vertices).map(|(_, h)| h);
                 return total_cycle_length_interleaved::<_, FANS_SIDE_BY_SIDE>(
                     starts,
-                    self.halfedge_capacity(),
+                    self.n_halfedge_slots(),
                     |h| self.fan_step(h),
                 );
             }
@@ -54,7 +54,7 @@ impl Mesh {
             return Vec::new();
         }
         let mut out_degree = vec![0u32; n_vertices];
-        for h in 0..self.halfedge_capacity() {
+        for h in 0..self.n_halfedge_slots() {
             if !self.is_halfedge_deleted(HalfedgeId(h as u32)) {
                 let v = self.origin[h] as usize;
                 out_degree[v] = out_degree[v].saturating_add(1);
@@ -75,7 +75,7 @@ impl Mesh {
     fn for_each_fan_size(&self, vertices: Range<usize>, visit: impl FnMut(usize, usize)) {
         let step = |h: u32| Some(self.fan_step(h));
         let starts = self.fan_starts(vertices);
-        for_each_cycle_length(starts, self.halfedge_capacity(), step, visit);
+        for_each_cycle_length(starts, self.n_halfedge_slots(), step, visit);
     }
 
     /// The next half-edge of `h`'s fan, on the raw arrays: `twin(prev(h))`.
@@ -100,7 +100,7 @@ impl Mesh {
     /// best walked one after another, otherwise [`FANS_SIDE_BY_SIDE`] at a time.
     fn fans_follow_vertices(&self) -> bool {
         const NEARBY_HALFEDGES: u32 = 1024;
-        mostly_nearby(self.vertex_capacity(), NEARBY_HALFEDGES, |v| {
+        mostly_nearby(self.n_vertex_slots(), NEARBY_HALFEDGES, |v| {
             Some(self.vertex_halfedge[v]).filter(|&h| h != INVALID_INDEX)
         })
     }
@@ -179,11 +179,11 @@ mod tests {
             assert_eq!(diagnostic.non_manifold_vertices, expected);
             assert_eq!(diagnostic.vertex_copies, expected);
             assert!(diagnostic.skipped_faces.is_empty());
-            let mut out_degree = vec![0; mesh.vertex_capacity()];
+            let mut out_degree = vec![0; mesh.n_vertex_slots()];
             for &v in mesh.halfedge_origins() {
                 out_degree[v as usize] += 1;
             }
-            for v in 0..mesh.vertex_capacity() as u32 {
+            for v in 0..mesh.n_vertex_slots() as u32 {
                 assert_eq!(
                     mesh.valence(VertexId(v)),
                     out_degree[v as usize],

@@ -51,7 +51,7 @@ pub fn mesh_buffers(
     diagnostic: Option<&Diagnostic>,
     options: &MeshBufferOptions<'_>,
 ) -> Result<MeshBuffers, RenderError> {
-    if let Some(v) = (0..mesh.vertex_capacity() as u32).find(|&v| {
+    if let Some(v) = (0..mesh.n_vertex_slots() as u32).find(|&v| {
         !mesh.is_vertex_deleted(crate::mesh::VertexId(v))
             && mesh
                 .position(crate::mesh::VertexId(v))

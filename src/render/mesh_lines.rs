@@ -10,7 +10,7 @@ use super::error::RenderError;
 /// Live edges, each with its two end points.
 fn edges_where(mesh: &Mesh, keep: impl Fn(EdgeId) -> bool) -> LineBuffer {
     let mut lines = LineBuffer::default();
-    for e in 0..mesh.edge_capacity() {
+    for e in 0..mesh.n_edge_slots() {
         let e = EdgeId(e as u32);
         if mesh.is_edge_deleted(e) || !keep(e) {
             continue;
@@ -44,7 +44,7 @@ pub fn boundary_lines(mesh: &Mesh) -> LineBuffer {
 /// [`RenderError::DiagnosticMismatch`] when a reported vertex is not a vertex slot of `mesh`.
 pub fn non_manifold_lines(mesh: &Mesh, diagnostic: &Diagnostic) -> Result<LineBuffer, RenderError> {
     let mut lines = LineBuffer::default();
-    let vertices = mesh.vertex_capacity();
+    let vertices = mesh.n_vertex_slots();
     let position = |v: u32| {
         if (v as usize) < vertices {
             Ok(mesh.position(VertexId(v)))
@@ -139,7 +139,7 @@ mod tests {
             non_manifold_lines(&mesh, &foreign),
             Err(RenderError::DiagnosticMismatch {
                 vertex: 99,
-                vertices: mesh.vertex_capacity()
+                vertices: mesh.n_vertex_slots()
             })
         );
     }

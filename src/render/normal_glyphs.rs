@@ -25,7 +25,7 @@ pub fn mean_edge_length(mesh: &Mesh) -> f64 {
     // A running mean of lengths computed without squaring overflow: finite for any finite
     // coordinates (a sum of lengths near 1e308, or their squares above 1e154, would not be).
     let (mut mean, mut count) = (0.0, 0.0);
-    for e in 0..mesh.edge_capacity() {
+    for e in 0..mesh.n_edge_slots() {
         let e = crate::mesh::EdgeId(e as u32);
         if mesh.is_edge_deleted(e) {
             continue;

@@ -86,7 +86,7 @@ fn shaded_corner_normals(
     mesh: &Mesh,
     options: &SurfaceOptions<'_>,
 ) -> Result<Vec<[f64; 3]>, RenderError> {
-    let halfedges = (0..mesh.halfedge_capacity()).map(|h| HalfedgeId(h as u32));
+    let halfedges = (0..mesh.n_halfedge_slots()).map(|h| HalfedgeId(h as u32));
     Ok(match options.shading {
         Shading::Flat => {
             let faces = face_normals(mesh);
@@ -94,7 +94,7 @@ fn shaded_corner_normals(
                 .map(|h| {
                     let f = mesh.face(h);
                     if f.is_valid() {
-                        faces[f.idx()]
+                        faces[f.index()]
                     } else {
                         [0.0; 3]
                     }
@@ -121,7 +121,7 @@ fn shaded_corner_normals(
 fn normal_at_origin(mesh: &Mesh, vertex_normals: &[[f64; 3]], h: HalfedgeId) -> [f64; 3] {
     let v = mesh.origin(h);
     if v.is_valid() {
-        vertex_normals[v.idx()]
+        vertex_normals[v.index()]
     } else {
         [0.0; 3]
     }
@@ -137,7 +137,7 @@ fn given_corner_normals(
 ) -> Vec<[f64; 3]> {
     let mut normals = match options.corner_normals {
         Some(given) => given.iter().map(|&n| unit_or_zero(n)).collect(),
-        None => vec![[0.0; 3]; mesh.halfedge_capacity()],
+        None => vec![[0.0; 3]; mesh.n_halfedge_slots()],
     };
     let lacks_normal = |normals: &[[f64; 3]], h: usize| {
         normals[h] == [0.0; 3] && mesh.face(HalfedgeId(h as u32)).is_valid()
@@ -173,10 +173,10 @@ fn check_corner_attribute<T>(
     values: Option<&[T]>,
 ) -> Result<(), RenderError> {
     match values {
-        Some(values) if values.len() != mesh.halfedge_capacity() => {
+        Some(values) if values.len() != mesh.n_halfedge_slots() => {
             Err(RenderError::CornerAttributeLength {
                 what,
-                expected: mesh.halfedge_capacity(),
+                expected: mesh.n_halfedge_slots(),
                 got: values.len(),
             })
         }
@@ -242,7 +242,7 @@ pub fn surface_buffer(
     // bytes), a buffer vertex (position, normal, uv, in both layouts and in the splitter: 84)
     // and a triangle corner with its face (8).
     const BYTES_PER_HALFEDGE: u64 = 140;
-    let n_halfedges = mesh.halfedge_capacity();
+    let n_halfedges = mesh.n_halfedge_slots();
     ensure_room(
         n_halfedges as u64 * BYTES_PER_HALFEDGE,
         n_halfedges,
@@ -250,7 +250,7 @@ pub fn surface_buffer(
     )?;
     let normals = shaded_corner_normals(mesh, options)?;
 
-    let mut splitter = VertexSplitter::new(mesh.vertex_capacity());
+    let mut splitter = VertexSplitter::new(mesh.n_vertex_slots());
     let mut buffer = SurfaceBuffer {
         layout: options.layout,
         stride: if options.corner_uvs.is_some() { 8 } else { 6 },
@@ -259,7 +259,7 @@ pub fn surface_buffer(
     let mut triangulator = PolygonTriangulator::new();
     let (mut corner_positions, mut corner_vertices, mut local) =
         (Vec::new(), Vec::new(), Vec::new());
-    for f in 0..mesh.face_capacity() {
+    for f in 0..mesh.n_face_slots() {
         let face = FaceId(f as u32);
         if mesh.is_face_deleted(face) {
             continue;
@@ -270,10 +270,10 @@ pub fn surface_buffer(
             let v = mesh.origin(h);
             let uv = options
                 .corner_uvs
-                .map_or([0.0; 2], |uvs| uvs[h.idx()].map(|c| c as f32));
-            let normal = normals[h.idx()].map(|c| c as f32);
+                .map_or([0.0; 2], |uvs| uvs[h.index()].map(|c| c as f32));
+            let normal = normals[h.index()].map(|c| c as f32);
             corner_positions.push(mesh.position(v));
-            corner_vertices.push(splitter.vertex(v.idx(), normal, uv));
+            corner_vertices.push(splitter.vertex(v.index(), normal, uv));
         }
         local.clear();
         if let PolygonOutcome::Fallback(reason) =
@@ -436,7 +436,7 @@ mod tests {
     #[test]
     fn given_corner_normals_are_used_and_uvs_split_at_seams() {
         let mesh = unit_cube();
-        let slots = mesh.halfedge_capacity();
+        let slots = mesh.n_halfedge_slots();
         // Every corner gets the same normal, and a uv that depends on its face only: the cube is
         // split at every face border (24 vertices), as a uv atlas would split it.
         let normals = vec![[0.0, 0.0, 1.0]; slots];
@@ -472,7 +472,7 @@ mod tests {
     #[test]
     fn explicit_shadings_compute_their_normals_whatever_normals_are_given() {
         let mesh = unit_cube();
-        let normals = vec![[0.0, 0.0, 1.0]; mesh.halfedge_capacity()];
+        let normals = vec![[0.0, 0.0, 1.0]; mesh.n_halfedge_slots()];
         let mut vertex_counts = Vec::new();
         for shading in [
             Shading::Flat,
@@ -514,8 +514,8 @@ mod tests {
             ),
             ([f64::INFINITY, 0.0, 0.0], None),
         ];
-        let given: Vec<[f64; 3]> = (0..mesh.halfedge_capacity())
-            .map(|h| per_face[mesh.face(HalfedgeId(h as u32)).idx()].0)
+        let given: Vec<[f64; 3]> = (0..mesh.n_halfedge_slots())
+            .map(|h| per_face[mesh.face(HalfedgeId(h as u32)).index()].0)
             .collect();
         let options = SurfaceOptions {
             corner_normals: Some(&given),

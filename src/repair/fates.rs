@@ -114,7 +114,7 @@ impl Ledger {
             let new = map[old];
             if new != INVALID_INDEX {
                 t.current = new;
-            } else if !t.merged && into[old] != INVALID_INDEX {
+            } else if into[old] != INVALID_INDEX {
                 t.merged = true;
                 t.current = map[into[old] as usize];
             } else {

@@ -46,11 +46,11 @@ pub fn remove_degenerate_faces(
     tolerance: Tolerance,
 ) -> Result<RepairReport, RepairError> {
     let tolerance = absolute_on_mesh(tolerance, mesh)?;
-    let n_faces = mesh.face_capacity();
+    let n_faces = mesh.n_face_slots();
     let was_live: Vec<bool> = (0..n_faces as u32)
         .map(|f| !mesh.is_face_deleted(FaceId(f)))
         .collect();
-    let mut merged_into: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+    let mut merged_into: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
     let mut flipped_faces = Vec::new();
     let mut changed = false;
     // A stack popped lowest first: faces are taken in order, and again after a collapse
@@ -58,7 +58,7 @@ pub fn remove_degenerate_faces(
     let mut pending: Vec<FaceId> = (0..n_faces as u32).rev().map(FaceId).collect();
     let mut is_pending = vec![true; n_faces];
     while let Some(f) = pending.pop() {
-        is_pending[f.idx()] = false;
+        is_pending[f.index()] = false;
         if mesh.is_face_deleted(f) || mesh.face_degree(f) != 3 {
             continue;
         }
@@ -69,8 +69,8 @@ pub fn remove_degenerate_faces(
         let mended = match shape {
             Shape::ShortEdge(h) => collapse_short_edge(mesh, h, &mut merged_into).inspect(|&v| {
                 for g in mesh.vertex_faces(v).collect::<Vec<_>>() {
-                    if !is_pending[g.idx()] {
-                        is_pending[g.idx()] = true;
+                    if !is_pending[g.index()] {
+                        is_pending[g.index()] = true;
                         pending.push(g);
                     }
                 }
@@ -177,7 +177,7 @@ fn collapse_short_edge(
     for g in [into_lower, into_lower.twin()] {
         let gone = mesh.origin(g);
         if let Ok(kept) = mesh.collapse_halfedge(g) {
-            merged_into[gone.idx()] = kept.0;
+            merged_into[gone.index()] = kept.0;
             return Some(kept);
         }
     }

@@ -48,10 +48,10 @@ pub fn remove_t_vertices(
         });
     }
     let capacities = [
-        mesh.vertex_capacity(),
-        mesh.halfedge_capacity(),
-        mesh.edge_capacity(),
-        mesh.face_capacity(),
+        mesh.n_vertex_slots(),
+        mesh.n_halfedge_slots(),
+        mesh.n_edge_slots(),
+        mesh.n_face_slots(),
     ];
     let mut vertex_copies = Vec::with_capacity(splits.len());
     for run in splits.chunk_by(|x, y| x.edge == y.edge) {
@@ -95,7 +95,7 @@ struct Split {
 fn t_vertex_splits(mesh: &Mesh, tolerance: f64) -> Vec<Split> {
     let at = |v: u32| mesh.positions()[v as usize];
     let finite = |v: u32| at(v).iter().all(|x| x.is_finite());
-    let boundary: Vec<HalfedgeId> = (0..mesh.halfedge_capacity() as u32)
+    let boundary: Vec<HalfedgeId> = (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .filter(|&h| !mesh.is_halfedge_deleted(h) && mesh.is_boundary_halfedge(h))
         .filter(|&h| finite(mesh.origin(h).0) && finite(mesh.target(h).0))

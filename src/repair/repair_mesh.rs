@@ -350,7 +350,7 @@ fn run(
         RepairStep::FillHoles => {
             if let Some(fill) = options.fill_holes {
                 let mesh = mesh(work, ledger)?;
-                let first_vertex = mesh.vertex_capacity();
+                let first_vertex = mesh.n_vertex_slots();
                 let report = fill_holes(mesh, &fill).map_err(|e| match e {
                     FillError::BadOption { name, value, range } => {
                         RepairError::BadOption { name, value, range }
@@ -364,13 +364,25 @@ fn run(
                     .collect();
                 added.sort_unstable();
                 ledger.add_faces(&added);
+                // Copies welded where a hole passed twice through one point: merged, their ids
+                // kept until the mesh is compacted.
+                let welded: Vec<[u32; 2]> = report
+                    .welded_vertices
+                    .iter()
+                    .map(|&[gone, kept]| [gone.0, kept.0])
+                    .collect();
+                let mut unchanged: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
+                for &[gone, _] in &welded {
+                    unchanged[gone as usize] = INVALID_INDEX;
+                }
+                ledger.map_vertices(&unchanged, &welded, Removal::Unbuildable);
                 // Refined fills place vertices at new positions (copying no input vertex); a
                 // refused one may leave deleted ids, compacted with the others later.
-                let placed = vec![INVALID_INDEX; mesh.vertex_capacity() - first_vertex];
+                let placed = vec![INVALID_INDEX; mesh.n_vertex_slots() - first_vertex];
                 ledger.add_vertices(first_vertex as u32, &placed);
                 // A refused fill may leave a deleted face id behind: the ids are compacted as
                 // the mesh turns into a face list.
-                let deleted: Vec<bool> = (0..mesh.face_capacity() as u32)
+                let deleted: Vec<bool> = (0..mesh.n_face_slots() as u32)
                     .map(|f| mesh.is_face_deleted(FaceId(f)))
                     .collect();
                 ledger.map_faces(&compaction_map(deleted.len(), &deleted), |_| {
@@ -398,7 +410,7 @@ fn run(
 /// The work as a soup, a mesh being turned into its face list (deleted elements compacted).
 fn soup<'a>(work: &'a mut Work, ledger: &mut Ledger) -> &'a mut PolygonSoup {
     if let Work::Mesh(mesh) = work {
-        let deleted: Vec<bool> = (0..mesh.vertex_capacity() as u32)
+        let deleted: Vec<bool> = (0..mesh.n_vertex_slots() as u32)
             .map(|v| mesh.is_vertex_deleted(VertexId(v)))
             .collect();
         let map = compaction_map(deleted.len(), &deleted);

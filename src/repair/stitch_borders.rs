@@ -28,17 +28,17 @@ use crate::support::disjoint_sets;
 /// vertices' bounding box. When nothing is stitched the mesh is unchanged and the maps are the
 /// identity.
 pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairReport, RepairError> {
-    let n_slots = mesh.vertex_capacity();
+    let n_slots = mesh.n_vertex_slots();
     let absolute = absolute_on_mesh(tolerance, mesh)?;
 
-    let boundary: Vec<HalfedgeId> = (0..mesh.halfedge_capacity() as u32)
+    let boundary: Vec<HalfedgeId> = (0..mesh.n_halfedge_slots() as u32)
         .map(HalfedgeId)
         .filter(|&h| !mesh.is_halfedge_deleted(h) && mesh.is_boundary_halfedge(h))
         .collect();
     // Cluster of every boundary vertex (by the lowest boundary vertex of its cluster).
     let mut boundary_fans = vec![0u32; n_slots];
     for &h in &boundary {
-        boundary_fans[mesh.origin(h).idx()] += 1;
+        boundary_fans[mesh.origin(h).index()] += 1;
     }
     let boundary_vertices: Vec<u32> = (0..n_slots as u32)
         .filter(|&v| boundary_fans[v as usize] > 0)
@@ -57,19 +57,22 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
     let mut keyed: Vec<([u32; 2], HalfedgeId)> = boundary
         .iter()
         .filter_map(|&h| {
-            let (a, b) = (cluster[mesh.origin(h).idx()], cluster[mesh.target(h).idx()]);
+            let (a, b) = (
+                cluster[mesh.origin(h).index()],
+                cluster[mesh.target(h).index()],
+            );
             (a != b).then_some(([a.min(b), a.max(b)], h))
         })
         .collect();
     keyed.sort_unstable();
     let single_fan = |h: HalfedgeId| {
-        boundary_fans[mesh.origin(h).idx()] == 1 && boundary_fans[mesh.target(h).idx()] == 1
+        boundary_fans[mesh.origin(h).index()] == 1 && boundary_fans[mesh.target(h).index()] == 1
     };
     let mut pairs: Vec<[HalfedgeId; 2]> = keyed
         .chunk_by(|x, y| x.0 == y.0)
         .filter_map(|run| match run {
             &[(_, a), (_, b)]
-                if cluster[mesh.origin(a).idx()] != cluster[mesh.origin(b).idx()]
+                if cluster[mesh.origin(a).index()] != cluster[mesh.origin(b).index()]
                     && single_fan(a)
                     && single_fan(b) =>
             {
@@ -93,8 +96,8 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
             is_broken[v as usize] = true;
         }
         pairs.retain(|&[a, _]| {
-            !is_broken[kept_vertex[mesh.origin(a).idx()] as usize]
-                && !is_broken[kept_vertex[mesh.target(a).idx()] as usize]
+            !is_broken[kept_vertex[mesh.origin(a).index()] as usize]
+                && !is_broken[kept_vertex[mesh.target(a).index()] as usize]
         });
     };
 
@@ -122,7 +125,7 @@ pub fn stitch_borders(mesh: &mut Mesh, tolerance: Tolerance) -> Result<RepairRep
 /// The vertex every vertex slot becomes when `pairs` are glued: the lowest of the set the
 /// pairs' ends join.
 fn merged_vertices(mesh: &Mesh, pairs: &[[HalfedgeId; 2]]) -> Vec<u32> {
-    let mut parent: Vec<u32> = (0..mesh.vertex_capacity() as u32).collect();
+    let mut parent: Vec<u32> = (0..mesh.n_vertex_slots() as u32).collect();
     for &[a, b] in pairs {
         disjoint_sets::join(&mut parent, 0, mesh.origin(a).0, mesh.target(b).0);
         disjoint_sets::join(&mut parent, 0, mesh.target(a).0, mesh.origin(b).0);
@@ -143,18 +146,18 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
             is_merged[k as usize] = true;
         }
     }
-    let mut glued_away = vec![false; mesh.edge_capacity()];
+    let mut glued_away = vec![false; mesh.n_edge_slots()];
     for &[_, b] in pairs {
-        glued_away[b.edge().idx()] = true;
+        glued_away[b.edge().index()] = true;
     }
     let mut broken = Vec::new();
     let mut ends: Vec<[u32; 2]> = Vec::new();
-    for e in 0..mesh.edge_capacity() as u32 {
+    for e in 0..mesh.n_edge_slots() as u32 {
         let h = HalfedgeId(2 * e);
         if mesh.is_halfedge_deleted(h) || glued_away[e as usize] {
             continue;
         }
-        let (a, b) = (kept[mesh.origin(h).idx()], kept[mesh.target(h).idx()]);
+        let (a, b) = (kept[mesh.origin(h).index()], kept[mesh.target(h).index()]);
         if !is_merged[a as usize] && !is_merged[b as usize] {
             continue;
         }
@@ -169,13 +172,13 @@ fn broken_sets(mesh: &Mesh, pairs: &[[HalfedgeId; 2]], kept: &[u32]) -> Vec<u32>
         broken.extend(run[0]);
     }
     let mut corners = Vec::new();
-    for f in 0..mesh.face_capacity() as u32 {
+    for f in 0..mesh.n_face_slots() as u32 {
         let f = crate::mesh::FaceId(f);
         if mesh.is_face_deleted(f) {
             continue;
         }
         corners.clear();
-        corners.extend(mesh.face_vertices(f).map(|v| kept[v.idx()]));
+        corners.extend(mesh.face_vertices(f).map(|v| kept[v.index()]));
         if !corners.iter().any(|&v| is_merged[v as usize]) {
             continue;
         }

@@ -41,7 +41,7 @@ impl Tolerance {
 /// The absolute distance of `tolerance` on `mesh`: a relative one scales the diagonal of the
 /// live vertices' bounding box. Refused as [`Tolerance::absolute`] refuses.
 pub(crate) fn absolute_on_mesh(tolerance: Tolerance, mesh: &Mesh) -> Result<f64, RepairError> {
-    let live = (0..mesh.vertex_capacity() as u32)
+    let live = (0..mesh.n_vertex_slots() as u32)
         .filter(|&v| !mesh.is_vertex_deleted(VertexId(v)))
         .map(|v| mesh.positions()[v as usize]);
     let [low, high] = bounding_box(live);

@@ -7,6 +7,8 @@ pub(crate) mod counted;
 pub(crate) mod cycles;
 pub(crate) mod disjoint_sets;
 pub(crate) mod id_set;
+pub(crate) mod ids;
+pub(crate) mod index_maps;
 pub(crate) mod large_arrays;
 pub(crate) mod order;
 pub(crate) mod prefetch;

@@ -2,53 +2,39 @@
 
 use super::ids::{EdgeId, FaceId, VertexId};
 use super::structure::Winged;
-
-/// Where every old id went in [`Winged::garbage_collect`]: `vertices[old] = new` (invalid for a
-/// dropped element), likewise for edges and faces.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Compaction {
-    /// New id of every old vertex.
-    pub vertices: Vec<VertexId>,
-    /// New id of every old edge.
-    pub edges: Vec<EdgeId>,
-    /// New id of every old face.
-    pub faces: Vec<FaceId>,
-}
-
-/// New ids for the live slots, in order; `INVALID` for the dead ones.
-fn renumber(alive: impl Iterator<Item = bool>) -> Vec<u32> {
-    let mut next = 0u32;
-    alive
-        .map(|live| {
-            if live {
-                next += 1;
-                next - 1
-            } else {
-                u32::MAX
-            }
-        })
-        .collect()
-}
+use crate::support::index_maps::{IndexMaps, compaction_map};
 
 impl Winged {
     /// Drops deleted vertices, edges and faces, renumbering the live ones densely in their old
-    /// order, and returns the old-to-new maps. Ids held from before are invalidated.
-    pub fn garbage_collect(&mut self) -> Compaction {
-        let vertices: Vec<VertexId> = renumber(self.vertex_alive.iter().copied())
-            .into_iter()
-            .map(VertexId)
-            .collect();
-        let edges: Vec<EdgeId> = renumber(self.edges.iter().map(|r| !r.is_deleted()))
-            .into_iter()
-            .map(EdgeId)
-            .collect();
-        let faces: Vec<FaceId> = renumber(self.face_alive.iter().copied())
-            .into_iter()
-            .map(FaceId)
-            .collect();
-        let v = |x: VertexId| if x.is_valid() { vertices[x.index()] } else { x };
-        let e = |x: EdgeId| if x.is_valid() { edges[x.index()] } else { x };
-        let f = |x: FaceId| if x.is_valid() { faces[x.index()] } else { x };
+    /// order, and returns the old-to-new maps (the half-edge map
+    /// empty). Ids held from before are invalidated.
+    pub fn garbage_collect(&mut self) -> IndexMaps {
+        let dead = |alive: &[bool]| -> Vec<bool> { alive.iter().map(|&live| !live).collect() };
+        let vertices = compaction_map(self.vertex_alive.len(), &dead(&self.vertex_alive));
+        let deleted_edges: Vec<bool> = self.edges.iter().map(|r| r.is_deleted()).collect();
+        let edges = compaction_map(self.edges.len(), &deleted_edges);
+        let faces = compaction_map(self.face_alive.len(), &dead(&self.face_alive));
+        let v = |x: VertexId| {
+            if x.is_valid() {
+                VertexId(vertices[x.index()])
+            } else {
+                x
+            }
+        };
+        let e = |x: EdgeId| {
+            if x.is_valid() {
+                EdgeId(edges[x.index()])
+            } else {
+                x
+            }
+        };
+        let f = |x: FaceId| {
+            if x.is_valid() {
+                FaceId(faces[x.index()])
+            } else {
+                x
+            }
+        };
 
         let live_vertices: Vec<usize> = (0..self.positions.len())
             .filter(|&i| self.vertex_alive[i])
@@ -89,8 +75,9 @@ impl Winged {
             // Kills may have left every vertex with one ring: look again (one linear pass).
             self.may_have_pinched_vertices = !self.non_manifold_vertices().is_empty();
         }
-        Compaction {
+        IndexMaps {
             vertices,
+            halfedges: Vec::new(),
             edges,
             faces,
         }

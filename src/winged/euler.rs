@@ -16,7 +16,7 @@ impl Winged {
     /// **Make vertex, face, solid**: a new solid made of one vertex at `position` and one face
     /// with no edges (a *point face*). Returns the vertex and the face.
     pub fn mvfs(&mut self, position: [f64; 3]) -> Result<(VertexId, FaceId), WingedError> {
-        require_finite(position, self.vertex_capacity())?;
+        require_finite(position, self.n_vertex_slots())?;
         self.require_room(1, 0, 1)?;
         let v = self.push_vertex(position);
         let f = self.push_face(EdgeId::INVALID);
@@ -37,7 +37,7 @@ impl Winged {
     ) -> Result<(EdgeId, VertexId), WingedError> {
         self.require_face(face)?;
         self.require_vertex(vertex)?;
-        require_finite(position, self.vertex_capacity())?;
+        require_finite(position, self.n_vertex_slots())?;
         let is_point_face = match self.point_face_vertex(face) {
             Some(v) if v == vertex => true,
             Some(_) => return Err(WingedError::VertexNotOnFace { vertex, face }),

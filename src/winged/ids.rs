@@ -1,66 +1,18 @@
 //! Typed element ids, edge sides and edge uses.
 
-/// Defines a `u32` id newtype whose invalid value is `u32::MAX`. It displays as `kind` and the
-/// number ("vertex 3"): the one way every message names an element, Rust's or C's.
-macro_rules! define_id {
-    ($(#[$doc:meta])* $name:ident, $kind:literal) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-        #[repr(transparent)]
-        pub struct $name(pub u32);
+use crate::support::ids::typed_id;
 
-        impl $name {
-            /// The "no element" value (`u32::MAX`, `HW_INVALID_INDEX` in C).
-            pub const INVALID: Self = Self(u32::MAX);
-
-            /// The id as an array index.
-            #[inline]
-            pub const fn index(self) -> usize {
-                self.0 as usize
-            }
-
-            /// Whether this is not [`Self::INVALID`] (it may still name a deleted element).
-            #[inline]
-            pub const fn is_valid(self) -> bool {
-                self.0 != u32::MAX
-            }
-        }
-
-        impl Default for $name {
-            fn default() -> Self {
-                Self::INVALID
-            }
-        }
-
-        impl std::fmt::Display for $name {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                if self.is_valid() {
-                    write!(f, concat!($kind, " {}"), self.0)
-                } else {
-                    write!(f, concat!($kind, " {} (the invalid id)"), self.0)
-                }
-            }
-        }
-
-        impl From<$name> for u32 {
-            fn from(id: $name) -> u32 {
-                id.0
-            }
-        }
-    };
-}
-
-define_id!(
+typed_id!(
     /// A vertex of a [`Winged`](super::Winged) structure.
     VertexId,
     "vertex"
 );
-define_id!(
+typed_id!(
     /// An edge of a [`Winged`](super::Winged) structure (one record per undirected edge).
     EdgeId,
     "edge"
 );
-define_id!(
+typed_id!(
     /// A face of a [`Winged`](super::Winged) structure. `FaceId::INVALID` on an edge side means
     /// "boundary": that side belongs to a hole.
     FaceId,

@@ -51,13 +51,13 @@ impl DenseIds {
                 .collect()
         };
         DenseIds {
-            vertices: dense(mesh.vertex_capacity(), &|v| {
+            vertices: dense(mesh.n_vertex_slots(), &|v| {
                 mesh.is_vertex_deleted(crate::mesh::VertexId(v))
             }),
-            edges: dense(mesh.edge_capacity(), &|e| {
+            edges: dense(mesh.n_edge_slots(), &|e| {
                 mesh.is_edge_deleted(crate::mesh::EdgeId(e))
             }),
-            faces: dense(mesh.face_capacity(), &|f| {
+            faces: dense(mesh.n_face_slots(), &|f| {
                 mesh.is_face_deleted(crate::mesh::FaceId(f))
             }),
         }
@@ -105,7 +105,7 @@ impl Winged {
             ),
             None => (Remap::Same, Remap::Same, Remap::Same),
         };
-        let edges: Vec<EdgeRecord> = (0..mesh.edge_capacity())
+        let edges: Vec<EdgeRecord> = (0..mesh.n_edge_slots())
             .filter(|&e| !mesh.is_edge_deleted(crate::mesh::EdgeId(e as u32)))
             .map(|e| {
                 let (h, t) = (2 * e, 2 * e + 1);
@@ -122,15 +122,15 @@ impl Winged {
                 }
             })
             .collect();
-        let positions: Vec<[f64; 3]> = (0..mesh.vertex_capacity())
+        let positions: Vec<[f64; 3]> = (0..mesh.n_vertex_slots())
             .filter(|&v| !mesh.is_vertex_deleted(crate::mesh::VertexId(v as u32)))
             .map(|v| mesh.positions()[v])
             .collect();
-        let vertex_edge: Vec<EdgeId> = (0..mesh.vertex_capacity())
+        let vertex_edge: Vec<EdgeId> = (0..mesh.n_vertex_slots())
             .filter(|&v| !mesh.is_vertex_deleted(crate::mesh::VertexId(v as u32)))
             .map(|v| EdgeId(edge.get(edge_of(mesh.vertex_halfedges()[v]).0)))
             .collect();
-        let face_edge: Vec<EdgeId> = (0..mesh.face_capacity())
+        let face_edge: Vec<EdgeId> = (0..mesh.n_face_slots())
             .filter(|&f| !mesh.is_face_deleted(crate::mesh::FaceId(f as u32)))
             .map(|f| EdgeId(edge.get(edge_of(mesh.face_halfedges()[f]).0)))
             .collect();

@@ -79,6 +79,7 @@ pub use crate::soup::{BuildError, BuildPolicy, Diagnostic};
 
 mod build;
 mod check;
+mod circulators;
 mod compact;
 mod error;
 mod euler;
@@ -91,10 +92,10 @@ mod soup_conversion;
 mod structure;
 mod table;
 
-pub use compact::Compaction;
+pub use crate::support::index_maps::IndexMaps;
+pub use circulators::{Step, Walk, WalkState};
 pub use error::WingedError;
 pub use ids::{EdgeId, EdgeUse, FaceId, Side, VertexId};
-pub use navigation::{Step, Walk, WalkState};
 pub use record::EdgeRecord;
 pub use structure::Winged;
 pub use table::{Naming, TableFormat};

@@ -29,14 +29,14 @@ impl Winged {
         #[cfg(feature = "parallel")]
         {
             use rayon::prelude::*;
-            (0..self.face_capacity())
+            (0..self.n_face_slots())
                 .into_par_iter()
                 .map(normal)
                 .collect()
         }
         #[cfg(not(feature = "parallel"))]
         {
-            (0..self.face_capacity()).map(normal).collect()
+            (0..self.n_face_slots()).map(normal).collect()
         }
     }
 
@@ -56,14 +56,14 @@ impl Winged {
         #[cfg(feature = "parallel")]
         {
             use rayon::prelude::*;
-            (0..self.vertex_capacity())
+            (0..self.n_vertex_slots())
                 .into_par_iter()
                 .map(normal)
                 .collect()
         }
         #[cfg(not(feature = "parallel"))]
         {
-            (0..self.vertex_capacity()).map(normal).collect()
+            (0..self.n_vertex_slots()).map(normal).collect()
         }
     }
 

@@ -16,12 +16,12 @@ pub struct AttributeInfo {
 impl Mesh {
     /// Number of element slots of `kind` (deleted ones included): attribute columns have this
     /// many elements.
-    pub fn capacity_of(&self, kind: ElementKind) -> usize {
+    pub fn n_slots(&self, kind: ElementKind) -> usize {
         match kind {
-            ElementKind::Vertex => self.vertex_capacity(),
-            ElementKind::Halfedge => self.halfedge_capacity(),
-            ElementKind::Edge => self.edge_capacity(),
-            ElementKind::Face => self.face_capacity(),
+            ElementKind::Vertex => self.n_vertex_slots(),
+            ElementKind::Halfedge => self.n_halfedge_slots(),
+            ElementKind::Edge => self.n_edge_slots(),
+            ElementKind::Face => self.n_face_slots(),
         }
     }
 
@@ -73,7 +73,7 @@ impl Mesh {
         if !(1..=MAX_COMPONENTS).contains(&components) {
             return Err(AttributeError::InvalidComponents { count: components });
         }
-        let n_elements = self.capacity_of(kind);
+        let n_elements = self.n_slots(kind);
         let set = self.attributes.of_mut(kind);
         if set.find(name).is_some() {
             return Err(AttributeError::NameTaken {

@@ -72,7 +72,7 @@ impl Mesh {
         values: &[[f64; N]],
         unit_vectors: bool,
     ) -> Result<(), AttributeError> {
-        let expected = self.halfedge_capacity();
+        let expected = self.n_halfedge_slots();
         if values.len() != expected {
             return Err(AttributeError::WrongLength {
                 name,

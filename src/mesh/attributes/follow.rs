@@ -8,10 +8,10 @@ impl Mesh {
     /// Grows every column to its kind's capacity (after elements were appended).
     pub(in crate::mesh) fn grow_attributes(&mut self) {
         let (v, h, e, f) = (
-            self.vertex_capacity(),
-            self.halfedge_capacity(),
-            self.edge_capacity(),
-            self.face_capacity(),
+            self.n_vertex_slots(),
+            self.n_halfedge_slots(),
+            self.n_edge_slots(),
+            self.n_face_slots(),
         );
         let attributes = &mut self.attributes;
         attributes.vertex.resize(v);
@@ -27,7 +27,9 @@ impl Mesh {
         t: f64,
         to: VertexId,
     ) {
-        self.attributes.vertex.blend(a.idx(), b.idx(), t, to.idx());
+        self.attributes
+            .vertex
+            .blend(a.index(), b.index(), t, to.index());
     }
 
     /// Sets vertex `to`'s attributes to the mean of those of `from` (a vertex added inside
@@ -39,7 +41,7 @@ impl Mesh {
     }
 
     pub(in crate::mesh) fn copy_halfedge_attributes(&mut self, from: HalfedgeId, to: HalfedgeId) {
-        self.attributes.halfedge.copy(from.idx(), to.idx());
+        self.attributes.halfedge.copy(from.index(), to.index());
     }
 
     pub(in crate::mesh) fn blend_halfedge_attributes(
@@ -51,19 +53,19 @@ impl Mesh {
     ) {
         self.attributes
             .halfedge
-            .blend(a.idx(), b.idx(), t, to.idx());
+            .blend(a.index(), b.index(), t, to.index());
     }
 
     pub(in crate::mesh) fn reset_halfedge_attributes(&mut self, h: HalfedgeId) {
-        self.attributes.halfedge.reset(h.idx());
+        self.attributes.halfedge.reset(h.index());
     }
 
     pub(in crate::mesh) fn copy_edge_attributes(&mut self, from: EdgeId, to: EdgeId) {
-        self.attributes.edge.copy(from.idx(), to.idx());
+        self.attributes.edge.copy(from.index(), to.index());
     }
 
     pub(in crate::mesh) fn copy_face_attributes(&mut self, from: FaceId, to: FaceId) {
-        self.attributes.face.copy(from.idx(), to.idx());
+        self.attributes.face.copy(from.index(), to.index());
     }
 
     /// Compacts every column with the maps of a garbage collection.

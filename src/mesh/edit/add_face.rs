@@ -96,7 +96,7 @@ impl Mesh {
             loop {
                 boundary_prev = self.next(boundary_prev).twin();
                 steps += 1;
-                if steps > self.halfedge_capacity() {
+                if steps > self.n_halfedge_slots() {
                     return refuse(ADD_FACE, "a corner's one-ring does not close");
                 }
                 if boundary_prev == inner_prev {
@@ -132,8 +132,8 @@ impl Mesh {
                     let h = self
                         .push_edge(ADD_FACE)
                         .expect("capacity checked in plan_face");
-                    self.origin[h.idx()] = vertices[i].0;
-                    self.origin[h.twin().idx()] = vertices[(i + 1) % n].0;
+                    self.origin[h.index()] = vertices[i].0;
+                    self.origin[h.twin().index()] = vertices[(i + 1) % n].0;
                     h
                 }
             });
@@ -153,11 +153,11 @@ impl Mesh {
                 (true, false) => {
                     // The new side comes in beside an existing boundary half-edge leaving `v`.
                     links.push((self.prev(inner_next), outer_next));
-                    self.vertex_halfedge[v.idx()] = outer_next.0;
+                    self.vertex_halfedge[v.index()] = outer_next.0;
                 }
                 (false, true) => {
                     links.push((outer_prev, self.next(inner_prev)));
-                    self.vertex_halfedge[v.idx()] = self.next(inner_prev).0;
+                    self.vertex_halfedge[v.index()] = self.next(inner_prev).0;
                 }
                 (true, true) => {
                     let current = self.vertex_halfedge(v);
@@ -166,7 +166,7 @@ impl Mesh {
                         links.push((self.prev(current), outer_next));
                         links.push((outer_prev, current));
                     } else {
-                        self.vertex_halfedge[v.idx()] = outer_next.0;
+                        self.vertex_halfedge[v.index()] = outer_next.0;
                         links.push((outer_prev, outer_next));
                     }
                 }
@@ -177,7 +177,7 @@ impl Mesh {
             if is_new[i] || is_new[j] {
                 links.push((inner_prev, inner_next));
             }
-            self.face[inner_prev.idx()] = f.0;
+            self.face[inner_prev.index()] = f.0;
         }
         for (a, b) in links {
             self.link(a, b);

@@ -130,18 +130,18 @@ impl Mesh {
         let (gone, kept) = (self.origin(h), self.target(h));
         let leaving_gone: Vec<HalfedgeId> = self.outgoing_halfedges(gone).collect();
         for g in leaving_gone {
-            self.origin[g.idx()] = kept.0;
+            self.origin[g.index()] = kept.0;
         }
         self.link(hp, hn);
         self.link(op, on);
         if fh.is_valid() {
-            self.face_halfedge[fh.idx()] = hn.0;
+            self.face_halfedge[fh.index()] = hn.0;
         }
         if fo.is_valid() {
-            self.face_halfedge[fo.idx()] = on.0;
+            self.face_halfedge[fo.index()] = on.0;
         }
         if self.vertex_halfedge(kept) == o {
-            self.vertex_halfedge[kept.idx()] = hn.0;
+            self.vertex_halfedge[kept.index()] = hn.0;
         }
         self.adjust_outgoing_halfedge_in_fan(kept, hn);
         self.mark_vertex_deleted(gone);
@@ -158,17 +158,17 @@ impl Mesh {
         let (o0_next, o0_prev) = (self.next(o0), self.prev(o0));
         self.link(h1, o0_next);
         self.link(o0_prev, h1);
-        self.face[h1.idx()] = fo.0;
+        self.face[h1.index()] = fo.0;
         self.copy_halfedge_attributes(o0, h1);
         // `h`'s edge is gone: an end that stored one of its half-edges takes `h1`'s instead.
         for (v, removed, in_fan) in [(v0, o0, h1), (v1, h, o1)] {
             if self.vertex_halfedge(v) == removed {
-                self.vertex_halfedge[v.idx()] = in_fan.0;
+                self.vertex_halfedge[v.index()] = in_fan.0;
             }
             self.adjust_outgoing_halfedge_in_fan(v, in_fan);
         }
         if fo.is_valid() && self.face_halfedge(fo) == o0 {
-            self.face_halfedge[fo.idx()] = h1.0;
+            self.face_halfedge[fo.index()] = h1.0;
         }
         if fh.is_valid() {
             self.mark_face_deleted(fh);

@@ -17,7 +17,7 @@ impl Mesh {
         let sides: Vec<HalfedgeId> = self.face_loop(f).collect();
         let mut dead_edges = Vec::new();
         for &h in &sides {
-            self.face[h.idx()] = u32::MAX;
+            self.face[h.index()] = u32::MAX;
             if self.is_boundary_halfedge(h.twin()) {
                 dead_edges.push(h.edge());
             }
@@ -53,7 +53,7 @@ impl Mesh {
         } else {
             return;
         };
-        self.vertex_halfedge[v.idx()] = boundary.0;
+        self.vertex_halfedge[v.index()] = boundary.0;
     }
 
     /// Unlinks and deletes an edge whose two sides are boundary, merging or splitting the
@@ -72,14 +72,14 @@ impl Mesh {
                     // `v` had this edge only in this fan, but a vertex whose fans the builder
                     // kept apart has edges in other fans, which the fan walk does not reach.
                     if let Some(other) = self.halfedge_in_another_fan(v) {
-                        self.vertex_halfedge[v.idx()] = other.0;
+                        self.vertex_halfedge[v.index()] = other.0;
                     } else if delete_isolated_vertices {
                         self.mark_vertex_deleted(v);
                     } else {
-                        self.vertex_halfedge[v.idx()] = u32::MAX;
+                        self.vertex_halfedge[v.index()] = u32::MAX;
                     }
                 } else {
-                    self.vertex_halfedge[v.idx()] = following.0;
+                    self.vertex_halfedge[v.index()] = following.0;
                 }
             }
         }

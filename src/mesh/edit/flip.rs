@@ -39,8 +39,8 @@ impl Mesh {
         let (c, d) = (self.origin(a2), self.origin(b2));
         let (f0, f1) = (self.face(h0), self.face(h1));
 
-        self.origin[h0.idx()] = d.0;
-        self.origin[h1.idx()] = c.0;
+        self.origin[h0.index()] = d.0;
+        self.origin[h1.index()] = c.0;
         // f0: h0 (d→c), a2 (c→a), b1 (a→d); f1: h1 (c→d), b2 (d→b), a1 (b→c).
         self.link(h0, a2);
         self.link(a2, b1);
@@ -48,18 +48,18 @@ impl Mesh {
         self.link(h1, b2);
         self.link(b2, a1);
         self.link(a1, h1);
-        self.face[b1.idx()] = f0.0;
-        self.face[a1.idx()] = f1.0;
-        self.face_halfedge[f0.idx()] = h0.0;
-        self.face_halfedge[f1.idx()] = h1.0;
+        self.face[b1.index()] = f0.0;
+        self.face[a1.index()] = f1.0;
+        self.face_halfedge[f0.index()] = h0.0;
+        self.face_halfedge[f1.index()] = h1.0;
         // The new diagonal's ends take the corners of d (from f1) and c (from f0).
         self.copy_halfedge_attributes(b2, h0);
         self.copy_halfedge_attributes(a2, h1);
-        if self.vertex_halfedge[a.idx()] == h0.0 {
-            self.vertex_halfedge[a.idx()] = b1.0;
+        if self.vertex_halfedge[a.index()] == h0.0 {
+            self.vertex_halfedge[a.index()] = b1.0;
         }
-        if self.vertex_halfedge[b.idx()] == h1.0 {
-            self.vertex_halfedge[b.idx()] = a1.0;
+        if self.vertex_halfedge[b.index()] == h1.0 {
+            self.vertex_halfedge[b.index()] = a1.0;
         }
         Ok(())
     }

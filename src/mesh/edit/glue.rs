@@ -32,7 +32,7 @@ impl Mesh {
         }
         for &[a, b] in pairs {
             let moved = b.twin();
-            let (i, j) = (a.idx(), moved.idx());
+            let (i, j) = (a.index(), moved.index());
             self.origin[i] = self.origin[j];
             self.face[i] = self.face[j];
             let (before, after) = (self.prev(moved), self.next(moved));
@@ -57,7 +57,7 @@ impl Mesh {
         }
         for &[a, b] in pairs {
             for h in [a, b] {
-                for v in [self.origin[h.idx()], self.origin[h.twin().idx()]] {
+                for v in [self.origin[h.index()], self.origin[h.twin().index()]] {
                     touched[kept[v as usize] as usize] = true;
                 }
             }
@@ -75,7 +75,7 @@ impl Mesh {
             if self.is_halfedge_deleted(h) {
                 continue;
             }
-            let v = self.origin[h.idx()] as usize;
+            let v = self.origin[h.index()] as usize;
             if touched[v]
                 && (self.vertex_halfedge[v] == INVALID_INDEX || self.is_boundary_halfedge(h))
             {

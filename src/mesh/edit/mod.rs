@@ -7,17 +7,16 @@ mod add_face;
 mod collapse;
 mod delete;
 mod flip;
-mod garbage;
 mod glue;
+mod pinch;
 mod split;
 mod triangulate;
 
-pub use garbage::IndexMaps;
-pub(crate) use garbage::compaction_map;
+pub(crate) use pinch::Pinch;
 pub(crate) use triangulate::{JoinedCorners, chords_of};
 
 use super::Mesh;
-use super::circulators::{HalfedgeWalk, Step};
+use super::circulators::Step;
 use super::ids::{FaceId, HalfedgeId, INVALID_INDEX, VertexId};
 use super::navigation::HandleError;
 
@@ -78,7 +77,7 @@ impl Mesh {
         &self,
         v: VertexId,
     ) -> impl Iterator<Item = HalfedgeId> + '_ {
-        (0..self.halfedge_capacity() as u32)
+        (0..self.n_halfedge_slots() as u32)
             .map(HalfedgeId)
             .filter(move |&h| self.origin(h) == v && !self.is_halfedge_deleted(h))
     }
@@ -137,8 +136,8 @@ impl Mesh {
     /// Links `a → b` (sets `next(a)` and `prev(b)`).
     #[inline]
     pub(super) fn link(&mut self, a: HalfedgeId, b: HalfedgeId) {
-        self.next[a.idx()] = b.0;
-        self.prev[b.idx()] = a.0;
+        self.next[a.index()] = b.0;
+        self.prev[b.index()] = a.0;
     }
 
     /// Makes `v`'s half-edge a boundary one if `v`'s fan has one (the vertex invariant).
@@ -154,10 +153,11 @@ impl Mesh {
         if self.is_boundary_halfedge(self.vertex_halfedge(v)) {
             return;
         }
-        if let Some(h) = HalfedgeWalk::with_step(self, in_fan, Step::RotateCcw)
+        if let Some(h) = self
+            .walk(in_fan, Step::Ring)
             .find(|&h| self.is_boundary_halfedge(h))
         {
-            self.vertex_halfedge[v.idx()] = h.0;
+            self.vertex_halfedge[v.index()] = h.0;
         }
     }
 
@@ -165,7 +165,7 @@ impl Mesh {
         if self.deleted.faces.is_empty() {
             self.deleted.faces = vec![false; self.face_halfedge.len()];
         }
-        if !std::mem::replace(&mut self.deleted.faces[f.idx()], true) {
+        if !std::mem::replace(&mut self.deleted.faces[f.index()], true) {
             self.deleted.n_faces += 1;
         }
     }
@@ -174,7 +174,7 @@ impl Mesh {
         if self.deleted.edges.is_empty() {
             self.deleted.edges = vec![false; self.origin.len() / 2];
         }
-        if !std::mem::replace(&mut self.deleted.edges[h.edge().idx()], true) {
+        if !std::mem::replace(&mut self.deleted.edges[h.edge().index()], true) {
             self.deleted.n_edges += 1;
         }
     }
@@ -183,9 +183,9 @@ impl Mesh {
         if self.deleted.vertices.is_empty() {
             self.deleted.vertices = vec![false; self.vertex_halfedge.len()];
         }
-        if !std::mem::replace(&mut self.deleted.vertices[v.idx()], true) {
+        if !std::mem::replace(&mut self.deleted.vertices[v.index()], true) {
             self.deleted.n_vertices += 1;
         }
-        self.vertex_halfedge[v.idx()] = INVALID_INDEX;
+        self.vertex_halfedge[v.index()] = INVALID_INDEX;
     }
 }

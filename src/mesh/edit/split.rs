@@ -29,22 +29,22 @@ impl Mesh {
         let t = segment_parameter(self.position(a), self.position(b), position);
         let n = self.push_edge(SPLIT_EDGE)?; // n: w → b beside h0; twin(n): b → w beside h1
         let (h0_next, h1_prev) = (self.next(h0), self.prev(h1));
-        self.origin[n.idx()] = w.0;
-        self.origin[n.twin().idx()] = b.0;
-        self.origin[h1.idx()] = w.0;
-        self.face[n.idx()] = self.face[h0.idx()];
-        self.face[n.twin().idx()] = self.face[h1.idx()];
+        self.origin[n.index()] = w.0;
+        self.origin[n.twin().index()] = b.0;
+        self.origin[h1.index()] = w.0;
+        self.face[n.index()] = self.face[h0.index()];
+        self.face[n.twin().index()] = self.face[h1.index()];
         self.link(h0, n);
         self.link(n, h0_next);
         self.link(h1_prev, n.twin());
         self.link(n.twin(), h1);
-        self.vertex_halfedge[w.idx()] = if self.is_boundary_halfedge(h1) {
+        self.vertex_halfedge[w.index()] = if self.is_boundary_halfedge(h1) {
             h1.0
         } else {
             n.0
         };
-        if self.vertex_halfedge[b.idx()] == h1.0 {
-            self.vertex_halfedge[b.idx()] = n.twin().0;
+        if self.vertex_halfedge[b.index()] == h1.0 {
+            self.vertex_halfedge[b.index()] = n.twin().0;
         }
         // Corners: beside h0, n is the new corner at w; beside h1, the corner at b moves from h1
         // to twin(n) and h1 becomes the new corner at w.
@@ -99,14 +99,14 @@ impl Mesh {
         let a = self.push_edge(SPLIT_FACE)?; // a: v0 → v1 stays in f; twin(a): v1 → v0 in the new face
         let b = a.twin();
         let (h0_next, h1_next) = (self.next(h0), self.next(h1));
-        self.origin[a.idx()] = v0.0;
-        self.origin[b.idx()] = v1.0;
+        self.origin[a.index()] = v0.0;
+        self.origin[b.index()] = v1.0;
         self.link(h0, a);
         self.link(a, h1_next);
         self.link(h1, b);
         self.link(b, h0_next);
-        self.face[a.idx()] = f.0;
-        self.face_halfedge[f.idx()] = a.0;
+        self.face[a.index()] = f.0;
+        self.face_halfedge[f.index()] = a.0;
         let g = self.push_face(b, SPLIT_FACE)?;
         // The corners at v0 and v1 now have a half-edge on each side of the new edge.
         self.copy_face_attributes(f, g);
@@ -114,7 +114,7 @@ impl Mesh {
         self.copy_halfedge_attributes(h1_next, b);
         let side: Vec<HalfedgeId> = self.halfedge_loop(b).collect();
         for h in side {
-            self.face[h.idx()] = g.0;
+            self.face[h.index()] = g.0;
         }
         Ok(a)
     }

@@ -140,7 +140,7 @@ impl<'a> JoinedCorners<'a> {
             }
         };
         if mesh.may_have_pinched_vertices {
-            for h in (0..mesh.halfedge_capacity() as u32).map(HalfedgeId) {
+            for h in (0..mesh.n_halfedge_slots() as u32).map(HalfedgeId) {
                 if !mesh.is_halfedge_deleted(h) && corners_of.contains_key(&mesh.origin(h).0) {
                     record(mesh.origin(h), mesh.target(h));
                 }

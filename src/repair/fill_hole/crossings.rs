@@ -6,6 +6,8 @@
 //! in trees of doubling sizes (a new tree absorbs every smaller one), so that filling many holes
 //! costs O(n log² n) for the trees and each query O(log² n + k).
 
+use std::collections::HashMap;
+
 use crate::geom::box_tree::{BoundingBox, BoxTree, Boxed};
 use crate::geom::exact_orientation::ExponentRange;
 use crate::geom::triangle_intersection::{is_degenerate_exactly, triangles_meet_exactly};
@@ -54,15 +56,20 @@ impl Nearby {
 pub(super) struct Surroundings {
     /// Trees of strictly decreasing sizes.
     trees: Vec<BoxTree<Nearby>>,
+    /// Vertices welded into another (see [`Surroundings::weld`]): the trees keep their old ids.
+    welded: HashMap<u32, u32>,
 }
 
 impl Surroundings {
     /// The live faces of `mesh` (fans from their first corner). O(n log n).
     pub(super) fn new(mesh: &Mesh) -> Surroundings {
-        let faces = (0..mesh.face_capacity() as u32)
+        let faces = (0..mesh.n_face_slots() as u32)
             .map(FaceId)
             .filter(|&f| mesh.check_face(f).is_ok());
-        let mut surroundings = Surroundings { trees: Vec::new() };
+        let mut surroundings = Surroundings {
+            trees: Vec::new(),
+            welded: HashMap::new(),
+        };
         surroundings.add(mesh, faces);
         surroundings
     }
@@ -95,6 +102,24 @@ impl Surroundings {
         }
     }
 
+    /// Records that vertex `gone` is now vertex `kept` (its fan moved when a hole's boundary
+    /// was pinched), or, with `None`, that it is itself again.
+    pub(super) fn weld(&mut self, gone: u32, kept: Option<u32>) {
+        match kept {
+            Some(kept) => self.welded.insert(gone, kept),
+            None => self.welded.remove(&gone),
+        };
+    }
+
+    /// `triangle` with its welded vertices renamed.
+    fn current(&self, triangle: &Nearby) -> Nearby {
+        let mut current = *triangle;
+        if !self.welded.is_empty() {
+            current.ids = current.ids.map(|v| *self.welded.get(&v).unwrap_or(&v));
+        }
+        current
+    }
+
     /// The indices of the triangles of `triangles` (corner indices into `ids` and `points`, the
     /// hole's corners' vertex ids and positions) that meet a face of the surroundings or, when
     /// `among_themselves`, another of `triangles`. Degenerate triangles are not listed: the fold
@@ -124,7 +149,7 @@ impl Surroundings {
                     break;
                 }
                 tree.visit_overlapping(&triangle.bounds, |other| {
-                    crossing[t] = crossing[t] || triangle.meets(other);
+                    crossing[t] = crossing[t] || triangle.meets(&self.current(other));
                 });
             }
         }

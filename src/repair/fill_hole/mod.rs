@@ -48,10 +48,13 @@ mod fair;
 mod folds;
 mod geometry;
 mod peel;
+mod pinches;
 mod projected;
 mod refine;
 mod turns;
 mod weights;
+
+use std::collections::HashSet;
 
 use thiserror::Error;
 
@@ -65,6 +68,7 @@ use fair::{FairFailure, Surround, fair};
 use folds::{Fold, first_fold};
 use geometry::{norm, sub, unit};
 use peel::peeling_order;
+use pinches::{split_at_pinches, undo_open_pinches};
 use projected::{ProjectionRefusal, projected_triangles};
 use refine::Patch;
 use turns::Turns;
@@ -126,7 +130,8 @@ pub struct FilledHole {
     pub vertices: Vec<VertexId>,
 }
 
-/// What [`fill_holes`] did, hole by hole.
+/// What [`fill_holes`] did, hole by hole. A hole whose boundary passes more than once through
+/// one point counts as the loops it was split into there (see [`fill_holes`]).
 #[derive(Debug, Default, PartialEq)]
 pub struct HoleFillReport {
     /// The holes filled, in the order of [`Mesh::boundary_loops`].
@@ -136,6 +141,10 @@ pub struct HoleFillReport {
     pub refused: Vec<(HalfedgeId, FillError)>,
     /// The holes beyond the bounds, left open.
     pub skipped: usize,
+    /// Copies of one vertex where a hole's boundary passed twice through one point, welded when
+    /// the loops split off there were filled, as `[gone, kept]`: the first is deleted, its faces
+    /// now name the second.
+    pub welded_vertices: Vec<[VertexId; 2]>,
 }
 
 impl HoleFillReport {
@@ -260,7 +269,7 @@ fn fill_hole_within(
     let sides = boundary_sides(mesh, h)?;
     let n = sides.len();
     let corners: Vec<VertexId> = sides.iter().map(|&s| mesh.origin(s)).collect();
-    let mut seen = std::collections::HashSet::with_capacity(n);
+    let mut seen = HashSet::with_capacity(n);
     if let Some(v) = corners.iter().find(|v| !seen.insert(v.0)) {
         return Err(FillError::RepeatedVertex(v.0));
     }
@@ -271,7 +280,7 @@ fn fill_hole_within(
     let triangles = if n <= EXACT_CORNERS_MAX {
         let turns = Turns::new(unit(crate::geom::newell_vector(points.iter().copied())));
         let is_joined = |i: usize, j: usize| !joined.may_join(i as u32, j as u32);
-        let mut forbidden = std::collections::HashSet::new();
+        let mut forbidden = HashSet::new();
         let mut attempt = 0;
         loop {
             let is_forbidden = |t: [u32; 3]| forbidden.contains(&t);
@@ -392,7 +401,7 @@ fn add_patch(
     surroundings: &mut Surroundings,
 ) -> Result<FilledHole, FillError> {
     check_folds(&patch.points, rim_normals, &patch.triangles)?;
-    let first = u32::try_from(mesh.vertex_capacity())
+    let first = u32::try_from(mesh.n_vertex_slots())
         .ok()
         .filter(|first| first.checked_add(patch.n_added() as u32).is_some())
         .ok_or(EditError::Full {
@@ -469,6 +478,13 @@ fn check_folds(
 /// go into one box tree for all holes: O(n log² n) for a mesh of `n` elements, plus O(m³) for
 /// each loop of `m` ≤ [`EXACT_CORNERS_MAX`] corners.
 ///
+/// A hole whose boundary passes more than once through one point (a vertex with two boundary
+/// fans, or two copies of a vertex at one position, as splitting a non-manifold vertex leaves)
+/// is split there into simple loops, each filled as a hole; two copies are welded into one
+/// vertex ([`HoleFillReport::welded_vertices`]) when a loop beside them is filled, and left as
+/// they were when neither is. Copies with more than one fan, or with a neighbour in common, are
+/// not welded.
+///
 /// # Errors
 /// [`FillError::BadOption`] when `max_perimeter` is NaN or negative (the mesh is unchanged).
 pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFillReport, FillError> {
@@ -481,6 +497,7 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
     }
     let mut report = HoleFillReport::default();
     let mut surroundings = Surroundings::new(mesh);
+    let mut several_fans = None;
     for h in mesh.boundary_loops() {
         let sides = match boundary_sides(mesh, h) {
             Ok(sides) => sides,
@@ -505,9 +522,34 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
             report.skipped += 1;
             continue;
         }
-        match fill_hole_within(mesh, h, options.mode, &mut surroundings) {
-            Ok(hole) => report.filled.push(hole),
-            Err(e) => report.refused.push((h, e)),
+        let split = split_at_pinches(mesh, h, &mut surroundings, &mut several_fans);
+        let (n_filled, n_refused) = (report.filled.len(), report.refused.len());
+        for &part in &split.loops {
+            match fill_hole_within(mesh, part, options.mode, &mut surroundings) {
+                Ok(hole) => report.filled.push(hole),
+                Err(e) => report.refused.push((part, e)),
+            }
+        }
+        let split_apart = split.loops.len() > 1;
+        report
+            .welded_vertices
+            .extend(undo_open_pinches(mesh, split, &mut surroundings));
+        if split_apart && report.filled.len() == n_filled {
+            // Nothing filled: the loop is whole again, refused for its first part's reason.
+            report.refused.truncate(n_refused + 1);
+            report.refused[n_refused].0 = h;
+        } else if split_apart {
+            // Parts joined again by an undone pinch are one hole, refused once.
+            let mut seen = HashSet::new();
+            let parts = report.refused.split_off(n_refused);
+            report
+                .refused
+                .extend(parts.into_iter().filter(|&(part, _)| {
+                    seen.insert(part) && {
+                        seen.extend(mesh.halfedge_loop(part));
+                        true
+                    }
+                }));
         }
     }
     Ok(report)

@@ -1,0 +1,18 @@
+//! The Voronoi diagram's C functions (`hw_voronoi_*`, `hw_delaunay_*`): the diagram, the bare
+//! triangulation, clipped cells, Lloyd relaxation, then pictures.
+
+pub(crate) mod diagram;
+
+pub(crate) mod delaunay;
+
+pub(crate) mod cells;
+
+pub(crate) mod lloyd;
+
+pub(crate) mod images;
+
+pub use cells::*;
+pub use delaunay::*;
+pub use diagram::*;
+pub use images::*;
+pub use lloyd::*;
