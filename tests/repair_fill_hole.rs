@@ -539,3 +539,50 @@ fn a_hole_through_one_point_twice_is_left_whole_when_no_part_fills() {
     assert_eq!(mesh.boundary_loops(), loops);
     mesh.check().unwrap();
 }
+
+/// A unit UV sphere of `rings` bands up to latitude +30°, its cap left open: a planar hole of
+/// `segments` edges in the plane z = 1/2.
+fn capless_sphere(segments: u32, rings: u32) -> Mesh {
+    let pi = std::f64::consts::PI;
+    let mut positions = vec![[0.0, 0.0, -1.0]];
+    for r in 1..=rings {
+        let lat = -pi / 2.0 + (pi / 2.0 + pi / 6.0) * f64::from(r) / f64::from(rings);
+        for s in 0..segments {
+            let lon = TAU * f64::from(s) / f64::from(segments);
+            positions.push([lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()]);
+        }
+    }
+    let at = |r: u32, s: u32| 1 + (r - 1) * segments + s % segments;
+    let mut indices = Vec::new();
+    for s in 0..segments {
+        indices.extend([0, at(1, s + 1), at(1, s)]);
+    }
+    for r in 1..rings {
+        for s in 0..segments {
+            let (a, b, c, d) = (at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
+            indices.extend([a, b, c, a, c, d]);
+        }
+    }
+    let list = FaceList::triangles(&positions, &indices);
+    Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0
+}
+
+#[test]
+fn a_planar_round_hole_is_not_filled_by_a_fan() {
+    // Every triangulation of a flat hole tilts by nothing: the fan the sweep gives a convex
+    // ring would be kept, each of its triangles' boxes holding O(n) of the rim's faces, and the
+    // crossing test would cost O(n²). The strip's triangles meet each corner at most 3 times.
+    let mut mesh = capless_sphere(400, 6);
+    let h = mesh.boundary_loops()[0];
+    let hole = fill_hole(&mut mesh, h).unwrap();
+    assert_eq!(hole.faces.len(), 398);
+    let mut uses = std::collections::HashMap::new();
+    for &f in &hole.faces {
+        for v in mesh.face_vertices(f) {
+            *uses.entry(v).or_insert(0) += 1;
+        }
+    }
+    let most = uses.values().copied().max().unwrap();
+    assert!(most <= 3, "a corner in {most} new triangles");
+    mesh.check().unwrap();
+}
