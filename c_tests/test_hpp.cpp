@@ -549,6 +549,12 @@ static void hole_filling() {
     refused = e.status() == hw::Status::Refused;
   }
   CHECK(refused && box.n_faces() == 12);
+  // Refined: the fill is a disk over the rim's 4 edges, with any vertices it adds inside.
+  hw::mesh refined = hw::mesh::from_indexed(p, sizes, ix);
+  const hw::mesh::fill_holes_result fine = refined.fill_holes(SIZE_MAX, hw::FillMode::Fair);
+  CHECK(fine.filled == 1 && fine.faces_added == 2 + 2 * (refined.n_vertices() - 8));
+  CHECK(refined.boundary_loops().empty());
+  refined.check_invariants();
   // A flat square: its cap would lie on it facing the other way, a fold, so it is refused.
   hw::mesh square = hw::mesh::from_indexed({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {3, 3},
                                            {0, 1, 2, 0, 2, 3});

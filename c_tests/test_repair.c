@@ -327,6 +327,11 @@ static void fill_holes(void) {
   CHECK_STATUS(hw_mesh_fill_holes(mesh, &options, NULL, NULL, NULL), HW_ERR_INVALID_INPUT,
                "max_perimeter");
   options = hw_fill_hole_options_default();
+  options.mode = 3;
+  CHECK_STATUS(hw_mesh_fill_holes(mesh, &options, NULL, NULL, NULL), HW_ERR_INVALID_INPUT,
+               "fill mode");
+  CHECK(hw_mesh_n_faces(mesh) == 10);
+  options = hw_fill_hole_options_default();
   options.max_edges = 3;
   size_t filled = 9, refused = 9;
   CHECK(hw_mesh_fill_holes(mesh, &options, &filled, &refused, &faces) == HW_OK);

@@ -204,8 +204,78 @@ static void t_vertices_and_degenerate_faces(void) {
   hw_soup_free(soup);
 }
 
+/* A tube of 12 sides and 3 bands closed at the bottom by a fan, open at the top: one hole of 12
+ * edges, wider than its edges are long, which a refined fill fills with vertices inside. */
+static hw_soup *open_tube(void) {
+  double p[3 * (1 + 4 * 12)];
+  uint32_t face_sizes[12 + 2 * 3 * 12], corners[3 * (12 + 2 * 3 * 12)];
+  p[0] = 0, p[1] = 0, p[2] = 0;
+  for (uint32_t r = 0; r < 4; ++r)
+    for (uint32_t s = 0; s < 12; ++s) {
+      double *q = p + 3 * (1 + r * 12 + s);
+      q[0] = cos(6.283185307179586 * s / 12), q[1] = sin(6.283185307179586 * s / 12);
+      q[2] = 0.5 * r;
+    }
+  size_t f = 0, c = 0;
+#define AT(r, s) (1 + (r) * 12 + (s) % 12)
+  for (uint32_t s = 0; s < 12; ++s) {
+    face_sizes[f++] = 3;
+    corners[c++] = 0, corners[c++] = AT(0, s + 1), corners[c++] = AT(0, s);
+  }
+  for (uint32_t r = 0; r < 3; ++r)
+    for (uint32_t s = 0; s < 12; ++s) {
+      face_sizes[f++] = 3, face_sizes[f++] = 3;
+      corners[c++] = AT(r, s), corners[c++] = AT(r, s + 1), corners[c++] = AT(r + 1, s + 1);
+      corners[c++] = AT(r, s), corners[c++] = AT(r + 1, s + 1), corners[c++] = AT(r + 1, s);
+    }
+#undef AT
+  hw_soup *soup = NULL;
+  CHECK(hw_soup_from_indexed(p, 1 + 4 * 12, face_sizes, f, corners, c, &soup) == HW_OK);
+  return soup;
+}
+
+/* Hole filling in the pipeline: every added face and vertex is in the counts and lists, the
+ * output closed; a refined fill adds vertices, a triangulated one none; a bad mode is refused. */
+static void filled_holes_are_accounted_for(void) {
+  hw_soup *soup = open_tube();
+  const hw_fill_mode modes[] = {HW_FILL_MODE_TRIANGULATE, HW_FILL_MODE_REFINE, HW_FILL_MODE_FAIR};
+  for (size_t i = 0; i < 3; ++i) {
+    hw_repair_options options = hw_repair_options_default();
+    options.fill_holes = true;
+    options.fill_max_edges = 12;
+    options.fill_mode = modes[i];
+    hw_mesh *mesh = NULL;
+    hw_repair_fates *fates = NULL;
+    CHECK(hw_repair_mesh(soup, &options, &mesh, &fates) == HW_OK);
+    hw_repair_fate_counts c;
+    CHECK(hw_repair_fates_counts(fates, &c) == HW_OK);
+    CHECK(c.filled_holes == 1 && c.refused_holes == 0);
+    CHECK(c.kept_vertices + c.added_vertices == hw_mesh_n_vertices(mesh));
+    CHECK(c.kept_faces + c.added_faces == hw_mesh_n_faces(mesh));
+    /* The fill is a disk inside the 12-edge rim. */
+    CHECK(c.added_faces == 10 + 2 * c.added_vertices);
+    CHECK(modes[i] == HW_FILL_MODE_TRIANGULATE ? c.added_vertices == 0 : c.added_vertices > 0);
+    const uint32_t *ids = NULL;
+    CHECK(fates_list(fates, HW_FATES_LIST_ADDED_FACES, &ids) == c.added_faces);
+    CHECK(fates_list(fates, HW_FATES_LIST_ADDED_VERTICES, &ids) == 2 * c.added_vertices);
+    size_t loops = 1;
+    CHECK(hw_mesh_boundary_loops(mesh, NULL, 0, &loops) == HW_OK && loops == 0);
+    CHECK(hw_mesh_check(mesh) == HW_OK);
+    hw_repair_fates_free(fates);
+    hw_mesh_free(mesh);
+  }
+  hw_repair_options options = hw_repair_options_default();
+  options.fill_holes = true;
+  options.fill_mode = 7;
+  hw_mesh *mesh = NULL;
+  CHECK_STATUS(hw_repair_mesh(soup, &options, &mesh, NULL), HW_ERR_INVALID_INPUT, "fill mode");
+  CHECK(mesh == NULL);
+  hw_soup_free(soup);
+}
+
 int main(void) {
   every_fate_of_a_small_soup();
+  filled_holes_are_accounted_for();
   t_vertices_and_degenerate_faces();
   a_model_accounts_for_every_element();
   refusals_write_nothing();

@@ -4166,7 +4166,35 @@ typedef uint32_t hw_repair_list;
 #define HW_REPAIR_LIST_FLIPPED_FACES 7
 
 /**
- * Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+ * How hw_mesh_fill_holes() and hw_repair_mesh() close a hole.
+ * \ingroup repair
+ */
+typedef uint32_t hw_fill_mode;
+
+/**
+ * Triangles on the hole's corners only; no vertex is added.
+ * \ingroup repair
+ */
+#define HW_FILL_MODE_TRIANGULATE 0
+
+/**
+ * The triangulation refined (centroid splits and Delaunay-like flips) until its edges match
+ * the lengths of the hole's boundary edges; adds vertices inside the hole, whose attributes
+ * are the mean of those of the triangle they split.
+ * \ingroup repair
+ */
+#define HW_FILL_MODE_REFINE 1
+
+/**
+ * Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
+ * Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface;
+ * a hole whose solve does not converge within 2000 conjugate-gradient iterations is refused.
+ * \ingroup repair
+ */
+#define HW_FILL_MODE_FAIR 2
+
+/**
+ * Which holes hw_mesh_fill_holes() fills, and how; start from hw_fill_hole_options_default().
  * \ingroup repair
  */
 typedef struct {
@@ -4178,12 +4206,16 @@ typedef struct {
    * Holes whose perimeter exceeds this are left open; infinity for no bound.
    */
   double max_perimeter;
+  /**
+   * How each hole is closed. Default ::HW_FILL_MODE_TRIANGULATE.
+   */
+  hw_fill_mode mode;
 } hw_fill_hole_options;
 
 /**
  * Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
  * duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
- * exactly on them, and keeps every component.
+ * exactly on them, fills no hole and keeps every component.
  * \ingroup repair
  */
 typedef struct {
@@ -4245,6 +4277,19 @@ typedef struct {
    * Whether `t_vertex_tolerance` is relative. Default false.
    */
   bool t_vertex_relative;
+  /**
+   * Whether holes are filled (after stitching, as hw_mesh_fill_holes() fills them; holes it
+   * refuses stay open). Default false: an open surface is often open on purpose.
+   */
+  bool fill_holes;
+  /**
+   * Holes with more boundary edges than this are left open. Default `SIZE_MAX`.
+   */
+  size_t fill_max_edges;
+  /**
+   * How holes are closed. Default ::HW_FILL_MODE_TRIANGULATE.
+   */
+  hw_fill_mode fill_mode;
 } hw_repair_options;
 
 /**
@@ -4278,11 +4323,18 @@ typedef uint32_t hw_fates_list;
 #define HW_FATES_LIST_FACE_IDS 3
 
 /**
- * Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
- * vertex, by output id.
+ * Pairs `output vertex, input vertex` (2 values each) of the output vertices no input vertex
+ * became, by output id: copies of an input vertex, and vertices a refined hole fill placed
+ * (input vertex `UINT32_MAX`).
  * \ingroup repair
  */
 #define HW_FATES_LIST_ADDED_VERTICES 4
+
+/**
+ * The output faces no input face became (the triangles filling holes), by output id.
+ * \ingroup repair
+ */
+#define HW_FATES_LIST_ADDED_FACES 5
 
 /**
  * The counts of hw_repair_fates_counts().
@@ -4302,11 +4354,12 @@ typedef struct {
    */
   size_t removed_vertices;
   /**
-   * Output vertices that copy an input vertex (kept + added = output vertices).
+   * Output vertices no input vertex became: copies of an input vertex, and vertices placed
+   * by a refined hole fill (kept + added = output vertices).
    */
   size_t added_vertices;
   /**
-   * Input faces in the output (= output faces).
+   * Input faces in the output (kept + added = output faces).
    */
   size_t kept_faces;
   /**
@@ -4329,6 +4382,18 @@ typedef struct {
    * Boundary edges split at a T-vertex.
    */
   size_t split_edges;
+  /**
+   * Output faces no input face became: the triangles filling holes.
+   */
+  size_t added_faces;
+  /**
+   * Holes filled.
+   */
+  size_t filled_holes;
+  /**
+   * Holes within the fill bounds that filling refused (left open).
+   */
+  size_t refused_holes;
 } hw_repair_fate_counts;
 
 /**
@@ -4548,7 +4613,7 @@ hw_status hw_repair_report_maps(const hw_repair_report *report,
 void hw_repair_report_free(hw_repair_report *report);
 
 /**
- * Options that fill every hole: no bound on edges or perimeter.
+ * Options that fill every hole, triangulated: no bound on edges or perimeter.
  * \ingroup repair
  */
 hw_fill_hole_options hw_fill_hole_options_default(void);
@@ -4598,7 +4663,8 @@ hw_repair_options hw_repair_options_default(void);
  * tolerance), removes duplicate faces, builds under ::HW_BUILD_POLICY_REPAIR (non-manifold vertices
  * split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
  * that cannot be kept left out), mends degenerate triangles and splits boundary edges at
- * T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
+ * T-vertices (each when the options ask, as by default), stitches borders, fills holes (when
+ * asked), removes small components (when asked) and
  * unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
  * faces build again under ::HW_BUILD_POLICY_STRICT. `*out_fates` (when not NULL) says what became of
  * every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a

@@ -213,6 +213,13 @@ enum class FatesList : uint32_t {
   FaceKinds = HW_FATES_LIST_FACE_KINDS,          ///< ::HW_FATES_LIST_FACE_KINDS
   FaceIds = HW_FATES_LIST_FACE_IDS,              ///< ::HW_FATES_LIST_FACE_IDS
   AddedVertices = HW_FATES_LIST_ADDED_VERTICES,  ///< ::HW_FATES_LIST_ADDED_VERTICES
+  AddedFaces = HW_FATES_LIST_ADDED_FACES,        ///< ::HW_FATES_LIST_ADDED_FACES
+};
+/// ::hw_fill_mode, scoped: each value is the C constant it names.
+enum class FillMode : uint32_t {
+  Triangulate = HW_FILL_MODE_TRIANGULATE,  ///< ::HW_FILL_MODE_TRIANGULATE
+  Refine = HW_FILL_MODE_REFINE,            ///< ::HW_FILL_MODE_REFINE
+  Fair = HW_FILL_MODE_FAIR,                ///< ::HW_FILL_MODE_FAIR
 };
 /// ::hw_cell_faces, scoped: each value is the C constant it names.
 enum class CellFaces : uint32_t {
@@ -880,7 +887,7 @@ class repair_fates {
   explicit repair_fates(hw_repair_fates* raw) : raw_(raw) {}
 
   /// One list (see ::hw_fates_list): fates (::hw_fate) and ids of the input vertices and
-  /// faces, or the added vertices' pairs.
+  /// faces, the added vertices' pairs, or the added faces.
   std::vector<uint32_t> list(FatesList which) const {
     const uint32_t* ids = nullptr;
     std::size_t n = 0;
@@ -1375,6 +1382,14 @@ class mesh {
     check(hw_mesh_fill_holes(get(), &options, &result.filled, &result.refused,
                              &result.faces_added));
     return result;
+  }
+  /// Fills every hole of at most `max_edges` boundary edges in `mode` (see
+  /// hw_mesh_fill_holes()); a refined fill also adds vertices (n_vertices() grows).
+  fill_holes_result fill_holes(size_t max_edges, FillMode mode) {
+    hw_fill_hole_options options = hw_fill_hole_options_default();
+    options.max_edges = max_edges;
+    options.mode = to_c(mode);
+    return fill_holes(options);
   }
 
   /// Adds an isolated vertex.

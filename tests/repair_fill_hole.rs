@@ -9,7 +9,8 @@ use std::time::{Duration, Instant};
 use halfwing::geom::self_intersections;
 use halfwing::mesh::{BuildPolicy, FaceId, HalfedgeId, Mesh};
 use halfwing::repair::{
-    DEGENERATE_RATIO, FOLD_ANGLE_DEGREES, FillError, HoleFillOptions, fill_hole, fill_holes,
+    DEGENERATE_RATIO, FOLD_ANGLE_DEGREES, FillError, FillMode, HoleFillOptions, fill_hole,
+    fill_holes,
 };
 use halfwing::soup::FaceList;
 use mesh_support::{data_dir, load};
@@ -305,6 +306,7 @@ fn size_limits_choose_the_holes() {
         &HoleFillOptions {
             max_edges: 8,
             max_perimeter: 6.2,
+            ..Default::default()
         },
     )
     .unwrap();
@@ -404,14 +406,22 @@ fn fill_open_models(no_new_intersections: bool) {
 /// splits vertex 12 at (2, 2), where the two squares meet, into two copies, one per fan, and the
 /// two squares make one hole whose boundary passes twice through (2, 2).
 fn figure_eight_hole(extra: &[[f64; 3]]) -> Mesh {
-    let mut positions: Vec<[f64; 3]> = (0..25)
-        .map(|k| [f64::from(k % 5), f64::from(k / 5), 0.0])
+    figure_eight_of_blocks(1, extra)
+}
+
+/// [`figure_eight_hole`] with every square of the grid cut into `block` × `block` unit squares:
+/// a hole of `8 × block` edges through `(2 block, 2 block)` twice.
+fn figure_eight_of_blocks(block: u32, extra: &[[f64; 3]]) -> Mesh {
+    let side = 4 * block;
+    let mut positions: Vec<[f64; 3]> = (0..(side + 1) * (side + 1))
+        .map(|k| [f64::from(k % (side + 1)), f64::from(k / (side + 1)), 0.0])
         .collect();
     let mut indices = Vec::new();
-    for (i, j) in (0..4u32).flat_map(|j| (0..4u32).map(move |i| (i, j))) {
-        if (i, j) != (1, 1) && (i, j) != (2, 2) {
-            let v = 5 * j + i;
-            indices.extend([v, v + 1, v + 6, v, v + 6, v + 5]);
+    for (i, j) in (0..side).flat_map(|j| (0..side).map(move |i| (i, j))) {
+        let square = (i / block, j / block);
+        if square != (1, 1) && square != (2, 2) {
+            let v = (side + 1) * j + i;
+            indices.extend([v, v + 1, v + side + 2, v, v + side + 2, v + side + 1]);
         }
     }
     for corners in extra.chunks(3) {
@@ -429,7 +439,7 @@ fn figure_eight_hole(extra: &[[f64; 3]]) -> Mesh {
         .iter()
         .map(|&h| mesh.halfedge_loop(h).count())
         .collect();
-    assert!(lengths.contains(&8), "{lengths:?}");
+    assert!(lengths.contains(&(8 * block as usize)), "{lengths:?}");
     mesh
 }
 
@@ -437,7 +447,46 @@ fn figure_eight_hole(extra: &[[f64; 3]]) -> Mesh {
 const INNER_HOLES: HoleFillOptions = HoleFillOptions {
     max_edges: 8,
     max_perimeter: f64::INFINITY,
+    mode: FillMode::Triangulate,
 };
+
+#[test]
+fn each_part_of_a_hole_through_one_point_twice_is_refined_and_faired() {
+    for mode in [FillMode::Refine, FillMode::Fair] {
+        let mut mesh = figure_eight_of_blocks(3, &[]);
+        let options = HoleFillOptions {
+            max_edges: 24,
+            mode,
+            ..HoleFillOptions::default()
+        };
+        let report = fill_holes(&mut mesh, &options).unwrap();
+        assert!(report.refused.is_empty(), "{mode:?}: {:?}", report.refused);
+        assert_eq!(report.filled.len(), 2, "{mode:?}");
+        assert_eq!(report.welded_vertices.len(), 1, "{mode:?}");
+        for hole in &report.filled {
+            assert_eq!(hole.edges, 12);
+            assert!(
+                !hole.vertices.is_empty(),
+                "{mode:?}: a 3 × 3 hole is refined"
+            );
+            assert_eq!(hole.faces.len(), hole.edges - 2 + 2 * hole.vertices.len());
+            for &v in &hole.vertices {
+                let [x, y, z] = mesh.position(v);
+                // Inside one of the two squares, on their plane (fairing a flat rim keeps it).
+                let inside = |lo: f64| x > lo && x < lo + 3.0 && y > lo && y < lo + 3.0;
+                assert!(inside(3.0) || inside(6.0), "{mode:?}: ({x}, {y})");
+                assert!(z.abs() < 1e-9, "{mode:?}: z = {z}");
+            }
+        }
+        mesh.check().unwrap();
+        assert_eq!(
+            mesh.boundary_loops().len(),
+            1,
+            "{mode:?}: the outer border is left"
+        );
+        assert!(mesh.non_manifold_vertices().is_empty());
+    }
+}
 
 #[test]
 fn a_hole_through_one_point_twice_is_filled_as_two() {
@@ -488,5 +537,52 @@ fn a_hole_through_one_point_twice_is_left_whole_when_no_part_fills() {
     assert_eq!(refused, loops[1..], "the outer border is beyond the bounds");
     assert_eq!(shape(&mesh), before);
     assert_eq!(mesh.boundary_loops(), loops);
+    mesh.check().unwrap();
+}
+
+/// A unit UV sphere of `rings` bands up to latitude +30°, its cap left open: a planar hole of
+/// `segments` edges in the plane z = 1/2.
+fn capless_sphere(segments: u32, rings: u32) -> Mesh {
+    let pi = std::f64::consts::PI;
+    let mut positions = vec![[0.0, 0.0, -1.0]];
+    for r in 1..=rings {
+        let lat = -pi / 2.0 + (pi / 2.0 + pi / 6.0) * f64::from(r) / f64::from(rings);
+        for s in 0..segments {
+            let lon = TAU * f64::from(s) / f64::from(segments);
+            positions.push([lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()]);
+        }
+    }
+    let at = |r: u32, s: u32| 1 + (r - 1) * segments + s % segments;
+    let mut indices = Vec::new();
+    for s in 0..segments {
+        indices.extend([0, at(1, s + 1), at(1, s)]);
+    }
+    for r in 1..rings {
+        for s in 0..segments {
+            let (a, b, c, d) = (at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
+            indices.extend([a, b, c, a, c, d]);
+        }
+    }
+    let list = FaceList::triangles(&positions, &indices);
+    Mesh::from_face_list(&list, BuildPolicy::Strict).unwrap().0
+}
+
+#[test]
+fn a_planar_round_hole_is_not_filled_by_a_fan() {
+    // Every triangulation of a flat hole tilts by nothing: the fan the sweep gives a convex
+    // ring would be kept, each of its triangles' boxes holding O(n) of the rim's faces, and the
+    // crossing test would cost O(n²). The strip's triangles meet each corner at most 3 times.
+    let mut mesh = capless_sphere(400, 6);
+    let h = mesh.boundary_loops()[0];
+    let hole = fill_hole(&mut mesh, h).unwrap();
+    assert_eq!(hole.faces.len(), 398);
+    let mut uses = std::collections::HashMap::new();
+    for &f in &hole.faces {
+        for v in mesh.face_vertices(f) {
+            *uses.entry(v).or_insert(0) += 1;
+        }
+    }
+    let most = uses.values().copied().max().unwrap();
+    assert!(most <= 3, "a corner in {most} new triangles");
     mesh.check().unwrap();
 }

@@ -6,7 +6,7 @@
 //! each with a report of what changed (`hw_repair_report`), and filling a mesh's holes
 //! (`hw_mesh_fill_hole`, `hw_mesh_fill_holes`).
 
-use crate::repair::{FillError, HoleFillOptions, fill_hole, fill_holes};
+use crate::repair::{FillError, FillMode, HoleFillOptions, fill_hole, fill_holes};
 use crate::repair::{
     NonManifoldEdges, RepairError, RepairReport, SmallComponents, Tolerance, merge_vertices,
     orient_faces, remove_degenerate_faces, remove_duplicate_faces, remove_small_components,
@@ -538,7 +538,36 @@ pub unsafe extern "C" fn hw_repair_report_free(report: *mut hw_repair_report) {
     guard_void(|| unsafe { free_handle(report, "hw_repair_report") });
 }
 
-/// Which holes hw_mesh_fill_holes() fills; start from hw_fill_hole_options_default().
+/// How hw_mesh_fill_holes() and hw_repair_mesh() close a hole.
+/// \ingroup repair
+pub type hw_fill_mode = u32;
+/// Triangles on the hole's corners only; no vertex is added.
+/// \ingroup repair
+pub const HW_FILL_MODE_TRIANGULATE: hw_fill_mode = 0;
+/// The triangulation refined (centroid splits and Delaunay-like flips) until its edges match
+/// the lengths of the hole's boundary edges; adds vertices inside the hole, whose attributes
+/// are the mean of those of the triangle they split.
+/// \ingroup repair
+pub const HW_FILL_MODE_REFINE: hw_fill_mode = 1;
+/// Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
+/// Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface;
+/// a hole whose solve does not converge within 2000 conjugate-gradient iterations is refused.
+/// \ingroup repair
+pub const HW_FILL_MODE_FAIR: hw_fill_mode = 2;
+
+/// The Rust mode of `mode`, or a refusal naming it.
+pub(super) fn fill_mode_arg(mode: hw_fill_mode) -> Result<FillMode, FfiError> {
+    match mode {
+        HW_FILL_MODE_TRIANGULATE => Ok(FillMode::Triangulate),
+        HW_FILL_MODE_REFINE => Ok(FillMode::Refine),
+        HW_FILL_MODE_FAIR => Ok(FillMode::Fair),
+        other => Err(FfiError::invalid_input(format!(
+            "unknown fill mode {other}"
+        ))),
+    }
+}
+
+/// Which holes hw_mesh_fill_holes() fills, and how; start from hw_fill_hole_options_default().
 /// \ingroup repair
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -547,9 +576,11 @@ pub struct hw_fill_hole_options {
     pub max_edges: usize,
     /// Holes whose perimeter exceeds this are left open; infinity for no bound.
     pub max_perimeter: f64,
+    /// How each hole is closed. Default ::HW_FILL_MODE_TRIANGULATE.
+    pub mode: hw_fill_mode,
 }
 
-/// Options that fill every hole: no bound on edges or perimeter.
+/// Options that fill every hole, triangulated: no bound on edges or perimeter.
 /// \ingroup repair
 #[unsafe(no_mangle)]
 pub extern "C" fn hw_fill_hole_options_default() -> hw_fill_hole_options {
@@ -557,6 +588,7 @@ pub extern "C" fn hw_fill_hole_options_default() -> hw_fill_hole_options {
     hw_fill_hole_options {
         max_edges: options.max_edges,
         max_perimeter: options.max_perimeter,
+        mode: HW_FILL_MODE_TRIANGULATE,
     }
 }
 
@@ -626,6 +658,7 @@ pub unsafe extern "C" fn hw_mesh_fill_holes(
             &HoleFillOptions {
                 max_edges: raw.max_edges,
                 max_perimeter: raw.max_perimeter,
+                mode: fill_mode_arg(raw.mode)?,
             },
         )?;
         let values = [

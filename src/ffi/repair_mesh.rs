@@ -3,8 +3,8 @@
 
 use crate::mesh::INVALID_INDEX;
 use crate::repair::{
-    FaceFate, FateCounts, Removal, RepairFates, RepairOptions, SmallComponents, VertexFate,
-    repair_mesh,
+    FaceFate, FateCounts, HoleFillOptions, Removal, RepairFates, RepairOptions, SmallComponents,
+    VertexFate, repair_mesh,
 };
 
 use crate::ffi::boundary::error::FfiError;
@@ -14,13 +14,14 @@ use crate::ffi::boundary::{Out, arg_ref, give_view, guard, guard_void};
 use crate::ffi::mesh::io::hw_soup;
 use crate::ffi::mesh::lifecycle::hw_mesh;
 use crate::ffi::repair::{
-    HW_SMALL_COMPONENTS_BY_FACE_COUNT, HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER,
-    hw_small_components, tolerance_arg,
+    HW_FILL_MODE_TRIANGULATE, HW_SMALL_COMPONENTS_BY_FACE_COUNT,
+    HW_SMALL_COMPONENTS_BY_RELATIVE_DIAMETER, fill_mode_arg, hw_fill_mode, hw_small_components,
+    tolerance_arg,
 };
 
 /// Options of hw_repair_mesh(); hw_repair_options_default() merges and stitches exact
 /// duplicates only, mends exactly degenerate triangles, splits boundary edges at vertices
-/// exactly on them, and keeps every component.
+/// exactly on them, fills no hole and keeps every component.
 /// \ingroup repair
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -57,6 +58,13 @@ pub struct hw_repair_options {
     pub t_vertex_tolerance: f64,
     /// Whether `t_vertex_tolerance` is relative. Default false.
     pub t_vertex_relative: bool,
+    /// Whether holes are filled (after stitching, as hw_mesh_fill_holes() fills them; holes it
+    /// refuses stay open). Default false: an open surface is often open on purpose.
+    pub fill_holes: bool,
+    /// Holes with more boundary edges than this are left open. Default `SIZE_MAX`.
+    pub fill_max_edges: usize,
+    /// How holes are closed. Default ::HW_FILL_MODE_TRIANGULATE.
+    pub fill_mode: hw_fill_mode,
 }
 
 /// The default options of hw_repair_mesh().
@@ -77,6 +85,9 @@ pub extern "C" fn hw_repair_options_default() -> hw_repair_options {
         remove_t_vertices: true,
         t_vertex_tolerance: 0.0,
         t_vertex_relative: false,
+        fill_holes: false,
+        fill_max_edges: usize::MAX,
+        fill_mode: HW_FILL_MODE_TRIANGULATE,
     }
 }
 
@@ -118,8 +129,15 @@ impl TryFrom<&hw_repair_options> for RepairOptions {
                 .remove_t_vertices
                 .then(|| tolerance_arg(o.t_vertex_tolerance, o.t_vertex_relative)),
             stitch_tolerance: tolerance_arg(o.stitch_tolerance, o.stitch_relative),
-            // Hole filling is not among the C options yet: off, as by default.
-            fill_holes: None,
+            fill_holes: if o.fill_holes {
+                Some(HoleFillOptions {
+                    max_edges: o.fill_max_edges,
+                    mode: fill_mode_arg(o.fill_mode)?,
+                    ..HoleFillOptions::default()
+                })
+            } else {
+                None
+            },
             small_components,
         })
     }
@@ -184,10 +202,14 @@ pub const HW_FATES_LIST_FACE_KINDS: hw_fates_list = 2;
 /// The id that goes with every input face's fate.
 /// \ingroup repair
 pub const HW_FATES_LIST_FACE_IDS: hw_fates_list = 3;
-/// Pairs `output vertex, input vertex` (2 values each) of output vertices that copy an input
-/// vertex, by output id.
+/// Pairs `output vertex, input vertex` (2 values each) of the output vertices no input vertex
+/// became, by output id: copies of an input vertex, and vertices a refined hole fill placed
+/// (input vertex `UINT32_MAX`).
 /// \ingroup repair
 pub const HW_FATES_LIST_ADDED_VERTICES: hw_fates_list = 4;
+/// The output faces no input face became (the triangles filling holes), by output id.
+/// \ingroup repair
+pub const HW_FATES_LIST_ADDED_FACES: hw_fates_list = 5;
 
 /// The counts of hw_repair_fates_counts().
 /// \ingroup repair
@@ -200,9 +222,10 @@ pub struct hw_repair_fate_counts {
     pub merged_vertices: usize,
     /// Input vertices removed.
     pub removed_vertices: usize,
-    /// Output vertices that copy an input vertex (kept + added = output vertices).
+    /// Output vertices no input vertex became: copies of an input vertex, and vertices placed
+    /// by a refined hole fill (kept + added = output vertices).
     pub added_vertices: usize,
-    /// Input faces in the output (= output faces).
+    /// Input faces in the output (kept + added = output faces).
     pub kept_faces: usize,
     /// Kept faces that run the other way round.
     pub reversed_faces: usize,
@@ -214,6 +237,12 @@ pub struct hw_repair_fate_counts {
     pub flipped_edges: usize,
     /// Boundary edges split at a T-vertex.
     pub split_edges: usize,
+    /// Output faces no input face became: the triangles filling holes.
+    pub added_faces: usize,
+    /// Holes filled.
+    pub filled_holes: usize,
+    /// Holes within the fill bounds that filling refused (left open).
+    pub refused_holes: usize,
 }
 
 fn removal_kind(why: Removal) -> (hw_fate, u32) {
@@ -267,7 +296,8 @@ impl hw_repair_fates {
 /// tolerance), removes duplicate faces, builds under ::HW_BUILD_POLICY_REPAIR (non-manifold vertices
 /// split, non-manifold edges cut, faces oriented consistently, closed components outward, faces
 /// that cannot be kept left out), mends degenerate triangles and splits boundary edges at
-/// T-vertices (each when the options ask, as by default), stitches borders, removes small components (when asked) and
+/// T-vertices (each when the options ask, as by default), stitches borders, fills holes (when
+/// asked), removes small components (when asked) and
 /// unreferenced vertices. The soup is unchanged. `*out_mesh` passes hw_mesh_check() and its
 /// faces build again under ::HW_BUILD_POLICY_STRICT. `*out_fates` (when not NULL) says what became of
 /// every input vertex and face. `HW_ERR_INVALID_INPUT`, nothing written, for bad options and a
@@ -326,6 +356,7 @@ pub unsafe extern "C" fn hw_repair_fates_list(
                 HW_FATES_LIST_FACE_KINDS => Ok(&fates.face_kinds[..]),
                 HW_FATES_LIST_FACE_IDS => Ok(&fates.face_ids[..]),
                 HW_FATES_LIST_ADDED_VERTICES => Ok(fates.fates.added_vertices.as_flattened()),
+                HW_FATES_LIST_ADDED_FACES => Ok(&fates.fates.added_faces[..]),
                 other => Err(FfiError::invalid_input(format!(
                     "unknown fates list {other}"
                 ))),
@@ -353,8 +384,7 @@ pub unsafe extern "C" fn hw_repair_fates_counts(
             merged_vertices,
             removed_vertices,
             added_vertices,
-            // None without hole filling, which the C options do not offer yet.
-            added_faces: _,
+            added_faces,
             kept_faces,
             reversed_faces,
             removed_faces,
@@ -370,6 +400,9 @@ pub unsafe extern "C" fn hw_repair_fates_counts(
             stitched_edges: fates.stitched_edges,
             flipped_edges: fates.flipped_edges,
             split_edges: fates.split_edges,
+            added_faces,
+            filled_holes: fates.filled_holes,
+            refused_holes: fates.refused_holes,
         };
         // SAFETY: checked non-NULL, writable per the caller.
         unsafe { out.write(counts) };

@@ -41,8 +41,9 @@ mod tolerance;
 
 pub use fates::{FaceFate, Removal, VertexFate};
 pub use fill_hole::{
-    CROSSING_RETRIES, DEGENERATE_RATIO, EXACT_CORNERS_MAX, FOLD_ANGLE_DEGREES, FillError,
-    FilledHole, HoleFillOptions, HoleFillReport, fill_hole, fill_holes,
+    CROSSING_RETRIES, DEGENERATE_RATIO, DENSITY, EXACT_CORNERS_MAX, FAIR_ITERATIONS_MAX,
+    FAIR_TOLERANCE, FOLD_ANGLE_DEGREES, FillError, FillMode, FilledHole, HoleFillOptions,
+    HoleFillReport, REFINE_ROUNDS_MAX, fill_hole, fill_hole_with, fill_holes,
 };
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;

@@ -101,16 +101,18 @@ impl RepairStep {
 /// What [`repair_mesh`] did to every input element. Every input vertex is kept, merged or
 /// removed, every input face kept or removed; the output's vertices are the kept input vertices
 /// and the added ones ([`RepairFates::added_vertices`]), its faces the kept input faces and the
-/// added ones ([`RepairFates::added_faces`]). Filling holes adds faces, never vertices.
+/// added ones ([`RepairFates::added_faces`]). Filling holes adds faces, and vertices when it
+/// refines ([`FillMode::Refine`](super::FillMode::Refine)).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct RepairFates {
     /// The fate of every input vertex.
     pub vertices: Vec<VertexFate>,
     /// The fate of every input face.
     pub faces: Vec<FaceFate>,
-    /// Pairs `[output vertex, input vertex]` of output vertices that copy an input vertex (made
-    /// by splitting non-manifold vertices, cutting non-manifold edges, and splitting an edge at
-    /// a T-vertex where stitching did not merge the copy into it), by output id.
+    /// Pairs `[output vertex, input vertex]` of output vertices no input vertex became, by
+    /// output id: copies of an input vertex (made by splitting non-manifold vertices, cutting
+    /// non-manifold edges, and splitting an edge at a T-vertex where stitching did not merge the
+    /// copy into it), and vertices a refined hole fill placed (input vertex `INVALID_INDEX`).
     pub added_vertices: Vec<[u32; 2]>,
     /// Edges flipped to mend a degenerate triangle (both its faces kept, with new corners).
     pub flipped_edges: usize,
@@ -135,7 +137,7 @@ pub struct FateCounts {
     pub merged_vertices: usize,
     /// Input vertices removed.
     pub removed_vertices: usize,
-    /// Output vertices that copy an input vertex.
+    /// Output vertices no input vertex became (copies, and vertices of refined hole fills).
     pub added_vertices: usize,
     /// Output faces that no input face became (hole fills).
     pub added_faces: usize,
@@ -348,6 +350,7 @@ fn run(
         RepairStep::FillHoles => {
             if let Some(fill) = options.fill_holes {
                 let mesh = mesh(work, ledger)?;
+                let first_vertex = mesh.n_vertex_slots();
                 let report = fill_holes(mesh, &fill).map_err(|e| match e {
                     FillError::BadOption { name, value, range } => {
                         RepairError::BadOption { name, value, range }
@@ -373,6 +376,10 @@ fn run(
                     unchanged[gone as usize] = INVALID_INDEX;
                 }
                 ledger.map_vertices(&unchanged, &welded, Removal::Unbuildable);
+                // Refined fills place vertices at new positions (copying no input vertex); a
+                // refused one may leave deleted ids, compacted with the others later.
+                let placed = vec![INVALID_INDEX; mesh.n_vertex_slots() - first_vertex];
+                ledger.add_vertices(first_vertex as u32, &placed);
                 // A refused fill may leave a deleted face id behind: the ids are compacted as
                 // the mesh turns into a face list.
                 let deleted: Vec<bool> = (0..mesh.n_face_slots() as u32)

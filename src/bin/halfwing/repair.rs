@@ -5,7 +5,9 @@ use crate::convert::ply_binary;
 use crate::failure::{Failure, Outcome};
 use crate::files::{read_mesh, write_mesh};
 use crate::progress::Progress;
-use halfwing::repair::{HoleFillOptions, RepairOptions, SmallComponents, Tolerance, repair_mesh};
+use halfwing::repair::{
+    FillMode, HoleFillOptions, RepairOptions, SmallComponents, Tolerance, repair_mesh,
+};
 
 const HELP: &str = "\
 usage: halfwing repair IN OUT [options]
@@ -33,6 +35,10 @@ options:
   --stitch-relative R     ... at most R times the diagonal apart
   --fill-holes N          fill holes of at most N boundary edges (default: none filled; a fill
                           that would fold or intersect the mesh is refused, the hole left open)
+  --refine                ... and refine each fill: new vertices inside the hole so that its
+                          edges match the boundary's lengths
+  --fair                  ... refine, then move the new vertices to continue the surface around
+                          the hole smoothly (a fill whose fairing does not converge is refused)
   --small-faces N         remove components of at most N faces
   --small-diameter R      remove components at most R (0 to 1) times the largest one's size
   --binary | --ascii      PLY encoding of OUT (default binary)
@@ -48,6 +54,8 @@ pub fn run(args: &[String]) -> Outcome {
             "--ascii",
             "--keep-degenerate-faces",
             "--keep-t-vertices",
+            "--refine",
+            "--fair",
         ],
         &[
             "--merge-tolerance",
@@ -86,12 +94,19 @@ pub fn run(args: &[String]) -> Outcome {
             "--t-vertex-relative",
         )?,
         stitch_tolerance: tolerance(&args, "--stitch-tolerance", "--stitch-relative")?,
-        fill_holes: args
-            .parsed::<usize>("--fill-holes")?
-            .map(|max_edges| HoleFillOptions {
+        fill_holes: match (args.parsed::<usize>("--fill-holes")?, fill_mode(&args)) {
+            (Some(max_edges), mode) => Some(HoleFillOptions {
                 max_edges,
+                mode,
                 ..HoleFillOptions::default()
             }),
+            (None, FillMode::Triangulate) => None,
+            (None, _) => {
+                return Err(Failure::usage(
+                    "--refine and --fair need --fill-holes N".into(),
+                ));
+            }
+        },
         small_components: match (
             args.parsed::<usize>("--small-faces")?,
             args.parsed::<f64>("--small-diameter")?,
@@ -155,6 +170,17 @@ pub fn run(args: &[String]) -> Outcome {
         );
     }
     Ok(0)
+}
+
+/// The fill mode the flags ask for: `--fair` refines too.
+fn fill_mode(args: &Args) -> FillMode {
+    if args.flag("--fair") {
+        FillMode::Fair
+    } else if args.flag("--refine") {
+        FillMode::Refine
+    } else {
+        FillMode::Triangulate
+    }
 }
 
 /// The tolerance given by the absolute or the relative option (exact when neither).

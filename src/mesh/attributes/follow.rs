@@ -32,6 +32,14 @@ impl Mesh {
             .blend(a.index(), b.index(), t, to.index());
     }
 
+    /// Sets vertex `to`'s attributes to the mean of those of `from` (a vertex added inside
+    /// their triangle, as hole refinement adds them).
+    pub(crate) fn interpolate_vertex_attributes(&mut self, from: [VertexId; 3], to: VertexId) {
+        let [a, b, c] = from;
+        self.blend_vertex_attributes(a, b, 0.5, to);
+        self.blend_vertex_attributes(to, c, 1.0 / 3.0, to);
+    }
+
     pub(in crate::mesh) fn copy_halfedge_attributes(&mut self, from: HalfedgeId, to: HalfedgeId) {
         self.attributes.halfedge.copy(from.index(), to.index());
     }

@@ -34,15 +34,16 @@ pub(super) fn is_degenerate(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
     normal == [0.0; 3] || 2.0 * area <= DEGENERATE_RATIO * longest
 }
 
-/// The first fold of `triangles` (corner indices into `points`, the hole's ring of corners in
-/// order), or `None`. `rim_normals[i]` is the unit normal of the face across the side from
-/// corner `i` to `i + 1`, zero when it has none. O(n) expected.
+/// The first fold of `triangles` (corner indices into `points`: the hole's ring of corners in
+/// order, then any vertices added inside), or `None`. `rim_normals[i]` is the unit normal of
+/// the face across the side from corner `i` to `i + 1`, zero when it has none; there is one per
+/// corner of the ring. O(n) expected.
 pub(super) fn first_fold(
     points: &[[f64; 3]],
     rim_normals: &[[f64; 3]],
     triangles: &[[u32; 3]],
 ) -> Option<Fold> {
-    let n = points.len() as u32;
+    let n = rim_normals.len() as u32;
     let mut normals = Vec::with_capacity(triangles.len());
     for (t, tri) in triangles.iter().enumerate() {
         let [a, b, c] = tri.map(|k| points[k as usize]);
@@ -56,7 +57,7 @@ pub(super) fn first_fold(
     for (t, tri) in triangles.iter().enumerate() {
         for k in 0..3 {
             let (u, v) = (tri[k], tri[(k + 1) % 3]);
-            let neighbour = if v == (u + 1) % n {
+            let neighbour = if u < n && v == (u + 1) % n {
                 rim_normals[u as usize]
             } else if let Some(&s) = across.get(&(v, u)) {
                 normals[s]

@@ -27,15 +27,30 @@
 //! retried. A hole whose every triangulation tried crosses the mesh is left open with
 //! [`FillError::SelfIntersecting`]. A fill touches no face but along its rim.
 //!
+//! Refined and faired (optional, [`FillMode`]): the triangulation above can be refined so that
+//! its edges match the lengths of the hole's boundary edges (Liepa's centroid splits and
+//! Delaunay-like flips, see [`REFINE_ROUNDS_MAX`] and [`DENSITY`]), adding vertices inside the
+//! hole, and the added vertices then faired: moved to minimise a thin-plate energy (the
+//! squared uniform Laplacian), the rim and the mesh around it fixed, by conjugate gradients
+//! within [`FAIR_ITERATIONS_MAX`] iterations to [`FAIR_TOLERANCE`]. The refined (and faired)
+//! patch passes the same fold and intersection tests before the mesh is touched; a solve that
+//! does not converge refuses the hole ([`FillError::NotFaired`]).
+//!
 //! New faces, edges and corners get zero user attributes (as [`Mesh::add_face`] and
 //! [`Mesh::split_face`] give them); the mesh keeps no per-corner normals or texture coordinates
-//! of its own, so a mesh exported afterwards has none on the new faces. No vertex is added.
+//! of its own, so a mesh exported afterwards has none on the new faces. A triangulation adds no
+//! vertex; a refined fill's vertices get user attributes interpolated from the corners of the
+//! triangle they split (their mean; integer columns rounded, unit-vector columns renormalised),
+//! at the positions refinement created them, whatever fairing then does to their positions.
 
 mod crossings;
+mod fair;
 mod folds;
 mod geometry;
+mod peel;
 mod pinches;
 mod projected;
+mod refine;
 mod turns;
 mod weights;
 
@@ -43,14 +58,19 @@ use std::collections::HashSet;
 
 use thiserror::Error;
 
+pub use fair::{FAIR_ITERATIONS_MAX, FAIR_TOLERANCE};
 pub use folds::{DEGENERATE_RATIO, FOLD_ANGLE_DEGREES};
+pub use refine::{DENSITY, REFINE_ROUNDS_MAX};
 
 use crate::mesh::{EditError, FaceId, HalfedgeId, HandleError, JoinedCorners, Mesh, VertexId};
 use crossings::Surroundings;
+use fair::{FairFailure, Surround, fair};
 use folds::{Fold, first_fold};
 use geometry::{norm, sub, unit};
+use peel::peeling_order;
 use pinches::{split_at_pinches, undo_open_pinches};
 use projected::{ProjectionRefusal, projected_triangles};
+use refine::Patch;
 use turns::Turns;
 
 /// Loops of at most this many corners get the exact minimum-weight triangulation; longer ones
@@ -61,7 +81,19 @@ pub const EXACT_CORNERS_MAX: usize = 100;
 /// triangles of the last one that crossed the mesh, before the hole is refused.
 pub const CROSSING_RETRIES: usize = 16;
 
-/// Which holes [`fill_holes`] fills.
+/// How a hole is closed (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FillMode {
+    /// Triangles on the hole's corners only; no vertex is added.
+    #[default]
+    Triangulate,
+    /// The triangulation refined so that its edges match the boundary's: adds vertices.
+    Refine,
+    /// Refined, then the added vertices faired to continue the surface around the hole.
+    Fair,
+}
+
+/// Which holes [`fill_holes`] fills, and how.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HoleFillOptions {
     /// Holes with more boundary edges than this are left open.
@@ -69,14 +101,17 @@ pub struct HoleFillOptions {
     /// Holes whose perimeter (the sum of their boundary edges' lengths) exceeds this are left
     /// open; infinity for no bound.
     pub max_perimeter: f64,
+    /// How each hole is closed.
+    pub mode: FillMode,
 }
 
 impl Default for HoleFillOptions {
-    /// Every hole: no bound on edges or perimeter.
+    /// Every hole, triangulated: no bound on edges or perimeter.
     fn default() -> Self {
         HoleFillOptions {
             max_edges: usize::MAX,
             max_perimeter: f64::INFINITY,
+            mode: FillMode::Triangulate,
         }
     }
 }
@@ -89,8 +124,10 @@ pub struct FilledHole {
     pub boundary_halfedge: HalfedgeId,
     /// Boundary edges (and corners) of the hole.
     pub edges: usize,
-    /// The new triangles (`edges − 2` of them). No vertex is added.
+    /// The new triangles (`edges − 2 + 2 × vertices`: the fill is a disk).
     pub faces: Vec<FaceId>,
+    /// The new vertices, inside the hole (none unless refined).
+    pub vertices: Vec<VertexId>,
 }
 
 /// What [`fill_holes`] did, hole by hole. A hole whose boundary passes more than once through
@@ -114,6 +151,11 @@ impl HoleFillReport {
     /// The faces added over all holes.
     pub fn faces_added(&self) -> usize {
         self.filled.iter().map(|h| h.faces.len()).sum()
+    }
+
+    /// The vertices added over all holes (by refinement).
+    pub fn vertices_added(&self) -> usize {
+        self.filled.iter().map(|h| h.vertices.len()).sum()
     }
 }
 
@@ -155,6 +197,10 @@ pub enum FillError {
     /// another new triangle.
     #[error("hole filling refused: every triangulation tried intersects the mesh or itself")]
     SelfIntersecting,
+    /// Fairing did not converge within [`FAIR_ITERATIONS_MAX`] iterations, or a position came
+    /// out NaN or infinite.
+    #[error("hole filling refused: fairing {0}")]
+    NotFaired(&'static str),
     /// The mesh refused the new faces (a vertex whose fans cannot take them, ids exhausted).
     #[error(transparent)]
     Edit(#[from] EditError),
@@ -192,15 +238,32 @@ fn face_normal_across(mesh: &Mesh, s: HalfedgeId) -> [f64; 3] {
 /// a long loop does not project onto a simple polygon, when the fill would fold, or when it
 /// would intersect the mesh or itself.
 pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError> {
-    boundary_sides(mesh, h)?;
-    let mut surroundings = Surroundings::new(mesh);
-    fill_hole_within(mesh, h, &mut surroundings)
+    fill_hole_with(mesh, h, FillMode::Triangulate)
 }
 
-/// [`fill_hole`] against `surroundings` (the mesh's faces), to which the new faces are added.
+/// [`fill_hole`], then refined or refined and faired as `mode` says (see the module docs).
+/// Refinement costs O(m log m) more for a fill of m triangles (about the hole's area over its
+/// boundary edges' length squared); fairing O(m) per conjugate-gradient iteration.
+///
+/// # Errors
+/// As [`fill_hole`]; and [`FillError::NotFaired`] when fairing does not converge. The mesh is
+/// unchanged.
+pub fn fill_hole_with(
+    mesh: &mut Mesh,
+    h: HalfedgeId,
+    mode: FillMode,
+) -> Result<FilledHole, FillError> {
+    boundary_sides(mesh, h)?;
+    let mut surroundings = Surroundings::new(mesh);
+    fill_hole_within(mesh, h, mode, &mut surroundings)
+}
+
+/// [`fill_hole_with`] against `surroundings` (the mesh's faces), to which the new faces are
+/// added.
 fn fill_hole_within(
     mesh: &mut Mesh,
     h: HalfedgeId,
+    mode: FillMode,
     surroundings: &mut Surroundings,
 ) -> Result<FilledHole, FillError> {
     let sides = boundary_sides(mesh, h)?;
@@ -260,6 +323,25 @@ fn fill_hole_within(
         }
         triangles
     };
+    if mode != FillMode::Triangulate {
+        let mut patch = Patch::new(&points, triangles);
+        let surround = (mode == FillMode::Fair).then(|| surround_of(mesh, &corners));
+        let mut faired = Ok(());
+        let refined = patch.refine(&joined, |patch| match &surround {
+            Some(surround) => {
+                faired = fair(patch, surround);
+                faired.is_ok()
+            }
+            None => true,
+        });
+        if !refined {
+            return Err(FillError::NotFaired(match faired {
+                Err(FairFailure::NotFinite) => "gave a position that is not finite",
+                _ => "did not converge",
+            }));
+        }
+        return add_patch(mesh, h, &patch, &ids, &rim_normals, surroundings);
+    }
     let mut chords = Vec::with_capacity(n.saturating_sub(3));
     crate::mesh::chords_of(&triangles, n as u32, &mut chords);
     if !joined.allows(&chords) {
@@ -281,6 +363,98 @@ fn fill_hole_within(
         boundary_halfedge: h,
         edges: n,
         faces,
+        vertices: Vec::new(),
+    })
+}
+
+/// The mesh around the rim `corners` for fairing (see [`Surround`]).
+fn surround_of(mesh: &Mesh, corners: &[VertexId]) -> Surround {
+    let n = corners.len();
+    let mut sums = Vec::with_capacity(n);
+    let mut counts = Vec::with_capacity(n);
+    for (i, &v) in corners.iter().enumerate() {
+        let beside = [corners[(i + 1) % n], corners[(i + n - 1) % n]];
+        let mut sum = [0.0; 3];
+        let mut count = 0;
+        for out in mesh.outgoing_halfedges(v) {
+            let w = mesh.target(out);
+            if !beside.contains(&w) {
+                let p = mesh.position(w);
+                (0..3).for_each(|k| sum[k] += p[k]);
+                count += 1;
+            }
+        }
+        sums.push(sum);
+        counts.push(count);
+    }
+    Surround { sums, counts }
+}
+
+/// Tests a refined patch for folds and crossings and, when it passes, adds its vertices and
+/// triangles to the mesh (in peeling order, see [`peeling_order`]).
+fn add_patch(
+    mesh: &mut Mesh,
+    h: HalfedgeId,
+    patch: &Patch,
+    rim_ids: &[u32],
+    rim_normals: &[[f64; 3]],
+    surroundings: &mut Surroundings,
+) -> Result<FilledHole, FillError> {
+    check_folds(&patch.points, rim_normals, &patch.triangles)?;
+    let first = u32::try_from(mesh.n_vertex_slots())
+        .ok()
+        .filter(|first| first.checked_add(patch.n_added() as u32).is_some())
+        .ok_or(EditError::Full {
+            operation: "hole filling",
+        })?;
+    // The ids the added vertices will get.
+    let ids: Vec<u32> = rim_ids
+        .iter()
+        .copied()
+        .chain((0..patch.n_added() as u32).map(|k| first + k))
+        .collect();
+    if !surroundings
+        .crossing_triangles(&ids, &patch.points, &patch.triangles, true)
+        .is_empty()
+    {
+        return Err(FillError::SelfIntersecting);
+    }
+    let order = peeling_order(patch.n_rim, patch.points.len(), &patch.triangles)
+        .ok_or(FillError::Folded("the refined fill is not a disk".into()))?;
+    let mut vertices = Vec::with_capacity(patch.n_added());
+    let mut faces = Vec::with_capacity(patch.triangles.len());
+    let added = (|| -> Result<(), EditError> {
+        for (k, &position) in patch.points[patch.n_rim..].iter().enumerate() {
+            let v = mesh.add_vertex(position)?;
+            mesh.interpolate_vertex_attributes(
+                patch.parents[k].map(|p| VertexId(ids[p as usize])),
+                v,
+            );
+            vertices.push(v);
+        }
+        for &t in &order {
+            let corners = patch.triangles[t].map(|k| VertexId(ids[k as usize]));
+            faces.push(mesh.add_face(&corners)?);
+        }
+        Ok(())
+    })();
+    if let Err(e) = added {
+        for &f in faces.iter().rev() {
+            mesh.delete_face(f, false)
+                .expect("a face just added is live");
+        }
+        for &v in &vertices {
+            mesh.delete_vertex(v).expect("a vertex just added is live");
+        }
+        return Err(e.into());
+    }
+    faces.sort_unstable();
+    surroundings.add(mesh, faces.iter().copied());
+    Ok(FilledHole {
+        boundary_halfedge: h,
+        edges: patch.n_rim,
+        faces,
+        vertices,
     })
 }
 
@@ -351,7 +525,7 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
         let split = split_at_pinches(mesh, h, &mut surroundings, &mut several_fans);
         let (n_filled, n_refused) = (report.filled.len(), report.refused.len());
         for &part in &split.loops {
-            match fill_hole_within(mesh, part, &mut surroundings) {
+            match fill_hole_within(mesh, part, options.mode, &mut surroundings) {
                 Ok(hole) => report.filled.push(hole),
                 Err(e) => report.refused.push((part, e)),
             }

@@ -73,22 +73,26 @@ pub(super) fn projected_triangles(
         Some(_) => return Err(ProjectionRefusal::NotSimple),
     }
     // The sweep (a fan, for a convex projection) puts its thin ears wherever its start falls;
-    // a strip puts two where the ring bends least out of the mean plane.
-    let largest_tilt = |triangles: &[[u32; 3]]| {
-        triangles
+    // a strip puts two where the ring bends least out of the mean plane. Tilts equal up to
+    // rounding (a planar hole's are all zero) go to the triangles with the smaller boxes.
+    let rank = |triangles: &[[u32; 3]]| {
+        let tilt = triangles
             .iter()
             .map(|t| turns.tilt(triangle_normal_at(points, *t)))
-            .fold(0.0, f64::max)
+            .fold(0.0, f64::max);
+        (tilt, box_spread(points, triangles))
     };
-    let mut best_tilt = largest_tilt(&triangles);
+    let mut best = rank(&triangles);
     for start in (0..STRIP_STARTS).map(|k| (k * n / STRIP_STARTS) as u32) {
         let strip = strip_triangles(n as u32, start);
-        let tilt = largest_tilt(&strip);
-        if tilt < best_tilt && is_proper_in_projection(points, &flat, &strip) && {
+        let candidate = rank(&strip);
+        let better = candidate.0 < best.0 - TILT_TIE
+            || (candidate.0 <= best.0 + TILT_TIE && candidate.1 < best.1);
+        if better && is_proper_in_projection(points, &flat, &strip) && {
             chords_of(&strip, n as u32, &mut chords);
             joined.allows(&chords)
         } {
-            (triangles, best_tilt) = (strip, tilt);
+            (triangles, best) = (strip, candidate);
         }
     }
     Flips::new(points, &flat, rim_normals, turns, triangles).run(joined)
@@ -96,6 +100,33 @@ pub(super) fn projected_triangles(
 
 /// Corners at which [`projected_triangles`] tries a strip, evenly spread round the ring.
 const STRIP_STARTS: usize = 16;
+
+/// Largest tilts (radians) closer than this are equal for [`projected_triangles`]: rounding
+/// leaves a planar hole's triangles tilted by about 1e-8.
+const TILT_TIE: f64 = 1e-6;
+
+/// The sum over `triangles` of the area of the largest side of each one's bounding box. The
+/// crossing test meets every face whose box a new triangle's box overlaps: a fan over a convex
+/// ring has triangles whose boxes hold O(n) of its corners, a strip's hold O(1), and the sums
+/// tell them apart (O(n) times the ring's area against O(1) times it).
+fn box_spread(points: &[[f64; 3]], triangles: &[[u32; 3]]) -> f64 {
+    triangles
+        .iter()
+        .map(|t| {
+            let corners = t.map(|k| points[k as usize]);
+            let mut extents = [0, 1, 2].map(|axis| {
+                let (lo, hi) = corners
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                        (lo.min(p[axis]), hi.max(p[axis]))
+                    });
+                hi - lo
+            });
+            extents.sort_unstable_by(f64::total_cmp);
+            extents[1] * extents[2]
+        })
+        .sum()
+}
 
 /// The zigzag strip over a ring of `n` corners from corner `start`: an ear there, then
 /// triangles alternately on either side until the strip closes opposite (the other ear). In the

@@ -1,0 +1,94 @@
+// Side-by-side benchmark of halfwing's hole filling against CGAL 5 Polygon Mesh Processing's
+// triangulate_hole, in one run, on holes of 1,000 edges: a sphere with its cap removed (planar)
+// and a tube whose rim waves up and down (non-planar). Both triangulate the hole on its corners
+// only. halfwing: a loop longer than 100 corners is triangulated on its best-fit plane in
+// O(n log n), improved by flips, tested for folds and for crossings with the mesh (box trees,
+// exact predicates). CGAL (defaults): Liepa's minimum-weight dynamic programme restricted to
+// the edges of a 3D Delaunay triangulation of the hole's corners, falling back to the full O(n³)
+// programme when that finds none. Each run gets a fresh mesh (not timed); rounds alternate
+// between the two, best of N; single thread on both sides (RAYON_NUM_THREADS=1 is set by the run
+// script; CGAL's is sequential).
+//
+//   bench/run-hole-fill-compare.sh [--quick] [--repeats N]
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/version.h>
+
+#include <cstdio>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+#include "../c_tests/cgal_soup.hpp"
+#include "../c_tests/hole_models.hpp"
+#include "halfwing.hpp"
+#include "options.hpp"
+#include "timing.hpp"
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+SurfaceMesh cgal_mesh(const indexed::Mesh& m) {
+  const cgal_soup::Soup soup = cgal_soup::of(m);
+  std::vector<Kernel::Point_3> points;
+  for (const auto& p : soup.points) points.emplace_back(p.x(), p.y(), p.z());
+  SurfaceMesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  return mesh;
+}
+
+void compare(const indexed::Mesh& m, int repeats) {
+  double ours = std::numeric_limits<double>::infinity(), theirs = ours;
+  std::size_t our_faces = 0, their_faces = 0;
+  for (int round = 0; round < repeats; ++round) {
+    {
+      hw::mesh mesh = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices);
+      const hw_halfedge h = mesh.boundary_loops().front();
+      const auto start = bench::Clock::now();
+      try {
+        our_faces = mesh.fill_hole(h);
+      } catch (const hw::error& e) {
+        std::printf("%-24s halfwing refused: %s\n", m.name.c_str(), e.what());
+        return;
+      }
+      ours = std::min(ours, bench::elapsed_ms(start, bench::Clock::now()));
+    }
+    {
+      SurfaceMesh mesh = cgal_mesh(m);
+      SurfaceMesh::Halfedge_index border;
+      for (auto h : mesh.halfedges())
+        if (mesh.is_border(h)) {
+          border = h;
+          break;
+        }
+      std::vector<SurfaceMesh::Face_index> faces;
+      const auto start = bench::Clock::now();
+      PMP::triangulate_hole(mesh, border, std::back_inserter(faces));
+      theirs = std::min(theirs, bench::elapsed_ms(start, bench::Clock::now()));
+      their_faces = faces.size();
+    }
+  }
+  std::printf("%-24s %8zu %8zu %8zu %12.1f %12.1f %8.2fx\n", m.name.c_str(),
+              m.face_sizes.size(), our_faces, their_faces, ours, theirs, ours / theirs);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bench::options opts;
+  if (!bench::parse_options(argc, argv, opts)) return 2;
+  const uint32_t edges = opts.quick ? 100 : 1000;
+  std::printf("halfwing %s fill_hole vs CGAL %s triangulate_hole, holes of %u edges; memory: %s\n",
+              hw::version().c_str(), CGAL_VERSION_STR, edges, bench::set_memory_policy(false));
+  std::printf("times: best of %d runs, in ms; ratio = halfwing / CGAL (lower is better)\n",
+              opts.repeats);
+  std::printf("%-24s %8s %8s %8s %12s %12s %9s\n", "model", "faces", "ours+", "CGAL+",
+              "halfwing", "CGAL", "ratio");
+  compare(hole_models::capless_sphere(edges, 20), opts.repeats);
+  compare(hole_models::wavy_tube(edges, 10), opts.repeats);
+  return 0;
+}
