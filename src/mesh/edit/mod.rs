@@ -76,6 +76,7 @@ impl Mesh {
     ) -> impl Iterator<Item = HalfedgeId> + '_ {
         (0..self.n_halfedge_slots() as u32)
             .map(HalfedgeId)
+            .inspect(|_| super::pinched_fans::note_halfedges_visited(1))
             .filter(move |&h| self.origin(h) == v && !self.is_halfedge_deleted(h))
     }
 
