@@ -5,6 +5,7 @@ use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
+use super::ids::SiteId;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
 use crate::soup::PolygonSoup;
@@ -315,7 +316,10 @@ impl Voronoi {
     /// The site owning point `p`; used when no edge crosses the region, i.e. the whole region
     /// lies in one cell.
     fn owner_of(&self, p: [f64; 2]) -> u32 {
-        self.nearest_site(p, None).ok().flatten().unwrap_or(INVALID)
+        self.nearest_site(p, None)
+            .ok()
+            .flatten()
+            .map_or(INVALID, |site| site.0)
     }
 
     /// Clips the edge with ends `ends`: `[start, end]` positions, or `[INVALID; 2]` when
@@ -505,8 +509,8 @@ impl ClippedCells {
 
     /// Position indices of the cell of `site`, counter-clockwise (empty when the cell misses the
     /// region or the site is a duplicate).
-    pub fn cell(&self, site: u32) -> Result<&[u32], VoronoiError> {
-        let Some(&[start, len]) = self.ranges.get(site as usize) else {
+    pub fn cell(&self, site: SiteId) -> Result<&[u32], VoronoiError> {
+        let Some(&[start, len]) = self.ranges.get(site.index()) else {
             return Err(VoronoiError::InvalidSite {
                 site,
                 count: self.ranges.len(),
@@ -516,7 +520,7 @@ impl ClippedCells {
     }
 
     /// The polygon of the cell of `site`.
-    pub fn cell_polygon(&self, site: u32) -> Result<Vec<[f64; 2]>, VoronoiError> {
+    pub fn cell_polygon(&self, site: SiteId) -> Result<Vec<[f64; 2]>, VoronoiError> {
         Ok(self
             .cell(site)?
             .iter()
@@ -525,12 +529,12 @@ impl ClippedCells {
     }
 
     /// Area of the cell of `site` (0 for an empty cell).
-    pub fn cell_area(&self, site: u32) -> Result<f64, VoronoiError> {
+    pub fn cell_area(&self, site: SiteId) -> Result<f64, VoronoiError> {
         Ok(polygon_area_centroid(&self.cell_polygon(site)?).0)
     }
 
     /// Centroid of the cell of `site`, `None` for an empty cell.
-    pub fn cell_centroid(&self, site: u32) -> Result<Option<[f64; 2]>, VoronoiError> {
+    pub fn cell_centroid(&self, site: SiteId) -> Result<Option<[f64; 2]>, VoronoiError> {
         let poly = self.cell_polygon(site)?;
         Ok(if poly.is_empty() {
             None
@@ -541,7 +545,7 @@ impl ClippedCells {
 
     /// The cells as a polygon soup (z = 0) with shared vertices, so the half-edge builder gets a
     /// connected mesh, plus the site of every face (empty cells are left out).
-    pub fn to_polygon_soup(&self) -> (PolygonSoup, Vec<u32>) {
+    pub fn to_polygon_soup(&self) -> (PolygonSoup, Vec<SiteId>) {
         let mut soup = PolygonSoup {
             positions: self.positions.iter().map(|p| [p[0], p[1], 0.0]).collect(),
             ..PolygonSoup::default()
@@ -552,7 +556,7 @@ impl ClippedCells {
             if cell.len() >= 3 {
                 soup.face_sizes.push(cell.len() as u32);
                 soup.indices.extend_from_slice(cell);
-                face_site.push(s as u32);
+                face_site.push(SiteId(s as u32));
             }
         }
         (soup, face_site)

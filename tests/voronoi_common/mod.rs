@@ -3,7 +3,8 @@
 
 use halfwing::voronoi::predicates::{incircle, orient2d};
 use halfwing::voronoi::{
-    ClipPolygon, Delaunay, Dimension, EdgeGeometry, INVALID, Voronoi, polygon_area_centroid,
+    ClipPolygon, Delaunay, DelaunayHalfedgeId, Dimension, EdgeGeometry, SiteId, Voronoi,
+    VoronoiHalfedgeId, VoronoiVertexId, polygon_area_centroid,
 };
 use std::path::Path;
 
@@ -85,11 +86,11 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
                 );
             }
         } else {
-            for e in 3 * t as u32..3 * t as u32 + 3 {
+            for e in (3 * t as u32..3 * t as u32 + 3).map(DelaunayHalfedgeId) {
                 let o = d.twin(e);
-                if o != INVALID {
+                if o.is_valid() {
                     assert_eq!(d.twin(o), e);
-                    let apex = s[d.origin(d.prev(o)) as usize];
+                    let apex = s[d.origin(d.prev(o)).index()];
                     assert!(
                         incircle(a, b, c, apex) <= 0.0,
                         "edge {e} not locally Delaunay"
@@ -104,7 +105,7 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
     assert_eq!(unique.len(), d.n_unique_sites());
     for (dup, rep) in d.duplicates() {
         assert!(rep < dup);
-        assert_eq!(s[dup as usize], s[rep as usize]);
+        assert_eq!(s[dup.index()], s[rep.index()]);
     }
 }
 
@@ -112,7 +113,7 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
 /// no zero-length edge.
 pub fn check_voronoi(v: &Voronoi) {
     let s = v.delaunay().sites();
-    for h in 0..v.n_halfedges() as u32 {
+    for h in (0..v.n_halfedges() as u32).map(VoronoiHalfedgeId) {
         assert_eq!(v.prev(v.next(h)), h);
         assert_eq!(v.site(v.next(h)), v.site(h));
         assert_ne!(v.site(h), v.opposite_site(h));
@@ -120,11 +121,11 @@ pub fn check_voronoi(v: &Voronoi) {
             assert_ne!(from, to, "zero-length edge");
         }
     }
-    for k in 0..v.n_vertices() as u32 {
-        let p = v.vertices()[k as usize];
+    for k in (0..v.n_vertices() as u32).map(VoronoiVertexId) {
+        let p = v.vertices()[k.index()];
         let around = v.vertex_sites(k);
         assert!(around.len() >= 3);
-        let dist = |i: u32| (p[0] - s[i as usize][0]).hypot(p[1] - s[i as usize][1]);
+        let dist = |i: SiteId| (p[0] - s[i.index()][0]).hypot(p[1] - s[i.index()][1]);
         let r0 = dist(around[0]);
         // Relative 1e-9, plus the few ulps of the vertex's own coordinates that no floating-point
         // output can beat (sites a few ulps apart have circumcentres that close to them).
@@ -132,7 +133,7 @@ pub fn check_voronoi(v: &Voronoi) {
         for &i in &around {
             assert!(
                 (dist(i) - r0).abs() <= 1e-9 * r0 + representable,
-                "vertex {k} at {p:?} not equidistant: {} vs {r0} ({around:?})",
+                "{k} at {p:?} not equidistant: {} vs {r0} ({around:?})",
                 dist(i)
             );
         }
@@ -146,7 +147,7 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
     let d = v.delaunay();
     let mut total = 0.0;
     for site in 0..d.n_sites() as u32 {
-        let poly = cells.cell_polygon(site).unwrap();
+        let poly = cells.cell_polygon(SiteId(site)).unwrap();
         let area = polygon_area_centroid(&poly).0;
         assert!(area >= 0.0, "cell {site} clockwise");
         total += area;
@@ -211,13 +212,13 @@ pub fn check_cells_hold_their_nearest_points(
             let n = poly.len();
             assert!(
                 n >= 3,
-                "point {q:?} is nearest to site {owner}, whose cell is empty"
+                "point {q:?} is nearest to {owner}, whose cell is empty"
             );
             for k in 0..n {
                 let o = orient2d(poly[k], poly[(k + 1) % n], q);
                 assert!(
                     o >= -1e-9 * size * size,
-                    "point {q:?} is nearest to site {owner} but outside its cell {poly:?}"
+                    "point {q:?} is nearest to {owner} but outside its cell {poly:?}"
                 );
             }
         }
