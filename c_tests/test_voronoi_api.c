@@ -149,7 +149,7 @@ static void queries(void) {
                "4 are needed");
   CHECK(needed == 4);
   CHECK_STATUS(hw_voronoi_neighbours(v, 99, around, 8, &needed), HW_ERR_INVALID_HANDLE,
-               "site index 99 out of range");
+               "site 99 out of range");
 
   CHECK(hw_voronoi_edge_between(v, 0, CENTRE, &h) == HW_OK);
   CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.site == 0 && e.opposite_site == CENTRE);

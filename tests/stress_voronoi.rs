@@ -8,7 +8,7 @@
 mod stress;
 mod voronoi_common;
 
-use halfwing::voronoi::{ClipPolygon, Voronoi};
+use halfwing::voronoi::{ClipPolygon, SiteId, Voronoi};
 use proptest::test_runner::TestRng;
 use stress::{Rng, choose, run, run_long};
 use voronoi_common::{bounding_clip, check_clipped, check_delaunay, check_voronoi};
@@ -111,9 +111,9 @@ fn case(rng: &mut TestRng) {
         let nearest = diagram.nearest_site(p, None).unwrap().unwrap();
         assert_eq!(
             nearest,
-            d.representative()[i],
+            SiteId(d.representative()[i]),
             "site {i} at {p:?}: the nearest site is {nearest} at {:?}",
-            sites[nearest as usize]
+            sites[nearest.index()]
         );
     }
     let clip = random_clip(rng, &sites);
@@ -128,7 +128,7 @@ fn case(rng: &mut TestRng) {
         for (i, &p) in sites.iter().enumerate() {
             if d.representative()[i] == i as u32 && clip.contains(p) {
                 assert!(
-                    cells.cell(i as u32).unwrap().len() >= 3,
+                    cells.cell(SiteId(i as u32)).unwrap().len() >= 3,
                     "site {i}: empty cell"
                 );
             }

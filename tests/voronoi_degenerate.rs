@@ -3,7 +3,10 @@
 
 mod voronoi_common;
 
-use halfwing::voronoi::{ClipPolygon, Delaunay, Dimension, Metric, Voronoi, VoronoiError};
+use halfwing::voronoi::{
+    ClipPolygon, Delaunay, DelaunayHalfedgeId, Dimension, Metric, SiteId, Voronoi, VoronoiError,
+    VoronoiHalfedgeId, VoronoiVertexId,
+};
 use voronoi_common::*;
 
 fn grid(nx: usize, ny: usize, step: f64) -> Vec<[f64; 2]> {
@@ -29,7 +32,7 @@ fn integer_grids_merge_cocircular_vertices() {
             ClipPolygon::rectangle([-0.5, -0.5], [nx as f64 - 0.5, ny as f64 - 0.5]).unwrap();
         check_clipped(&v, &clip);
         let cells = v.clip(&clip);
-        for s in 0..pts.len() as u32 {
+        for s in (0..pts.len() as u32).map(SiteId) {
             assert_eq!(cells.cell(s).unwrap().len(), 4);
             assert!((cells.cell_area(s).unwrap() - 1.0).abs() < 1e-12);
         }
@@ -57,7 +60,7 @@ fn all_collinear_sites() {
         let q = [pts[7][0] + 0.01, pts[7][1]];
         assert_eq!(
             v.nearest_site(q, None).unwrap(),
-            Some(v.delaunay().representative()[7])
+            Some(SiteId(v.delaunay().representative()[7]))
         );
     }
 }
@@ -74,7 +77,7 @@ fn all_duplicates() {
     let clip = ClipPolygon::rectangle([-1.0, -5.0], [1.0, -3.0]).unwrap();
     let total = check_clipped(&v, &clip);
     assert_eq!(total, 4.0);
-    assert_eq!(v.clip(&clip).cell_area(0).unwrap(), 4.0);
+    assert_eq!(v.clip(&clip).cell_area(SiteId(0)).unwrap(), 4.0);
 }
 
 #[test]
@@ -91,10 +94,10 @@ fn tiny_inputs() {
     }
     let two = Voronoi::new(&[[0.0, 0.0], [1.0, 0.0]]).unwrap();
     assert_eq!(two.n_halfedges(), 2);
-    assert_eq!(two.neighbours(0), vec![1]);
+    assert_eq!(two.neighbours(SiteId(0)), vec![SiteId(1)]);
     let cells = two.clip(&ClipPolygon::rectangle([-1.0, -1.0], [2.0, 1.0]).unwrap());
-    assert_eq!(cells.cell_area(0).unwrap(), 3.0);
-    assert_eq!(cells.cell_area(1).unwrap(), 3.0);
+    assert_eq!(cells.cell_area(SiteId(0)).unwrap(), 3.0);
+    assert_eq!(cells.cell_area(SiteId(1)).unwrap(), 3.0);
 }
 
 #[test]
@@ -112,7 +115,7 @@ fn points_on_a_circle_give_one_vertex() {
     check_voronoi(&v);
     assert_eq!(v.n_vertices(), 1);
     assert_eq!(v.vertices()[0], [0.0, 0.0]);
-    assert_eq!(v.vertex_sites(0).len(), pts.len());
+    assert_eq!(v.vertex_sites(VoronoiVertexId(0)).len(), pts.len());
     check_clipped(
         &v,
         &ClipPolygon::rectangle([-100.0, -100.0], [100.0, 100.0]).unwrap(),
@@ -151,8 +154,8 @@ fn extreme_magnitudes_keep_the_topology() {
         assert_eq!(d.hull(), reference.hull());
         let v = Voronoi::from_delaunay(d);
         for (k, p) in v.vertices().iter().enumerate().take(50) {
-            let sites = v.vertex_sites(k as u32);
-            let dist = |i: u32| (p[0] - scaled[i as usize][0]).hypot(p[1] - scaled[i as usize][1]);
+            let sites = v.vertex_sites(VoronoiVertexId(k as u32));
+            let dist = |i: SiteId| (p[0] - scaled[i.index()][0]).hypot(p[1] - scaled[i.index()][1]);
             let r0 = dist(sites[0]);
             assert!(
                 sites.iter().all(|&i| (dist(i) - r0).abs() <= 1e-9 * r0),
@@ -169,7 +172,7 @@ fn extreme_magnitudes_keep_the_topology() {
         assert!(v.n_vertices() >= 19 * 19);
         assert_eq!(
             v.nearest_site([5.2 * factor, 7.9 * factor], None).unwrap(),
-            Some(8 * 20 + 5)
+            Some(SiteId(8 * 20 + 5))
         );
     }
 }
@@ -188,17 +191,17 @@ fn cell_area_and_centroid_at_extreme_magnitudes() {
         let cells = Voronoi::new(&sites).unwrap().clip(&clip);
         // Cell 0 is [-1, 0.5] x [-1, 1], cell 1 is [0.5, 2] x [-1, 1] (in units of f).
         assert_eq!(
-            cells.cell_centroid(0).unwrap(),
+            cells.cell_centroid(SiteId(0)).unwrap(),
             Some([-0.25 * f, 0.0]),
             "2^{exponent}"
         );
         assert_eq!(
-            cells.cell_centroid(1).unwrap(),
+            cells.cell_centroid(SiteId(1)).unwrap(),
             Some([1.25 * f, 0.0]),
             "2^{exponent}"
         );
         let area = 3.0 * (f * f);
-        assert_eq!(cells.cell_area(0).unwrap(), area, "2^{exponent}");
+        assert_eq!(cells.cell_area(SiteId(0)).unwrap(), area, "2^{exponent}");
         assert_eq!(clip.centroid(), [0.5 * f, 0.0], "2^{exponent}");
         let relaxed = lloyd_relaxation(
             &sites,
@@ -248,7 +251,7 @@ fn nearly_collinear_sites_get_their_strips() {
     // The strips between the bisectors x + y = const (the sites lie on y = x + 0.58...).
     let cells = v.clip(&clip);
     for (site, expected) in [(0, 2.7349871395480867), (3, 1.4354212459529012)] {
-        assert!((cells.cell_area(site).unwrap() - expected).abs() < 1e-9);
+        assert!((cells.cell_area(SiteId(site)).unwrap() - expected).abs() < 1e-9);
     }
     // Sites along lines of several slopes, each moved off the line by a few ulps to 1e-9.
     let along = uniform(24, 7);
@@ -273,25 +276,31 @@ fn sites_outside_the_clip_region() {
     let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap();
     check_clipped(&v, &clip);
     let cells = v.clip(&clip);
-    assert!(cells.cell(500).unwrap().is_empty());
-    assert!(cells.cell(501).unwrap().is_empty());
+    assert!(cells.cell(SiteId(500)).unwrap().is_empty());
+    assert!(cells.cell(SiteId(501)).unwrap().is_empty());
     let triangle = ClipPolygon::convex(&[[0.1, 0.1], [0.9, 0.2], [0.4, 0.8]]).unwrap();
     check_clipped(&v, &triangle);
     // A clip region far away from every site lies in one cell.
     let far = ClipPolygon::rectangle([5e6, 5e6], [6e6, 6e6]).unwrap();
     let cells = v.clip(&far);
-    assert_eq!(cells.cell_area(500).unwrap(), far.area());
+    assert_eq!(cells.cell_area(SiteId(500)).unwrap(), far.area());
 }
 
 #[test]
 fn bad_input_is_refused_with_a_clear_error() {
     assert!(matches!(
         Voronoi::new(&[[0.0, 0.0], [1.0, f64::NAN]]),
-        Err(VoronoiError::NonFiniteSite { site: 1, .. })
+        Err(VoronoiError::NonFiniteSite {
+            site: SiteId(1),
+            ..
+        })
     ));
     assert!(matches!(
         Delaunay::new(&[[f64::NEG_INFINITY, 0.0]]),
-        Err(VoronoiError::NonFiniteSite { site: 0, .. })
+        Err(VoronoiError::NonFiniteSite {
+            site: SiteId(0),
+            ..
+        })
     ));
     assert!(matches!(
         ClipPolygon::rectangle([0.0, 0.0], [0.0, 0.0]),
@@ -308,12 +317,15 @@ fn bad_input_is_refused_with_a_clear_error() {
     let v = Voronoi::new(&uniform(10, 1)).unwrap();
     let cells = v.clip(&ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap());
     assert!(matches!(
-        cells.cell(10),
-        Err(VoronoiError::InvalidSite { site: 10, .. })
+        cells.cell(SiteId(10)),
+        Err(VoronoiError::InvalidSite {
+            site: SiteId(10),
+            ..
+        })
     ));
     assert!(v.nearest_site([f64::INFINITY, 0.0], None).is_err());
-    assert_eq!(v.cell_edge(u32::MAX), halfwing::voronoi::INVALID);
-    assert!(v.edge_between(0, 99).is_none());
+    assert_eq!(v.cell_edge(SiteId::INVALID), VoronoiHalfedgeId::INVALID);
+    assert!(v.edge_between(SiteId(0), SiteId(99)).is_none());
     assert!(
         v.delaunay()
             .label_image(
@@ -331,22 +343,33 @@ fn bad_input_is_refused_with_a_clear_error() {
 #[test]
 fn invalid_element_ids_give_invalid_not_panics() {
     let v = Voronoi::new(&uniform(30, 2)).unwrap();
-    let bad = v.n_halfedges() as u32 + 7;
-    let inv = halfwing::voronoi::INVALID;
+    let bad = VoronoiHalfedgeId(v.n_halfedges() as u32 + 7);
+    let no_vertex = VoronoiVertexId::INVALID;
+    assert_eq!((v.origin(bad), v.target(bad)), (no_vertex, no_vertex));
     assert_eq!(
-        (v.origin(bad), v.target(bad), v.next(bad), v.prev(bad)),
-        (inv, inv, inv, inv)
+        (v.next(bad), v.prev(bad)),
+        (VoronoiHalfedgeId::INVALID, VoronoiHalfedgeId::INVALID)
     );
-    assert_eq!((v.site(bad), v.opposite_site(bad)), (inv, inv));
-    assert!(v.edge_geometry(bad).is_none() && v.edge_geometry(u32::MAX).is_none());
-    assert!(v.vertex_sites(u32::MAX).is_empty() && v.cell_halfedges(u32::MAX).is_empty());
+    assert_eq!(
+        (v.site(bad), v.opposite_site(bad)),
+        (SiteId::INVALID, SiteId::INVALID)
+    );
+    assert!(
+        v.edge_geometry(bad).is_none() && v.edge_geometry(VoronoiHalfedgeId::INVALID).is_none()
+    );
+    assert!(
+        v.vertex_sites(VoronoiVertexId::INVALID).is_empty()
+            && v.cell_halfedges(SiteId::INVALID).is_empty()
+    );
     let d = v.delaunay();
-    let bad = d.triangles().len() as u32;
+    let bad = DelaunayHalfedgeId(d.triangles().len() as u32);
+    let no_edge = DelaunayHalfedgeId::INVALID;
+    assert_eq!(d.origin(bad), SiteId::INVALID);
     assert_eq!(
-        (d.origin(bad), d.twin(bad), d.next(bad), d.prev(bad)),
-        (inv, inv, inv, inv)
+        (d.twin(bad), d.next(bad), d.prev(bad)),
+        (no_edge, no_edge, no_edge)
     );
-    assert_eq!(d.vertex_edge(u32::MAX), inv);
-    assert_eq!(d.outgoing(u32::MAX).count(), 0);
-    assert!(d.neighbours(u32::MAX).is_empty());
+    assert_eq!(d.vertex_edge(SiteId::INVALID), no_edge);
+    assert_eq!(d.outgoing(SiteId::INVALID).count(), 0);
+    assert!(d.neighbours(SiteId::INVALID).is_empty());
 }

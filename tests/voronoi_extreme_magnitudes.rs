@@ -3,7 +3,7 @@
 
 mod voronoi_common;
 
-use halfwing::voronoi::{ClipPolygon, Voronoi};
+use halfwing::voronoi::{ClipPolygon, SiteId, Voronoi};
 use voronoi_common::*;
 
 /// Every site's nearest site is itself (or the first site at the same position).
@@ -13,9 +13,9 @@ fn assert_each_site_nearest_to_itself(v: &Voronoi) {
         let nearest = v.nearest_site(p, None).unwrap().unwrap();
         assert_eq!(
             nearest,
-            d.representative()[i],
+            SiteId(d.representative()[i]),
             "site {i} at {p:?}: nearest is {nearest} at {:?}",
-            d.sites()[nearest as usize]
+            d.sites()[nearest.index()]
         );
     }
 }
@@ -37,10 +37,19 @@ fn one_far_site_among_unit_square_sites() {
 fn a_site_at_1e_minus_300_beside_unit_sites() {
     let sites = [[0.0, 0.0], [1.0, 1.0], [1e-300, 1e-300]];
     let v = Voronoi::new(&sites).unwrap();
-    assert_eq!(v.nearest_site([1e-300, 1e-300], None).unwrap(), Some(2));
-    assert_eq!(v.nearest_site([0.0, 0.0], None).unwrap(), Some(0));
-    assert_eq!(v.nearest_site([4e-300, -1e-300], None).unwrap(), Some(2));
-    assert_eq!(v.nearest_site([-1e-300, 0.0], None).unwrap(), Some(0));
+    assert_eq!(
+        v.nearest_site([1e-300, 1e-300], None).unwrap(),
+        Some(SiteId(2))
+    );
+    assert_eq!(v.nearest_site([0.0, 0.0], None).unwrap(), Some(SiteId(0)));
+    assert_eq!(
+        v.nearest_site([4e-300, -1e-300], None).unwrap(),
+        Some(SiteId(2))
+    );
+    assert_eq!(
+        v.nearest_site([-1e-300, 0.0], None).unwrap(),
+        Some(SiteId(0))
+    );
     assert_each_site_nearest_to_itself(&v);
 }
 
@@ -69,7 +78,7 @@ fn regions_whose_area_under_or_overflows_are_accepted() {
         assert_each_site_nearest_to_itself(&v);
         let cells = v.clip(&clip);
         assert_eq!(cells.n_cells(), sites.len());
-        for site in 0..sites.len() as u32 {
+        for site in (0..sites.len() as u32).map(SiteId) {
             let poly = cells.cell_polygon(site).unwrap();
             assert!(
                 poly.len() >= 3,
@@ -105,7 +114,10 @@ fn boxes_a_few_ulps_wide_along_one_axis_are_accepted() {
         ];
         let v = Voronoi::new(&sites).unwrap();
         let cells = v.clip(&clip);
-        assert!(cells.cell(0).unwrap().len() >= 3, "box {min:?}: empty cell");
+        assert!(
+            cells.cell(SiteId(0)).unwrap().len() >= 3,
+            "box {min:?}: empty cell"
+        );
         assert!(cells.positions().iter().flatten().all(|x| x.is_finite()));
     }
 }
@@ -123,8 +135,8 @@ fn lines_between_tiny_sites_cross_huge_regions_at_finite_points() {
         "{:?}",
         cells.positions()
     );
-    for site in 0..2 {
-        assert_eq!(cells.cell(site).unwrap().len(), 4, "site {site}");
+    for site in (0..2).map(SiteId) {
+        assert_eq!(cells.cell(site).unwrap().len(), 4, "{site}");
     }
     assert_each_site_nearest_to_itself(&v);
 }
@@ -170,7 +182,7 @@ fn sides_crossing_a_box_one_ulp_wide_far_out_are_where_the_sites_put_them() {
     let clip = ClipPolygon::rectangle([x, -1.0], [x + ulp, 1.0]).unwrap();
     check_clipped(&v, &clip);
     let cells = v.clip(&clip);
-    let cell = cells.cell_polygon(0).unwrap();
+    let cell = cells.cell_polygon(SiteId(0)).unwrap();
     let on = |edge: f64| -> Vec<f64> {
         cell.iter()
             .filter(|p| p[0] == edge && p[1].abs() < 1.0)
@@ -210,5 +222,5 @@ fn a_site_on_the_edge_of_a_region_one_ulp_tall_far_out_keeps_its_cell() {
     let v = Voronoi::new(&sites).unwrap();
     let clip = ClipPolygon::rectangle(at(0.0, 0.0), at(2.0, 1.0)).unwrap();
     check_clipped(&v, &clip);
-    assert!(v.clip(&clip).cell(0).unwrap().len() >= 3);
+    assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
 }

@@ -30,7 +30,7 @@ fuzz_target!(|bytes: &[u8]| {
             .nearest_site(site, None)
             .expect("a finite query is answered")
             .expect("a diagram with sites has a nearest site");
-        assert_eq!(sites[nearest as usize], site, "site {i}: nearest is {nearest}");
+        assert_eq!(sites[nearest.index()], site, "site {i}: nearest is {nearest}");
     }
     let scale = SCALES[usize::from(clip_magnitude % 7)];
     let clip = ClipPolygon::rectangle([-scale, -scale], [40.0 * scale, 40.0 * scale])

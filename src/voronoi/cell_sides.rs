@@ -13,6 +13,7 @@
 
 use super::delaunay::{Dimension, INVALID};
 use super::diagram::{EdgeEnds, Voronoi};
+use super::ids::SiteId;
 use super::incremental::{next_edge, prev_edge};
 use crate::support::id_set::IdSet;
 
@@ -119,7 +120,7 @@ impl Voronoi {
 
     fn visit_half_edge_sides(&self, site: u32, mut visit: impl FnMut(Side) -> bool) -> bool {
         let links = self.half_edges();
-        let start = self.cell_edge(site);
+        let start = self.cell_edge(SiteId(site)).0;
         if start == INVALID {
             return true;
         }

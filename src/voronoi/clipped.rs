@@ -7,6 +7,7 @@ use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
 use super::exact_cell::cell_has_interior;
+use super::ids::SiteId;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
 use crate::soup::PolygonSoup;
@@ -550,7 +551,10 @@ impl Voronoi {
     /// The site owning point `p`; used when no edge crosses the region, i.e. the whole region
     /// lies in one cell.
     fn owner_of(&self, p: [f64; 2]) -> u32 {
-        self.nearest_site(p, None).ok().flatten().unwrap_or(INVALID)
+        self.nearest_site(p, None)
+            .ok()
+            .flatten()
+            .map_or(INVALID, |site| site.0)
     }
 
     /// Clips the edge with ends `ends`: `[start, end]` positions, or `[INVALID; 2]` when
@@ -741,8 +745,8 @@ impl ClippedCells {
 
     /// Position indices of the cell of `site`, counter-clockwise (empty when the cell misses the
     /// region or the site is a duplicate).
-    pub fn cell(&self, site: u32) -> Result<&[u32], VoronoiError> {
-        let Some(&[start, len]) = self.ranges.get(site as usize) else {
+    pub fn cell(&self, site: SiteId) -> Result<&[u32], VoronoiError> {
+        let Some(&[start, len]) = self.ranges.get(site.index()) else {
             return Err(VoronoiError::InvalidSite {
                 site,
                 count: self.ranges.len(),
@@ -752,7 +756,7 @@ impl ClippedCells {
     }
 
     /// The polygon of the cell of `site`.
-    pub fn cell_polygon(&self, site: u32) -> Result<Vec<[f64; 2]>, VoronoiError> {
+    pub fn cell_polygon(&self, site: SiteId) -> Result<Vec<[f64; 2]>, VoronoiError> {
         Ok(self
             .cell(site)?
             .iter()
@@ -761,12 +765,12 @@ impl ClippedCells {
     }
 
     /// Area of the cell of `site` (0 for an empty cell).
-    pub fn cell_area(&self, site: u32) -> Result<f64, VoronoiError> {
+    pub fn cell_area(&self, site: SiteId) -> Result<f64, VoronoiError> {
         Ok(polygon_area_centroid(&self.cell_polygon(site)?).0)
     }
 
     /// Centroid of the cell of `site`, `None` for an empty cell.
-    pub fn cell_centroid(&self, site: u32) -> Result<Option<[f64; 2]>, VoronoiError> {
+    pub fn cell_centroid(&self, site: SiteId) -> Result<Option<[f64; 2]>, VoronoiError> {
         let poly = self.cell_polygon(site)?;
         Ok(if poly.is_empty() {
             None
@@ -777,7 +781,7 @@ impl ClippedCells {
 
     /// The cells as a polygon soup (z = 0) with shared vertices, so the half-edge builder gets a
     /// connected mesh, plus the site of every face (empty cells are left out).
-    pub fn to_polygon_soup(&self) -> (PolygonSoup, Vec<u32>) {
+    pub fn to_polygon_soup(&self) -> (PolygonSoup, Vec<SiteId>) {
         let mut soup = PolygonSoup {
             positions: self.positions.iter().map(|p| [p[0], p[1], 0.0]).collect(),
             ..PolygonSoup::default()
@@ -788,7 +792,7 @@ impl ClippedCells {
             if cell.len() >= 3 {
                 soup.face_sizes.push(cell.len() as u32);
                 soup.indices.extend_from_slice(cell);
-                face_site.push(s as u32);
+                face_site.push(SiteId(s as u32));
             }
         }
         (soup, face_site)
@@ -812,11 +816,11 @@ mod tests {
     /// three positions or none, and the areas summing to the region's.
     fn check_tiling(cells: &ClippedCells, clip: &ClipPolygon) {
         let mut total = 0.0;
-        for site in 0..cells.n_cells() as u32 {
+        for site in (0..cells.n_cells() as u32).map(SiteId) {
             let cell = cells.cell(site).unwrap();
-            assert!(cell.is_empty() || cell.len() >= 3, "cell {site}: {cell:?}");
+            assert!(cell.is_empty() || cell.len() >= 3, "{site}: {cell:?}");
             let area = cells.cell_area(site).unwrap();
-            assert!(area >= 0.0, "cell {site} clockwise: {area}");
+            assert!(area >= 0.0, "{site} clockwise: {area}");
             total += area;
         }
         assert!(
@@ -847,8 +851,8 @@ mod tests {
         .unwrap();
         let cells = Voronoi::new(&sites).unwrap().clip(&clip);
         check_tiling(&cells, &clip);
-        for site in 0..sites.len() as u32 {
-            assert!(cells.cell(site).unwrap().len() >= 3, "cell {site}");
+        for site in (0..sites.len() as u32).map(SiteId) {
+            assert!(cells.cell(site).unwrap().len() >= 3, "{site}");
         }
     }
 
@@ -860,6 +864,6 @@ mod tests {
         let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap();
         let cells = Voronoi::new(&sites).unwrap().clip(&clip);
         check_tiling(&cells, &clip);
-        assert!(cells.cell(1).unwrap().is_empty());
+        assert!(cells.cell(SiteId(1)).unwrap().is_empty());
     }
 }

@@ -5,6 +5,7 @@
 //! clipped cells never pays for six arrays of `6n` entries.
 
 use super::delaunay::{Delaunay, INVALID};
+use super::ids::SiteId;
 use super::incremental::{next_edge, prev_edge};
 use super::parallel::map_indexed;
 
@@ -47,9 +48,9 @@ impl HalfEdges {
                 triangle_vertex[(t / 3) as usize]
             };
             origin.push(there);
-            site.push(d.origin(e));
+            site.push(d.triangles[e as usize]);
             origin.push(here);
-            site.push(d.origin(next_edge(e)));
+            site.push(d.triangles[next_edge(e) as usize]);
             dual[e as usize] = h;
             // The outer side of a hull edge is simply the pair `dual[e] ^ 1`.
             if t != INVALID {
@@ -71,7 +72,7 @@ impl HalfEdges {
                 let t = d.twins[p as usize];
                 if t == INVALID {
                     let out_ray = dual[p as usize] ^ 1;
-                    let a = d.origin(e);
+                    let a = d.triangles[e as usize];
                     next[out_ray as usize] = dual[d.vertex_edge[a as usize] as usize];
                     break out_ray;
                 }
@@ -87,8 +88,8 @@ impl HalfEdges {
             if d.vertex_edge[site] == INVALID {
                 return INVALID;
             }
-            d.outgoing(site as u32)
-                .map(|e| dual[e as usize])
+            d.outgoing(SiteId(site as u32))
+                .map(|e| dual[e.index()])
                 .find(|&h| h != INVALID)
                 .unwrap_or(INVALID)
         });

@@ -3,6 +3,7 @@
 use std::sync::OnceLock;
 
 use super::error::VoronoiError;
+use super::ids::{DelaunayHalfedgeId, SiteId};
 use super::incremental::{GhostTriangulation, Triangle, next_edge, prev_edge};
 use super::parallel::{map_each, map_indexed, run_length};
 use super::predicates::{SetBounds, exact_normalising_scale, orient2d};
@@ -12,7 +13,8 @@ use crate::support::id_set::IdSet;
 use crate::support::large_arrays;
 use crate::support::prefetch::prefetch;
 
-/// Invalid index (no half-edge, no twin, no site).
+/// "None" in the raw index arrays ([`Delaunay::twins`], [`LabelImage::labels`](super::LabelImage),
+/// …): no half-edge, no twin, no site. The typed ids say it with their own `INVALID`.
 pub const INVALID: u32 = u32::MAX;
 
 /// Largest number of sites. Triangulation half-edges (`< 6n`), Voronoi half-edges (`< 6n`) and
@@ -37,21 +39,26 @@ pub enum Dimension {
 
 /// A Delaunay triangulation as a compact half-edge structure over triangles.
 ///
-/// * Vertices are **site indices** into the input (`0..n_sites()`); a duplicated site is
+/// * Vertices are **sites** ([`SiteId`], the input index, `0..n_sites()`); a duplicated site is
 ///   represented by the smallest index of its group ([`Delaunay::representative`]); other copies
 ///   have no incident half-edge.
-/// * Triangle `t` owns half-edges `3t, 3t+1, 3t+2`, counter-clockwise; half-edge `e` starts at
+/// * Triangle `t` owns half-edges ([`DelaunayHalfedgeId`]) `3t, 3t+1, 3t+2`, counter-clockwise;
+///   half-edge `e` starts at
 ///   [`Delaunay::origin`]`(e)` and ends at the origin of `next(e)`, with its triangle on its left.
-/// * [`Delaunay::twin`] is the opposite half-edge, [`INVALID`] on the convex hull.
+/// * [`Delaunay::twin`] is the opposite half-edge, invalid on the convex hull.
 /// * [`Delaunay::vertex_edge`] is an outgoing half-edge of each vertex — the outgoing hull edge for
 ///   hull vertices, so that circulating counter-clockwise with `twin(prev(e))` visits every
-///   incident triangle and stops at [`INVALID`].
+///   incident triangle and stops at the invalid id.
 /// * Where four or more sites are cocircular the split into triangles is arbitrary (but exact and
 ///   deterministic); the Voronoi diagram merges those triangles into one vertex.
 ///
 /// For 1-dimensional input (all sites collinear) there are no triangles and the Delaunay edges
 /// join consecutive sites of [`Delaunay::hull`], which then lists the distinct sites in order
 /// along the line. For a single distinct site the hull is that site; for none it is empty.
+///
+/// The whole arrays ([`Delaunay::triangles`], [`Delaunay::twins`], [`Delaunay::hull`],
+/// [`Delaunay::representative`]) are raw `u32` indices, [`INVALID`] for none, shaped for
+/// buffers and the C API's zero-copy views; the per-element queries take and return typed ids.
 #[derive(Clone, Debug)]
 pub struct Delaunay {
     pub(crate) sites: Vec<[f64; 2]>,
@@ -92,7 +99,12 @@ pub(crate) fn check_sites(sites: &[[f64; 2]]) -> Result<(), VoronoiError> {
         .enumerate()
         .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
     {
-        Some((site, &[x, y])) => Err(VoronoiError::NonFiniteSite { site, x, y }),
+        // Below `MAX_SITES`, so the index fits.
+        Some((site, &[x, y])) => Err(VoronoiError::NonFiniteSite {
+            site: SiteId(site as u32),
+            x,
+            y,
+        }),
         None => Ok(()),
     }
 }
@@ -383,19 +395,25 @@ impl Delaunay {
         self.dimension
     }
 
-    /// Site → representative map: `representative()[i] == i` for distinct sites; a duplicate maps
-    /// to the smallest index with the same coordinates.
+    /// Site → representative map, raw: `representative()[i] == i` for distinct sites; a
+    /// duplicate maps to the smallest index with the same coordinates.
     pub fn representative(&self) -> &[u32] {
         &self.representative
     }
 
+    /// The site representing `site` (itself unless it duplicates a smaller index), `None` when
+    /// `site` is out of range.
+    pub fn representative_of(&self, site: SiteId) -> Option<SiteId> {
+        self.representative.get(site.index()).copied().map(SiteId)
+    }
+
     /// `(duplicate, representative)` pairs for every site that was merged into another.
-    pub fn duplicates(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+    pub fn duplicates(&self) -> impl Iterator<Item = (SiteId, SiteId)> + '_ {
         self.representative
             .iter()
             .enumerate()
             .filter(|&(i, &r)| r != i as u32)
-            .map(|(i, &r)| (i as u32, r))
+            .map(|(i, &r)| (SiteId(i as u32), SiteId(r)))
     }
 
     /// Number of triangles.
@@ -403,74 +421,81 @@ impl Delaunay {
         self.triangles.len() / 3
     }
 
-    /// Vertex (site) indices of all triangles, three per triangle, counter-clockwise.
+    /// The sites of all triangles, raw, three per triangle, counter-clockwise: entry `e` is the
+    /// origin of half-edge `e`.
     pub fn triangles(&self) -> &[u32] {
         &self.triangles
     }
 
-    /// Opposite half-edge of every half-edge ([`INVALID`] on the hull).
+    /// Opposite half-edge of every half-edge, raw ([`INVALID`] on the hull).
     pub fn twins(&self) -> &[u32] {
         &self.twins
     }
 
-    /// Start vertex of half-edge `e` ([`INVALID`] for an invalid half-edge; so for all accessors).
-    pub fn origin(&self, e: u32) -> u32 {
-        self.triangles.get(e as usize).copied().unwrap_or(INVALID)
+    /// Start site of half-edge `e` (invalid for an invalid half-edge; so for all accessors).
+    pub fn origin(&self, e: DelaunayHalfedgeId) -> SiteId {
+        SiteId(entry(&self.triangles, e.0))
     }
 
-    /// Opposite half-edge of `e`, or [`INVALID`] for a hull edge.
-    pub fn twin(&self, e: u32) -> u32 {
-        self.twins.get(e as usize).copied().unwrap_or(INVALID)
+    /// Opposite half-edge of `e`, invalid for a hull edge.
+    pub fn twin(&self, e: DelaunayHalfedgeId) -> DelaunayHalfedgeId {
+        DelaunayHalfedgeId(entry(&self.twins, e.0))
     }
 
     /// Next half-edge counter-clockwise in the same triangle.
-    pub fn next(&self, e: u32) -> u32 {
-        if (e as usize) < self.triangles.len() {
-            next_edge(e)
+    pub fn next(&self, e: DelaunayHalfedgeId) -> DelaunayHalfedgeId {
+        DelaunayHalfedgeId(if e.index() < self.triangles.len() {
+            next_edge(e.0)
         } else {
             INVALID
-        }
+        })
     }
 
     /// Previous half-edge in the same triangle.
-    pub fn prev(&self, e: u32) -> u32 {
-        if (e as usize) < self.triangles.len() {
-            prev_edge(e)
+    pub fn prev(&self, e: DelaunayHalfedgeId) -> DelaunayHalfedgeId {
+        DelaunayHalfedgeId(if e.index() < self.triangles.len() {
+            prev_edge(e.0)
         } else {
             INVALID
-        }
+        })
     }
 
-    /// An outgoing half-edge of site `v` (the hull one for hull vertices), [`INVALID`] for
+    /// An outgoing half-edge of site `v` (the hull one for hull vertices), invalid for
     /// duplicates and when there are no triangles.
-    pub fn vertex_edge(&self, v: u32) -> u32 {
-        self.vertex_edge.get(v as usize).copied().unwrap_or(INVALID)
+    pub fn vertex_edge(&self, v: SiteId) -> DelaunayHalfedgeId {
+        DelaunayHalfedgeId(entry(&self.vertex_edge, v.0))
     }
 
-    /// Convex hull, counter-clockwise, as site indices. Collinear sites on hull edges are kept
-    /// as hull vertices. See the type documentation for lower dimensions.
+    /// Convex hull, counter-clockwise, as raw site indices. Collinear sites on hull edges are
+    /// kept as hull vertices. See the type documentation for lower dimensions.
     pub fn hull(&self) -> &[u32] {
         &self.hull
     }
 
     /// Every undirected Delaunay edge once, as `(a, b)` site pairs.
-    pub fn edges(&self) -> Vec<(u32, u32)> {
+    pub fn edges(&self) -> Vec<(SiteId, SiteId)> {
+        let pair = |a: u32, b: u32| (SiteId(a), SiteId(b));
         match self.dimension {
             Dimension::Plane => (0..self.triangles.len() as u32)
                 .filter(|&e| {
                     let t = self.twins[e as usize];
                     t == INVALID || e < t
                 })
-                .map(|e| (self.origin(e), self.origin(next_edge(e))))
+                .map(|e| {
+                    pair(
+                        self.triangles[e as usize],
+                        self.triangles[next_edge(e) as usize],
+                    )
+                })
                 .collect(),
-            Dimension::Line => self.hull.windows(2).map(|w| (w[0], w[1])).collect(),
+            Dimension::Line => self.hull.windows(2).map(|w| pair(w[0], w[1])).collect(),
             Dimension::Empty | Dimension::Point => Vec::new(),
         }
     }
 
     /// Outgoing half-edges of `v`, counter-clockwise (starting at the hull edge for hull vertices).
-    pub fn outgoing(&self, v: u32) -> OutgoingEdges<'_> {
-        let start = self.vertex_edge(v);
+    pub fn outgoing(&self, v: SiteId) -> OutgoingEdges<'_> {
+        let start = self.vertex_edge(v).0;
         OutgoingEdges {
             delaunay: self,
             start,
@@ -540,9 +565,9 @@ pub struct OutgoingEdges<'a> {
 }
 
 impl Iterator for OutgoingEdges<'_> {
-    type Item = u32;
+    type Item = DelaunayHalfedgeId;
 
-    fn next(&mut self) -> Option<u32> {
+    fn next(&mut self) -> Option<DelaunayHalfedgeId> {
         if self.current == INVALID {
             return None;
         }
@@ -553,8 +578,14 @@ impl Iterator for OutgoingEdges<'_> {
         } else {
             back
         };
-        Some(e)
+        Some(DelaunayHalfedgeId(e))
     }
+}
+
+/// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
+#[inline]
+pub(crate) fn entry(array: &[u32], i: u32) -> u32 {
+    array.get(i as usize).copied().unwrap_or(INVALID)
 }
 
 enum Seed {

@@ -3,9 +3,10 @@
 use std::sync::OnceLock;
 
 use super::dcel::HalfEdges;
-use super::delaunay::{Delaunay, Dimension, INVALID};
+use super::delaunay::{Delaunay, Dimension, INVALID, entry};
 use super::error::VoronoiError;
 use super::expansion::Exact;
+use super::ids::{SiteId, VoronoiHalfedgeId, VoronoiVertexId};
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
 use super::predicates::{incircle_in, normalising_scale_of_box, pow2};
@@ -44,12 +45,14 @@ pub enum EdgeGeometry {
 /// twin pairs (`twin(h) = h ^ 1`).
 ///
 /// Conventions:
+/// * Cells are named by [`SiteId`], vertices by [`VoronoiVertexId`], half-edges by
+///   [`VoronoiHalfedgeId`]; a query given an id out of range answers with the invalid id.
 /// * Half-edge `h` bounds the cell of [`Voronoi::site`]`(h)`, which lies on its **left**; its twin
 ///   bounds the cell of [`Voronoi::opposite_site`]`(h)`. Every edge is the perpendicular bisector
 ///   piece between those two sites, dual to the Delaunay edge joining them.
 /// * `next` circulates **counter-clockwise** around the cell. An unbounded cell's cycle passes
-///   through infinity: the half-edge running out to infinity ([`Voronoi::origin`] of its twin is
-///   [`INVALID`]) is followed by the one coming back (its own origin is [`INVALID`]).
+///   through infinity: the half-edge running out to infinity ([`Voronoi::target`] invalid) is
+///   followed by the one coming back ([`Voronoi::origin`] invalid).
 /// * Cocircular sites give one vertex of degree > 3 (Delaunay triangles with the same
 ///   circumcircle, decided exactly with the in-circle predicate, are merged). Adjacent triangles
 ///   whose circumcentres round to the same floating-point point are merged too, so no edge has
@@ -257,8 +260,8 @@ impl Voronoi {
     }
 
     /// An outgoing half-edge of vertex `v`.
-    pub fn vertex_edge(&self, v: u32) -> u32 {
-        entry(&self.half_edges().vertex_edge, v)
+    pub fn vertex_edge(&self, v: VoronoiVertexId) -> VoronoiHalfedgeId {
+        VoronoiHalfedgeId(entry(&self.half_edges().vertex_edge, v.0))
     }
 
     /// Number of half-edges (twice the number of edges).
@@ -266,50 +269,50 @@ impl Voronoi {
         self.half_edges().origin.len()
     }
 
-    /// Start vertex of `h`, [`INVALID`] when it comes from infinity (or `h` is invalid).
-    pub fn origin(&self, h: u32) -> u32 {
-        entry(&self.half_edges().origin, h)
+    /// Start vertex of `h`, invalid when it comes from infinity (or `h` is invalid).
+    pub fn origin(&self, h: VoronoiHalfedgeId) -> VoronoiVertexId {
+        VoronoiVertexId(entry(&self.half_edges().origin, h.0))
     }
 
-    /// End vertex of `h`, [`INVALID`] when it runs to infinity.
-    pub fn target(&self, h: u32) -> u32 {
-        self.origin(h ^ 1)
+    /// End vertex of `h`, invalid when it runs to infinity.
+    pub fn target(&self, h: VoronoiHalfedgeId) -> VoronoiVertexId {
+        self.origin(h.twin())
     }
 
-    /// The opposite half-edge (`h ^ 1`).
-    pub fn twin(&self, h: u32) -> u32 {
-        h ^ 1
+    /// The opposite half-edge (`h ^ 1`, see [`VoronoiHalfedgeId::twin`]).
+    pub fn twin(&self, h: VoronoiHalfedgeId) -> VoronoiHalfedgeId {
+        h.twin()
     }
 
     /// Next half-edge counter-clockwise around the same cell.
-    pub fn next(&self, h: u32) -> u32 {
-        entry(&self.half_edges().next, h)
+    pub fn next(&self, h: VoronoiHalfedgeId) -> VoronoiHalfedgeId {
+        VoronoiHalfedgeId(entry(&self.half_edges().next, h.0))
     }
 
     /// Previous half-edge around the same cell.
-    pub fn prev(&self, h: u32) -> u32 {
-        entry(&self.half_edges().prev, h)
+    pub fn prev(&self, h: VoronoiHalfedgeId) -> VoronoiHalfedgeId {
+        VoronoiHalfedgeId(entry(&self.half_edges().prev, h.0))
     }
 
     /// The site whose cell `h` bounds (on its left).
-    pub fn site(&self, h: u32) -> u32 {
-        entry(&self.half_edges().site, h)
+    pub fn site(&self, h: VoronoiHalfedgeId) -> SiteId {
+        SiteId(entry(&self.half_edges().site, h.0))
     }
 
     /// The site across `h`.
-    pub fn opposite_site(&self, h: u32) -> u32 {
-        self.site(h ^ 1)
+    pub fn opposite_site(&self, h: VoronoiHalfedgeId) -> SiteId {
+        self.site(h.twin())
     }
 
-    /// A half-edge of the cell of `site` ([`INVALID`] for duplicates, out-of-range sites, and when
+    /// A half-edge of the cell of `site` (invalid for duplicates, out-of-range sites, and when
     /// the diagram has no edges). For an unbounded cell it is the edge coming in from infinity.
-    pub fn cell_edge(&self, site: u32) -> u32 {
-        entry(&self.half_edges().cell_edge, site)
+    pub fn cell_edge(&self, site: SiteId) -> VoronoiHalfedgeId {
+        VoronoiHalfedgeId(entry(&self.half_edges().cell_edge, site.0))
     }
 
     /// Half-edges of the cell of `site`, counter-clockwise (in-ray first for unbounded cells).
-    pub fn cell_halfedges(&self, site: u32) -> Vec<u32> {
-        let start = self.cell_edge(site);
+    pub fn cell_halfedges(&self, site: SiteId) -> Vec<VoronoiHalfedgeId> {
+        let start = self.cell_edge(site).0;
         let mut out = Vec::new();
         if start == INVALID {
             return out;
@@ -317,7 +320,7 @@ impl Voronoi {
         let links = self.half_edges();
         let mut h = start;
         loop {
-            out.push(h);
+            out.push(VoronoiHalfedgeId(h));
             h = links.next[h as usize];
             if h == start || out.len() > links.origin.len() {
                 break;
@@ -327,14 +330,14 @@ impl Voronoi {
     }
 
     /// Is the cell of `site` bounded?
-    pub fn is_bounded(&self, site: u32) -> bool {
+    pub fn is_bounded(&self, site: SiteId) -> bool {
         let h = self.cell_edge(site);
-        h != INVALID && self.origin(h) != INVALID
+        h.is_valid() && self.origin(h).is_valid()
     }
 
     /// Sites whose cells share an edge with the cell of `site` (Delaunay neighbours not merged
     /// away by cocircularity), counter-clockwise.
-    pub fn neighbours(&self, site: u32) -> Vec<u32> {
+    pub fn neighbours(&self, site: SiteId) -> Vec<SiteId> {
         self.cell_halfedges(site)
             .into_iter()
             .map(|h| self.opposite_site(h))
@@ -342,21 +345,21 @@ impl Voronoi {
     }
 
     /// The half-edge of the cell of `a` separating it from the cell of `b`, if they share an edge.
-    pub fn edge_between(&self, a: u32, b: u32) -> Option<u32> {
-        let (a, b) = (self.canonical(a)?, self.canonical(b)?);
+    pub fn edge_between(&self, a: SiteId, b: SiteId) -> Option<VoronoiHalfedgeId> {
+        let delaunay = &self.delaunay;
+        let (a, b) = (
+            delaunay.representative_of(a)?,
+            delaunay.representative_of(b)?,
+        );
         self.cell_halfedges(a)
             .into_iter()
             .find(|&h| self.opposite_site(h) == b)
     }
 
-    fn canonical(&self, s: u32) -> Option<u32> {
-        self.delaunay.representative.get(s as usize).copied()
-    }
-
     /// Sites equidistant from vertex `v` (all corners of its merged Delaunay triangles),
     /// counter-clockwise.
-    pub fn vertex_sites(&self, v: u32) -> Vec<u32> {
-        let start = self.vertex_edge(v);
+    pub fn vertex_sites(&self, v: VoronoiVertexId) -> Vec<SiteId> {
+        let start = self.vertex_edge(v).0;
         let mut out = Vec::new();
         if start == INVALID {
             return out;
@@ -364,7 +367,7 @@ impl Voronoi {
         let links = self.half_edges();
         let mut h = start;
         loop {
-            out.push(links.site[h as usize]);
+            out.push(SiteId(links.site[h as usize]));
             // Next outgoing half-edge around v: twin of the previous edge of this cell.
             h = links.prev[h as usize] ^ 1;
             if h == start || out.len() > links.origin.len() {
@@ -375,19 +378,20 @@ impl Voronoi {
     }
 
     /// Geometry of the edge of half-edge `h`, `None` for an invalid half-edge.
-    pub fn edge_geometry(&self, h: u32) -> Option<EdgeGeometry> {
-        if h as usize >= self.n_halfedges() {
+    pub fn edge_geometry(&self, h: VoronoiHalfedgeId) -> Option<EdgeGeometry> {
+        if h.index() >= self.n_halfedges() {
             return None;
         }
-        Some(self.geometry(h))
+        Some(self.geometry(h.0))
     }
 
     pub(crate) fn geometry(&self, h: u32) -> EdgeGeometry {
+        let links = self.half_edges();
         self.geometry_of(EdgeEnds {
-            from: self.origin(h),
-            to: self.target(h),
-            left: self.site(h),
-            right: self.opposite_site(h),
+            from: links.origin[h as usize],
+            to: links.origin[(h ^ 1) as usize],
+            left: links.site[h as usize],
+            right: links.site[(h ^ 1) as usize],
         })
     }
 
@@ -594,11 +598,6 @@ fn wide_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
         }
         value
     })
-}
-
-/// `array[i]`, or [`INVALID`] when `i` is out of range (the queries' answer to a bad id).
-fn entry(array: &[u32], i: u32) -> u32 {
-    array.get(i as usize).copied().unwrap_or(INVALID)
 }
 
 #[cfg(test)]

@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use super::ids::SiteId;
+
 /// Why a Delaunay triangulation, Voronoi diagram or one of their queries was refused.
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum VoronoiError {
@@ -9,10 +11,10 @@ pub enum VoronoiError {
     #[error(transparent)]
     OutOfMemory(#[from] crate::OutOfMemory),
     /// A site coordinate is NaN or infinite.
-    #[error("site {site} has a non-finite coordinate ({x}, {y})")]
+    #[error("{site} has a non-finite coordinate ({x}, {y})")]
     NonFiniteSite {
-        /// Index of the offending site in the input.
-        site: usize,
+        /// The offending site.
+        site: SiteId,
         /// Its x coordinate.
         x: f64,
         /// Its y coordinate.
@@ -36,10 +38,10 @@ pub enum VoronoiError {
         vertex: usize,
     },
     /// A site index is out of range.
-    #[error("site index {site} out of range (0..{count})")]
+    #[error("{site} out of range (0..{count})")]
     InvalidSite {
-        /// The index given.
-        site: u32,
+        /// The site given.
+        site: SiteId,
         /// Number of sites.
         count: usize,
     },

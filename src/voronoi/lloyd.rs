@@ -4,6 +4,7 @@ use super::clip_region::ClipPolygon;
 use super::delaunay::check_sites;
 use super::diagram::Voronoi;
 use super::error::VoronoiError;
+use super::ids::SiteId;
 
 /// When Lloyd relaxation stops.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -53,7 +54,7 @@ pub fn lloyd_relaxation(
         let cells = Voronoi::new(&current)?.clip(clip);
         let mut moved = 0.0_f64;
         for (s, p) in current.iter_mut().enumerate() {
-            if let Some(c) = cells.cell_centroid(s as u32)? {
+            if let Some(c) = cells.cell_centroid(SiteId(s as u32))? {
                 moved = moved.max((c[0] - p[0]).hypot(c[1] - p[1]));
                 *p = c;
             }

@@ -2,6 +2,8 @@
 //!
 //! * [`Delaunay`]: exact Delaunay triangulation of `f64` sites (duplicates merged and reported,
 //!   collinear and tiny inputs supported, NaN/inf refused), convex hull, nearest-site queries.
+//! * Typed ids: [`SiteId`] (cells and triangulation vertices), [`VoronoiVertexId`],
+//!   [`VoronoiHalfedgeId`], [`DelaunayHalfedgeId`].
 //! * [`Voronoi`]: the dual diagram as a DCEL — vertices at circumcentres (cocircular sites give one
 //!   vertex of degree > 3), half-edges that know their two sites, unbounded edges as rays.
 //! * [`ClipPolygon`] / [`ClippedCells`]: every cell clipped to a rectangle or convex polygon,
@@ -25,6 +27,7 @@ mod error;
 mod exact_cell;
 mod exact_distance;
 mod expansion;
+mod ids;
 mod incremental;
 mod lloyd;
 mod nearest;
@@ -40,6 +43,7 @@ pub use delaunay::{Delaunay, Dimension, INVALID, MAX_SITES, OutgoingEdges};
 pub use diagram::{EdgeGeometry, Voronoi};
 pub use error::VoronoiError;
 pub use exact_distance::Metric;
+pub use ids::{DelaunayHalfedgeId, SiteId, VoronoiHalfedgeId, VoronoiVertexId};
 pub use lloyd::{LloydOptions, LloydResult, lloyd_relaxation};
 pub use raster::LabelImage;
 pub use svg::{SvgOptions, to_svg};

@@ -4,16 +4,17 @@ use super::delaunay::{Delaunay, Dimension, INVALID};
 use super::diagram::Voronoi;
 use super::error::VoronoiError;
 use super::exact_distance::Metric;
+use super::ids::{DelaunayHalfedgeId, SiteId};
 use super::incremental::{next_edge, prev_edge};
 use std::cmp::Ordering;
 
 impl Delaunay {
     /// Delaunay neighbours of site `v` (counter-clockwise in the planar case; along the line in
     /// the collinear case; empty for duplicates).
-    pub fn neighbours(&self, v: u32) -> Vec<u32> {
+    pub fn neighbours(&self, v: SiteId) -> Vec<SiteId> {
         let mut out = Vec::new();
-        self.neighbours_into(v, &mut out);
-        out
+        self.neighbours_into(v.0, &mut out);
+        out.into_iter().map(SiteId).collect()
     }
 
     pub(crate) fn neighbours_into(&self, v: u32, out: &mut Vec<u32>) {
@@ -21,7 +22,7 @@ impl Delaunay {
         match self.dimension {
             Dimension::Plane => {
                 let mut last = INVALID;
-                for e in self.outgoing(v) {
+                for DelaunayHalfedgeId(e) in self.outgoing(SiteId(v)) {
                     out.push(self.triangles[next_edge(e) as usize]);
                     last = e;
                 }
@@ -47,8 +48,8 @@ impl Delaunay {
     pub fn nearest_site(
         &self,
         p: [f64; 2],
-        hint: Option<u32>,
-    ) -> Result<Option<u32>, VoronoiError> {
+        hint: Option<SiteId>,
+    ) -> Result<Option<SiteId>, VoronoiError> {
         if !(p[0].is_finite() && p[1].is_finite()) {
             return Err(VoronoiError::NonFiniteQuery);
         }
@@ -56,10 +57,10 @@ impl Delaunay {
             return Ok(None);
         };
         let start = hint
-            .and_then(|h| self.representative.get(h as usize).copied())
-            .unwrap_or(first);
+            .and_then(|h| self.representative_of(h))
+            .map_or(first, |h| h.0);
         let mut scratch = Vec::new();
-        Ok(Some(self.descend(p, start, &mut scratch)))
+        Ok(Some(SiteId(self.descend(p, start, &mut scratch))))
     }
 
     /// Greedy descent plus tie resolution; `scratch` avoids allocation in tight loops.
@@ -140,8 +141,8 @@ impl Voronoi {
     pub fn nearest_site(
         &self,
         p: [f64; 2],
-        hint: Option<u32>,
-    ) -> Result<Option<u32>, VoronoiError> {
+        hint: Option<SiteId>,
+    ) -> Result<Option<SiteId>, VoronoiError> {
         self.delaunay.nearest_site(p, hint)
     }
 }

@@ -216,6 +216,7 @@ impl Delaunay {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::voronoi::SiteId;
     use crate::voronoi::tests::random_points;
 
     #[test]
@@ -269,7 +270,7 @@ mod tests {
             for i in 0..40 {
                 let q = [(i as f64 + 0.5) / 40.0, 1.0 - (j as f64 + 0.5) / 40.0];
                 assert_eq!(
-                    Some(img.labels[j * 40 + i]),
+                    Some(SiteId(img.labels[j * 40 + i])),
                     d.nearest_site(q, None).unwrap()
                 );
             }

@@ -2,6 +2,7 @@
 
 use super::clipped::ClippedCells;
 use super::diagram::Voronoi;
+use super::ids::SiteId;
 use std::fmt::Write;
 
 /// What to draw.
@@ -51,7 +52,9 @@ pub fn to_svg(voronoi: &Voronoi, cells: &ClippedCells, options: &SvgOptions) -> 
     );
     let n_sites = cells.n_cells();
     for s in 0..n_sites as u32 {
-        let Ok(cell) = cells.cell(s) else { continue };
+        let Ok(cell) = cells.cell(SiteId(s)) else {
+            continue;
+        };
         if cell.len() < 3 {
             continue;
         }
@@ -77,7 +80,7 @@ pub fn to_svg(voronoi: &Voronoi, cells: &ClippedCells, options: &SvgOptions) -> 
     if options.delaunay_edges {
         let sites = voronoi.delaunay().sites();
         for (a, b) in voronoi.delaunay().edges() {
-            let ((x1, y1), (x2, y2)) = (map(sites[a as usize]), map(sites[b as usize]));
+            let ((x1, y1), (x2, y2)) = (map(sites[a.index()]), map(sites[b.index()]));
             let _ = writeln!(
                 out,
                 r#"<line x1="{x1:.3}" y1="{y1:.3}" x2="{x2:.3}" y2="{y2:.3}" stroke="steelblue" stroke-width="0.5"/>"#

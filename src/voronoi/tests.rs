@@ -19,9 +19,9 @@ pub(crate) fn random_points(n: usize, seed: u64) -> Vec<[f64; 2]> {
 /// or against the neighbouring triangles' apexes (large inputs, which is equivalent).
 pub(crate) fn check_delaunay(d: &Delaunay, against_all: bool) {
     let tri = d.triangles();
-    for e in 0..tri.len() as u32 {
+    for e in (0..tri.len() as u32).map(DelaunayHalfedgeId) {
         let t = d.twin(e);
-        if t != INVALID {
+        if t.is_valid() {
             assert_eq!(d.twin(t), e);
             assert_eq!(d.origin(t), d.origin(d.next(e)));
             assert_eq!(d.origin(d.next(t)), d.origin(e));
@@ -45,11 +45,11 @@ pub(crate) fn check_delaunay(d: &Delaunay, against_all: bool) {
             }
         } else {
             for e in 3 * t..3 * t + 3 {
-                let o = d.twin(e as u32);
-                if o != INVALID {
+                let o = d.twin(DelaunayHalfedgeId(e as u32));
+                if o.is_valid() {
                     let apex = d.origin(d.prev(o));
                     assert!(
-                        incircle(pa, pb, pc, d.scaled_point(apex)) <= 0.0,
+                        incircle(pa, pb, pc, d.scaled_point(apex.0)) <= 0.0,
                         "edge {e} not locally Delaunay"
                     );
                 }
@@ -97,7 +97,7 @@ fn duplicates_are_merged_to_smallest_index() {
     let d = Delaunay::new(&pts).unwrap();
     check_delaunay(&d, true);
     assert_eq!(d.n_unique_sites(), 200);
-    let dups: Vec<(u32, u32)> = d.duplicates().collect();
+    let dups: Vec<(u32, u32)> = d.duplicates().map(|(s, r)| (s.0, r.0)).collect();
     assert_eq!(dups, vec![(11, 0), (201, 6), (202, 6)]);
     assert!(
         d.triangles()
@@ -118,19 +118,26 @@ fn tiny_and_collinear_inputs() {
     let d = Delaunay::new(&[[3.0, 3.0], [1.0, 1.0], [2.0, 2.0], [1.0, 1.0]]).unwrap();
     assert_eq!(d.dimension(), Dimension::Line);
     assert_eq!(d.hull(), &[1, 2, 0]);
-    assert_eq!(d.edges(), vec![(1, 2), (2, 0)]);
-    assert_eq!(d.duplicates().collect::<Vec<_>>(), vec![(3, 1)]);
+    let s = SiteId;
+    assert_eq!(d.edges(), vec![(s(1), s(2)), (s(2), s(0))]);
+    assert_eq!(d.duplicates().collect::<Vec<_>>(), vec![(s(3), s(1))]);
 }
 
 #[test]
 fn non_finite_sites_are_refused() {
     assert!(matches!(
         Delaunay::new(&[[0.0, 0.0], [f64::NAN, 1.0]]),
-        Err(VoronoiError::NonFiniteSite { site: 1, .. })
+        Err(VoronoiError::NonFiniteSite {
+            site: SiteId(1),
+            ..
+        })
     ));
     assert!(matches!(
         Delaunay::new(&[[f64::INFINITY, 0.0]]),
-        Err(VoronoiError::NonFiniteSite { site: 0, .. })
+        Err(VoronoiError::NonFiniteSite {
+            site: SiteId(0),
+            ..
+        })
     ));
 }
 
@@ -138,10 +145,10 @@ fn non_finite_sites_are_refused() {
 fn circulation_visits_every_incident_triangle() {
     let d = Delaunay::new(&random_points(500, 11)).unwrap();
     let mut seen = vec![0usize; d.n_sites()];
-    for v in 0..d.n_sites() as u32 {
+    for v in (0..d.n_sites() as u32).map(SiteId) {
         for e in d.outgoing(v) {
             assert_eq!(d.origin(e), v);
-            seen[v as usize] += 1;
+            seen[v.index()] += 1;
         }
     }
     let mut expected = vec![0usize; d.n_sites()];
@@ -154,11 +161,11 @@ fn circulation_visits_every_incident_triangle() {
 /// DCEL invariants and the equidistance of every vertex from its sites.
 pub(crate) fn check_voronoi(v: &Voronoi) {
     let sites = v.delaunay().sites();
-    for h in 0..v.n_halfedges() as u32 {
+    for h in (0..v.n_halfedges() as u32).map(VoronoiHalfedgeId) {
         assert_eq!(v.prev(v.next(h)), h);
         assert_eq!(v.site(v.next(h)), v.site(h), "next stays in the cell");
         assert_eq!(v.opposite_site(v.twin(h)), v.site(h));
-        if v.target(h) != INVALID && v.origin(v.next(h)) != INVALID {
+        if v.target(h).is_valid() && v.origin(v.next(h)).is_valid() {
             assert_eq!(v.origin(v.next(h)), v.target(h));
         }
         if let Some(EdgeGeometry::Segment { from, to }) = v.edge_geometry(h) {
@@ -166,11 +173,11 @@ pub(crate) fn check_voronoi(v: &Voronoi) {
         }
     }
     for (k, &p) in v.vertices().iter().enumerate() {
-        let around = v.vertex_sites(k as u32);
+        let around = v.vertex_sites(VoronoiVertexId(k as u32));
         assert!(around.len() >= 3, "vertex {k} has degree {}", around.len());
-        let r0 = (p[0] - sites[around[0] as usize][0]).hypot(p[1] - sites[around[0] as usize][1]);
+        let r0 = (p[0] - sites[around[0].index()][0]).hypot(p[1] - sites[around[0].index()][1]);
         for &s in &around {
-            let r = (p[0] - sites[s as usize][0]).hypot(p[1] - sites[s as usize][1]);
+            let r = (p[0] - sites[s.index()][0]).hypot(p[1] - sites[s.index()][1]);
             assert!(
                 (r - r0).abs() <= 1e-9 * r0.max(1e-300),
                 "vertex {k}: {r} vs {r0}"
@@ -185,7 +192,7 @@ pub(crate) fn check_clipped(v: &Voronoi, clip: &ClipPolygon) {
     let d = v.delaunay();
     let mut total = 0.0;
     for s in 0..d.n_sites() as u32 {
-        let poly = cells.cell_polygon(s).unwrap();
+        let poly = cells.cell_polygon(SiteId(s)).unwrap();
         let area = polygon_area_centroid(&poly).0;
         assert!(area >= 0.0, "cell {s} is clockwise: {area}");
         total += area;
@@ -231,13 +238,13 @@ fn grid_gives_degree_four_vertices() {
     let v = Voronoi::new(&pts).unwrap();
     check_voronoi(&v);
     assert_eq!(v.n_vertices(), 81);
-    assert!((0..81).all(|k| v.vertex_sites(k).len() == 4));
+    assert!((0..81).all(|k| v.vertex_sites(VoronoiVertexId(k)).len() == 4));
     check_clipped(
         &v,
         &ClipPolygon::rectangle([-0.5, -0.5], [9.5, 9.5]).unwrap(),
     );
     let cells = v.clip(&ClipPolygon::rectangle([-0.5, -0.5], [9.5, 9.5]).unwrap());
-    for s in 0..100 {
+    for s in (0..100).map(SiteId) {
         assert!((cells.cell_area(s).unwrap() - 1.0).abs() < 1e-12);
         assert_eq!(
             cells.cell(s).unwrap().len(),
@@ -245,11 +252,12 @@ fn grid_gives_degree_four_vertices() {
             "unit square cells, no extra vertices"
         );
     }
-    assert_eq!(v.neighbours(11).len(), 4);
-    let h = v.edge_between(11, 12).unwrap();
-    assert_eq!((v.site(h), v.opposite_site(h)), (11, 12));
+    let s = SiteId;
+    assert_eq!(v.neighbours(s(11)).len(), 4);
+    let h = v.edge_between(s(11), s(12)).unwrap();
+    assert_eq!((v.site(h), v.opposite_site(h)), (s(11), s(12)));
     assert!(
-        v.edge_between(11, 22).is_none(),
+        v.edge_between(s(11), s(22)).is_none(),
         "diagonal neighbours only touch at a vertex"
     );
 }
@@ -285,7 +293,7 @@ fn grid_split_into_parallel_runs_merges_across_their_seams() {
     let clip =
         ClipPolygon::rectangle([-0.5, -0.5], [side as f64 - 0.5, side as f64 - 0.5]).unwrap();
     let cells = v.clip(&clip);
-    for s in 0..pts.len() as u32 {
+    for s in (0..pts.len() as u32).map(SiteId) {
         assert!((cells.cell_area(s).unwrap() - 1.0).abs() < 1e-12);
         assert_eq!(cells.cell(s).unwrap().len(), 4);
     }
@@ -297,11 +305,11 @@ fn collinear_and_single_site_diagrams_clip_to_slabs() {
     let v = Voronoi::new(&[[0.0, 0.0], [1.0, 1.0], [3.0, 3.0], [2.0, 2.0]]).unwrap();
     check_voronoi(&v);
     check_clipped(&v, &clip);
-    assert_eq!(v.neighbours(3), vec![1, 2]);
+    assert_eq!(v.neighbours(SiteId(3)), vec![SiteId(1), SiteId(2)]);
     let v = Voronoi::new(&[[0.5, 0.5], [0.5, 0.5]]).unwrap();
     let cells = v.clip(&clip);
-    assert_eq!(cells.cell_area(0).unwrap(), 25.0);
-    assert!(cells.cell(1).unwrap().is_empty());
+    assert_eq!(cells.cell_area(SiteId(0)).unwrap(), 25.0);
+    assert!(cells.cell(SiteId(1)).unwrap().is_empty());
 }
 
 #[test]
@@ -312,12 +320,12 @@ fn sites_outside_the_clip_are_handled() {
     let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 1.0]).unwrap();
     check_clipped(&v, &clip);
     let cells = v.clip(&clip);
-    assert!(cells.cell(200).unwrap().is_empty());
+    assert!(cells.cell(SiteId(200)).unwrap().is_empty());
     // Whole region inside one far cell.
     let v = Voronoi::new(&[[10.0, 10.0], [20.0, 10.0], [10.0, 20.0]]).unwrap();
     let cells = v.clip(&clip);
-    assert_eq!(cells.cell(0).unwrap().len(), 4);
-    assert_eq!(cells.cell_area(0).unwrap(), 1.0);
+    assert_eq!(cells.cell(SiteId(0)).unwrap().len(), 4);
+    assert_eq!(cells.cell_area(SiteId(0)).unwrap(), 1.0);
 }
 
 #[test]
@@ -361,9 +369,9 @@ fn nearest_site_matches_brute_force() {
                 let dj = (pts[j][0] - q[0]).powi(2) + (pts[j][1] - q[1]).powi(2);
                 di.partial_cmp(&dj).unwrap()
             })
-            .unwrap() as u32;
-        assert_eq!(d.nearest_site(q, None).unwrap(), Some(best));
-        assert_eq!(d.nearest_site(q, Some(7)).unwrap(), Some(best));
+            .map(|i| SiteId(i as u32));
+        assert_eq!(d.nearest_site(q, None).unwrap(), best);
+        assert_eq!(d.nearest_site(q, Some(SiteId(7))).unwrap(), best);
     }
     assert!(d.nearest_site([f64::NAN, 0.0], None).is_err());
     assert_eq!(
@@ -378,9 +386,9 @@ fn nearest_site_matches_brute_force() {
     assert_eq!(
         Delaunay::new(&grid)
             .unwrap()
-            .nearest_site([1.5, 1.5], Some(15))
+            .nearest_site([1.5, 1.5], Some(SiteId(15)))
             .unwrap(),
-        Some(5)
+        Some(SiteId(5))
     );
 }
 
@@ -402,7 +410,7 @@ fn lloyd_relaxation_converges_towards_centroidal_cells() {
     // Near a fixed point each site sits close to its cell centroid.
     let worst = (0..100u32)
         .map(|s| {
-            let c = cells.cell_centroid(s).unwrap().unwrap();
+            let c = cells.cell_centroid(SiteId(s)).unwrap().unwrap();
             (c[0] - r.sites[s as usize][0]).hypot(c[1] - r.sites[s as usize][1])
         })
         .fold(0.0, f64::max);
@@ -432,7 +440,10 @@ fn lloyd_relaxation_converges_towards_centroidal_cells() {
     };
     assert!(matches!(
         lloyd_relaxation(&with_nan, &clip, none),
-        Err(VoronoiError::NonFiniteSite { site: 3, .. })
+        Err(VoronoiError::NonFiniteSite {
+            site: SiteId(3),
+            ..
+        })
     ));
 }
 
@@ -518,6 +529,6 @@ fn a_cell_touching_the_region_along_a_side_far_out_is_empty() {
     )
     .unwrap();
     let cells = Voronoi::new(&sites).unwrap().clip(&clip);
-    assert!(cells.cell(27).unwrap().is_empty());
-    assert!(cells.cell(6).unwrap().len() >= 3);
+    assert!(cells.cell(SiteId(27)).unwrap().is_empty());
+    assert!(cells.cell(SiteId(6)).unwrap().len() >= 3);
 }

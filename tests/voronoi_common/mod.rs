@@ -3,7 +3,8 @@
 
 use halfwing::voronoi::predicates::{incircle, orient2d};
 use halfwing::voronoi::{
-    ClipPolygon, Delaunay, Dimension, EdgeGeometry, INVALID, Metric, Voronoi, polygon_area_centroid,
+    ClipPolygon, Delaunay, DelaunayHalfedgeId, Dimension, EdgeGeometry, Metric, SiteId, Voronoi,
+    VoronoiHalfedgeId, VoronoiVertexId, polygon_area_centroid,
 };
 use std::cmp::Ordering;
 use std::path::Path;
@@ -42,11 +43,11 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
                 );
             }
         } else {
-            for e in 3 * t as u32..3 * t as u32 + 3 {
+            for e in (3 * t as u32..3 * t as u32 + 3).map(DelaunayHalfedgeId) {
                 let o = d.twin(e);
-                if o != INVALID {
+                if o.is_valid() {
                     assert_eq!(d.twin(o), e);
-                    let apex = s[d.origin(d.prev(o)) as usize];
+                    let apex = s[d.origin(d.prev(o)).index()];
                     assert!(
                         incircle(a, b, c, apex) <= 0.0,
                         "edge {e} not locally Delaunay"
@@ -61,7 +62,7 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
     assert_eq!(unique.len(), d.n_unique_sites());
     for (dup, rep) in d.duplicates() {
         assert!(rep < dup);
-        assert_eq!(s[dup as usize], s[rep as usize]);
+        assert_eq!(s[dup.index()], s[rep.index()]);
     }
 }
 
@@ -69,7 +70,7 @@ pub fn check_delaunay(d: &Delaunay, against_all: bool) {
 /// no zero-length edge.
 pub fn check_voronoi(v: &Voronoi) {
     let s = v.delaunay().sites();
-    for h in 0..v.n_halfedges() as u32 {
+    for h in (0..v.n_halfedges() as u32).map(VoronoiHalfedgeId) {
         assert_eq!(v.prev(v.next(h)), h);
         assert_eq!(v.site(v.next(h)), v.site(h));
         assert_ne!(v.site(h), v.opposite_site(h));
@@ -77,11 +78,11 @@ pub fn check_voronoi(v: &Voronoi) {
             assert_ne!(from, to, "zero-length edge");
         }
     }
-    for k in 0..v.n_vertices() as u32 {
-        let p = v.vertices()[k as usize];
+    for k in (0..v.n_vertices() as u32).map(VoronoiVertexId) {
+        let p = v.vertices()[k.index()];
         let around = v.vertex_sites(k);
         assert!(around.len() >= 3);
-        let dist = |i: u32| (p[0] - s[i as usize][0]).hypot(p[1] - s[i as usize][1]);
+        let dist = |i: SiteId| (p[0] - s[i.index()][0]).hypot(p[1] - s[i.index()][1]);
         let r0 = dist(around[0]);
         // Relative 1e-9, plus the few ulps of the vertex's own coordinates that no floating-point
         // output can beat (sites a few ulps apart have circumcentres that close to them).
@@ -89,7 +90,7 @@ pub fn check_voronoi(v: &Voronoi) {
         for &i in &around {
             assert!(
                 (dist(i) - r0).abs() <= 1e-9 * r0 + representable,
-                "vertex {k} at {p:?} not equidistant: {} vs {r0} ({around:?})",
+                "{k} at {p:?} not equidistant: {} vs {r0} ({around:?})",
                 dist(i)
             );
         }
@@ -109,7 +110,7 @@ pub fn check_clipped(v: &Voronoi, clip: &ClipPolygon) -> f64 {
     let neighbours = delaunay_neighbours(d);
     let mut total = 0.0;
     for site in 0..d.n_sites() as u32 {
-        let poly = cells.cell_polygon(site).unwrap();
+        let poly = cells.cell_polygon(SiteId(site)).unwrap();
         let area = polygon_area_centroid(&poly).0;
         assert!(area >= 0.0, "cell {site} clockwise");
         total += area;
@@ -207,22 +208,22 @@ pub fn check_cells_hold_their_nearest_points(
             let poly = cells.cell_polygon(owner).unwrap();
             if poly.is_empty() {
                 let sites = v.delaunay().sites();
-                let tied_holder = (0..sites.len() as u32).find(|&s| {
+                let tied_holder = (0..sites.len() as u32).map(SiteId).find(|&s| {
                     let ordering =
-                        Metric::Euclidean.compare(q, sites[s as usize], sites[owner as usize]);
+                        Metric::Euclidean.compare(q, sites[s.index()], sites[owner.index()]);
                     s != owner
                         && ordering == Ordering::Equal
                         && holds(&cells.cell_polygon(s).unwrap(), q, size)
                 });
                 assert!(
                     tied_holder.is_some(),
-                    "point {q:?} is nearest to site {owner}, whose cell is empty"
+                    "point {q:?} is nearest to {owner}, whose cell is empty"
                 );
                 continue;
             }
             assert!(
                 holds(&poly, q, size),
-                "point {q:?} is nearest to site {owner} but outside its cell {poly:?}"
+                "point {q:?} is nearest to {owner} but outside its cell {poly:?}"
             );
         }
     }

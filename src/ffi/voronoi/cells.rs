@@ -3,7 +3,7 @@
 
 use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
-use crate::voronoi::{ClipPolygon, ClippedCells, polygon_area_centroid};
+use crate::voronoi::{ClipPolygon, ClippedCells, SiteId, polygon_area_centroid};
 
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::handle::{free_handle, into_handle};
@@ -186,7 +186,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_polygon(
     // SAFETY: forwarded from the caller.
     unsafe {
         give_view(out_indices, "out_indices", out_len, || {
-            Ok(cells_ref(cells)?.cell(site)?)
+            Ok(cells_ref(cells)?.cell(SiteId(site))?)
         })
     }
 }
@@ -210,11 +210,12 @@ pub unsafe extern "C" fn hw_voronoi_cells_area_centroid(
         let out_area = Out::optional(out_area);
         let out_centroid = Out::optional(out_centroid.cast::<[f64; 2]>());
         // SAFETY: forwarded from the caller.
+        let site = SiteId(site);
         let polygon = unsafe { cells_ref(cells) }?.cell_polygon(site)?;
         if polygon.is_empty() && out_centroid.is_some() {
             return Err(FfiError::new(
                 HW_ERR_NOT_FOUND,
-                format!("the cell of site {site} is empty: it has no centroid"),
+                format!("the cell of {site} is empty: it has no centroid"),
             ));
         }
         let (area, centroid) = polygon_area_centroid(&polygon);
@@ -273,6 +274,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
         // SAFETY: forwarded from the caller.
         // The soup decides which cells become faces; asking it keeps the two in agreement.
         let (_, face_sites) = unsafe { cells_ref(cells) }?.to_polygon_soup();
+        let face_sites: Vec<u32> = face_sites.into_iter().map(u32::from).collect();
         // SAFETY: forwarded from the caller.
         unsafe { copy_items(&face_sites, out_sites, capacity, out_needed, "out_sites") }
     })

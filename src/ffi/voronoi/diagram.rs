@@ -6,7 +6,7 @@
 
 use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
-use crate::voronoi::{EdgeGeometry, INVALID, Voronoi, VoronoiError};
+use crate::voronoi::{EdgeGeometry, INVALID, SiteId, Voronoi, VoronoiError, VoronoiHalfedgeId};
 
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::handle::{free_handle, into_handle};
@@ -74,19 +74,14 @@ pub(crate) unsafe fn points_arg<'a>(
 }
 
 /// The representative of `site`, or `HW_ERR_INVALID_HANDLE` naming it when out of range.
-pub(crate) fn checked_site(voronoi: &Voronoi, site: u32) -> Result<u32, FfiError> {
-    voronoi
-        .delaunay()
-        .representative()
-        .get(site as usize)
-        .copied()
-        .ok_or_else(|| {
-            VoronoiError::InvalidSite {
-                site,
-                count: voronoi.delaunay().n_sites(),
-            }
-            .into()
-        })
+pub(crate) fn checked_site(voronoi: &Voronoi, site: SiteId) -> Result<SiteId, FfiError> {
+    voronoi.delaunay().representative_of(site).ok_or_else(|| {
+        VoronoiError::InvalidSite {
+            site,
+            count: voronoi.delaunay().n_sites(),
+        }
+        .into()
+    })
 }
 
 /// Builds the Delaunay triangulation and Voronoi diagram of `n_sites` sites given as `2 * n_sites`
@@ -421,11 +416,9 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
         let out = Out::new(out_edge, "out_edge")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
+        let halfedge = VoronoiHalfedgeId(halfedge);
         let geometry = v.edge_geometry(halfedge).ok_or_else(|| {
-            FfiError::invalid_handle(format!(
-                "Voronoi half-edge {halfedge} out of range (0..{})",
-                v.n_halfedges()
-            ))
+            FfiError::invalid_handle(format!("{halfedge} out of range (0..{})", v.n_halfedges()))
         })?;
         let (kind, point, end, direction) = match geometry {
             EdgeGeometry::Segment { from, to } => (
@@ -443,10 +436,10 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
         };
         let edge = hw_voronoi_edge {
             kind,
-            site: v.site(halfedge),
-            opposite_site: v.opposite_site(halfedge),
-            origin: v.origin(halfedge),
-            target: v.target(halfedge),
+            site: v.site(halfedge).0,
+            opposite_site: v.opposite_site(halfedge).0,
+            origin: v.origin(halfedge).0,
+            target: v.target(halfedge).0,
             point,
             end,
             direction,
@@ -504,12 +497,12 @@ pub unsafe extern "C" fn hw_voronoi_nearest_site(
         let out = Out::new(out_site, "out_site")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let hint = (hint != INVALID).then_some(hint);
+        let hint = (hint != INVALID).then_some(SiteId(hint));
         let site = v
             .nearest_site([x, y], hint)?
             .ok_or_else(|| FfiError::new(HW_ERR_NOT_FOUND, "the diagram has no sites"))?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(site) };
+        unsafe { out.write(site.0) };
         Ok(())
     })
 }
@@ -534,7 +527,8 @@ pub unsafe extern "C" fn hw_voronoi_neighbours(
     guard(|| {
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let neighbours = v.neighbours(checked_site(v, site)?);
+        let neighbours = v.neighbours(checked_site(v, SiteId(site))?);
+        let neighbours: Vec<u32> = neighbours.into_iter().map(u32::from).collect();
         // SAFETY: forwarded from the caller.
         unsafe { copy_items(&neighbours, out_sites, capacity, out_needed, "out_sites") }
     })
@@ -558,15 +552,15 @@ pub unsafe extern "C" fn hw_voronoi_edge_between(
         let out = Out::new(out_halfedge, "out_halfedge")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let (a, b) = (checked_site(v, a)?, checked_site(v, b)?);
+        let (a, b) = (checked_site(v, SiteId(a))?, checked_site(v, SiteId(b))?);
         let h = v.edge_between(a, b).ok_or_else(|| {
             FfiError::new(
                 HW_ERR_NOT_FOUND,
-                format!("the cells of sites {a} and {b} share no edge"),
+                format!("the cells of {a} and {b} share no edge"),
             )
         })?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(h) };
+        unsafe { out.write(h.0) };
         Ok(())
     })
 }
