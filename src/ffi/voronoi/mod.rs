@@ -1,6 +1,8 @@
 //! The Voronoi diagram's C functions (`hw_voronoi_*`, `hw_delaunay_*`): the diagram, the bare
 //! triangulation, clipped cells, Lloyd relaxation, then pictures.
 
+pub(crate) mod ids;
+
 pub(crate) mod diagram;
 
 pub(crate) mod delaunay;
@@ -14,5 +16,6 @@ pub(crate) mod images;
 pub use cells::*;
 pub use delaunay::*;
 pub use diagram::*;
+pub use ids::*;
 pub use images::*;
 pub use lloyd::*;
