@@ -245,9 +245,18 @@ static void voronoi_classes() {
   CHECK(diagram.dimension() == hw::SiteDimension::Plane && diagram.n_triangles() == 4);
   CHECK(diagram.view(hw::VoronoiArray::Representative)[5] == 1);
   CHECK(diagram.sites().size() == 6 && diagram.vertices().size() == diagram.n_vertices());
-  CHECK(diagram.nearest_site({1.2, 2.1}) == 4 && diagram.neighbours(4).size() == 4);
-  const uint32_t h = diagram.edge_between(0, 4);
-  CHECK(diagram.edge(h).site == 0 && diagram.edge(h).opposite_site == 4);
+  const hw_site corner{0}, centre{4}, duplicate{5};
+  CHECK(diagram.nearest_site({1.2, 2.1}) == centre);
+  CHECK(diagram.nearest_site({3.9, 0.1}, centre) == hw_site{1});
+  // The ids order and hash, so the neighbours go into a set: four distinct corners.
+  const std::vector<hw_site> around = diagram.neighbours(centre);
+  const std::set<hw_site> distinct(around.begin(), around.end());
+  CHECK(around.size() == 4 && distinct.size() == 4 && distinct.count(duplicate) == 0);
+  CHECK(std::hash<hw_site>()(centre) == std::hash<uint32_t>()(4));
+  const hw_voronoi_halfedge h = diagram.edge_between(corner, centre);
+  CHECK(diagram.edge(h).site == corner && diagram.edge(h).opposite_site == centre);
+  CHECK(diagram.edge(h).origin != diagram.edge(h).target);
+  CHECK(diagram.edge_between(centre, corner) == hw_voronoi_halfedge{h.idx ^ 1u});
   CHECK(diagram.delaunay_mesh().n_faces() == 4);
   const hw::delaunay triangulation(sites);
   CHECK(triangulation.dimension() == hw::SiteDimension::Plane && triangulation.n_triangles() == 4);
@@ -258,12 +267,13 @@ static void voronoi_classes() {
 
   const hw::voronoi_cells cells = diagram.clip({-1, -1}, {5, 5});
   double total = 0;
-  for (uint32_t s = 0; s < cells.size(); ++s) total += cells.area(s);
-  CHECK(std::fabs(total - 36) < 1e-12 && cells.polygon(5).empty());
-  CHECK(cells.polygon_points(4).size() == cells.polygon(4).size());
-  const hw::point2 c = cells.centroid(4);
+  for (hw_site s{0}; s.idx < cells.size(); ++s.idx) total += cells.area(s);
+  CHECK(std::fabs(total - 36) < 1e-12 && cells.polygon(duplicate).empty());
+  CHECK(cells.polygon_points(centre).size() == cells.polygon(centre).size());
+  const hw::point2 c = cells.centroid(centre);
   CHECK(c[0] > 0 && c[0] < 4 && c[1] > 0 && c[1] < 4);
   CHECK(cells.to_mesh().n_faces() == 5 && cells.face_sites().size() == 5);
+  CHECK(cells.face_sites()[4] == centre);
   const hw::render_buffers drawn = hw::render_buffers::cells(cells);
   CHECK(drawn.indices(hw::RenderIndices::TriangleFaces).size() ==
         drawn.indices(hw::RenderIndices::Triangles).size() / 3);
@@ -286,7 +296,7 @@ static void voronoi_classes() {
 
   bool thrown = false;
   try {
-    diagram.edge_between(0, 2);
+    diagram.edge_between(corner, hw_site{2});
   } catch (const hw::error& e) {
     thrown = e.status() == hw::Status::NotFound;
   }

@@ -99,66 +99,84 @@ static void counts_and_views(void) {
   hw_voronoi_free(v);
 }
 
+/* Ids by index: a function, as compound literals are not C++ (this file is also built as C++). */
+static hw_site site_at(uint32_t idx) {
+  hw_site site = {idx};
+  return site;
+}
+
+static hw_voronoi_halfedge halfedge_at(uint32_t idx) {
+  hw_voronoi_halfedge halfedge = {idx};
+  return halfedge;
+}
+
 static void edges(void) {
   hw_voronoi *v = build(five_and_a_copy, N_SITES);
   hw_voronoi_edge e;
-  uint32_t h, rays = 0, segments = 0;
-  for (h = 0; h < hw_voronoi_n_halfedges(v); ++h) {
+  hw_voronoi_halfedge h;
+  uint32_t rays = 0, segments = 0;
+  for (h.idx = 0; h.idx < hw_voronoi_n_halfedges(v); ++h.idx) {
     CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK);
     if (e.kind == HW_VORONOI_EDGE_KIND_SEGMENT) {
       segments++;
-      CHECK(e.origin != HW_INVALID_INDEX && e.target != HW_INVALID_INDEX);
+      CHECK(e.origin.idx != HW_INVALID_INDEX && e.target.idx != HW_INVALID_INDEX);
       CHECK(e.direction[0] == e.end[0] - e.point[0] && e.direction[1] == e.end[1] - e.point[1]);
     } else {
       rays++;
       CHECK(e.kind == HW_VORONOI_EDGE_KIND_RAY);
       /* A ray is perpendicular to the hull edge joining its two sites. */
-      CHECK(fabs(e.direction[0] * (five_and_a_copy[2 * e.site] - five_and_a_copy[2 * e.opposite_site]) +
-                 e.direction[1] * (five_and_a_copy[2 * e.site + 1] -
-                                   five_and_a_copy[2 * e.opposite_site + 1])) < 1e-12);
+      const double *a = five_and_a_copy + 2 * e.site.idx;
+      const double *b = five_and_a_copy + 2 * e.opposite_site.idx;
+      CHECK(fabs(e.direction[0] * (a[0] - b[0]) + e.direction[1] * (a[1] - b[1])) < 1e-12);
     }
   }
   /* Four interior Delaunay edges give segments, four hull edges rays (both half-edges each). */
   CHECK(segments == 8 && rays == 8);
-  CHECK_STATUS(hw_voronoi_edge_describe(v, 16, &e), HW_ERR_INVALID_HANDLE, "out of range");
-  CHECK_STATUS(hw_voronoi_edge_describe(v, 0, NULL), HW_ERR_NULL_ARGUMENT, "out_edge");
+  CHECK_STATUS(hw_voronoi_edge_describe(v, halfedge_at(16), &e), HW_ERR_INVALID_HANDLE,
+               "Voronoi half-edge 16 out of range");
+  CHECK_STATUS(hw_voronoi_edge_describe(v, halfedge_at(0), NULL), HW_ERR_NULL_ARGUMENT,
+               "out_edge");
   hw_voronoi_free(v);
 }
 
 static void queries(void) {
   hw_voronoi *v = build(five_and_a_copy, N_SITES), *empty = build(NULL, 0);
-  uint32_t s = 0, h = 0, around[8], around_copy[8];
+  const hw_site none = {HW_INVALID_INDEX}, centre = {CENTRE}, duplicate = {DUPLICATE};
+  hw_site s = {0}, around[8], around_copy[8];
+  hw_voronoi_halfedge h = {0};
   size_t needed = 0, needed_copy = 0;
   hw_voronoi_edge e;
 
-  CHECK(hw_voronoi_nearest_site(v, 3.9, 0.2, HW_INVALID_INDEX, &s) == HW_OK && s == 1);
-  CHECK(hw_voronoi_nearest_site(v, 1.1, 2.1, 0, &s) == HW_OK && s == CENTRE);
-  CHECK_STATUS(hw_voronoi_nearest_site(v, NAN, 0, HW_INVALID_INDEX, &s), HW_ERR_INVALID_INPUT,
-               "non-finite");
-  CHECK_STATUS(hw_voronoi_nearest_site(empty, 0, 0, HW_INVALID_INDEX, &s), HW_ERR_NOT_FOUND,
-               "no sites");
-  CHECK_STATUS(hw_voronoi_nearest_site(v, 0, 0, HW_INVALID_INDEX, NULL), HW_ERR_NULL_ARGUMENT,
-               "out_site");
+  CHECK(hw_voronoi_nearest_site(v, 3.9, 0.2, none, &s) == HW_OK && s.idx == 1);
+  CHECK(hw_voronoi_nearest_site(v, 1.1, 2.1, site_at(0), &s) == HW_OK && s.idx == CENTRE);
+  CHECK_STATUS(hw_voronoi_nearest_site(v, NAN, 0, none, &s), HW_ERR_INVALID_INPUT, "non-finite");
+  CHECK_STATUS(hw_voronoi_nearest_site(empty, 0, 0, none, &s), HW_ERR_NOT_FOUND, "no sites");
+  CHECK_STATUS(hw_voronoi_nearest_site(v, 0, 0, none, NULL), HW_ERR_NULL_ARGUMENT, "out_site");
 
-  CHECK(hw_voronoi_neighbours(v, CENTRE, around, 8, &needed) == HW_OK && needed == 4);
+  CHECK(hw_voronoi_neighbours(v, centre, around, 8, &needed) == HW_OK && needed == 4);
   /* A duplicate answers for its representative. */
-  CHECK(hw_voronoi_neighbours(v, 1, around, 8, &needed) == HW_OK);
-  CHECK(hw_voronoi_neighbours(v, DUPLICATE, around_copy, 8, &needed_copy) == HW_OK);
+  CHECK(hw_voronoi_neighbours(v, site_at(1), around, 8, &needed) == HW_OK);
+  CHECK(hw_voronoi_neighbours(v, duplicate, around_copy, 8, &needed_copy) == HW_OK);
   CHECK(needed == needed_copy && memcmp(around, around_copy, needed * sizeof *around) == 0);
-  CHECK_STATUS(hw_voronoi_neighbours(v, CENTRE, around, 2, &needed), HW_ERR_BUFFER_TOO_SMALL,
+  CHECK_STATUS(hw_voronoi_neighbours(v, centre, around, 2, &needed), HW_ERR_BUFFER_TOO_SMALL,
                "4 are needed");
   CHECK(needed == 4);
-  CHECK_STATUS(hw_voronoi_neighbours(v, 99, around, 8, &needed), HW_ERR_INVALID_HANDLE,
+  CHECK_STATUS(hw_voronoi_neighbours(v, site_at(99), around, 8, &needed), HW_ERR_INVALID_HANDLE,
                "site 99 out of range");
 
-  CHECK(hw_voronoi_edge_between(v, 0, CENTRE, &h) == HW_OK);
-  CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.site == 0 && e.opposite_site == CENTRE);
-  CHECK(hw_voronoi_edge_between(v, CENTRE, DUPLICATE, &h) == HW_OK);
-  CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.site == CENTRE && e.opposite_site == 1);
+  CHECK(hw_voronoi_edge_between(v, site_at(0), centre, &h) == HW_OK);
+  CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.site.idx == 0 &&
+        e.opposite_site.idx == CENTRE);
+  CHECK(hw_voronoi_edge_between(v, centre, duplicate, &h) == HW_OK);
+  CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.site.idx == CENTRE &&
+        e.opposite_site.idx == 1);
   /* Opposite corners are separated by the centre site's cell. */
-  CHECK_STATUS(hw_voronoi_edge_between(v, 0, 2, &h), HW_ERR_NOT_FOUND, "share no edge");
-  CHECK_STATUS(hw_voronoi_edge_between(v, 0, 6, &h), HW_ERR_INVALID_HANDLE, "out of range");
-  CHECK_STATUS(hw_voronoi_edge_between(v, 0, 1, NULL), HW_ERR_NULL_ARGUMENT, "out_halfedge");
+  CHECK_STATUS(hw_voronoi_edge_between(v, site_at(0), site_at(2), &h), HW_ERR_NOT_FOUND,
+               "share no edge");
+  CHECK_STATUS(hw_voronoi_edge_between(v, site_at(0), site_at(6), &h), HW_ERR_INVALID_HANDLE,
+               "out of range");
+  CHECK_STATUS(hw_voronoi_edge_between(v, site_at(0), site_at(1), NULL), HW_ERR_NULL_ARGUMENT,
+               "out_halfedge");
   hw_voronoi_free(v);
   hw_voronoi_free(empty);
 }
@@ -167,7 +185,7 @@ static void meshes(void) {
   hw_voronoi *v = build(five_and_a_copy, N_SITES);
   hw_voronoi_cells *cells = NULL;
   hw_mesh *mesh = NULL;
-  uint32_t face_sites[8];
+  hw_site face_sites[8];
   size_t needed = 0, i;
 
   CHECK(hw_voronoi_delaunay_mesh(v, &mesh) == HW_OK);
@@ -182,14 +200,14 @@ static void meshes(void) {
   /* Neighbouring cells share their edges: one connected disc. */
   CHECK(hw_mesh_n_edges(mesh) + 1 == hw_mesh_n_vertices(mesh) + hw_mesh_n_faces(mesh));
   CHECK(hw_voronoi_cells_face_sites(cells, face_sites, 8, &needed) == HW_OK && needed == 5);
-  for (i = 0; i < 5; ++i) CHECK(face_sites[i] == i);
+  for (i = 0; i < 5; ++i) CHECK(face_sites[i].idx == i);
   CHECK_STATUS(hw_voronoi_cells_face_sites(cells, face_sites, 4, &needed), HW_ERR_BUFFER_TOO_SMALL,
                "5 are needed");
   needed = 4242;
-  face_sites[0] = 77;
+  face_sites[0].idx = 77;
   CHECK_STATUS(hw_voronoi_cells_face_sites(NULL, face_sites, 8, &needed), HW_ERR_NULL_ARGUMENT,
                "cells");
-  CHECK(needed == 4242 && face_sites[0] == 77);
+  CHECK(needed == 4242 && face_sites[0].idx == 77);
   hw_mesh_free(mesh);
 
   CHECK_STATUS(hw_voronoi_delaunay_mesh(v, NULL), HW_ERR_NULL_ARGUMENT, "out_mesh");
@@ -205,7 +223,7 @@ static void clipping(void) {
   const uint32_t *polygon = NULL;
   size_t n_positions = 0, len = 0;
   double area = 0, total = 0, centroid[2];
-  uint32_t s;
+  hw_site s;
   /* Clockwise on purpose: either orientation is accepted. */
   const double diamond_xy[] = {2, -1, -1, 2, 2, 5, 5, 2};
   const double star[] = {0, 0, 4, 0, 1, 1, 0, 4};
@@ -215,12 +233,12 @@ static void clipping(void) {
   CHECK(hw_voronoi_clip_rect(v, -1, -1, 5, 5, &cells) == HW_OK);
   CHECK(hw_voronoi_cells_n_cells(cells) == N_SITES);
   CHECK(hw_voronoi_cells_positions(cells, &xy, &n_positions) == HW_OK && n_positions >= 4);
-  for (s = 0; s < N_SITES; ++s) {
+  for (s.idx = 0; s.idx < N_SITES; ++s.idx) {
     size_t k;
     CHECK(hw_voronoi_cells_polygon(cells, s, &polygon, &len) == HW_OK);
     CHECK(hw_voronoi_cells_area_centroid(cells, s, &area, NULL) == HW_OK);
     total += area;
-    if (s == DUPLICATE) {
+    if (s.idx == DUPLICATE) {
       CHECK(len == 0 && polygon == NULL && area == 0);
       CHECK_STATUS(hw_voronoi_cells_area_centroid(cells, s, NULL, centroid), HW_ERR_NOT_FOUND,
                    "empty");
@@ -231,14 +249,14 @@ static void clipping(void) {
     /* Every site lies in its own (convex) cell: left of every edge. */
     for (k = 0; k < len; ++k) {
       const double *a = xy + 2 * polygon[k], *b = xy + 2 * polygon[(k + 1) % len];
-      const double *p = five_and_a_copy + 2 * s;
+      const double *p = five_and_a_copy + 2 * s.idx;
       CHECK((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) > 0);
     }
   }
   CHECK(fabs(total - 36) < 36e-12);
 
   CHECK(hw_voronoi_clip_convex(v, diamond_xy, 4, &diamond) == HW_OK);
-  for (total = 0, s = 0; s < N_SITES; ++s) {
+  for (total = 0, s.idx = 0; s.idx < N_SITES; ++s.idx) {
     CHECK(hw_voronoi_cells_area_centroid(diamond, s, &area, NULL) == HW_OK);
     total += area;
   }
@@ -262,12 +280,12 @@ static void clipping(void) {
   CHECK_STATUS(hw_voronoi_clip_rect(v, 0, 0, 1, 1, NULL), HW_ERR_NULL_ARGUMENT, "out_cells");
   CHECK(diamond == NULL);
 
-  CHECK_STATUS(hw_voronoi_cells_polygon(cells, N_SITES, &polygon, &len), HW_ERR_INVALID_HANDLE,
-               "out of range");
-  CHECK_STATUS(hw_voronoi_cells_polygon(cells, 0, NULL, &len), HW_ERR_NULL_ARGUMENT,
+  CHECK_STATUS(hw_voronoi_cells_polygon(cells, site_at(N_SITES), &polygon, &len),
+               HW_ERR_INVALID_HANDLE, "out of range");
+  CHECK_STATUS(hw_voronoi_cells_polygon(cells, site_at(0), NULL, &len), HW_ERR_NULL_ARGUMENT,
                "out_indices");
-  CHECK_STATUS(hw_voronoi_cells_area_centroid(cells, 7, &area, NULL), HW_ERR_INVALID_HANDLE,
-               "out of range");
+  CHECK_STATUS(hw_voronoi_cells_area_centroid(cells, site_at(7), &area, NULL),
+               HW_ERR_INVALID_HANDLE, "out of range");
   CHECK_STATUS(hw_voronoi_cells_positions(cells, NULL, &len), HW_ERR_NULL_ARGUMENT, "out_xy");
   CHECK(hw_voronoi_cells_n_cells(NULL) == 0 && last_error_contains("cells"));
 
@@ -289,6 +307,8 @@ static void degenerate_inputs(void) {
   const uint32_t *hull = NULL, *vertex_edge = NULL, *next_prev = NULL;
   size_t n = 0;
   double area = 0;
+  hw_voronoi_halfedge line_edge;
+  hw_site nearest;
   uint32_t h, u;
 
   v = build(NULL, 0);
@@ -299,7 +319,7 @@ static void degenerate_inputs(void) {
   v = build(same, 3);
   CHECK(hw_voronoi_dimension(v) == HW_SITE_DIMENSION_POINT && hw_voronoi_n_unique_sites(v) == 1);
   CHECK(hw_voronoi_clip_rect(v, 0, 0, 2, 3, &cells) == HW_OK);
-  CHECK(hw_voronoi_cells_area_centroid(cells, 0, &area, NULL) == HW_OK && area == 6);
+  CHECK(hw_voronoi_cells_area_centroid(cells, site_at(0), &area, NULL) == HW_OK && area == 6);
   hw_voronoi_cells_free(cells);
   hw_voronoi_free(v);
 
@@ -308,8 +328,9 @@ static void degenerate_inputs(void) {
   CHECK(hw_voronoi_view(v, HW_VORONOI_ARRAY_HULL, &hull, &n) == HW_OK && n == 4);
   CHECK(hull[0] == 0 && hull[1] == 1 && hull[2] == 3 && hull[3] == 2);
   CHECK(hw_voronoi_n_halfedges(v) == 6);
-  for (h = 0; h < 6; ++h)
-    CHECK(hw_voronoi_edge_describe(v, h, &e) == HW_OK && e.kind == HW_VORONOI_EDGE_KIND_LINE);
+  for (line_edge.idx = 0; line_edge.idx < 6; ++line_edge.idx)
+    CHECK(hw_voronoi_edge_describe(v, line_edge, &e) == HW_OK &&
+          e.kind == HW_VORONOI_EDGE_KIND_LINE);
   hw_voronoi_free(v);
 
   /* 3 × 3 grid: each unit square's four corners are cocircular, so its centre is one Voronoi
@@ -348,7 +369,9 @@ static void degenerate_inputs(void) {
       CHECK(fabs(distance(c, scaled + 2 * tri[3 * k + 1]) - r) <= 1e-12 * r);
       CHECK(fabs(distance(c, scaled + 2 * tri[3 * k + 2]) - r) <= 1e-12 * r);
     }
-    CHECK(hw_voronoi_nearest_site(v, scaled[6], scaled[7], HW_INVALID_INDEX, &h) == HW_OK && h == 3);
+    CHECK(hw_voronoi_nearest_site(v, scaled[6], scaled[7], site_at(HW_INVALID_INDEX), &nearest) ==
+          HW_OK);
+    CHECK(nearest.idx == 3);
     hw_voronoi_free(v);
   }
 }

@@ -2960,6 +2960,17 @@ typedef uint32_t hw_voronoi_array;
 #define HW_VORONOI_ARRAY_VERTEX_HALFEDGE 10
 
 /**
+ * A half-edge of an ::hw_voronoi. Half-edges come in pairs: the twin of `h` is `h.idx ^ 1`.
+ * \ingroup voronoi
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_voronoi_halfedge;
+
+/**
  * The shape of a Voronoi edge (see ::hw_voronoi_edge).
  * \ingroup voronoi
  */
@@ -2984,6 +2995,29 @@ typedef uint32_t hw_voronoi_edge_kind;
 #define HW_VORONOI_EDGE_KIND_LINE 2
 
 /**
+ * A site of an ::hw_voronoi: its input index, which is also its Delaunay vertex and the index of
+ * its cell.
+ * \ingroup voronoi
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none.
+   */
+  uint32_t idx;
+} hw_site;
+
+/**
+ * A vertex of an ::hw_voronoi (a circumcentre of Delaunay triangles).
+ * \ingroup voronoi
+ */
+typedef struct {
+  /**
+   * The index; `HW_INVALID_INDEX` means none (an end at infinity).
+   */
+  uint32_t idx;
+} hw_voronoi_vertex;
+
+/**
  * One Voronoi edge seen from one of its half-edges: the two sites it separates and its geometry.
  * \ingroup voronoi
  */
@@ -2995,19 +3029,19 @@ typedef struct {
   /**
    * The site on the half-edge's left (whose cell it bounds).
    */
-  uint32_t site;
+  hw_site site;
   /**
    * The site on its right.
    */
-  uint32_t opposite_site;
+  hw_site opposite_site;
   /**
    * Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
    */
-  uint32_t origin;
+  hw_voronoi_vertex origin;
   /**
    * End vertex (`HW_INVALID_INDEX` when it runs to infinity).
    */
-  uint32_t target;
+  hw_voronoi_vertex target;
   /**
    * Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
    * where it ends). Line: the midpoint of the two sites.
@@ -3243,7 +3277,7 @@ hw_status hw_voronoi_vertices(const hw_voronoi *voronoi,
  * \ingroup voronoi
  */
 hw_status hw_voronoi_edge_describe(const hw_voronoi *voronoi,
-                                   uint32_t halfedge,
+                                   hw_voronoi_halfedge halfedge,
                                    hw_voronoi_edge *out_edge);
 
 /**
@@ -3260,9 +3294,9 @@ hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh
 
 /**
  * The site nearest to the point (`x`, `y`) — the site whose cell contains it — exactly, ties
- * going to the smallest index. `hint`, when it is a site index, starts the search there (a
- * nearby site makes the query O(1)); pass `HW_INVALID_INDEX` for none. A NaN or infinite point
- * gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
+ * going to the smallest index. `hint`, when it is a site, starts the search there (a nearby
+ * site makes the query O(1)); pass `(hw_site){HW_INVALID_INDEX}` for none. A NaN or infinite
+ * point gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
  *
  * # Safety
  * `voronoi` must be NULL or a live diagram; `out_site` writable.
@@ -3271,8 +3305,8 @@ hw_status hw_voronoi_delaunay_mesh(const hw_voronoi *voronoi, hw_mesh **out_mesh
 hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
                                   double x,
                                   double y,
-                                  uint32_t hint,
-                                  uint32_t *out_site);
+                                  hw_site hint,
+                                  hw_site *out_site);
 
 /**
  * Copies the sites whose cells share an edge with the cell of `site` (its Delaunay neighbours,
@@ -3286,8 +3320,8 @@ hw_status hw_voronoi_nearest_site(const hw_voronoi *voronoi,
  * \ingroup voronoi
  */
 hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
-                                uint32_t site,
-                                uint32_t *out_sites,
+                                hw_site site,
+                                hw_site *out_sites,
                                 size_t capacity,
                                 size_t *out_needed);
 
@@ -3301,9 +3335,9 @@ hw_status hw_voronoi_neighbours(const hw_voronoi *voronoi,
  * \ingroup voronoi
  */
 hw_status hw_voronoi_edge_between(const hw_voronoi *voronoi,
-                                  uint32_t a,
-                                  uint32_t b,
-                                  uint32_t *out_halfedge);
+                                  hw_site a,
+                                  hw_site b,
+                                  hw_voronoi_halfedge *out_halfedge);
 
 /**
  * Builds the Delaunay triangulation of `n_sites` sites given as `2 * n_sites` doubles (x, y per
@@ -3444,7 +3478,7 @@ hw_status hw_voronoi_cells_positions(const hw_voronoi_cells *cells,
  * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
-                                   uint32_t site,
+                                   hw_site site,
                                    const uint32_t **out_indices,
                                    size_t *out_len);
 
@@ -3459,7 +3493,7 @@ hw_status hw_voronoi_cells_polygon(const hw_voronoi_cells *cells,
  * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_area_centroid(const hw_voronoi_cells *cells,
-                                         uint32_t site,
+                                         hw_site site,
                                          double *out_area,
                                          double *out_centroid);
 
@@ -3484,7 +3518,7 @@ hw_status hw_voronoi_cells_mesh(const hw_voronoi_cells *cells, hw_mesh **out_mes
  * \ingroup voronoi
  */
 hw_status hw_voronoi_cells_face_sites(const hw_voronoi_cells *cells,
-                                      uint32_t *out_sites,
+                                      hw_site *out_sites,
                                       size_t capacity,
                                       size_t *out_needed);
 

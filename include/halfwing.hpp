@@ -10,9 +10,10 @@
 // values. c_tests/every_function_wrapped.cmake checks it and lists the few exceptions.
 //
 // Element ids stay the C structs (hw_vertex, hw_halfedge, hw_edge, hw_face; hw_wvertex, hw_wedge,
-// hw_wface for the winged-edge kernel), with `==`, `!=`, `<` and std::hash defined below so they
-// work as keys of std::map, std::set and the unordered containers. Voronoi sites, triangles and
-// half-edges are plain `uint32_t` indices, as in C.
+// hw_wface for the winged-edge kernel; hw_site, hw_voronoi_vertex, hw_voronoi_halfedge for the
+// Voronoi diagram), with `==`, `!=`, `<` and std::hash defined below so they work as keys of
+// std::map, std::set and the unordered containers. Whole index arrays (views, label images,
+// Delaunay triangles) stay plain `uint32_t`, as in C.
 //
 // Enumerations: every C enumeration has a scoped C++ counterpart with the same values
 // (hw_normal_weighting is hw::NormalWeighting, HW_NORMAL_WEIGHTING_ANGLE is
@@ -66,6 +67,9 @@ HALFWING_ID_OPERATORS(hw_face)
 HALFWING_ID_OPERATORS(hw_wvertex)
 HALFWING_ID_OPERATORS(hw_wedge)
 HALFWING_ID_OPERATORS(hw_wface)
+HALFWING_ID_OPERATORS(hw_site)
+HALFWING_ID_OPERATORS(hw_voronoi_vertex)
+HALFWING_ID_OPERATORS(hw_voronoi_halfedge)
 #undef HALFWING_ID_OPERATORS
 
 /// The C++ wrapper: owning classes that throw hw::error, range-for walks, and a scoped
@@ -1797,7 +1801,7 @@ class voronoi_cells {
 
   /// Indices into positions() of the cell of `site`, counter-clockwise (empty for duplicates
   /// and cells outside the region).
-  values_view<const uint32_t> polygon(uint32_t site) const {
+  values_view<const uint32_t> polygon(hw_site site) const {
     const uint32_t* indices = nullptr;
     std::size_t n = 0;
     check(hw_voronoi_cells_polygon(get(), site, &indices, &n));
@@ -1805,7 +1809,7 @@ class voronoi_cells {
   }
 
   /// The corners of the cell of `site`, counter-clockwise.
-  std::vector<point2> polygon_points(uint32_t site) const {
+  std::vector<point2> polygon_points(hw_site site) const {
     const values_view<const point2> all = positions();
     std::vector<point2> out;
     for (uint32_t i : polygon(site)) out.push_back(all[i]);
@@ -1813,14 +1817,14 @@ class voronoi_cells {
   }
 
   /// Area of the cell of `site` (0 when empty).
-  double area(uint32_t site) const {
+  double area(hw_site site) const {
     double a = 0;
     check(hw_voronoi_cells_area_centroid(get(), site, &a, nullptr));
     return a;
   }
 
   /// Centroid of the cell of `site`; throws (Status::NotFound) for an empty cell.
-  point2 centroid(uint32_t site) const {
+  point2 centroid(hw_site site) const {
     point2 c{};
     check(hw_voronoi_cells_area_centroid(get(), site, nullptr, c.data()));
     return c;
@@ -1834,10 +1838,10 @@ class voronoi_cells {
   }
 
   /// The site of every face of to_mesh().
-  std::vector<uint32_t> face_sites() const {
+  std::vector<hw_site> face_sites() const {
     std::size_t n = 0;
     hw_voronoi_cells_face_sites(get(), nullptr, 0, &n);
-    std::vector<uint32_t> sites(n);
+    std::vector<hw_site> sites(n);
     check(hw_voronoi_cells_face_sites(get(), sites.data(), sites.size(), &n));
     return sites;
   }
@@ -1936,7 +1940,7 @@ class voronoi {
   }
 
   /// The edge of half-edge `h`: its two sites and its segment, ray or line.
-  hw_voronoi_edge edge(uint32_t h) const {
+  hw_voronoi_edge edge(hw_voronoi_halfedge h) const {
     hw_voronoi_edge e;
     check(hw_voronoi_edge_describe(get(), h, &e));
     return e;
@@ -1950,25 +1954,25 @@ class voronoi {
   }
 
   /// The site nearest to `p` (exact); `hint`, a nearby site, speeds the search up.
-  uint32_t nearest_site(point2 p, uint32_t hint = HW_INVALID_INDEX) const {
-    uint32_t s = HW_INVALID_INDEX;
+  hw_site nearest_site(point2 p, hw_site hint = hw_site{HW_INVALID_INDEX}) const {
+    hw_site s{HW_INVALID_INDEX};
     check(hw_voronoi_nearest_site(get(), p[0], p[1], hint, &s));
     return s;
   }
 
   /// Sites whose cells share an edge with the cell of `site`, counter-clockwise.
-  std::vector<uint32_t> neighbours(uint32_t site) const {
+  std::vector<hw_site> neighbours(hw_site site) const {
     std::size_t n = 0;
     check_or_size(hw_voronoi_neighbours(get(), site, nullptr, 0, &n));
-    std::vector<uint32_t> out(n);
+    std::vector<hw_site> out(n);
     check(hw_voronoi_neighbours(get(), site, out.data(), out.size(), &n));
     return out;
   }
 
   /// The half-edge of the cell of `a` facing the cell of `b`; throws Status::NotFound when the
   /// cells are not adjacent.
-  uint32_t edge_between(uint32_t a, uint32_t b) const {
-    uint32_t h = HW_INVALID_INDEX;
+  hw_voronoi_halfedge edge_between(hw_site a, hw_site b) const {
+    hw_voronoi_halfedge h{HW_INVALID_INDEX};
     check(hw_voronoi_edge_between(get(), a, b, &h));
     return h;
   }

@@ -60,7 +60,7 @@ int main(int argc, char **argv) {
     hw_svg_options options = hw_svg_options_default();
     hw_status status;
     double total_area = 0, largest_area = 0;
-    uint32_t largest = 0, site;
+    hw_site largest = {0}, site;
     size_t non_empty = 0;
     long polygons;
     int i;
@@ -85,7 +85,7 @@ int main(int argc, char **argv) {
         hw_voronoi_free(voronoi);
         return fail("hw_voronoi_clip_rect", status);
     }
-    for (site = 0; site < hw_voronoi_cells_n_cells(cells); ++site) {
+    for (site.idx = 0; site.idx < hw_voronoi_cells_n_cells(cells); ++site.idx) {
         double area = 0;
         status = hw_voronoi_cells_area_centroid(cells, site, &area, NULL);
         if (status != HW_OK) break;
@@ -101,7 +101,7 @@ int main(int argc, char **argv) {
                hw_voronoi_cells_n_cells(cells));
         printf("total area %.6f (rectangle %.0f x %.0f: %.6f)\n", total_area, WIDTH, HEIGHT,
                WIDTH * HEIGHT);
-        printf("largest cell: site %u, area %.4f\n", largest, largest_area);
+        printf("largest cell: site %u, area %.4f\n", largest.idx, largest_area);
 
         /* The drawing: filled cells, sites as dots, 600 pixels wide. */
         options.width_px = 600;

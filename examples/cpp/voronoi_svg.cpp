@@ -34,7 +34,7 @@ struct area_stats {
 area_stats stats(const hw::voronoi_cells& cells) {
   area_stats s;
   s.smallest = width * height;
-  for (uint32_t site = 0; site < cells.size(); ++site) {
+  for (hw_site site{0}; site.idx < cells.size(); ++site.idx) {
     const double a = cells.area(site);
     if (a == 0) continue;  // a duplicate, or a cell outside the rectangle
     s.total += a;

@@ -111,7 +111,8 @@ void voronoi_scene::rebuild() {
   }
   cells_ = std::make_unique<gpu_colored_surface>(buffers, colors);
   outlines_ = std::make_unique<gpu_lines>(buffers, hw::RenderFloats::Wireframe);
-  for (uint32_t site = 0; site < clipped.size(); ++site) n_cells_ += !clipped.polygon(site).empty();
+  for (hw_site site{0}; site.idx < clipped.size(); ++site.idx)
+    n_cells_ += !clipped.polygon(site).empty();
 
   // The sites as small squares: the outlines of a polygon list.
   const double r = 0.05;

@@ -14,6 +14,7 @@ use crate::ffi::boundary::{
 };
 use crate::ffi::mesh::lifecycle::hw_mesh;
 use crate::ffi::voronoi::diagram::{hw_voronoi, points_arg, voronoi_ref};
+use crate::ffi::voronoi::ids::hw_site;
 
 /// The cells of a Voronoi diagram clipped to a convex region. Opaque; made by
 /// hw_voronoi_clip_rect() or hw_voronoi_clip_convex(), released with hw_voronoi_cells_free(). It
@@ -179,14 +180,14 @@ pub unsafe extern "C" fn hw_voronoi_cells_positions(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_polygon(
     cells: *const hw_voronoi_cells,
-    site: u32,
+    site: hw_site,
     out_indices: *mut *const u32,
     out_len: *mut usize,
 ) -> hw_status {
     // SAFETY: forwarded from the caller.
     unsafe {
         give_view(out_indices, "out_indices", out_len, || {
-            Ok(cells_ref(cells)?.cell(SiteId(site))?)
+            Ok(cells_ref(cells)?.cell(site.into())?)
         })
     }
 }
@@ -202,7 +203,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_polygon(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_area_centroid(
     cells: *const hw_voronoi_cells,
-    site: u32,
+    site: hw_site,
     out_area: *mut f64,
     out_centroid: *mut f64,
 ) -> hw_status {
@@ -210,7 +211,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_area_centroid(
         let out_area = Out::optional(out_area);
         let out_centroid = Out::optional(out_centroid.cast::<[f64; 2]>());
         // SAFETY: forwarded from the caller.
-        let site = SiteId(site);
+        let site = SiteId::from(site);
         let polygon = unsafe { cells_ref(cells) }?.cell_polygon(site)?;
         if polygon.is_empty() && out_centroid.is_some() {
             return Err(FfiError::new(
@@ -266,7 +267,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_mesh(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
     cells: *const hw_voronoi_cells,
-    out_sites: *mut u32,
+    out_sites: *mut hw_site,
     capacity: usize,
     out_needed: *mut usize,
 ) -> hw_status {
@@ -274,7 +275,7 @@ pub unsafe extern "C" fn hw_voronoi_cells_face_sites(
         // SAFETY: forwarded from the caller.
         // The soup decides which cells become faces; asking it keeps the two in agreement.
         let (_, face_sites) = unsafe { cells_ref(cells) }?.to_polygon_soup();
-        let face_sites: Vec<u32> = face_sites.into_iter().map(u32::from).collect();
+        let face_sites: Vec<hw_site> = face_sites.into_iter().map(hw_site::from).collect();
         // SAFETY: forwarded from the caller.
         unsafe { copy_items(&face_sites, out_sites, capacity, out_needed, "out_sites") }
     })

@@ -6,7 +6,7 @@
 
 use crate::mesh::Mesh;
 use crate::soup::BuildPolicy;
-use crate::voronoi::{EdgeGeometry, INVALID, SiteId, Voronoi, VoronoiError, VoronoiHalfedgeId};
+use crate::voronoi::{EdgeGeometry, SiteId, Voronoi, VoronoiError, VoronoiHalfedgeId};
 
 use crate::ffi::boundary::error::FfiError;
 use crate::ffi::boundary::handle::{free_handle, into_handle};
@@ -18,6 +18,7 @@ use crate::ffi::boundary::{
 };
 use crate::ffi::mesh::lifecycle::hw_mesh;
 use crate::ffi::voronoi::delaunay::{delaunay_array, site_dimension};
+use crate::ffi::voronoi::ids::{hw_site, hw_voronoi_halfedge, hw_voronoi_vertex};
 
 /// A 2D Voronoi diagram and its Delaunay triangulation. Opaque; build it with hw_voronoi_build()
 /// and release it with hw_voronoi_free(). It never changes after construction, so every function
@@ -382,13 +383,13 @@ pub struct hw_voronoi_edge {
     /// ::HW_VORONOI_EDGE_KIND_SEGMENT, ::HW_VORONOI_EDGE_KIND_RAY or ::HW_VORONOI_EDGE_KIND_LINE.
     pub kind: hw_voronoi_edge_kind,
     /// The site on the half-edge's left (whose cell it bounds).
-    pub site: u32,
+    pub site: hw_site,
     /// The site on its right.
-    pub opposite_site: u32,
+    pub opposite_site: hw_site,
     /// Start vertex (`HW_INVALID_INDEX` when it comes from infinity).
-    pub origin: u32,
+    pub origin: hw_voronoi_vertex,
     /// End vertex (`HW_INVALID_INDEX` when it runs to infinity).
-    pub target: u32,
+    pub target: hw_voronoi_vertex,
     /// Segment: the start. Ray: its finite end (for a half-edge coming from infinity, that is
     /// where it ends). Line: the midpoint of the two sites.
     pub point: [f64; 2],
@@ -409,14 +410,14 @@ pub struct hw_voronoi_edge {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_edge_describe(
     voronoi: *const hw_voronoi,
-    halfedge: u32,
+    halfedge: hw_voronoi_halfedge,
     out_edge: *mut hw_voronoi_edge,
 ) -> hw_status {
     guard(|| {
         let out = Out::new(out_edge, "out_edge")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let halfedge = VoronoiHalfedgeId(halfedge);
+        let halfedge = VoronoiHalfedgeId::from(halfedge);
         let geometry = v.edge_geometry(halfedge).ok_or_else(|| {
             FfiError::invalid_handle(format!("{halfedge} out of range (0..{})", v.n_halfedges()))
         })?;
@@ -436,10 +437,10 @@ pub unsafe extern "C" fn hw_voronoi_edge_describe(
         };
         let edge = hw_voronoi_edge {
             kind,
-            site: v.site(halfedge).0,
-            opposite_site: v.opposite_site(halfedge).0,
-            origin: v.origin(halfedge).0,
-            target: v.target(halfedge).0,
+            site: v.site(halfedge).into(),
+            opposite_site: v.opposite_site(halfedge).into(),
+            origin: v.origin(halfedge).into(),
+            target: v.target(halfedge).into(),
             point,
             end,
             direction,
@@ -478,9 +479,9 @@ pub unsafe extern "C" fn hw_voronoi_delaunay_mesh(
 }
 
 /// The site nearest to the point (`x`, `y`) — the site whose cell contains it — exactly, ties
-/// going to the smallest index. `hint`, when it is a site index, starts the search there (a
-/// nearby site makes the query O(1)); pass `HW_INVALID_INDEX` for none. A NaN or infinite point
-/// gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
+/// going to the smallest index. `hint`, when it is a site, starts the search there (a nearby
+/// site makes the query O(1)); pass `(hw_site){HW_INVALID_INDEX}` for none. A NaN or infinite
+/// point gives `HW_ERR_INVALID_INPUT`; a diagram without sites `HW_ERR_NOT_FOUND`.
 ///
 /// # Safety
 /// `voronoi` must be NULL or a live diagram; `out_site` writable.
@@ -490,19 +491,19 @@ pub unsafe extern "C" fn hw_voronoi_nearest_site(
     voronoi: *const hw_voronoi,
     x: f64,
     y: f64,
-    hint: u32,
-    out_site: *mut u32,
+    hint: hw_site,
+    out_site: *mut hw_site,
 ) -> hw_status {
     guard(|| {
         let out = Out::new(out_site, "out_site")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let hint = (hint != INVALID).then_some(SiteId(hint));
+        let hint = (hint != hw_site::INVALID).then_some(SiteId::from(hint));
         let site = v
             .nearest_site([x, y], hint)?
             .ok_or_else(|| FfiError::new(HW_ERR_NOT_FOUND, "the diagram has no sites"))?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(site.0) };
+        unsafe { out.write(site.into()) };
         Ok(())
     })
 }
@@ -519,16 +520,16 @@ pub unsafe extern "C" fn hw_voronoi_nearest_site(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_neighbours(
     voronoi: *const hw_voronoi,
-    site: u32,
-    out_sites: *mut u32,
+    site: hw_site,
+    out_sites: *mut hw_site,
     capacity: usize,
     out_needed: *mut usize,
 ) -> hw_status {
     guard(|| {
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let neighbours = v.neighbours(checked_site(v, SiteId(site))?);
-        let neighbours: Vec<u32> = neighbours.into_iter().map(u32::from).collect();
+        let neighbours = v.neighbours(checked_site(v, site.into())?);
+        let neighbours: Vec<hw_site> = neighbours.into_iter().map(hw_site::from).collect();
         // SAFETY: forwarded from the caller.
         unsafe { copy_items(&neighbours, out_sites, capacity, out_needed, "out_sites") }
     })
@@ -544,15 +545,15 @@ pub unsafe extern "C" fn hw_voronoi_neighbours(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn hw_voronoi_edge_between(
     voronoi: *const hw_voronoi,
-    a: u32,
-    b: u32,
-    out_halfedge: *mut u32,
+    a: hw_site,
+    b: hw_site,
+    out_halfedge: *mut hw_voronoi_halfedge,
 ) -> hw_status {
     guard(|| {
         let out = Out::new(out_halfedge, "out_halfedge")?;
         // SAFETY: forwarded from the caller.
         let v = unsafe { voronoi_ref(voronoi) }?;
-        let (a, b) = (checked_site(v, SiteId(a))?, checked_site(v, SiteId(b))?);
+        let (a, b) = (checked_site(v, a.into())?, checked_site(v, b.into())?);
         let h = v.edge_between(a, b).ok_or_else(|| {
             FfiError::new(
                 HW_ERR_NOT_FOUND,
@@ -560,7 +561,7 @@ pub unsafe extern "C" fn hw_voronoi_edge_between(
             )
         })?;
         // SAFETY: checked non-NULL, writable per the caller.
-        unsafe { out.write(h.0) };
+        unsafe { out.write(h.into()) };
         Ok(())
     })
 }

@@ -4,6 +4,8 @@
 
 pub(crate) mod points2d;
 
+pub(crate) mod ids;
+
 pub(crate) mod diagram;
 
 pub(crate) mod delaunay;
@@ -17,6 +19,7 @@ pub(crate) mod images;
 pub use cells::*;
 pub use delaunay::*;
 pub use diagram::*;
+pub use ids::*;
 pub use images::*;
 pub use lloyd::*;
 pub use points2d::*;
