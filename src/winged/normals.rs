@@ -6,8 +6,8 @@ use super::error::WingedError;
 use super::ids::{FaceId, Side, VertexId};
 use super::structure::Winged;
 use crate::geom::{
-    PolygonFaces, VertexNormalWeighting, face_normal_of, face_normals_of, vertex_normal_of,
-    vertex_normals_of,
+    PolygonFaces, SmallFace, VertexNormalWeighting, face_normal_of, face_normals_of,
+    vertex_normal_of, vertex_normals_of,
 };
 
 impl Winged {
@@ -69,6 +69,34 @@ impl PolygonFaces for Winged {
         uses.map(|u| self.tail_of(u).0)
     }
 
+    /// One walk of at most four uses, stepped as [`Winged::face_loop`] steps, its tails the
+    /// corners: a face otherwise walked twice (for its normal, then for its corners) is walked
+    /// once, and the arrays take the place of the loop iterator.
+    #[inline(always)]
+    fn small_face(&self, f: u32) -> SmallFace {
+        let Some(first) = self.face_first_use(FaceId(f)) else {
+            return SmallFace::Larger;
+        };
+        let mut corners = [0; 4];
+        let mut here = first;
+        for k in 0..corners.len() {
+            corners[k] = self.tail_of(here).0;
+            match self.use_next(here) {
+                Some(next) if next == first => {
+                    let [a, b, c, d] = corners;
+                    return match k {
+                        2 => SmallFace::Triangle([a, b, c]),
+                        3 => SmallFace::Quad([a, b, c, d]),
+                        _ => SmallFace::Larger,
+                    };
+                }
+                Some(next) => here = next,
+                None => return SmallFace::Larger,
+            }
+        }
+        SmallFace::Larger
+    }
+
     /// The faces of `v`'s ring; while the structure may have pinched vertices (whose other fans
     /// a ring does not reach), of every edge at `v`, found by a scan of the edges.
     fn faces_at(&self, v: u32) -> Vec<u32> {
@@ -92,6 +120,40 @@ impl PolygonFaces for Winged {
 mod tests {
     use super::*;
     use crate::soup::{BuildPolicy, FaceList};
+
+    #[test]
+    fn small_faces_are_the_corners_of_the_loop() {
+        // A triangle, a quad and a pentagon in a strip, each face's corners read both ways.
+        let positions = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 1.0, 0.1],
+            [0.0, 2.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [1.5, 3.0, 0.2],
+            [0.5, 3.5, 0.0],
+            [-0.5, 3.0, 0.0],
+        ];
+        let sizes = [3, 4, 5];
+        let indices = [0, 1, 2, 2, 1, 3, 5, 4, 5, 6, 7, 8];
+        let list = FaceList::polygons(&positions, &sizes[..2], &indices[..7]);
+        let (w, _) = Winged::from_face_list(&list, BuildPolicy::Strict).unwrap();
+        let pentagon = FaceList::polygons(&positions, &sizes[2..], &indices[7..12]);
+        let (p, _) = Winged::from_face_list(&pentagon, BuildPolicy::Strict).unwrap();
+        let small = |w: &Winged, f: u32| match w.small_face(f) {
+            SmallFace::Triangle(corners) => Some(corners.to_vec()),
+            SmallFace::Quad(corners) => Some(corners.to_vec()),
+            SmallFace::Larger => None,
+        };
+        let walked = |w: &Winged, f: u32| w.corners(f).collect::<Vec<_>>();
+        for f in 0..2 {
+            assert_eq!(small(&w, f), Some(walked(&w, f)), "face {f}");
+        }
+        assert_eq!(walked(&w, 1).len(), 4);
+        assert_eq!(small(&p, 0), None, "a pentagon is walked");
+        assert_eq!(walked(&p, 0).len(), 5);
+    }
 
     #[test]
     fn a_vertex_alone_scans_the_edges_while_fans_may_be_apart() {
