@@ -1,21 +1,24 @@
 // Side-by-side benchmark of halfwing's hole filling against CGAL 5 Polygon Mesh Processing's
-// triangulate_hole, in one run, on holes of 1,000 edges: a sphere with its cap removed (planar)
-// and a tube whose rim waves up and down (non-planar). Both triangulate the hole on its corners
-// only. halfwing: a loop longer than 100 corners is triangulated on its best-fit plane in
-// O(n log n), improved by flips, tested for folds and for crossings with the mesh (box trees,
-// exact predicates). CGAL (defaults): Liepa's minimum-weight dynamic programme restricted to
+// triangulate_hole, in one run, on holes of 1,000 edges (or of each size given): a sphere with
+// its cap removed (planar) and a tube whose rim waves up and down (non-planar). Both triangulate
+// the hole on its corners only. halfwing: a loop longer than 100 corners is triangulated on its
+// best-fit plane in O(n log n), improved by flips, tested for folds and, with exact predicates,
+// for crossings with the faces near the hole (found by one scan of the faces' boxes, then a box
+// tree over those few). CGAL (defaults): Liepa's minimum-weight dynamic programme restricted to
 // the edges of a 3D Delaunay triangulation of the hole's corners, falling back to the full O(n³)
 // programme when that finds none. Each run gets a fresh mesh (not timed); rounds alternate
 // between the two, best of N; single thread on both sides (RAYON_NUM_THREADS=1 is set by the run
 // script; CGAL's is sequential).
 //
-//   bench/run-hole-fill-compare.sh [--quick] [--repeats N]
+//   bench/run-hole-fill-compare.sh [--quick] [--repeats N] [EDGES...]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/version.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <iterator>
 #include <limits>
 #include <vector>
@@ -81,14 +84,28 @@ void compare(const indexed::Mesh& m, int repeats) {
 int main(int argc, char** argv) {
   bench::options opts;
   if (!bench::parse_options(argc, argv, opts)) return 2;
-  const uint32_t edges = opts.quick ? 100 : 1000;
-  std::printf("halfwing %s fill_hole vs CGAL %s triangulate_hole, holes of %u edges; memory: %s\n",
-              hw::version().c_str(), CGAL_VERSION_STR, edges, bench::set_memory_policy(false));
+  // Positional arguments are hole sizes here (for a growth check), not model files.
+  std::vector<uint32_t> sizes;
+  for (const std::string& arg : opts.files) {
+    char* end = nullptr;
+    const unsigned long edges = std::strtoul(arg.c_str(), &end, 10);
+    if (end == arg.c_str() || *end != '\0' || edges < 3 || edges > 1000000) {
+      std::fprintf(stderr, "hole size %s: expected a number of edges from 3 to 1000000\n",
+                   arg.c_str());
+      return 2;
+    }
+    sizes.push_back(static_cast<uint32_t>(edges));
+  }
+  if (sizes.empty()) sizes.push_back(opts.quick ? 100 : 1000);
+  std::printf("halfwing %s fill_hole vs CGAL %s triangulate_hole; memory: %s\n",
+              hw::version().c_str(), CGAL_VERSION_STR, bench::set_memory_policy(false));
   std::printf("times: best of %d runs, in ms; ratio = halfwing / CGAL (lower is better)\n",
               opts.repeats);
   std::printf("%-24s %8s %8s %8s %12s %12s %9s\n", "model", "faces", "ours+", "CGAL+",
               "halfwing", "CGAL", "ratio");
-  compare(hole_models::capless_sphere(edges, 20), opts.repeats);
-  compare(hole_models::wavy_tube(edges, 10), opts.repeats);
+  for (const uint32_t edges : sizes) {
+    compare(hole_models::capless_sphere(edges, 20), opts.repeats);
+    compare(hole_models::wavy_tube(edges, 10), opts.repeats);
+  }
   return 0;
 }

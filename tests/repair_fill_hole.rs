@@ -10,7 +10,7 @@ use halfwing::geom::self_intersections;
 use halfwing::mesh::{BuildPolicy, FaceId, HalfedgeId, Mesh};
 use halfwing::repair::{
     DEGENERATE_RATIO, FOLD_ANGLE_DEGREES, FillError, FillMode, HoleFillOptions, fill_hole,
-    fill_holes,
+    fill_hole_with, fill_holes,
 };
 use halfwing::soup::FaceList;
 use mesh_support::{data_dir, load};
@@ -18,6 +18,11 @@ use mesh_support::{data_dir, load};
 /// An open prism: walls joining the polygon `outline` (counter-clockwise seen from +z, heights
 /// given per corner) to a copy 1 below. Its top loop is the hole; the bottom loop another.
 fn prism(outline: &[[f64; 3]]) -> Mesh {
+    prism_and(outline, &[])
+}
+
+/// [`prism`] and a triangle apart from it at `extra`'s corners (none when it is empty).
+fn prism_and(outline: &[[f64; 3]], extra: &[[f64; 3]]) -> Mesh {
     let n = outline.len() as u32;
     let mut positions = outline.to_vec();
     positions.extend(outline.iter().map(|p| [p[0], p[1], -1.0]));
@@ -25,6 +30,10 @@ fn prism(outline: &[[f64; 3]]) -> Mesh {
     for i in 0..n {
         let j = (i + 1) % n;
         indices.extend([n + i, n + j, j, n + i, j, i]);
+    }
+    if !extra.is_empty() {
+        indices.extend([2 * n, 2 * n + 1, 2 * n + 2]);
+        positions.extend_from_slice(extra);
     }
     Mesh::from_face_list(
         &FaceList::triangles(&positions, &indices),
@@ -254,6 +263,47 @@ fn refusals_leave_the_mesh_unchanged() {
         ));
     }
     assert_eq!(before, shape(&mesh));
+}
+
+/// A face not joined to the hole's rim is found by the crossing test: a triangle standing
+/// through the middle of the hole refuses every fill, exact or projected, triangulated or refined
+/// (one hole alone, or all holes); the same triangle raised above the hole's plane refuses none.
+#[test]
+fn a_face_apart_from_the_rim_that_crosses_the_fill_refuses_it() {
+    let through = [[-0.1, -0.1, -0.5], [0.1, 0.1, -0.5], [0.0, 0.0, 0.5]];
+    let above = through.map(|p| [p[0], p[1], p[2] + 0.6]);
+    for n in [8, 300] {
+        let outline = circle(n, |_, _| 0.0);
+        for mode in [FillMode::Triangulate, FillMode::Refine] {
+            let mut mesh = prism_and(&outline, &through);
+            let before = shape(&mesh);
+            let top = top_hole(&mesh);
+            let refused = fill_hole_with(&mut mesh, top, mode);
+            assert!(
+                matches!(refused, Err(FillError::SelfIntersecting)),
+                "{n} corners, {mode:?}: {refused:?}"
+            );
+            assert_eq!(shape(&mesh), before);
+            let options = HoleFillOptions {
+                max_edges: n,
+                max_perimeter: f64::INFINITY,
+                mode,
+            };
+            let report = fill_holes(&mut mesh, &options).unwrap();
+            let crossing = report
+                .refused
+                .iter()
+                .filter(|(_, why)| matches!(why, FillError::SelfIntersecting))
+                .count();
+            assert_eq!(crossing, 1, "{n} corners, {mode:?}: {:?}", report.refused);
+            mesh.check().unwrap();
+
+            let mut mesh = prism_and(&outline, &above);
+            let top = top_hole(&mesh);
+            fill_hole_with(&mut mesh, top, mode).unwrap();
+            mesh.check().unwrap();
+        }
+    }
 }
 
 /// A funnel: the walls run from the unit circle at height 0 inwards and down to a circle of

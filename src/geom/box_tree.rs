@@ -37,7 +37,17 @@ impl BoundingBox {
         bounds
     }
 
-    fn union(&self, other: &BoundingBox) -> BoundingBox {
+    /// The box grown to hold `point`.
+    #[inline]
+    pub(crate) fn extend(&mut self, point: [f64; 3]) {
+        for (k, &x) in point.iter().enumerate() {
+            self.min[k] = self.min[k].min(x);
+            self.max[k] = self.max[k].max(x);
+        }
+    }
+
+    /// The smallest box holding both.
+    pub(crate) fn union(&self, other: &BoundingBox) -> BoundingBox {
         BoundingBox {
             min: [0, 1, 2].map(|k| self.min[k].min(other.min[k])),
             max: [0, 1, 2].map(|k| self.max[k].max(other.max[k])),

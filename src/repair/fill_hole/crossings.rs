@@ -2,16 +2,21 @@
 //! [`crate::geom::self_intersections`] tests pairs) against the mesh's faces whose boxes they
 //! overlap, found in box trees, and against each other.
 //!
-//! The mesh's faces are held as fans of triangles. Filled patches are added as they are cut in,
-//! in trees of doubling sizes (a new tree absorbs every smaller one), so that filling many holes
-//! costs O(n log² n) for the trees and each query O(log² n + k).
+//! For many holes, the mesh's faces are held as fans of triangles. Filled patches are added as
+//! they are cut in, in trees of doubling sizes (a new tree absorbs every smaller one), so that
+//! filling many holes costs O(n log² n) for the trees and each query O(log² n + k).
+//!
+//! For one hole, a tree over the whole mesh would cost more than the fill: the query instead
+//! scans the faces' boxes (one pass over the corners' positions, no sorting) for those meeting
+//! the new triangles' overall box, and builds a tree over these few only. The answers are the
+//! same: a face whose box misses the overall box misses every new triangle's box.
 
 use std::collections::HashMap;
 
 use crate::geom::box_tree::{BoundingBox, BoxTree, Boxed};
 use crate::geom::exact_orientation::ExponentRange;
 use crate::geom::triangle_intersection::{is_degenerate_exactly, triangles_meet_exactly};
-use crate::mesh::{FaceId, Mesh};
+use crate::mesh::{FaceId, Mesh, VertexId};
 
 /// A non-degenerate triangle on mesh vertices, ready for exact tests.
 #[derive(Clone, Copy, Debug)]
@@ -58,37 +63,39 @@ pub(super) struct Surroundings {
     trees: Vec<BoxTree<Nearby>>,
     /// Vertices welded into another (see [`Surroundings::weld`]): the trees keep their old ids.
     welded: HashMap<u32, u32>,
+    /// The mesh's faces are not in the trees: each query scans the mesh for those near it.
+    scans_mesh: bool,
 }
 
 impl Surroundings {
-    /// The live faces of `mesh` (fans from their first corner). O(n log n).
+    /// The live faces of `mesh` (fans from their first corner), in trees for many queries.
+    /// O(n log n).
     pub(super) fn new(mesh: &Mesh) -> Surroundings {
-        let faces = (0..mesh.n_face_slots() as u32)
-            .map(FaceId)
-            .filter(|&f| mesh.check_face(f).is_ok());
         let mut surroundings = Surroundings {
             trees: Vec::new(),
             welded: HashMap::new(),
+            scans_mesh: false,
         };
-        surroundings.add(mesh, faces);
+        surroundings.add(mesh, live_faces(mesh));
         surroundings
     }
 
-    /// Adds the faces `faces` of `mesh`.
-    pub(super) fn add(&mut self, mesh: &Mesh, faces: impl IntoIterator<Item = FaceId>) {
-        let mut triangles = Vec::new();
-        let mut corners = Vec::new();
-        for f in faces {
-            corners.clear();
-            corners.extend(mesh.face_vertices(f).map(|v| v.0));
-            for i in 1..corners.len().saturating_sub(1) {
-                let ids = [corners[0], corners[i], corners[i + 1]];
-                triangles.extend(Nearby::new(
-                    ids,
-                    ids.map(|v| mesh.position(crate::mesh::VertexId(v))),
-                ));
-            }
+    /// The faces of the mesh each query is given, found by a scan of the mesh per query: for
+    /// one hole (a few queries), where a tree over the whole mesh costs more than the fill.
+    pub(super) fn scanned() -> Surroundings {
+        Surroundings {
+            trees: Vec::new(),
+            welded: HashMap::new(),
+            scans_mesh: true,
         }
+    }
+
+    /// Adds the faces `faces` of `mesh` (nothing to do when the mesh is scanned: they are in it).
+    pub(super) fn add(&mut self, mesh: &Mesh, faces: impl IntoIterator<Item = FaceId>) {
+        if self.scans_mesh {
+            return;
+        }
+        let mut triangles = fan_triangles(mesh, faces);
         while self
             .trees
             .last()
@@ -121,11 +128,12 @@ impl Surroundings {
     }
 
     /// The indices of the triangles of `triangles` (corner indices into `ids` and `points`, the
-    /// hole's corners' vertex ids and positions) that meet a face of the surroundings or, when
-    /// `among_themselves`, another of `triangles`. Degenerate triangles are not listed: the fold
-    /// test refuses them.
+    /// hole's corners' vertex ids and positions) that meet a face of the surroundings (of
+    /// `mesh`'s faces, when scanned) or, when `among_themselves`, another of `triangles`.
+    /// Degenerate triangles are not listed: the fold test refuses them.
     pub(super) fn crossing_triangles(
         &self,
+        mesh: &Mesh,
         ids: &[u32],
         points: &[[f64; 3]],
         triangles: &[[u32; 3]],
@@ -142,9 +150,21 @@ impl Surroundings {
                 .map(|nearby| (t, nearby))
             })
             .collect();
+        let near = match new.split_first() {
+            Some((&(_, first), rest)) if self.scans_mesh => {
+                let overall = rest
+                    .iter()
+                    .fold(first.bounds, |b, (_, n)| b.union(&n.bounds));
+                Some(BoxTree::new(fan_triangles(
+                    mesh,
+                    faces_meeting(mesh, &overall),
+                )))
+            }
+            _ => None,
+        };
         let mut crossing = vec![false; triangles.len()];
         for &(t, ref triangle) in &new {
-            for tree in &self.trees {
+            for tree in self.trees.iter().chain(&near) {
                 if crossing[t] {
                     break;
                 }
@@ -163,6 +183,60 @@ impl Surroundings {
         }
         (0..triangles.len()).filter(|&t| crossing[t]).collect()
     }
+}
+
+/// The live faces of `mesh`.
+fn live_faces(mesh: &Mesh) -> impl Iterator<Item = FaceId> + '_ {
+    (0..mesh.n_face_slots() as u32)
+        .map(FaceId)
+        .filter(|&f| mesh.check_face(f).is_ok())
+}
+
+/// The non-degenerate triangles of fans of `faces` of `mesh` from their first corner.
+fn fan_triangles(mesh: &Mesh, faces: impl IntoIterator<Item = FaceId>) -> Vec<Nearby> {
+    let mut triangles = Vec::new();
+    let mut corners = Vec::new();
+    for f in faces {
+        corners.clear();
+        corners.extend(mesh.face_vertices(f).map(|v| v.0));
+        for i in 1..corners.len().saturating_sub(1) {
+            let ids = [corners[0], corners[i], corners[i + 1]];
+            triangles.extend(Nearby::new(ids, ids.map(|v| mesh.position(VertexId(v)))));
+        }
+    }
+    triangles
+}
+
+/// The live faces of `mesh` whose boxes meet `bounds`, in one pass over the raw arrays (no
+/// handle checks, no allocation but the answer).
+fn faces_meeting(mesh: &Mesh, bounds: &BoundingBox) -> Vec<FaceId> {
+    let (nexts, origins, positions) = (
+        mesh.halfedge_nexts(),
+        mesh.halfedge_origins(),
+        mesh.positions(),
+    );
+    let deleted = mesh.face_deletion_marks();
+    let mut faces = Vec::new();
+    for (f, &first) in mesh.face_halfedges().iter().enumerate() {
+        if deleted.get(f).copied().unwrap_or(false) || first == u32::MAX {
+            continue;
+        }
+        let p = positions[origins[first as usize] as usize];
+        let mut face_box = BoundingBox { min: p, max: p };
+        let mut h = nexts[first as usize];
+        // A face has fewer corners than half-edges: the bound only guards a broken loop.
+        for _ in 0..nexts.len() {
+            if h == first {
+                break;
+            }
+            face_box.extend(positions[origins[h as usize] as usize]);
+            h = nexts[h as usize];
+        }
+        if face_box.overlaps(bounds) {
+            faces.push(FaceId(f as u32));
+        }
+    }
+    faces
 }
 
 /// A new triangle and its index, for the search among new triangles.

@@ -21,7 +21,7 @@
 //! open with [`FillError::Folded`].
 //!
 //! Never intersecting: the new triangles are tested exactly against the mesh's faces near them
-//! (fans of their corners, found in a box tree) and against each other. The minimum-weight
+//! (fans of their corners whose boxes meet the fill's) and against each other. The minimum-weight
 //! triangulation is then computed again without the triangles that cross, up to
 //! [`CROSSING_RETRIES`] times; a projected one (whose triangles cannot cross each other) is not
 //! retried. A hole whose every triangulation tried crosses the mesh is left open with
@@ -228,9 +228,10 @@ fn face_normal_across(mesh: &Mesh, s: HalfedgeId) -> [f64; 3] {
 }
 
 /// Fills the hole whose boundary loop holds `h` with triangles on its corners (see the module
-/// docs for which) and returns them. O(n log n) for a mesh of `n` elements (the faces near the
-/// hole are found in a box tree built for the call), plus O(m³) for a loop of `m` ≤
-/// [`EXACT_CORNERS_MAX`] corners.
+/// docs for which) and returns them. O(n) for a mesh of `n` elements (the faces near the hole
+/// are found by a scan of the faces' boxes per intersection test, of which there are at most
+/// [`CROSSING_RETRIES`] + 1), plus O(k log k) for the `k` faces found, plus O(m³) for a loop of
+/// `m` ≤ [`EXACT_CORNERS_MAX`] corners.
 ///
 /// # Errors
 /// Refused, with the mesh unchanged, when `h` is invalid or has a face, when the loop passes
@@ -254,7 +255,7 @@ pub fn fill_hole_with(
     mode: FillMode,
 ) -> Result<FilledHole, FillError> {
     boundary_sides(mesh, h)?;
-    let mut surroundings = Surroundings::new(mesh);
+    let mut surroundings = Surroundings::scanned();
     fill_hole_within(mesh, h, mode, &mut surroundings)
 }
 
@@ -297,7 +298,7 @@ fn fill_hole_within(
                 FillError::SelfIntersecting
             })?;
             check_folds(&points, &rim_normals, &triangles)?;
-            let crossing = surroundings.crossing_triangles(&ids, &points, &triangles, true);
+            let crossing = surroundings.crossing_triangles(mesh, &ids, &points, &triangles, true);
             if crossing.is_empty() {
                 break triangles;
             }
@@ -316,7 +317,7 @@ fn fill_hole_within(
         check_folds(&points, &rim_normals, &triangles)?;
         // Triangles of a simple polygon in projection cannot cross each other.
         if !surroundings
-            .crossing_triangles(&ids, &points, &triangles, false)
+            .crossing_triangles(mesh, &ids, &points, &triangles, false)
             .is_empty()
         {
             return Err(FillError::SelfIntersecting);
@@ -414,7 +415,7 @@ fn add_patch(
         .chain((0..patch.n_added() as u32).map(|k| first + k))
         .collect();
     if !surroundings
-        .crossing_triangles(&ids, &patch.points, &patch.triangles, true)
+        .crossing_triangles(mesh, &ids, &patch.points, &patch.triangles, true)
         .is_empty()
     {
         return Err(FillError::SelfIntersecting);
