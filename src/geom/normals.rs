@@ -240,17 +240,37 @@ fn accumulate_normals(
         "one normal per vertex slot"
     );
     sums.fill([0.0; 3]);
-    for f in mesh.live_faces() {
-        share_face(
-            mesh,
-            f,
-            weighting,
-            &mut visit_face,
-            &mut |v, normal, weight| add_scaled(&mut sums[v as usize], normal, weight),
-        );
+    // One copy of the loop per weighting, each with its weighting a constant: the per-face
+    // choices and the unit corner weights then fold away (the shared loop cost the half-edge
+    // vertex normals 10 % more instructions).
+    match weighting {
+        VertexNormalWeighting::Uniform => {
+            share_live_faces(mesh, VertexNormalWeighting::Uniform, &mut visit_face, sums)
+        }
+        VertexNormalWeighting::Area => {
+            share_live_faces(mesh, VertexNormalWeighting::Area, &mut visit_face, sums)
+        }
+        VertexNormalWeighting::Angle => {
+            share_live_faces(mesh, VertexNormalWeighting::Angle, &mut visit_face, sums)
+        }
     }
     for sum in sums.iter_mut() {
         *sum = normalized(*sum);
+    }
+}
+
+/// [`share_face`] for every live face, adding into `sums`.
+#[inline(always)]
+fn share_live_faces(
+    mesh: &impl PolygonFaces,
+    weighting: VertexNormalWeighting,
+    visit_face: &mut impl FnMut(u32, [f64; 3]),
+    sums: &mut [[f64; 3]],
+) {
+    for f in mesh.live_faces() {
+        share_face(mesh, f, weighting, visit_face, &mut |v, normal, weight| {
+            add_scaled(&mut sums[v as usize], normal, weight)
+        });
     }
 }
 
