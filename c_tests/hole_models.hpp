@@ -21,7 +21,8 @@ namespace hole_models {
 inline indexed::Mesh capless_sphere(uint32_t segments, uint32_t rings) {
   indexed::Mesh m;
   const double pi = std::acos(-1.0);
-  m.positions.insert(m.positions.end(), {0.0, 0.0, -1.0});
+  // Assigned, not inserted: GCC 12 warns falsely on inserting a list into an empty vector.
+  m.positions = {0.0, 0.0, -1.0};
   for (uint32_t r = 1; r <= rings; ++r) {
     const double lat = -pi / 2 + (pi / 2 + pi / 6) * r / rings;
     for (uint32_t s = 0; s < segments; ++s) {
@@ -50,7 +51,8 @@ inline indexed::Mesh capless_sphere(uint32_t segments, uint32_t rings) {
 inline indexed::Mesh wavy_tube(uint32_t segments, uint32_t rows) {
   indexed::Mesh m;
   const double pi = std::acos(-1.0);
-  m.positions.insert(m.positions.end(), {0.0, 0.0, -1.0});
+  // Assigned, not inserted: GCC 12 warns falsely on inserting a list into an empty vector.
+  m.positions = {0.0, 0.0, -1.0};
   for (uint32_t r = 0; r <= rows; ++r)
     for (uint32_t s = 0; s < segments; ++s) {
       const double t = 2 * pi * s / segments;
