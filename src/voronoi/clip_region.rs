@@ -162,7 +162,11 @@ impl ClipPolygon {
     /// power-of-two multiple of it for all edges: see `unit_edges`.)
     #[inline(always)]
     pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
-        self.half_plane(self.pre_scaled_vertices[i], self.unit_edges[i], self.pre_scaled(p))
+        self.half_plane(
+            self.pre_scaled_vertices[i],
+            self.unit_edges[i],
+            self.pre_scaled(p),
+        )
     }
 
     /// The smallest edge function of `p` over all edges: `> 0` strictly inside, `0` on the
