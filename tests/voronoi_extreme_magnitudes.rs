@@ -224,3 +224,34 @@ fn a_site_on_the_edge_of_a_region_one_ulp_tall_far_out_keeps_its_cell() {
     check_clipped(&v, &clip);
     assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
 }
+
+/// The bisector of a site at the region's corner and one 1e-135 from it, nearly collinear with
+/// the others (so the edge between them ends at far Voronoi vertices), cuts a triangle 1e-135
+/// wide off the corner: both crossings rounded to the same point along the edge, which was
+/// dropped as missing the region.
+#[test]
+fn a_bisector_passing_a_corner_by_less_than_an_ulp_keeps_its_cell() {
+    let sites = [
+        [0.0, 0.0],
+        [1.1999999999999996e-135, 7.999999999999997e-136],
+        [3.0, 2.0],
+        [-3.0, -2.0],
+        [42.0, 28.0],
+    ];
+    let clip = ClipPolygon::rectangle([0.0, 0.0], [42.0, 28.0]).unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+    assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
+}
+
+/// A region 2 wide and 2e-252 tall: the bisector `x = 1.5` crosses its bottom and top at
+/// parameters along the edge equal in doubles (they differ by 2e-252 of 0.5), and the cell of
+/// the site at the corner `(2, 0)`, a quarter of the region, came out empty.
+#[test]
+fn an_edge_crossing_a_region_flatter_than_an_ulp_is_kept() {
+    let sites = [[2.0, 0.0], [1.0, 0.0], [2.0, 1.0], [1.0, 1.0], [3.0, 0.0]];
+    let clip = ClipPolygon::rectangle([1e-252, 0.0], [2.0, 2e-252]).unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+    assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
+}

@@ -10,13 +10,15 @@ pub struct ClipPolygon {
     /// `edges[i]` runs from vertex `i` to the next: the edge functions of every Voronoi vertex
     /// read them, so they are computed once here.
     edges: Vec<[f64; 2]>,
-    /// Half of every edge with each axis times its own power of two (`side_units`), which brings
-    /// the longest extent along that axis near 1 (see [`scaled_half_difference`]): edge functions (an edge times an offset)
-    /// neither overflow nor underflow for regions of any size or shape (a box `1e-323` wide and
-    /// `1` tall). Scaling each axis by a positive factor multiplies every edge function by one
-    /// and the same positive number, so their signs and ratios are kept.
+    /// Every edge with each axis scaled as [`AxisScale`] says (about halved and times the power
+    /// of two that brings the longest extent along that axis near 1): edge functions (an edge
+    /// times an offset) neither overflow nor underflow for regions of any size or shape (a box
+    /// `1e-323` wide and `1` tall). Scaling each axis by a positive factor multiplies every edge
+    /// function by one and the same positive number, so their signs and ratios are kept.
     unit_edges: Vec<[f64; 2]>,
-    axis_units: [f64; 2],
+    axis_scales: [AxisScale; 2],
+    /// Every vertex with each axis times its scale's `pre` factor (see [`AxisScale`]).
+    pre_scaled_vertices: Vec<[f64; 2]>,
     area: f64,
 }
 
@@ -107,10 +109,14 @@ impl ClipPolygon {
         }
         let area = shoelace(&v);
         let sides: Vec<[[f64; 2]; 2]> = (0..n).map(|i| [v[i], v[(i + 1) % n]]).collect();
-        let units = side_units(&sides);
+        let axis_scales = side_units(&sides).map(AxisScale::for_unit);
         let unit_edges = sides
             .iter()
-            .map(|&[a, b]| [0, 1].map(|k| scaled_half_difference(b[k], a[k], units[k])))
+            .map(|&[a, b]| [0, 1].map(|k| axis_scales[k].offset(b[k], a[k])))
+            .collect();
+        let pre_scaled_vertices = v
+            .iter()
+            .map(|p| [0, 1].map(|k| p[k] * axis_scales[k].pre))
             .collect();
         let edges = sides
             .iter()
@@ -130,7 +136,8 @@ impl ClipPolygon {
             vertices: v,
             edges,
             unit_edges,
-            axis_units: units,
+            axis_scales,
+            pre_scaled_vertices,
             area,
         })
     }
@@ -155,14 +162,19 @@ impl ClipPolygon {
     /// power-of-two multiple of it for all edges: see `unit_edges`.)
     #[inline(always)]
     pub(crate) fn edge_function(&self, i: usize, p: [f64; 2]) -> f64 {
-        self.half_plane(self.vertices[i], self.unit_edges[i], p)
+        self.half_plane(
+            self.pre_scaled_vertices[i],
+            self.unit_edges[i],
+            self.pre_scaled(p),
+        )
     }
 
     /// The smallest edge function of `p` over all edges: `> 0` strictly inside, `0` on the
     /// boundary.
     #[inline]
     pub(crate) fn lowest_edge_function(&self, p: [f64; 2]) -> f64 {
-        self.vertices
+        let p = self.pre_scaled(p);
+        self.pre_scaled_vertices
             .iter()
             .zip(&self.unit_edges)
             .map(|(&a, &e)| self.half_plane(a, e, p))
@@ -173,7 +185,7 @@ impl ClipPolygon {
     #[inline(always)]
     pub(crate) fn edge_rate(&self, i: usize, d: [f64; 2]) -> f64 {
         let e = self.unit_edges[i];
-        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, d[k], 0.0));
+        let [dx, dy] = [0, 1].map(|k| clamp_offset(self.axis_scales[k].offset(d[k], 0.0)));
         e[0] * dy - e[1] * dx
     }
 
@@ -183,28 +195,27 @@ impl ClipPolygon {
     #[inline]
     pub(crate) fn edge_parameter(&self, i: usize, x: [f64; 2]) -> f64 {
         let (a, e) = (self.vertices[i], self.unit_edges[i]);
-        let k = if (e[0] / self.axis_units[0]).abs() >= (e[1] / self.axis_units[1]).abs() {
+        let units = self.axis_scales.map(|scale| scale.pre * scale.post);
+        let k = if (e[0] / units[0]).abs() >= (e[1] / units[1]).abs() {
             0
         } else {
             1
         };
-        scaled_half_difference(x[k], a[k], self.axis_units[k]) / e[k]
+        self.axis_scales[k].offset(x[k], a[k]) / e[k]
     }
 
-    /// Edge function of `p` for the edge from `a` along the scaled half-edge `e`.
+    /// `p` with each axis times its scale's `pre` factor.
+    #[inline(always)]
+    fn pre_scaled(&self, p: [f64; 2]) -> [f64; 2] {
+        [0, 1].map(|k| p[k] * self.axis_scales[k].pre)
+    }
+
+    /// Edge function of `p` for the edge from `a` along the scaled edge `e` (`a` and `p`
+    /// pre-scaled).
     #[inline(always)]
     fn half_plane(&self, a: [f64; 2], e: [f64; 2], p: [f64; 2]) -> f64 {
-        let [dx, dy] = [0, 1].map(|k| self.scaled_offset(k, p[k], a[k]));
+        let [dx, dy] = [0, 1].map(|k| clamp_offset((p[k] - a[k]) * self.axis_scales[k].post));
         e[0] * dy - e[1] * dx
-    }
-
-    /// Half of `to - from` along axis `k` in the scaled frame of `unit_edges`, kept within
-    /// `±1e300` so that the edge functions of points astronomically far from the region stay
-    /// finite (their sign is all that is read of them).
-    #[inline(always)]
-    fn scaled_offset(&self, k: usize, to: f64, from: f64) -> f64 {
-        scaled_half_difference(to, from, self.axis_units[k])
-            .clamp(-FARTHEST_OFFSET, FARTHEST_OFFSET)
     }
 
     /// The vector from vertex `i` to the next.
@@ -219,9 +230,54 @@ impl ClipPolygon {
     }
 }
 
-/// Bound of [`ClipPolygon::scaled_offset`]: times a scaled edge (below 2), twice over, still
-/// finite.
+/// Bound of scaled offsets: times a scaled edge (below 2), twice over, still finite.
 const FARTHEST_OFFSET: f64 = 1.0e300;
+
+/// A scaled offset kept within `±FARTHEST_OFFSET`, so that the edge functions of points
+/// astronomically far from the region stay finite (their sign is all that is read of them).
+#[inline(always)]
+fn clamp_offset(offset: f64) -> f64 {
+    offset.clamp(-FARTHEST_OFFSET, FARTHEST_OFFSET)
+}
+
+/// How one axis of the region is scaled: an offset `to - from` becomes
+/// `(to·pre - from·pre)·post`, about half of it times the power of two that brings the region's
+/// extent along the axis near 1 (`unit`). Chosen once per region, so that an offset costs one
+/// subtraction and one multiplication (the `pre` products of a point are shared by every edge).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct AxisScale {
+    pre: f64,
+    post: f64,
+}
+
+impl AxisScale {
+    /// Where an overflowing difference times `unit / 2` still lies beyond [`FARTHEST_OFFSET`],
+    /// the difference itself is scaled (`pre = 1`): an overflow is then clamped as the exact
+    /// value would be, and halving first would round a difference of one subnormal to zero (and
+    /// every edge function of a region that narrow to 0). Otherwise (extents above about 1e8)
+    /// the halves are subtracted, which never overflows; the bits halving loses lie far below
+    /// what scaling by so small a `unit` keeps.
+    fn for_unit(unit: f64) -> AxisScale {
+        let half_unit = 0.5 * unit;
+        if half_unit * f64::MAX >= FARTHEST_OFFSET {
+            AxisScale {
+                pre: 1.0,
+                post: half_unit,
+            }
+        } else {
+            AxisScale {
+                pre: 0.5,
+                post: unit,
+            }
+        }
+    }
+
+    /// `to - from` in this axis's scaled frame (unclamped).
+    #[inline(always)]
+    fn offset(self, to: f64, from: f64) -> f64 {
+        (to * self.pre - from * self.pre) * self.post
+    }
+}
 
 /// Per axis, the power of two that brings the longest of the sides `[a, b]` near 1: their
 /// whole extent where it is finite, half of it where it overflows.
@@ -239,19 +295,6 @@ fn side_units(sides: &[[[f64; 2]; 2]]) -> [f64; 2] {
         };
         normalising_scale_of_box([[-largest, 0.0], [largest, 0.0]])
     })
-}
-
-/// `(b - a) / 2` times the power of two `unit`: from the difference itself where it is finite
-/// (halving first would round a difference of one subnormal to zero, and every edge function of
-/// a region that narrow to 0), from the halves where it overflows.
-#[inline(always)]
-pub(crate) fn scaled_half_difference(b: f64, a: f64, unit: f64) -> f64 {
-    let d = b - a;
-    if d.is_finite() {
-        (d * unit) * 0.5
-    } else {
-        (0.5 * b - 0.5 * a) * unit
-    }
 }
 
 /// Per axis, the power of two that brings the largest magnitude of `points` near 1.

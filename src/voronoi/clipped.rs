@@ -2,7 +2,9 @@
 
 use super::cell_sides::Side;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
-use super::crossing_order::{bisector_meets, compare_crossings, crosses_edge};
+use super::crossing_order::{
+    bisector_has_piece_inside, bisector_meets, compare_crossings, crosses_edge,
+};
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
@@ -267,6 +269,33 @@ impl Builder<'_> {
             }
             lowest = lowest.max(t);
         }
+    }
+
+    /// Has the bisector of `sites` a piece of positive length between its crossing into the
+    /// region across side `enter` (at `lo` along the edge) and out across side `exit` (at `hi`),
+    /// though `lo ≥ hi` in floating point? Decided exactly where they lie within
+    /// [`EXACT_ORDER_BAND`] of each other (the bisector passing a corner, or crossing the
+    /// region, within far less than an ulp); elsewhere `lo ≥ hi` stands. The edge's own ends
+    /// are not re-examined: only an edge cut by two sides comes here.
+    fn has_piece_narrower_than_rounding(
+        &self,
+        [enter, exit]: [usize; 2],
+        [lo, hi]: [f64; 2],
+        sites: Option<[u32; 2]>,
+        reversed: bool,
+    ) -> bool {
+        let m = self.clip.vertices().len();
+        let Some(sites) = sites else {
+            return false;
+        };
+        enter < m
+            && exit < m
+            && lo - hi <= EXACT_ORDER_BAND * lo.abs().max(hi.abs())
+            && bisector_has_piece_inside(
+                self.input.corners,
+                sites.map(|s| self.input.sites[s as usize]),
+                reversed,
+            )
     }
 
     /// The two sites of crossing `i` in the input's coordinates, if it is a bisector crossing.
@@ -624,7 +653,9 @@ impl Voronoi {
                 exit = i;
             }
         }
-        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less)
+            && !b.has_piece_narrower_than_rounding([enter, exit], [lo, hi], sites, reversed)
+        {
             return NONE;
         }
         let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];

@@ -9,7 +9,7 @@
 use std::cmp::Ordering;
 
 use super::exact_distance::Metric;
-use crate::geom::exact_orientation::integers;
+use crate::geom::exact_orientation::{integer_list, integers};
 use crate::geom::wide_integer::WideInteger;
 
 /// How the crossings of the bisectors of `first` and of `second` (pairs of sites) lie along the
@@ -52,6 +52,78 @@ pub(crate) fn compare_crossings(
     }
     let difference = n0.mul(&d1).sub(&n1.mul(&d0)).signum() * d0.signum() * d1.signum();
     Some(difference.cmp(&0))
+}
+
+/// Does the bisector of `[p, q]`, run along `rot90(q − p)` (reversed when `reversed`), have a
+/// piece of positive length inside the convex region with counter-clockwise `corners`? That
+/// is: is it strictly inside every side it is parallel to, and does it cross the last of the
+/// sides it goes in across strictly before the first of those it goes out across?
+///
+/// The crossing of side `[a, b]` lies at `a + t·(b − a)` with `t = N / D` (see the module
+/// documentation), at `(d·a·D + N·d·(b − a)) / D` along the bisector's direction `d`; `D` is
+/// positive where the bisector goes in. Compared without rounding, the positions tell a piece
+/// narrower than an ulp (a bisector passing a corner by far less than an ulp, inside it) from
+/// none. O(corners) comparisons.
+pub(crate) fn bisector_has_piece_inside(
+    corners: &[[f64; 2]],
+    [p, q]: [[f64; 2]; 2],
+    reversed: bool,
+) -> bool {
+    // Swapping the sites reverses `d` (and leaves every crossing where it is).
+    let [p, q] = if reversed { [q, p] } else { [p, q] };
+    let values: Vec<f64> = corners.iter().chain([&p, &q]).flatten().copied().collect();
+    let integers = integer_list(&values);
+    let m = corners.len();
+    let point = |k: usize| (&integers[2 * k], &integers[2 * k + 1]);
+    let ((px, py), (qx, qy)) = (point(m), point(m + 1));
+    let (ux, uy) = (qx.sub(px), qy.sub(py));
+    let (dx, dy) = (py.sub(qy), ux.clone());
+    // `first < second` for positions `(numerator, denominator)`, denominators of either sign.
+    let before = |first: &(WideInteger, WideInteger), second: &(WideInteger, WideInteger)| {
+        let difference = second.0.mul(&first.1).sub(&first.0.mul(&second.1));
+        difference.signum() * first.1.signum() * second.1.signum() > 0
+    };
+    let (mut last_in, mut first_out) = (None, None);
+    for i in 0..m {
+        let ((ax, ay), (bx, by)) = (point(i), point((i + 1) % m));
+        let (ex, ey) = (bx.sub(ax), by.sub(ay));
+        // `e·u`, which is `e × d`: how fast the side's edge function grows along `d`.
+        let along_sites = ex.mul(&ux).add(&ey.mul(&uy));
+        if along_sites.signum() == 0 {
+            // Parallel: strictly inside where the sites' midpoint is, `e × (p + q − 2a) > 0`.
+            let (mx, my) = (px.add(qx).sub(ax).sub(ax), py.add(qy).sub(ay).sub(ay));
+            if ex.mul(&my).sub(&ey.mul(&mx)).signum() <= 0 {
+                return false;
+            }
+            continue;
+        }
+        let squared = |x: &WideInteger, y: &WideInteger| {
+            let (dx, dy) = (ax.sub(x), ay.sub(y));
+            dx.mul(&dx).add(&dy.mul(&dy))
+        };
+        let numerator = squared(qx, qy).sub(&squared(px, py));
+        let denominator = along_sites.add(&along_sites);
+        let start = dx.mul(ax).add(&dy.mul(ay));
+        let along_edge = dx.mul(&ex).add(&dy.mul(&ey));
+        let position = (
+            start.mul(&denominator).add(&numerator.mul(&along_edge)),
+            denominator,
+        );
+        if position.1.signum() > 0 {
+            if last_in.as_ref().is_none_or(|last| before(last, &position)) {
+                last_in = Some(position);
+            }
+        } else if first_out
+            .as_ref()
+            .is_none_or(|first| before(&position, first))
+        {
+            first_out = Some(position);
+        }
+    }
+    match (last_in, first_out) {
+        (Some(entry), Some(exit)) => before(&entry, &exit),
+        _ => true,
+    }
 }
 
 /// Does the bisector of `sites` cross the line of the edge from `a` to `b` at a single point
@@ -101,6 +173,47 @@ mod tests {
         // A bisector parallel to the edge has no crossing.
         let above = [[1e15 + 49.0, 1.0], [1e15 + 49.0, 2.0]];
         assert_eq!(compare_crossings([a, b], above, left), None);
+    }
+
+    #[test]
+    fn a_piece_far_narrower_than_an_ulp_inside_a_corner_is_found() {
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        // The bisector of the corner and a point 1e-200 along the diagonal cuts a triangle
+        // 1e-200 wide off the corner; that of two points on the far side of it misses.
+        let tiny = 1e-200;
+        assert!(bisector_has_piece_inside(
+            &square,
+            [[0.0, 0.0], [tiny, tiny]],
+            false
+        ));
+        assert!(bisector_has_piece_inside(
+            &square,
+            [[0.0, 0.0], [tiny, tiny]],
+            true
+        ));
+        assert!(!bisector_has_piece_inside(
+            &square,
+            [[-tiny, -tiny], [-3.0 * tiny, -tiny]],
+            false
+        ));
+        // Through the corner only (x + y = 0): a point, no piece.
+        assert!(!bisector_has_piece_inside(
+            &square,
+            [[tiny, tiny], [-tiny, -tiny]],
+            false
+        ));
+        // Parallel to the bottom side: inside by 2^-60, and on it.
+        let y = 2.0_f64.powi(-60);
+        assert!(bisector_has_piece_inside(
+            &square,
+            [[0.5, 0.0], [0.5, 2.0 * y]],
+            false
+        ));
+        assert!(!bisector_has_piece_inside(
+            &square,
+            [[0.5, -y], [0.5, y]],
+            false
+        ));
     }
 
     #[test]
