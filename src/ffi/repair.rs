@@ -100,6 +100,7 @@ impl From<FillError> for FfiError {
             FillError::Handle(_) => HW_ERR_INVALID_HANDLE,
             FillError::BadOption { .. } => HW_ERR_INVALID_INPUT,
             FillError::Edit(e) => return FfiError::from(*e),
+            FillError::OutOfMemory(refusal) => return FfiError::from(*refusal),
             _ => HW_ERR_REFUSED,
         };
         FfiError::new(status, error.to_string())
