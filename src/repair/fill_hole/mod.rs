@@ -602,3 +602,73 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
     }
     Ok(report)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::BuildPolicy;
+
+    /// A unit icosphere of `level` with the faces whose centroids lie above z = 0.6 removed.
+    fn capless_sphere(level: u32) -> Mesh {
+        let soup = crate::surfaces::icosphere(1.0, level).unwrap();
+        let (mut mesh, _) = Mesh::from_soup(&soup, BuildPolicy::Strict).unwrap();
+        let cap: Vec<FaceId> = (0..mesh.n_face_slots() as u32)
+            .map(FaceId)
+            .filter(|&f| {
+                let z: f64 = mesh.face_vertices(f).map(|v| mesh.position(v)[2]).sum();
+                z / 3.0 > 0.6
+            })
+            .collect();
+        for f in cap {
+            mesh.delete_face(f, true).unwrap();
+        }
+        mesh.garbage_collect();
+        mesh
+    }
+
+    #[test]
+    fn fairing_takes_few_iterations_and_a_shortfall_is_reported() {
+        let mesh = capless_sphere(4);
+        let h = mesh.boundary_loops()[0];
+        let fill = |mode, limits| {
+            let mut filled = mesh.clone();
+            let result =
+                fill_hole_within(&mut filled, h, mode, &mut Surroundings::scanned(), limits);
+            (filled, result)
+        };
+        // One solve with the factor reaches the tolerance: refinement by the residual has
+        // nothing left to do.
+        let one = FairLimits {
+            iterations_max: 1,
+            ..FairLimits::default()
+        };
+        let (faired, result) = fill(FillMode::Fair, one);
+        assert!(!result.unwrap().vertices.is_empty());
+        faired.check().unwrap();
+        // No solve allowed: refused after refinement's first pass, reporting what it had.
+        let refined = fill(FillMode::Refine, FairLimits::default()).1.unwrap();
+        let none = FairLimits {
+            iterations_max: 0,
+            ..FairLimits::default()
+        };
+        let (untouched, refused) = fill(FillMode::Fair, none);
+        let error = refused.unwrap_err();
+        assert_eq!(
+            error,
+            FillError::NotFaired {
+                reason: "did not converge",
+                iterations: 0,
+                relative_residual: 1.0,
+                vertices: refined.vertices.len(),
+            }
+        );
+        assert_eq!(untouched.n_vertices(), mesh.n_vertices());
+        assert_eq!(untouched.n_faces(), mesh.n_faces());
+        let message = error.to_string();
+        assert!(
+            message.contains("after 0 iterations")
+                && message.contains(&format!("added {} vertices", refined.vertices.len())),
+            "{message}"
+        );
+    }
+}
