@@ -8,7 +8,8 @@
 // the edges of a 3D Delaunay triangulation of the hole's corners, falling back to the full O(n³)
 // programme when that finds none. Each run gets a fresh mesh (not timed); rounds alternate
 // between the two, best of N; single thread on both sides (RAYON_NUM_THREADS=1 is set by the run
-// script; CGAL's is sequential).
+// script; CGAL's is sequential). Then the same holes refined and faired on both sides (see
+// compare_faired).
 //
 //   bench/run-hole-fill-compare.sh [--quick] [--repeats N] [EDGES...]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <tuple>
 #include <iterator>
 #include <limits>
 #include <vector>
@@ -79,6 +81,46 @@ void compare(const indexed::Mesh& m, int repeats) {
               m.face_sizes.size(), our_faces, their_faces, ours, theirs, ours / theirs);
 }
 
+// Refined and faired: halfwing's fill_holes in FillMode::Fair (the one hole) against CGAL's
+// triangulate_refine_and_fair_hole (defaults: Eigen's sparse solver); vertices added each side.
+void compare_faired(const indexed::Mesh& m, int repeats) {
+  double ours = std::numeric_limits<double>::infinity(), theirs = ours;
+  std::size_t our_vertices = 0, their_vertices = 0;
+  for (int round = 0; round < repeats; ++round) {
+    {
+      hw::mesh mesh = hw::mesh::from_indexed(m.positions, m.face_sizes, m.indices);
+      const std::size_t before = mesh.n_vertices();
+      const auto start = bench::Clock::now();
+      const auto result = mesh.fill_holes(std::numeric_limits<size_t>::max(), hw::FillMode::Fair);
+      if (result.filled != 1) {
+        std::printf("%-24s halfwing refused the faired fill\n", (m.name + " fair").c_str());
+        return;
+      }
+      ours = std::min(ours, bench::elapsed_ms(start, bench::Clock::now()));
+      our_vertices = mesh.n_vertices() - before;
+    }
+    {
+      SurfaceMesh mesh = cgal_mesh(m);
+      SurfaceMesh::Halfedge_index border;
+      for (auto h : mesh.halfedges())
+        if (mesh.is_border(h)) {
+          border = h;
+          break;
+        }
+      std::vector<SurfaceMesh::Face_index> faces;
+      std::vector<SurfaceMesh::Vertex_index> vertices;
+      const auto start = bench::Clock::now();
+      const bool faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
+          mesh, border, std::back_inserter(faces), std::back_inserter(vertices)));
+      theirs = std::min(theirs, bench::elapsed_ms(start, bench::Clock::now()));
+      their_vertices = faired ? vertices.size() : 0;
+    }
+  }
+  std::printf("%-24s %8zu %8zu %8zu %12.1f %12.1f %8.2fx  (vertices added)\n",
+              (m.name + " fair").c_str(), m.face_sizes.size(), our_vertices, their_vertices,
+              ours, theirs, ours / theirs);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -106,6 +148,8 @@ int main(int argc, char** argv) {
   for (const uint32_t edges : sizes) {
     compare(hole_models::capless_sphere(edges, 20), opts.repeats);
     compare(hole_models::wavy_tube(edges, 10), opts.repeats);
+    compare_faired(hole_models::capless_sphere(edges, 20), opts.repeats);
+    compare_faired(hole_models::wavy_tube(edges, 10), opts.repeats);
   }
   return 0;
 }

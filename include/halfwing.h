@@ -4221,8 +4221,9 @@ typedef uint32_t hw_fill_mode;
 
 /**
  * Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
- * Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface;
- * a hole whose solve does not converge within 2000 conjugate-gradient iterations is refused.
+ * Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface
+ * (a sparse Cholesky solve, refined by up to 8 iterations); a hole whose solve does not
+ * converge is refused.
  * \ingroup repair
  */
 #define HW_FILL_MODE_FAIR 2

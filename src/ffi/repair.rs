@@ -100,6 +100,7 @@ impl From<FillError> for FfiError {
             FillError::Handle(_) => HW_ERR_INVALID_HANDLE,
             FillError::BadOption { .. } => HW_ERR_INVALID_INPUT,
             FillError::Edit(e) => return FfiError::from(*e),
+            FillError::OutOfMemory(refusal) => return FfiError::from(*refusal),
             _ => HW_ERR_REFUSED,
         };
         FfiError::new(status, error.to_string())
@@ -550,8 +551,9 @@ pub const HW_FILL_MODE_TRIANGULATE: hw_fill_mode = 0;
 /// \ingroup repair
 pub const HW_FILL_MODE_REFINE: hw_fill_mode = 1;
 /// Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
-/// Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface;
-/// a hole whose solve does not converge within 2000 conjugate-gradient iterations is refused.
+/// Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface
+/// (a sparse Cholesky solve, refined by up to 8 iterations); a hole whose solve does not
+/// converge is refused.
 /// \ingroup repair
 pub const HW_FILL_MODE_FAIR: hw_fill_mode = 2;
 

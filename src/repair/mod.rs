@@ -43,7 +43,7 @@ pub use fates::{FaceFate, Removal, VertexFate};
 pub use fill_hole::{
     CROSSING_RETRIES, DEGENERATE_RATIO, DENSITY, EXACT_CORNERS_MAX, FAIR_ITERATIONS_MAX,
     FAIR_TOLERANCE, FOLD_ANGLE_DEGREES, FillError, FillMode, FilledHole, HoleFillOptions,
-    HoleFillReport, REFINE_ROUNDS_MAX, fill_hole, fill_hole_with, fill_holes,
+    HoleFillReport, REFINE_PASSES_MAX, REFINE_ROUNDS_MAX, fill_hole, fill_hole_with, fill_holes,
 };
 pub use merge_vertices::merge_vertices;
 pub use orient_faces::orient_faces;

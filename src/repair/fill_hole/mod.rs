@@ -31,10 +31,12 @@
 //! its edges match the lengths of the hole's boundary edges (Liepa's centroid splits and
 //! Delaunay-like flips, see [`REFINE_ROUNDS_MAX`] and [`DENSITY`]), adding vertices inside the
 //! hole, and the added vertices then faired: moved to minimise a thin-plate energy (the
-//! squared uniform Laplacian), the rim and the mesh around it fixed, by conjugate gradients
-//! within [`FAIR_ITERATIONS_MAX`] iterations to [`FAIR_TOLERANCE`]. The refined (and faired)
-//! patch passes the same fold and intersection tests before the mesh is touched; a solve that
-//! does not converge refuses the hole ([`FillError::NotFaired`]).
+//! squared uniform Laplacian), the rim and the mesh around it fixed, by a sparse Cholesky
+//! factorisation refined to [`FAIR_TOLERANCE`] within [`FAIR_ITERATIONS_MAX`] iterations; the
+//! faired patch is refined again where fairing stretched it, and faired again, up to
+//! [`REFINE_PASSES_MAX`] times. The refined (and faired) patch passes the same fold and intersection tests before the mesh is
+//! touched; a solve that does not converge refuses the hole ([`FillError::NotFaired`], which
+//! says how far it got).
 //!
 //! New faces, edges and corners get zero user attributes (as [`Mesh::add_face`] and
 //! [`Mesh::split_face`] give them); the mesh keeps no per-corner normals or texture coordinates
@@ -60,11 +62,12 @@ use thiserror::Error;
 
 pub use fair::{FAIR_ITERATIONS_MAX, FAIR_TOLERANCE};
 pub use folds::{DEGENERATE_RATIO, FOLD_ANGLE_DEGREES};
-pub use refine::{DENSITY, REFINE_ROUNDS_MAX};
+pub use refine::{DENSITY, REFINE_PASSES_MAX, REFINE_ROUNDS_MAX};
 
+use crate::OutOfMemory;
 use crate::mesh::{EditError, FaceId, HalfedgeId, HandleError, JoinedCorners, Mesh, VertexId};
 use crossings::Surroundings;
-use fair::{FairFailure, Surround, fair};
+use fair::{FairFailure, FairLimits, FairProgress, Surround, fair};
 use folds::{Fold, first_fold};
 use geometry::{norm, sub, unit};
 use peel::peeling_order;
@@ -197,10 +200,27 @@ pub enum FillError {
     /// another new triangle.
     #[error("hole filling refused: every triangulation tried intersects the mesh or itself")]
     SelfIntersecting,
-    /// Fairing did not converge within [`FAIR_ITERATIONS_MAX`] iterations, or a position came
-    /// out NaN or infinite.
-    #[error("hole filling refused: fairing {0}")]
-    NotFaired(&'static str),
+    /// Fairing did not reach [`FAIR_TOLERANCE`] within [`FAIR_ITERATIONS_MAX`] iterations, a
+    /// position came out NaN or infinite, or the factorisation met a pivot that is not positive.
+    #[error(
+        "hole filling refused: fairing {reason} after {iterations} iterations (residual \
+         {relative_residual:.3e} of the first); the fill would have added {vertices} vertices"
+    )]
+    NotFaired {
+        /// What went wrong: "did not converge", "gave a position that is not finite", or
+        /// "met a system that is not positive definite".
+        reason: &'static str,
+        /// Solves with the factor done (see [`FAIR_ITERATIONS_MAX`]).
+        iterations: usize,
+        /// The residual of the fairing equations left, over the one the solve started from
+        /// (1 when no solve was made; NaN when it is not finite).
+        relative_residual: f64,
+        /// Vertices the refined fill would have added inside the hole.
+        vertices: usize,
+    },
+    /// Refining or fairing the fill needs more memory than the system gives.
+    #[error("hole filling refused: {0}")]
+    OutOfMemory(#[from] OutOfMemory),
     /// The mesh refused the new faces (a vertex whose fans cannot take them, ids exhausted).
     #[error(transparent)]
     Edit(#[from] EditError),
@@ -244,7 +264,8 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
 
 /// [`fill_hole`], then refined or refined and faired as `mode` says (see the module docs).
 /// Refinement costs O(m log m) more for a fill of m triangles (about the hole's area over its
-/// boundary edges' length squared); fairing O(m) per conjugate-gradient iteration.
+/// boundary edges' length squared); fairing O(m^1.5) time and O(m log m) memory per round of
+/// refinement (a sparse Cholesky factorisation in nested-dissection order).
 ///
 /// # Errors
 /// As [`fill_hole`]; and [`FillError::NotFaired`] when fairing does not converge. The mesh is
@@ -256,16 +277,17 @@ pub fn fill_hole_with(
 ) -> Result<FilledHole, FillError> {
     boundary_sides(mesh, h)?;
     let mut surroundings = Surroundings::scanned();
-    fill_hole_within(mesh, h, mode, &mut surroundings)
+    fill_hole_within(mesh, h, mode, &mut surroundings, FairLimits::default())
 }
 
 /// [`fill_hole_with`] against `surroundings` (the mesh's faces), to which the new faces are
-/// added.
+/// added, fairing within `limits`.
 fn fill_hole_within(
     mesh: &mut Mesh,
     h: HalfedgeId,
     mode: FillMode,
     surroundings: &mut Surroundings,
+    limits: FairLimits,
 ) -> Result<FilledHole, FillError> {
     let sides = boundary_sides(mesh, h)?;
     let n = sides.len();
@@ -330,16 +352,13 @@ fn fill_hole_within(
         let mut faired = Ok(());
         let refined = patch.refine(&joined, |patch| match &surround {
             Some(surround) => {
-                faired = fair(patch, surround);
+                faired = fair(patch, surround, limits).map(|_| ());
                 faired.is_ok()
             }
             None => true,
         });
-        if !refined {
-            return Err(FillError::NotFaired(match faired {
-                Err(FairFailure::NotFinite) => "gave a position that is not finite",
-                _ => "did not converge",
-            }));
+        if let (false, Err(failure)) = (refined, faired) {
+            return Err(not_faired(failure, patch.n_added()));
         }
         return add_patch(mesh, h, &patch, &ids, &rim_normals, surroundings);
     }
@@ -366,6 +385,28 @@ fn fill_hole_within(
         faces,
         vertices: Vec::new(),
     })
+}
+
+/// The refusal for a fairing that failed on a patch of `vertices` added vertices.
+fn not_faired(failure: FairFailure, vertices: usize) -> FillError {
+    let (reason, progress) = match failure {
+        FairFailure::OutOfMemory(refusal) => return FillError::OutOfMemory(refusal),
+        FairFailure::NotConverged(progress) => ("did not converge", progress),
+        FairFailure::NotFinite(progress) => ("gave a position that is not finite", progress),
+        FairFailure::NotPositiveDefinite => (
+            "met a system that is not positive definite",
+            FairProgress {
+                iterations: 0,
+                relative_residual: 1.0,
+            },
+        ),
+    };
+    FillError::NotFaired {
+        reason,
+        iterations: progress.iterations,
+        relative_residual: progress.relative_residual,
+        vertices,
+    }
 }
 
 /// The mesh around the rim `corners` for fairing (see [`Surround`]).
@@ -526,7 +567,13 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
         let split = split_at_pinches(mesh, h, &mut surroundings, &mut several_fans);
         let (n_filled, n_refused) = (report.filled.len(), report.refused.len());
         for &part in &split.loops {
-            match fill_hole_within(mesh, part, options.mode, &mut surroundings) {
+            match fill_hole_within(
+                mesh,
+                part,
+                options.mode,
+                &mut surroundings,
+                FairLimits::default(),
+            ) {
                 Ok(hole) => report.filled.push(hole),
                 Err(e) => report.refused.push((part, e)),
             }
@@ -554,4 +601,74 @@ pub fn fill_holes(mesh: &mut Mesh, options: &HoleFillOptions) -> Result<HoleFill
         }
     }
     Ok(report)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::BuildPolicy;
+
+    /// A unit icosphere of `level` with the faces whose centroids lie above z = 0.6 removed.
+    fn capless_sphere(level: u32) -> Mesh {
+        let soup = crate::surfaces::icosphere(1.0, level).unwrap();
+        let (mut mesh, _) = Mesh::from_soup(&soup, BuildPolicy::Strict).unwrap();
+        let cap: Vec<FaceId> = (0..mesh.n_face_slots() as u32)
+            .map(FaceId)
+            .filter(|&f| {
+                let z: f64 = mesh.face_vertices(f).map(|v| mesh.position(v)[2]).sum();
+                z / 3.0 > 0.6
+            })
+            .collect();
+        for f in cap {
+            mesh.delete_face(f, true).unwrap();
+        }
+        mesh.garbage_collect();
+        mesh
+    }
+
+    #[test]
+    fn fairing_takes_few_iterations_and_a_shortfall_is_reported() {
+        let mesh = capless_sphere(4);
+        let h = mesh.boundary_loops()[0];
+        let fill = |mode, limits| {
+            let mut filled = mesh.clone();
+            let result =
+                fill_hole_within(&mut filled, h, mode, &mut Surroundings::scanned(), limits);
+            (filled, result)
+        };
+        // One solve with the factor reaches the tolerance: refinement by the residual has
+        // nothing left to do.
+        let one = FairLimits {
+            iterations_max: 1,
+            ..FairLimits::default()
+        };
+        let (faired, result) = fill(FillMode::Fair, one);
+        assert!(!result.unwrap().vertices.is_empty());
+        faired.check().unwrap();
+        // No solve allowed: refused after refinement's first pass, reporting what it had.
+        let refined = fill(FillMode::Refine, FairLimits::default()).1.unwrap();
+        let none = FairLimits {
+            iterations_max: 0,
+            ..FairLimits::default()
+        };
+        let (untouched, refused) = fill(FillMode::Fair, none);
+        let error = refused.unwrap_err();
+        assert_eq!(
+            error,
+            FillError::NotFaired {
+                reason: "did not converge",
+                iterations: 0,
+                relative_residual: 1.0,
+                vertices: refined.vertices.len(),
+            }
+        );
+        assert_eq!(untouched.n_vertices(), mesh.n_vertices());
+        assert_eq!(untouched.n_faces(), mesh.n_faces());
+        let message = error.to_string();
+        assert!(
+            message.contains("after 0 iterations")
+                && message.contains(&format!("added {} vertices", refined.vertices.len())),
+            "{message}"
+        );
+    }
 }

@@ -29,6 +29,11 @@ pub const REFINE_ROUNDS_MAX: usize = 48;
 /// at most about the hole's area over (this × the mean boundary edge)² triangles.
 pub const SCALE_FLOOR: f64 = 0.25;
 
+/// Passes of refinement and fairing at most: fairing a fill bends it out of the plane it was
+/// refined in, stretching its triangles, which the next pass splits; a few passes leave the
+/// triangles within a small factor of the density.
+pub const REFINE_PASSES_MAX: usize = 3;
+
 /// Flips tried per edge in one round at most; keeps a round linear even where flips on a
 /// non-planar patch would cycle.
 const FLIPS_PER_EDGE: usize = 4;
@@ -80,21 +85,28 @@ impl Patch {
         self.points.len() - self.n_rim
     }
 
-    /// Splits and flips until no triangle is split (at most [`REFINE_ROUNDS_MAX`] rounds),
-    /// calling `after_round` on the patch after each round that split (fairing moves the new
-    /// vertices there, so the next round measures the faired patch). O(m log m) for a result
-    /// of m triangles.
+    /// Splits and flips until no triangle is split (at most [`REFINE_ROUNDS_MAX`] rounds in
+    /// all), then calls `after_refining` on the patch (fairing moves the new vertices there);
+    /// when that stretched triangles enough to split again, refines and calls it again, at most
+    /// [`REFINE_PASSES_MAX`] times. Whether every call succeeded. O(m log m) for a result of m
+    /// triangles, besides the calls.
     pub(super) fn refine(
         &mut self,
         joined: &JoinedCorners,
-        mut after_round: impl FnMut(&mut Patch) -> bool,
+        mut after_refining: impl FnMut(&mut Patch) -> bool,
     ) -> bool {
-        for _ in 0..REFINE_ROUNDS_MAX {
-            if !self.split_large_triangles() {
+        let mut rounds = 0;
+        for _ in 0..REFINE_PASSES_MAX {
+            let mut split = false;
+            while rounds < REFINE_ROUNDS_MAX && self.split_large_triangles() {
+                self.relax(joined);
+                rounds += 1;
+                split = true;
+            }
+            if !split {
                 break;
             }
-            self.relax(joined);
-            if !after_round(self) {
+            if !after_refining(self) {
                 return false;
             }
         }

@@ -1,0 +1,143 @@
+//! Faired hole fills on long rims: a sphere's cap of 100, 200 and 1,000 edges, planar and
+//! wavy, faired back towards the sphere.
+
+use std::f64::consts::{PI, TAU};
+
+use halfwing::mesh::{BuildPolicy, FaceId, HalfedgeId, Mesh, VertexId};
+use halfwing::repair::{FOLD_ANGLE_DEGREES, FillMode, fill_hole_with};
+use halfwing::soup::FaceList;
+
+/// A band of a unit sphere: `segments` meridians, rows of about square faces from the rim down
+/// to 20° below it; the rim's latitude (radians) at longitude `lon` is `rim(lon)`. The top loop
+/// (vertices `0..segments`) is the hole.
+fn sphere_band(segments: u32, rim: impl Fn(f64) -> f64) -> Mesh {
+    let step = TAU / f64::from(segments);
+    let rings = (20f64.to_radians() / step).ceil().max(2.0) as u32;
+    let mut positions = Vec::new();
+    for r in 0..=rings {
+        for s in 0..segments {
+            let lon = step * f64::from(s);
+            let lat = rim(lon) - step * f64::from(r);
+            positions.push([lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()]);
+        }
+    }
+    let at = |r: u32, s: u32| r * segments + s % segments;
+    let mut indices = Vec::new();
+    for r in 0..rings {
+        for s in 0..segments {
+            let (a, b, c, d) = (at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
+            indices.extend([a, c, b, a, d, c]);
+        }
+    }
+    Mesh::from_face_list(
+        &FaceList::triangles(&positions, &indices),
+        BuildPolicy::Strict,
+    )
+    .unwrap()
+    .0
+}
+
+/// The hole of a sphere band: the boundary half-edge of the top loop.
+fn top_hole(mesh: &Mesh) -> HalfedgeId {
+    [(0, 1), (1, 0)]
+        .into_iter()
+        .filter_map(|(a, b)| mesh.find_halfedge(VertexId(a), VertexId(b)))
+        .find(|&h| mesh.is_boundary_halfedge(h))
+        .unwrap()
+}
+
+fn distance_from_sphere(p: [f64; 3]) -> f64 {
+    ((p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() - 1.0).abs()
+}
+
+fn unit_normal(mesh: &Mesh, f: FaceId) -> [f64; 3] {
+    let v = halfwing::geom::newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)));
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    assert!(len > 0.0, "face {f:?} has no area");
+    v.map(|x| x / len)
+}
+
+/// The largest angle (degrees) between a new face's normal and a neighbour's.
+fn largest_turn(mesh: &Mesh, faces: &[FaceId]) -> f64 {
+    let mut largest: f64 = 0.0;
+    for &f in faces {
+        let n = unit_normal(mesh, f);
+        for g in mesh.face_faces(f) {
+            let m = unit_normal(mesh, g);
+            let cos = (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]).clamp(-1.0, 1.0);
+            largest = largest.max(cos.acos().to_degrees());
+        }
+    }
+    largest
+}
+
+/// Fills the band's hole refined (flat) and faired, checks both close it into a valid mesh
+/// without folds, and returns the largest distance of their new vertices from the sphere.
+fn flat_and_faired(segments: u32, rim: impl Fn(f64) -> f64 + Copy) -> (f64, f64) {
+    let mut distances = [0.0; 2];
+    for (k, mode) in [FillMode::Refine, FillMode::Fair].into_iter().enumerate() {
+        let mut mesh = sphere_band(segments, rim);
+        let h = top_hole(&mesh);
+        let filled = fill_hole_with(&mut mesh, h, mode).unwrap_or_else(|e| panic!("{mode:?}: {e}"));
+        assert_eq!(filled.edges, segments as usize);
+        assert_eq!(
+            filled.faces.len(),
+            filled.edges - 2 + 2 * filled.vertices.len()
+        );
+        mesh.check().unwrap();
+        // Closed: only the band's bottom loop is left.
+        assert_eq!(mesh.boundary_loops().len(), 1);
+        // Not folded; faired, the fill bends about as the sphere does, nowhere sharply (the
+        // flat fill meets the sphere at its rim at 60°).
+        let turn = largest_turn(&mesh, &filled.faces);
+        let bound = if mode == FillMode::Fair {
+            30.0
+        } else {
+            FOLD_ANGLE_DEGREES
+        };
+        assert!(turn < bound, "{mode:?}: a new face turns {turn}°");
+        distances[k] = filled
+            .vertices
+            .iter()
+            .map(|&v| distance_from_sphere(mesh.position(v)))
+            .fold(0.0, f64::max);
+    }
+    (distances[0], distances[1])
+}
+
+#[test]
+fn faired_caps_of_100_and_200_edges_follow_the_sphere() {
+    // A planar rim, and a wavy one.
+    for segments in [100, 200] {
+        for amplitude in [0.0, 0.1] {
+            let (flat, faired) =
+                flat_and_faired(segments, |lon| PI / 6.0 + amplitude * (3.0 * lon).sin());
+            // The flat fill's middle lies half the radius inside the sphere; the faired one
+            // within a few hundredths of it.
+            assert!(flat > 0.45, "{flat}");
+            assert!(
+                faired < 0.1 * flat,
+                "{segments} edges: {faired} against {flat} flat"
+            );
+        }
+    }
+}
+
+#[test]
+fn faired_cap_of_1000_edges_follows_the_sphere() {
+    // A wavy rim; about 120,000 vertices added.
+    let mut mesh = sphere_band(1000, |lon| PI / 6.0 + 0.1 * (3.0 * lon).sin());
+    let h = top_hole(&mesh);
+    let filled = fill_hole_with(&mut mesh, h, FillMode::Fair).unwrap();
+    assert!(filled.vertices.len() > 50_000, "{}", filled.vertices.len());
+    mesh.check().unwrap();
+    assert_eq!(mesh.boundary_loops().len(), 1);
+    let turn = largest_turn(&mesh, &filled.faces);
+    assert!(turn < 30.0, "a new face turns {turn}°");
+    let faired = filled
+        .vertices
+        .iter()
+        .map(|&v| distance_from_sphere(mesh.position(v)))
+        .fold(0.0, f64::max);
+    assert!(faired < 0.05, "{faired}");
+}
