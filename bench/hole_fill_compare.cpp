@@ -46,6 +46,13 @@ SurfaceMesh cgal_mesh(const indexed::Mesh& m) {
   return mesh;
 }
 
+// The models have one hole: its first border half-edge.
+SurfaceMesh::Halfedge_index first_border(const SurfaceMesh& mesh) {
+  for (auto h : mesh.halfedges())
+    if (mesh.is_border(h)) return h;
+  return SurfaceMesh::Halfedge_index();
+}
+
 void compare(const indexed::Mesh& m, int repeats) {
   double ours = std::numeric_limits<double>::infinity(), theirs = ours;
   std::size_t our_faces = 0, their_faces = 0;
@@ -64,12 +71,7 @@ void compare(const indexed::Mesh& m, int repeats) {
     }
     {
       SurfaceMesh mesh = cgal_mesh(m);
-      SurfaceMesh::Halfedge_index border;
-      for (auto h : mesh.halfedges())
-        if (mesh.is_border(h)) {
-          border = h;
-          break;
-        }
+      const SurfaceMesh::Halfedge_index border = first_border(mesh);
       std::vector<SurfaceMesh::Face_index> faces;
       const auto start = bench::Clock::now();
       PMP::triangulate_hole(mesh, border, std::back_inserter(faces));
@@ -101,12 +103,7 @@ void compare_faired(const indexed::Mesh& m, int repeats) {
     }
     {
       SurfaceMesh mesh = cgal_mesh(m);
-      SurfaceMesh::Halfedge_index border;
-      for (auto h : mesh.halfedges())
-        if (mesh.is_border(h)) {
-          border = h;
-          break;
-        }
+      const SurfaceMesh::Halfedge_index border = first_border(mesh);
       std::vector<SurfaceMesh::Face_index> faces;
       std::vector<SurfaceMesh::Vertex_index> vertices;
       const auto start = bench::Clock::now();

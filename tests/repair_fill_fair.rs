@@ -3,7 +3,10 @@
 
 use std::f64::consts::{PI, TAU};
 
-use halfwing::mesh::{BuildPolicy, FaceId, HalfedgeId, Mesh, VertexId};
+mod mesh_support;
+use mesh_support::largest_turn;
+
+use halfwing::mesh::{BuildPolicy, HalfedgeId, Mesh, VertexId};
 use halfwing::repair::{FOLD_ANGLE_DEGREES, FillMode, fill_hole_with};
 use halfwing::soup::FaceList;
 
@@ -48,27 +51,6 @@ fn top_hole(mesh: &Mesh) -> HalfedgeId {
 
 fn distance_from_sphere(p: [f64; 3]) -> f64 {
     ((p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() - 1.0).abs()
-}
-
-fn unit_normal(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    let v = halfwing::geom::newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)));
-    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    assert!(len > 0.0, "face {f:?} has no area");
-    v.map(|x| x / len)
-}
-
-/// The largest angle (degrees) between a new face's normal and a neighbour's.
-fn largest_turn(mesh: &Mesh, faces: &[FaceId]) -> f64 {
-    let mut largest: f64 = 0.0;
-    for &f in faces {
-        let n = unit_normal(mesh, f);
-        for g in mesh.face_faces(f) {
-            let m = unit_normal(mesh, g);
-            let cos = (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]).clamp(-1.0, 1.0);
-            largest = largest.max(cos.acos().to_degrees());
-        }
-    }
-    largest
 }
 
 /// Fills the band's hole refined (flat) and faired, checks both close it into a valid mesh

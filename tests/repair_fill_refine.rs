@@ -4,6 +4,9 @@
 
 use std::time::{Duration, Instant};
 
+mod mesh_support;
+use mesh_support::largest_turn;
+
 use halfwing::geom::self_intersections;
 use halfwing::mesh::{BuildPolicy, ElementKind, FaceId, HalfedgeId, Mesh, VertexId};
 use halfwing::repair::{
@@ -45,30 +48,6 @@ fn length(a: [f64; 3], b: [f64; 3]) -> f64 {
 fn mean(values: impl Iterator<Item = f64>) -> f64 {
     let (sum, count) = values.fold((0.0, 0), |(s, c), x| (s + x, c + 1));
     sum / count as f64
-}
-
-fn unit_normal(mesh: &Mesh, f: FaceId) -> [f64; 3] {
-    let v = halfwing::geom::newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)));
-    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    assert!(len > 0.0, "face {f:?} has no area");
-    v.map(|x| x / len)
-}
-
-/// The largest angle (degrees) between a new face's normal and any face beside it.
-fn largest_turn(mesh: &Mesh, faces: &[FaceId]) -> f64 {
-    let mut largest: f64 = 0.0;
-    for &f in faces {
-        let n = unit_normal(mesh, f);
-        for h in mesh.face_loop(f) {
-            let g = mesh.face(mesh.twin(h));
-            if g.is_valid() {
-                let m = unit_normal(mesh, g);
-                let cos = (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]).clamp(-1.0, 1.0);
-                largest = largest.max(cos.acos().to_degrees());
-            }
-        }
-    }
-    largest
 }
 
 fn no_self_intersection(mesh: &Mesh) {

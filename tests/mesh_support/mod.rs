@@ -139,3 +139,25 @@ pub fn grid(columns: u32, rows: u32, closed: bool, triangles: bool) -> PolygonSo
     }
     soup
 }
+
+/// Unit normal of face `f` (Newell's), asserting the face has an area.
+pub fn unit_normal(mesh: &halfwing::mesh::Mesh, f: halfwing::mesh::FaceId) -> [f64; 3] {
+    let v = halfwing::geom::newell_vector(mesh.face_vertices(f).map(|v| mesh.position(v)));
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    assert!(len > 0.0, "face {f:?} has no area");
+    v.map(|x| x / len)
+}
+
+/// The largest angle (degrees) between one of `faces`' normals and that of a face beside it.
+pub fn largest_turn(mesh: &halfwing::mesh::Mesh, faces: &[halfwing::mesh::FaceId]) -> f64 {
+    let mut largest: f64 = 0.0;
+    for &f in faces {
+        let n = unit_normal(mesh, f);
+        for g in mesh.face_faces(f) {
+            let m = unit_normal(mesh, g);
+            let cos = (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]).clamp(-1.0, 1.0);
+            largest = largest.max(cos.acos().to_degrees());
+        }
+    }
+    largest
+}
