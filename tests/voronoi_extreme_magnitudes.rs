@@ -255,3 +255,32 @@ fn an_edge_crossing_a_region_flatter_than_an_ulp_is_kept() {
     check_clipped(&v, &clip);
     assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
 }
+
+#[test]
+fn circumcentres_beyond_the_range_of_doubles_are_infinite_with_their_sign() {
+    // Sites on the line y = -3x but for the rounding of the tiny one (from a stress case): the
+    // triangles are 1e-143 in area, their exact circumcentres near (-5e386, -2e386) and beyond.
+    let tiny = [
+        f64::from_bits(899_270_040_106_987_691),
+        f64::from_bits(10_129_759_947_744_597_121),
+    ];
+    let far = [
+        f64::from_bits(6_417_922_035_339_371_486),
+        f64::from_bits(15_648_195_754_803_410_381),
+    ];
+    let one_triangle = vec![tiny, far, [20.0, -60.0]];
+    // Two adjacent triangles whose centres both round to (-inf, -inf): one vertex, as for any
+    // centres rounding to one point.
+    let two_triangles = vec![tiny, far, [20.0, -60.0], [2.0 * far[0], 2.0 * far[1]]];
+    for sites in [one_triangle, two_triangles] {
+        let v = Voronoi::new(&sites).unwrap();
+        assert_eq!(v.vertices(), [[f64::NEG_INFINITY; 2]]);
+        check_voronoi(&v);
+        check_clipped(&v, &bounding_clip(&sites, 0.1));
+        check_clipped(
+            &v,
+            &ClipPolygon::rectangle([-100.0, -100.0], [100.0, 100.0]).unwrap(),
+        );
+        assert_each_site_nearest_to_itself(&v);
+    }
+}

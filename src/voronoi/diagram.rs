@@ -57,6 +57,13 @@ pub enum EdgeGeometry {
 ///   circumcircle, decided exactly with the in-circle predicate, are merged). Adjacent triangles
 ///   whose circumcentres round to the same floating-point point are merged too, so no edge has
 ///   zero length in the output.
+/// * A vertex's coordinates are its circumcentre's, each rounded to the nearest double. Sites
+///   collinear but for far less than an ulp can have a circumcentre beyond the range of `f64`
+///   (past `1.8e308`): a coordinate that overflows is infinite, with the sign of the exact
+///   coordinate, never NaN. Such a vertex is still a vertex of the diagram (test it with
+///   `is_finite`); its edges lie on the bisectors of their two sites ([`Voronoi::site`],
+///   [`Voronoi::opposite_site`]), and clipping, nearest-site queries and Lloyd relaxation
+///   place cells from the sites and triangles, not from these positions.
 /// * Cells are indexed by site; duplicates (see [`Delaunay::representative`]) have no cell of
 ///   their own.
 ///
@@ -254,7 +261,8 @@ impl Voronoi {
         self.vertices.len()
     }
 
-    /// Positions of all Voronoi vertices.
+    /// Positions of all Voronoi vertices: infinite in a coordinate whose circumcentre lies
+    /// beyond the range of `f64` (see [`Voronoi`]).
     pub fn vertices(&self) -> &[[f64; 2]] {
         &self.vertices
     }

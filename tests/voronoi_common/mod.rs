@@ -82,6 +82,10 @@ pub fn check_voronoi(v: &Voronoi) {
         let p = v.vertices()[k.index()];
         let around = v.vertex_sites(k);
         assert!(around.len() >= 3);
+        if !(p[0].is_finite() && p[1].is_finite()) {
+            assert_centre_beyond_doubles(k, p, around[..3].iter().map(|i| s[i.index()]));
+            continue;
+        }
         let dist = |i: SiteId| (p[0] - s[i.index()][0]).hypot(p[1] - s[i.index()][1]);
         let r0 = dist(around[0]);
         // Relative 1e-9, plus the few ulps of the vertex's own coordinates that no floating-point
@@ -95,6 +99,31 @@ pub fn check_voronoi(v: &Voronoi) {
             );
         }
     }
+}
+
+/// A vertex with an infinite coordinate is a circumcentre beyond the range of doubles: no NaN,
+/// and the circumradius of three of its sites, `|ab|·|bc|·|ca| / 2|orient2d(a, b, c)|` taken in
+/// logarithms, past `f64::MAX`.
+fn assert_centre_beyond_doubles(
+    k: VoronoiVertexId,
+    p: [f64; 2],
+    mut corners: impl Iterator<Item = [f64; 2]>,
+) {
+    assert!(!p[0].is_nan() && !p[1].is_nan(), "{k} at {p:?}");
+    let [a, b, c] = [(); 3].map(|_| corners.next().unwrap());
+    // Halved coordinates: no difference of finite values overflows.
+    let log_length = |p: [f64; 2], q: [f64; 2]| {
+        (0.5 * p[0] - 0.5 * q[0])
+            .hypot(0.5 * p[1] - 0.5 * q[1])
+            .log2()
+            + 1.0
+    };
+    let log_radius = log_length(a, b) + log_length(b, c) + log_length(c, a)
+        - (2.0 * orient2d(a, b, c).abs()).log2();
+    assert!(
+        log_radius > f64::MAX.log2(),
+        "{k} at {p:?}: circumradius 2^{log_radius} is within the range of doubles"
+    );
 }
 
 /// Clipped cells: counter-clockwise; a cell for exactly the distinct sites whose part of the
