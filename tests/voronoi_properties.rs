@@ -50,3 +50,15 @@ proptest! {
         prop_assert_eq!(d.nearest_site(q, None).unwrap(), expected.map(SiteId));
     }
 }
+
+/// Found by the property test above: the cell of (0, 5) meets the inner region only at its
+/// corner (2, 5), which lies on the bisector of (0, 5) and (2, 3): it must be empty.
+#[test]
+fn a_cell_meeting_the_region_at_a_corner_only_is_empty() {
+    let pts = [[2.0, 3.0], [3.0, 7.0], [0.0, 5.0]];
+    let v = Voronoi::new(&pts).unwrap();
+    check_voronoi(&v);
+    check_clipped(&v, &bounding_clip(&pts, 0.25));
+    let inner = ClipPolygon::convex(&[[1.0, 1.0], [5.0, 2.0], [6.0, 6.0], [2.0, 5.0]]).unwrap();
+    check_clipped(&v, &inner);
+}

@@ -507,20 +507,29 @@ impl Voronoi {
     }
 
     /// Does the assembled cell `cell` of `site` (with sides `sides`) have an interior? Its area
-    /// in floating point says so when it is not zero; a zero area is decided exactly.
+    /// in floating point says so when it is larger than the rounding of its corners can make
+    /// it; an area within that (a cell pinched to a corner of the region, whose corners rounded
+    /// apart) is decided exactly.
     fn has_interior(&self, site: u32, sides: &[Side], cell: &[u32], b: &Builder) -> bool {
         let points = cell.iter().map(|&i| b.positions[i as usize]);
         let origin = b.positions[cell[0] as usize];
-        let (mut twice_area, mut previous) = (0.0, origin);
+        let (mut twice_area, mut previous) = (0.0_f64, origin);
+        let (mut largest_offset, mut largest_coordinate) = (0.0_f64, 0.0_f64);
         for p in points.skip(1) {
             let (u, w) = (
                 [0, 1].map(|k| previous[k] - origin[k]),
                 [0, 1].map(|k| p[k] - origin[k]),
             );
             twice_area += u[0] * w[1] - u[1] * w[0];
+            largest_offset = largest_offset.max(w[0].abs()).max(w[1].abs());
+            largest_coordinate = largest_coordinate.max(p[0].abs()).max(p[1].abs());
             previous = p;
         }
-        if twice_area != 0.0 {
+        largest_coordinate = largest_coordinate.max(origin[0].abs()).max(origin[1].abs());
+        // Each corner lies within an ulp of its exact place: an area of zero can round to up to
+        // about (corners × ulp × extent); four times that, for the sums.
+        let rounding = 4.0 * cell.len() as f64 * f64::EPSILON * largest_coordinate * largest_offset;
+        if twice_area.abs() > rounding {
             return true;
         }
         let neighbours: Vec<[f64; 2]> = sides
