@@ -4213,14 +4213,14 @@ typedef uint32_t hw_fill_mode;
 
 /**
  * The triangulation refined (centroid splits and Delaunay-like flips) until its edges match
- * the lengths of the hole's boundary edges; adds vertices inside the hole, whose attributes
- * are the mean of those of the triangle they split.
+ * the lengths of the mesh's edges at the hole's rim; adds vertices inside the hole, whose
+ * attributes are the mean of those of the triangle they split.
  * \ingroup repair
  */
 #define HW_FILL_MODE_REFINE 1
 
 /**
- * Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
+ * Refined, then the added vertices moved to minimise a thin-plate energy (squared cotangent
  * Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface
  * (a sparse Cholesky solve, refined by up to 8 iterations); a hole whose solve does not
  * converge is refused.

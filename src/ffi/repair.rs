@@ -546,11 +546,11 @@ pub type hw_fill_mode = u32;
 /// \ingroup repair
 pub const HW_FILL_MODE_TRIANGULATE: hw_fill_mode = 0;
 /// The triangulation refined (centroid splits and Delaunay-like flips) until its edges match
-/// the lengths of the hole's boundary edges; adds vertices inside the hole, whose attributes
-/// are the mean of those of the triangle they split.
+/// the lengths of the mesh's edges at the hole's rim; adds vertices inside the hole, whose
+/// attributes are the mean of those of the triangle they split.
 /// \ingroup repair
 pub const HW_FILL_MODE_REFINE: hw_fill_mode = 1;
-/// Refined, then the added vertices moved to minimise a thin-plate energy (squared uniform
+/// Refined, then the added vertices moved to minimise a thin-plate energy (squared cotangent
 /// Laplacian) with the rim and the mesh around it fixed, so the fill continues the surface
 /// (a sparse Cholesky solve, refined by up to 8 iterations); a hole whose solve does not
 /// converge is refused.

@@ -36,7 +36,7 @@ options:
   --fill-holes N          fill holes of at most N boundary edges (default: none filled; a fill
                           that would fold or intersect the mesh is refused, the hole left open)
   --refine                ... and refine each fill: new vertices inside the hole so that its
-                          edges match the boundary's lengths
+                          edges match those of the mesh at the rim
   --fair                  ... refine, then move the new vertices to continue the surface around
                           the hole smoothly (a fill whose fairing does not converge is refused)
   --small-faces N         remove components of at most N faces

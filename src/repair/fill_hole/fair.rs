@@ -1,10 +1,10 @@
 //! Fairing a refined fill: the vertices refinement added move to minimise a thin-plate energy,
 //! the rim and the mesh around it fixed.
 //!
-//! The energy is the sum over the patch's vertices (rim included) of the squared uniform
-//! Laplacian `U x_v = mean of v's neighbours − x_v`, a rim vertex's neighbours counting those
-//! in the mesh around the hole: its minimum continues the surrounding surface smoothly
-//! (bilaplacian fairing with uniform weights, which refinement's even triangles suit). The
+//! The energy is the sum over the patch's vertices (rim included) of their squared
+//! Laplace–Beltrami operator, `|U x|²` with `U` the area-scaled cotangent Laplacian of
+//! [`super::laplacian`], a rim vertex's row counting the faces around the hole: its minimum
+//! continues the surrounding surface smoothly, whatever the sizes of the faces there. The
 //! normal equations `(Uᵀ U) δ = −Uᵀ U x` for the added vertices' moves `δ` are symmetric
 //! positive definite; they are solved by a sparse Cholesky factorisation in nested-dissection
 //! order (the matrix's condition grows as the fourth power of the hole's width in edges, which
@@ -14,6 +14,7 @@
 //! at most [`FAIR_ITERATIONS_MAX`] times. For a fill of `m` added vertices the factor has
 //! O(m log m) entries and costs O(m^1.5) operations.
 
+use super::laplacian::{Laplacian, Surround};
 use super::refine::Patch;
 use crate::OutOfMemory;
 use crate::support::allocation::{try_filled, try_vec_with_capacity};
@@ -43,14 +44,6 @@ impl Default for FairLimits {
             tolerance: FAIR_TOLERANCE,
         }
     }
-}
-
-/// The mesh around a hole's rim: for each rim corner, the sum of the positions of its mesh
-/// neighbours other than its two rim neighbours, and their number.
-#[derive(Clone, Debug)]
-pub(super) struct Surround {
-    pub(super) sums: Vec<[f64; 3]>,
-    pub(super) counts: Vec<usize>,
 }
 
 /// Why fairing failed; the patch is as refinement left it.
@@ -105,35 +98,16 @@ pub(super) fn fair(
     if m == n_rim {
         return Ok(done);
     }
-    let neighbours = patch.neighbours();
-    let degrees: Vec<f64> = (0..m)
-        .map(|v| {
-            let outer = if v < n_rim { surround.counts[v] } else { 0 };
-            (neighbours[v].len() + outer) as f64
-        })
-        .collect();
-    // U applied to the patch, the rim's outer neighbours at their positions, then Uᵀ on the
-    // added vertices: the energy's gradient there.
-    let laplacian: Vec<[f64; 3]> = (0..m)
-        .map(|v| {
-            let mut sum = if v < n_rim {
-                surround.sums[v]
-            } else {
-                [0.0; 3]
-            };
-            for &j in &neighbours[v] {
-                (0..3).for_each(|k| sum[k] += patch.points[j as usize][k]);
-            }
-            std::array::from_fn(|k| sum[k] / degrees[v] - patch.points[v][k])
-        })
-        .collect();
+    let laplacian = Laplacian::new(patch, surround);
+    // U applied to the patch, then Uᵀ on the added vertices: minus the energy's gradient there.
+    let applied: Vec<[f64; 3]> = (0..m).map(|w| laplacian.apply(&patch.points, w)).collect();
     let start: Vec<[f64; 3]> = (n_rim..m)
-        .map(|j| {
+        .map(|c| {
             let mut sum = [0.0; 3];
-            for &v in &neighbours[j] {
-                (0..3).for_each(|k| sum[k] += laplacian[v as usize][k] / degrees[v as usize]);
+            for (w, u) in laplacian.column(c) {
+                (0..3).for_each(|k| sum[k] -= u * applied[w][k]);
             }
-            std::array::from_fn(|k| laplacian[j][k] - sum[k])
+            sum
         })
         .collect();
     let magnitude = patch
@@ -160,7 +134,7 @@ pub(super) fn fair(
     if limits.iterations_max == 0 {
         return Err(FairFailure::NotConverged(progress));
     }
-    let matrix = normal_matrix(n_rim, &neighbours, &degrees)?;
+    let matrix = normal_matrix(n_rim, &laplacian)?;
     let order = nested_dissection(&patch.points[n_rim..], &matrix)?;
     let factor = Cholesky::factor(&matrix, order)?;
     let mut delta = try_filled(m - n_rim, [0.0; 3], "fairing moves")?;
@@ -207,22 +181,16 @@ fn norm(v: &[[f64; 3]]) -> f64 {
 }
 
 /// `Uᵀ U` on the added vertices (row `i` for patch vertex `n_rim + i`): entry `(c, d)` sums
-/// `U[w][c] · U[w][d]` over the rows `w` of U, `U[w][w] = −1` and `U[w][j] = 1 / degree(w)`
-/// for each neighbour `j` of `w`.
-fn normal_matrix(
-    n_rim: usize,
-    neighbours: &[Vec<u32>],
-    degrees: &[f64],
-) -> Result<SymmetricMatrix, OutOfMemory> {
-    let m = neighbours.len();
+/// `U[w][c] · U[w][d]` over the rows `w` of U.
+fn normal_matrix(n_rim: usize, laplacian: &Laplacian) -> Result<SymmetricMatrix, OutOfMemory> {
+    let m = laplacian.neighbours.len();
     let n = m - n_rim;
-    let coefficient = |w: usize, j: usize| if w == j { -1.0 } else { 1.0 / degrees[w] };
-    let row_of = |w: usize| std::iter::once(w as u32).chain(neighbours[w].iter().copied());
     // At most one entry per (row of U, column pair) met: a bound to allocate once.
     let bound: usize = (n_rim..m)
         .map(|c| {
-            row_of(c)
-                .map(|w| neighbours[w as usize].len() + 1)
+            laplacian
+                .column(c)
+                .map(|(w, _)| laplacian.neighbours[w].len() + 1)
                 .sum::<usize>()
         })
         .sum();
@@ -236,11 +204,8 @@ fn normal_matrix(
     let mut touched = try_filled(n, false, "fairing rows")?;
     for c in n_rim..m {
         let first = matrix.columns.len();
-        for w in row_of(c) {
-            let w = w as usize;
-            let uc = coefficient(w, c);
-            for d in row_of(w) {
-                let d = d as usize;
+        for (w, uc) in laplacian.column(c) {
+            for (d, ud) in laplacian.row(w) {
                 if d < n_rim {
                     continue;
                 }
@@ -248,7 +213,7 @@ fn normal_matrix(
                     touched[d - n_rim] = true;
                     matrix.columns.push((d - n_rim) as u32);
                 }
-                sums[d - n_rim] += uc * coefficient(w, d);
+                sums[d - n_rim] += uc * ud;
             }
         }
         for &d in &matrix.columns[first..] {

@@ -28,10 +28,10 @@
 //! [`FillError::SelfIntersecting`]. A fill touches no face but along its rim.
 //!
 //! Refined and faired (optional, [`FillMode`]): the triangulation above can be refined so that
-//! its edges match the lengths of the hole's boundary edges (Liepa's centroid splits and
+//! its edges match the lengths of the mesh's edges around the hole (Liepa's centroid splits and
 //! Delaunay-like flips, see [`REFINE_ROUNDS_MAX`] and [`DENSITY`]), adding vertices inside the
 //! hole, and the added vertices then faired: moved to minimise a thin-plate energy (the
-//! squared uniform Laplacian), the rim and the mesh around it fixed, by a sparse Cholesky
+//! squared cotangent Laplacian), the rim and the mesh around it fixed, by a sparse Cholesky
 //! factorisation refined to [`FAIR_TOLERANCE`] within [`FAIR_ITERATIONS_MAX`] iterations; the
 //! faired patch is refined again where fairing stretched it, and faired again, up to
 //! [`REFINE_PASSES_MAX`] times. The refined (and faired) patch passes the same fold and intersection tests before the mesh is
@@ -49,6 +49,7 @@ mod crossings;
 mod fair;
 mod folds;
 mod geometry;
+mod laplacian;
 mod peel;
 mod pinches;
 mod projected;
@@ -67,13 +68,14 @@ pub use refine::{DENSITY, REFINE_PASSES_MAX, REFINE_ROUNDS_MAX};
 use crate::OutOfMemory;
 use crate::mesh::{EditError, FaceId, HalfedgeId, HandleError, JoinedCorners, Mesh, VertexId};
 use crossings::Surroundings;
-use fair::{FairFailure, FairLimits, FairProgress, Surround, fair};
+use fair::{FairFailure, FairLimits, FairProgress, fair};
 use folds::{Fold, first_fold};
 use geometry::{norm, sub, unit};
+use laplacian::Surround;
 use peel::peeling_order;
 use pinches::{split_at_pinches, undo_open_pinches};
 use projected::{ProjectionRefusal, projected_triangles};
-use refine::Patch;
+use refine::{Patch, rim_scale};
 use turns::Turns;
 
 /// Loops of at most this many corners get the exact minimum-weight triangulation; longer ones
@@ -90,7 +92,8 @@ pub enum FillMode {
     /// Triangles on the hole's corners only; no vertex is added.
     #[default]
     Triangulate,
-    /// The triangulation refined so that its edges match the boundary's: adds vertices.
+    /// The triangulation refined so that its edges match those of the mesh around the hole:
+    /// adds vertices.
     Refine,
     /// Refined, then the added vertices faired to continue the surface around the hole.
     Fair,
@@ -263,8 +266,8 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
 }
 
 /// [`fill_hole`], then refined or refined and faired as `mode` says (see the module docs).
-/// Refinement costs O(m log m) more for a fill of m triangles (about the hole's area over its
-/// boundary edges' length squared); fairing O(m^1.5) time and O(m log m) memory per round of
+/// Refinement costs O(m log m) more for a fill of m triangles (about the hole's area over the
+/// square of the mean length of the edges at its rim); fairing O(m^1.5) time and O(m log m) memory per round of
 /// refinement (a sparse Cholesky factorisation in nested-dissection order).
 ///
 /// # Errors
@@ -347,8 +350,9 @@ fn fill_hole_within(
         triangles
     };
     if mode != FillMode::Triangulate {
-        let mut patch = Patch::new(&points, triangles);
-        let surround = (mode == FillMode::Fair).then(|| surround_of(mesh, &corners));
+        let scales = corners.iter().map(|&v| rim_scale(mesh, v)).collect();
+        let mut patch = Patch::new(&points, triangles, scales);
+        let surround = (mode == FillMode::Fair).then(|| Surround::of(mesh, &corners));
         let mut faired = Ok(());
         let refined = patch.refine(&joined, |patch| match &surround {
             Some(surround) => {
@@ -407,29 +411,6 @@ fn not_faired(failure: FairFailure, vertices: usize) -> FillError {
         relative_residual: progress.relative_residual,
         vertices,
     }
-}
-
-/// The mesh around the rim `corners` for fairing (see [`Surround`]).
-fn surround_of(mesh: &Mesh, corners: &[VertexId]) -> Surround {
-    let n = corners.len();
-    let mut sums = Vec::with_capacity(n);
-    let mut counts = Vec::with_capacity(n);
-    for (i, &v) in corners.iter().enumerate() {
-        let beside = [corners[(i + 1) % n], corners[(i + n - 1) % n]];
-        let mut sum = [0.0; 3];
-        let mut count = 0;
-        for out in mesh.outgoing_halfedges(v) {
-            let w = mesh.target(out);
-            if !beside.contains(&w) {
-                let p = mesh.position(w);
-                (0..3).for_each(|k| sum[k] += p[k]);
-                count += 1;
-            }
-        }
-        sums.push(sum);
-        counts.push(count);
-    }
-    Surround { sums, counts }
 }
 
 /// Tests a refined patch for folds and crossings and, when it passes, adds its vertices and

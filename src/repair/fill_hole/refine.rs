@@ -1,10 +1,10 @@
 //! Refining a fill (Liepa 2003): triangles much larger than the edges around them are split at
 //! their centroid, then edges are flipped towards a Delaunay-like patch, until no triangle is
-//! split, so that the new triangles' edges match the lengths of the hole's boundary edges.
+//! split, so that the new triangles' edges match the lengths of the mesh's edges at the rim.
 //!
-//! Each corner has a *scale*: a rim corner the mean length of its two boundary edges, a new
-//! vertex the mean scale of the triangle it split; no scale is below [`SCALE_FLOOR`] times the
-//! rim's mean. A triangle is split when, for each of its
+//! Each corner has a *scale*: a rim corner the mean length of the mesh's edges at it (Liepa's
+//! σ, see [`rim_scale`]), a new vertex the mean scale of the triangle it split; no scale is
+//! below [`SCALE_FLOOR`] times the rim's mean boundary edge. A triangle is split when, for each of its
 //! corners, [`DENSITY`] times the distance from its centroid to the corner exceeds both the
 //! corner's scale and the centroid's. An interior edge is flipped when the two angles facing
 //! it sum to more than π, unless the other diagonal is an edge already (here or in the mesh)
@@ -14,7 +14,7 @@ use std::collections::{HashMap, VecDeque};
 
 use super::folds::is_degenerate;
 use super::geometry::{dot, norm, sub, triangle_normal};
-use crate::mesh::JoinedCorners;
+use crate::mesh::{JoinedCorners, Mesh, VertexId};
 
 /// Liepa's density factor √2: a triangle is split while its centroid is farther than 1/√2 of
 /// the local scale from each corner.
@@ -25,8 +25,9 @@ pub const DENSITY: f64 = std::f64::consts::SQRT_2;
 /// triangle count rounds; the cap bounds the work whatever the input.
 pub const REFINE_ROUNDS_MAX: usize = 48;
 
-/// No corner's scale is below this fraction of the rim's mean scale, so that the fill has
-/// at most about the hole's area over (this × the mean boundary edge)² triangles.
+/// No corner's scale is below this fraction of the rim's mean boundary edge, so that the fill
+/// has at most about the hole's area over (this × the mean boundary edge)² triangles, whatever
+/// the edges of the mesh around it.
 pub const SCALE_FLOOR: f64 = 0.25;
 
 /// Passes of refinement and fairing at most: fairing a fill bends it out of the plane it was
@@ -37,6 +38,19 @@ pub const REFINE_PASSES_MAX: usize = 3;
 /// Flips tried per edge in one round at most; keeps a round linear even where flips on a
 /// non-planar patch would cycle.
 const FLIPS_PER_EDGE: usize = 4;
+
+/// A rim corner's scale: the mean length of the mesh's edges at `v` (boundary edges and the
+/// edges into the surface around the hole), so that the fill's triangles continue the size of
+/// the faces around it rather than that of the rim's edges alone.
+pub(super) fn rim_scale(mesh: &Mesh, v: VertexId) -> f64 {
+    let at = mesh.position(v);
+    let (mut sum, mut count) = (0.0, 0usize);
+    for out in mesh.outgoing_halfedges(v) {
+        sum += norm(sub(mesh.position(mesh.target(out)), at));
+        count += 1;
+    }
+    if count == 0 { 0.0 } else { sum / count as f64 }
+}
 
 /// A triangulated patch over a hole: the rim's corners (`0..n_rim`, in loop order) and the
 /// vertices refinement added, with its triangles in the loop's winding.
@@ -53,16 +67,21 @@ pub(super) struct Patch {
 }
 
 impl Patch {
-    /// The patch of the coarse fill `triangles` over the ring `points`.
-    pub(super) fn new(points: &[[f64; 3]], triangles: Vec<[u32; 3]>) -> Patch {
+    /// The patch of the coarse fill `triangles` over the ring `points`, whose corners have the
+    /// scales `scales` (see [`rim_scale`]).
+    pub(super) fn new(
+        points: &[[f64; 3]],
+        triangles: Vec<[u32; 3]>,
+        mut scales: Vec<f64>,
+    ) -> Patch {
         let n = points.len();
-        let side = |i: usize| norm(sub(points[(i + 1) % n], points[i]));
-        let mut scales: Vec<f64> = (0..n)
-            .map(|i| 0.5 * (side(i) + side((i + n - 1) % n)))
-            .collect();
-        // A floor on the scales: a corner between (near) zero-length sides would otherwise
+        debug_assert_eq!(scales.len(), n);
+        // A floor on the scales: a corner whose edges have (nearly) no length would otherwise
         // have splits go on towards zero size.
-        let floor = SCALE_FLOOR * scales.iter().sum::<f64>() / n.max(1) as f64;
+        let perimeter: f64 = (0..n)
+            .map(|i| norm(sub(points[(i + 1) % n], points[i])))
+            .sum();
+        let floor = SCALE_FLOOR * perimeter / n.max(1) as f64;
         scales.iter_mut().for_each(|s| *s = s.max(floor));
         let mut edges = HashMap::with_capacity(3 * triangles.len());
         for (t, tri) in triangles.iter().enumerate() {
