@@ -132,10 +132,14 @@ impl Patch {
         true
     }
 
-    /// Splits every triangle the density test marks at its centroid; whether any was.
+    /// Splits every triangle the density test marks at its centroid, but for those whose
+    /// centroid lies within the density's reach of a vertex this round added already (see
+    /// [`RoundVertices`]); whether any was split.
     fn split_large_triangles(&mut self) -> bool {
         let count = self.triangles.len();
         let mut split = false;
+        let rim_scale = self.scales[..self.n_rim].iter().sum::<f64>() / self.n_rim.max(1) as f64;
+        let mut added = RoundVertices::new(rim_scale / DENSITY);
         for t in 0..count {
             let tri = self.triangles[t];
             let corners = tri.map(|v| self.points[v as usize]);
@@ -146,7 +150,11 @@ impl Patch {
                 let reach = DENSITY * norm(sub(centroid, corners[k]));
                 reach > scale && reach > self.scales[tri[k] as usize]
             });
-            if too_large && centroid.iter().all(|c| c.is_finite()) {
+            if too_large
+                && centroid.iter().all(|c| c.is_finite())
+                && !added.near(&self.points, centroid, scale / DENSITY)
+            {
+                added.insert(self.points.len() as u32, centroid);
                 self.split(t, centroid, scale);
                 split = true;
             }
@@ -270,6 +278,60 @@ impl Patch {
             list.sort_unstable();
         }
         neighbours
+    }
+}
+
+/// The vertices one round of splits added, in a grid of cubes: a round splits every large
+/// triangle at once, and the centroids of neighbouring slivers (a coarse fill's fan from a far
+/// corner to short rim edges) lie far closer to each other than to any corner. Splitting both
+/// would leave clusters of vertices that no flip separates (a third of a 1,000-edge fill's
+/// edges were under a fifth of its scale); the second waits for the next round, after flips.
+struct RoundVertices {
+    cell: f64,
+    cells: HashMap<[i64; 3], Vec<u32>>,
+}
+
+impl RoundVertices {
+    fn new(cell: f64) -> RoundVertices {
+        RoundVertices {
+            cell,
+            cells: HashMap::new(),
+        }
+    }
+
+    fn key(&self, p: [f64; 3]) -> [i64; 3] {
+        // Saturating: a position beyond the grid's range shares the last cell.
+        p.map(|x| (x / self.cell).floor() as i64)
+    }
+
+    /// Whether a vertex of this round lies closer to `p` than `reach` (at most a cell, so that
+    /// the search stays in the 27 cells around `p`).
+    fn near(&self, points: &[[f64; 3]], p: [f64; 3], reach: f64) -> bool {
+        if !(self.cell > 0.0 && self.cell.is_finite()) {
+            return false;
+        }
+        let reach = reach.min(self.cell);
+        let [x, y, z] = self.key(p);
+        (-1..=1).any(|i| {
+            (-1..=1).any(|j| {
+                (-1..=1).any(|k| {
+                    let key = [
+                        x.saturating_add(i),
+                        y.saturating_add(j),
+                        z.saturating_add(k),
+                    ];
+                    self.cells.get(&key).is_some_and(|vs| {
+                        vs.iter().any(|&v| norm(sub(points[v as usize], p)) < reach)
+                    })
+                })
+            })
+        })
+    }
+
+    fn insert(&mut self, v: u32, p: [f64; 3]) {
+        if self.cell > 0.0 && self.cell.is_finite() {
+            self.cells.entry(self.key(p)).or_default().push(v);
+        }
     }
 }
 
