@@ -284,3 +284,40 @@ fn circumcentres_beyond_the_range_of_doubles_are_infinite_with_their_sign() {
         assert_each_site_nearest_to_itself(&v);
     }
 }
+
+/// A region from a site to one 1e40 away: the cells near the first site's corner are a few
+/// tenths wide, 1e-40 of the region. Their edges run from Voronoi vertices beside the corner to
+/// far ones, and were parametrised from the far end, where a parameter's rounding is 1e24 long:
+/// the cell of the corner's site came out empty. Clipped from the near end and placed from the
+/// nearer corner of the side, it is its triangle.
+#[test]
+fn cells_at_the_corner_of_a_region_far_larger_than_them_keep_their_shape() {
+    let corner = [0.6654262839801495, 0.722164734606788];
+    let far = [4.46772356960677e39, 5.298486514846041e39];
+    let sites = [
+        [0.39060108195688203, 0.27955996206734735],
+        [0.8722834087571435, 0.8781683733940039],
+        [0.44677235696067696, 0.529848651484604],
+        [0.7900238710381996, 0.10550059640556819],
+        corner,
+        [0.5825742508067545, 0.11474956691296534],
+        far,
+    ];
+    let clip = ClipPolygon::rectangle(corner, far).unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+    // The corner's cell is cut off by its bisector with site 1 alone: a right triangle whose
+    // legs run along the two sides to where that bisector crosses them.
+    let [p, q] = [corner, sites[1]];
+    let squared = |a: [f64; 2]| a[0] * a[0] + a[1] * a[1];
+    let crossing = |k: usize| {
+        let l = 1 - k;
+        (squared(q) - squared(p) - 2.0 * (q[l] - p[l]) * p[l]) / (2.0 * (q[k] - p[k]))
+    };
+    let legs = [crossing(0) - corner[0], crossing(1) - corner[1]];
+    let area = v.clip(&clip).cell_area(SiteId(4)).unwrap();
+    assert!(
+        (area - 0.5 * legs[0] * legs[1]).abs() <= 1e-12,
+        "{area} vs {legs:?}"
+    );
+}

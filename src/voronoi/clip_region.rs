@@ -189,19 +189,28 @@ impl ClipPolygon {
         e[0] * dy - e[1] * dx
     }
 
-    /// Where `x`, a point on edge `i`'s line, falls along it: 0 at its start, 1 at its end
-    /// (along the axis the edge runs farther on, halved so that nothing overflows, and without
-    /// products that could underflow).
+    /// Where `x`, a point on edge `i`'s line, falls along it: its parameter `t` measured from
+    /// the start (0 there, 1 at the end) and, past the middle, from the end (`-1` at the start,
+    /// 0 at the end; `t - 1` elsewhere), each from its own corner, so that a point near the end
+    /// of a long edge keeps its offset from that end (which `1 - t` rounds away). Along the
+    /// axis the edge runs farther on, halved so that nothing overflows, and without products
+    /// that could underflow.
     #[inline]
-    pub(crate) fn edge_parameter(&self, i: usize, x: [f64; 2]) -> f64 {
-        let (a, e) = (self.vertices[i], self.unit_edges[i]);
+    pub(crate) fn edge_parameters(&self, i: usize, x: [f64; 2]) -> [f64; 2] {
+        let e = self.unit_edges[i];
         let units = self.axis_scales.map(|scale| scale.pre * scale.post);
         let k = if (e[0] / units[0]).abs() >= (e[1] / units[1]).abs() {
             0
         } else {
             1
         };
-        self.axis_scales[k].offset(x[k], a[k]) / e[k]
+        let scale = self.axis_scales[k];
+        let t = scale.offset(x[k], self.vertices[i][k]) / e[k];
+        if t <= 0.5 {
+            return [t, t - 1.0];
+        }
+        let end = self.vertices[(i + 1) % self.vertices.len()];
+        [t, scale.offset(x[k], end[k]) / e[k]]
     }
 
     /// `p` with each axis times its scale's `pre` factor.
@@ -383,7 +392,7 @@ mod tests {
         assert!(!r.contains([0.0, 2.0]) && !r.contains([0.0, -1.0]));
         assert!(r.edge_function(0, [0.0, 0.5]) > 0.0);
         assert!(r.edge_rate(1, [-1.0, 0.0]) > 0.0);
-        assert_eq!(r.edge_parameter(0, [tiny, 0.0]), 1.0);
+        assert_eq!(r.edge_parameters(0, [tiny, 0.0]), [1.0, 0.0]);
     }
 
     #[test]

@@ -40,12 +40,14 @@ pub struct ClippedCells {
     clip: ClipPolygon,
 }
 
-/// A point on the clip boundary: edge index, parameter in `[0, 1]` along it, what lies there,
-/// and its rank in the order along the edge (see [`Builder::order_crossings`]).
+/// A point on the clip boundary: edge index, parameter in `[0, 1]` along it (and in `[-1, 0]`
+/// from its end, which keeps the offset of a point near the end of a long edge), what lies
+/// there, and its rank in the order along the edge (see [`Builder::order_crossings`]).
 #[derive(Clone, Copy, Debug)]
 struct Perimeter {
     edge: u32,
     t: f64,
+    from_end: f64,
     kind: PerimeterKind,
     rank: u32,
 }
@@ -109,7 +111,42 @@ impl Reach {
     }
 
     fn is_far(&self, p: [f64; 2]) -> bool {
-        (p[0] - self.centre[0]).hypot(p[1] - self.centre[1]) > Self::FAR * self.radius
+        self.distance(p) > Self::FAR * self.radius
+    }
+
+    /// How far parameters along `base + s·dir` reach to get across the region from `base`:
+    /// the scale of their rounding (the edge functions at `base` are rounded relative to its
+    /// distance from the region, however near to `base` the crossings are).
+    fn parameter_extent(&self, base: [f64; 2], dir: [f64; 2]) -> f64 {
+        (self.distance(base) + self.radius) / dir[0].hypot(dir[1])
+    }
+
+    /// Is `p` at most as far from the centre as `q`? (Squared distances, unless one overflows.)
+    fn is_nearer(&self, p: [f64; 2], q: [f64; 2]) -> bool {
+        let squared = |p: [f64; 2]| {
+            let d = [p[0] - self.centre[0], p[1] - self.centre[1]];
+            d[0] * d[0] + d[1] * d[1]
+        };
+        let (from_p, from_q) = (squared(p), squared(q));
+        if from_p.is_finite() && from_q.is_finite() {
+            from_p <= from_q
+        } else {
+            self.distance(p) <= self.distance(q)
+        }
+    }
+
+    /// The distance from the centre to `p`.
+    fn distance(&self, p: [f64; 2]) -> f64 {
+        (p[0] - self.centre[0]).hypot(p[1] - self.centre[1])
+    }
+}
+
+impl Perimeter {
+    /// The order of two points of the same edge by their rounded parameters.
+    fn along(&self, other: &Perimeter) -> Ordering {
+        self.t
+            .total_cmp(&other.t)
+            .then(self.from_end.total_cmp(&other.from_end))
     }
 }
 
@@ -122,6 +159,7 @@ impl Builder<'_> {
             Some(Perimeter {
                 edge: p as u32,
                 t: 0.0,
+                from_end: -1.0,
                 kind: PerimeterKind::Corner,
                 rank: 0,
             })
@@ -138,7 +176,8 @@ impl Builder<'_> {
     /// as a point of its own at the corner's position (see [`ClippedCells`]).
     fn crossing(&mut self, edge: usize, x: [f64; 2], sites: Option<[u32; 2]>) -> u32 {
         let m = self.clip.vertices().len();
-        let t = self.clip.edge_parameter(edge, x).clamp(0.0, 1.0);
+        let [t, from_end] = self.clip.edge_parameters(edge, x);
+        let (t, from_end) = (t.clamp(0.0, 1.0), from_end.clamp(-1.0, 0.0));
         let at_corner = |corner: usize| {
             sites.is_none_or(|[p, q]| {
                 let sites = self.input.sites;
@@ -154,28 +193,37 @@ impl Builder<'_> {
         if t == 1.0 && at_corner((edge + 1) % m) {
             return ((edge + 1) % m) as u32;
         }
-        self.positions.push(self.edge_point(edge, t));
+        self.positions.push(self.edge_point(edge, t, from_end));
         self.crossings.push(Perimeter {
             edge: edge as u32,
             t,
+            from_end,
             kind: sites.map_or(PerimeterKind::Vertex, PerimeterKind::Bisector),
             rank: 0,
         });
         (self.positions.len() - 1) as u32
     }
 
-    /// The point at parameter `t` along clip edge `edge`: the corners themselves at the ends
-    /// (`a + e` may round off a corner far smaller than the edge), and monotone in `t`.
-    fn edge_point(&self, edge: usize, t: f64) -> [f64; 2] {
+    /// The point at parameter `t` along clip edge `edge` (`from_end` from its end): the corners
+    /// themselves at the ends (`a + e` may round off a corner far smaller than the edge),
+    /// placed from the nearer corner, and monotone in `(t, from_end)`.
+    fn edge_point(&self, edge: usize, t: f64, from_end: f64) -> [f64; 2] {
         let corners = self.clip.vertices();
-        let a = corners[edge];
         let e = self.clip.edge_vector(edge);
-        if t == 0.0 {
-            a
-        } else if t == 1.0 {
-            corners[(edge + 1) % corners.len()]
+        if t <= 0.5 {
+            let a = corners[edge];
+            if t == 0.0 {
+                a
+            } else {
+                [a[0] + t * e[0], a[1] + t * e[1]]
+            }
         } else {
-            [a[0] + t * e[0], a[1] + t * e[1]]
+            let b = corners[(edge + 1) % corners.len()];
+            if from_end == 0.0 {
+                b
+            } else {
+                [b[0] + from_end * e[0], b[1] + from_end * e[1]]
+            }
         }
     }
 
@@ -191,7 +239,10 @@ impl Builder<'_> {
         let key = |i: u32| keys[i as usize];
         order.sort_unstable_by(|&i, &j| {
             let ((e, t), (f, u)) = (key(i), key(j));
-            e.cmp(&f).then(t.total_cmp(&u))
+            e.cmp(&f).then(t.total_cmp(&u)).then_with(|| {
+                let crossings = &self.crossings;
+                crossings[i as usize].along(&crossings[j as usize])
+            })
         });
         let mut ranks = vec![0u32; order.len()];
         let mut start = 0;
@@ -214,7 +265,7 @@ impl Builder<'_> {
                     let same_place = if exact {
                         self.exact_order(edge as usize, previous, i) == Ordering::Equal
                     } else {
-                        self.crossings[previous].t == self.crossings[i].t
+                        self.crossings[previous].along(&self.crossings[i]) == Ordering::Equal
                     };
                     if same_place {
                         ranks[i] = ranks[previous];
@@ -222,7 +273,7 @@ impl Builder<'_> {
                 }
             }
             if exact {
-                self.make_monotone(edge as usize, run);
+                self.make_monotone(run);
             }
             start = end;
         }
@@ -256,31 +307,38 @@ impl Builder<'_> {
             .unwrap_or(Ordering::Equal)
     }
 
-    /// Parameters and positions of `run` (crossings of edge `edge` in their exact order) made
-    /// non-decreasing.
-    fn make_monotone(&mut self, edge: usize, run: &[u32]) {
-        let mut lowest = 0.0_f64;
+    /// Parameters and positions of `run` (crossings of one edge in their exact order) made
+    /// non-decreasing: a crossing rounded before one that precedes it takes that one's place.
+    fn make_monotone(&mut self, run: &[u32]) {
+        let mut highest: Option<usize> = None;
         for &i in run {
             let i = i as usize;
-            let t = self.crossings[i].t;
-            if t < lowest {
-                self.crossings[i].t = lowest;
-                self.positions[self.first_crossing + i] = self.edge_point(edge, lowest);
+            match highest {
+                Some(h) if self.crossings[i].along(&self.crossings[h]) == Ordering::Less => {
+                    let (t, from_end) = (self.crossings[h].t, self.crossings[h].from_end);
+                    self.crossings[i].t = t;
+                    self.crossings[i].from_end = from_end;
+                    self.positions[self.first_crossing + i] =
+                        self.positions[self.first_crossing + h];
+                }
+                _ => highest = Some(i),
             }
-            lowest = lowest.max(t);
         }
     }
 
     /// Has the bisector of `sites` a piece of positive length between its crossing into the
     /// region across side `enter` (at `lo` along the edge) and out across side `exit` (at `hi`),
     /// though `lo ≥ hi` in floating point? Decided exactly where they lie within
-    /// [`EXACT_ORDER_BAND`] of each other (the bisector passing a corner, or crossing the
-    /// region, within far less than an ulp); elsewhere `lo ≥ hi` stands. The edge's own ends
-    /// are not re-examined: only an edge cut by two sides comes here.
+    /// [`EXACT_ORDER_BAND`] of each other, relative to the larger of them and of how far they
+    /// reach across the region along `base + s·dir` (the scale of their rounding, see
+    /// [`Reach::parameter_extent`]): the bisector passing a corner, or crossing the region,
+    /// within far less than an ulp. Elsewhere `lo ≥ hi` stands. The edge's own ends are not
+    /// re-examined: only an edge cut by two sides comes here.
     fn has_piece_narrower_than_rounding(
         &self,
         [enter, exit]: [usize; 2],
         [lo, hi]: [f64; 2],
+        [base, dir]: [[f64; 2]; 2],
         sites: Option<[u32; 2]>,
         reversed: bool,
     ) -> bool {
@@ -290,7 +348,11 @@ impl Builder<'_> {
         };
         enter < m
             && exit < m
-            && lo - hi <= EXACT_ORDER_BAND * lo.abs().max(hi.abs())
+            && lo - hi
+                <= EXACT_ORDER_BAND
+                    * lo.abs()
+                        .max(hi.abs())
+                        .max(self.reach.parameter_extent(base, dir))
             && bisector_has_piece_inside(
                 self.input.corners,
                 sites.map(|s| self.input.sites[s as usize]),
@@ -525,7 +587,13 @@ impl Voronoi {
             largest_coordinate = largest_coordinate.max(p[0].abs()).max(p[1].abs());
             previous = p;
         }
-        largest_coordinate = largest_coordinate.max(origin[0].abs()).max(origin[1].abs());
+        // The region's own reach too: in a local frame (see `clip_frame`) a Voronoi vertex near
+        // the origin carries the rounding of its offset from sites a region's width away.
+        let reach = b.reach.centre[0].abs().max(b.reach.centre[1].abs()) + b.reach.radius;
+        largest_coordinate = largest_coordinate
+            .max(origin[0].abs())
+            .max(origin[1].abs())
+            .max(reach);
         // Each corner lies within an ulp of its exact place: an area of zero can round to up to
         // about (corners × ulp × extent); four times that, for the sums.
         let rounding = 4.0 * cell.len() as f64 * f64::EPSILON * largest_coordinate * largest_offset;
@@ -604,20 +672,26 @@ impl Voronoi {
         let (o, t) = (ends.from, ends.to);
         let sites = Some([ends.left, ends.right]);
         // Parametrise as base + s·dir with s in [lo, hi]; the finite end (if any) is at s = 0.
-        // An in-ray (from infinity) is clipped as the ray from its finite end, then reversed.
+        // An in-ray (from infinity) is clipped as the ray from its finite end, and a segment
+        // from its end nearer the region, then reversed where that runs against the edge.
         let (base, dir, far, mut lo, mut hi, reversed) = match self.near_geometry(ends, b.reach) {
             EdgeGeometry::Segment { from, to } => {
                 if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
                 {
                     return [vertex_position[o as usize], vertex_position[t as usize]];
                 }
+                // From the end nearer the region: a crossing's parameter is rounded relative to
+                // its distance from the base, which for a far end (a circumcentre of nearly
+                // collinear sites) is the whole edge, an ulp of which can be the whole cell.
+                let reversed = !b.reach.is_nearer(from, to);
+                let (base, far) = if reversed { (to, from) } else { (from, to) };
                 (
-                    from,
-                    [to[0] - from[0], to[1] - from[1]],
-                    Some(to),
+                    base,
+                    [far[0] - base[0], far[1] - base[1]],
+                    Some(far),
                     0.0,
                     1.0,
-                    false,
+                    reversed,
                 )
             }
             EdgeGeometry::Ray { origin, direction } => (
@@ -663,7 +737,13 @@ impl Voronoi {
             }
         }
         if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less)
-            && !b.has_piece_narrower_than_rounding([enter, exit], [lo, hi], sites, reversed)
+            && !b.has_piece_narrower_than_rounding(
+                [enter, exit],
+                [lo, hi],
+                [base, dir],
+                sites,
+                reversed,
+            )
         {
             return NONE;
         }
@@ -679,7 +759,8 @@ impl Voronoi {
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if exit == usize::MAX {
-            vertex_position.get(t as usize).copied().unwrap_or(INVALID)
+            let v = if reversed { o } else { t };
+            vertex_position.get(v as usize).copied().unwrap_or(INVALID)
         } else {
             b.crossing(exit, at(hi), sites)
         };
