@@ -31,7 +31,10 @@ use std::cmp::Ordering;
 /// narrower than the spacing of doubles there (sites an ulp apart far from the origin, or far
 /// closer together than the region is wide), it keeps its own positions, in their exact order
 /// along the region's boundary, but some of them may coincide once rounded: such a cell has zero
-/// area in floating point and is never clockwise.
+/// area in floating point. One known limit: a cell narrower than the rounding of its own Voronoi
+/// vertices inside the region (vertices near 1e23 in a region near 1e73, strips 1e-13 tall
+/// ending at vertices near 1e31) has corners whose order only rounding decides, and can come
+/// out clockwise, its area (of either sign) within the rounding of its corners' coordinates.
 #[derive(Clone, Debug)]
 pub struct ClippedCells {
     positions: Vec<[f64; 2]>,
