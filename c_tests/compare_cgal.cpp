@@ -27,7 +27,7 @@ SurfaceMesh cgal_build(const models::Indexed& m) {
   std::vector<std::vector<std::size_t>> polygons;
   std::vector<std::size_t> offsets;
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    const std::vector<uint32_t> face = m.face(f, offsets);
+    const indexed::Corners face = m.face(f, offsets);
     polygons.emplace_back(face.begin(), face.end());
   }
   SurfaceMesh mesh;

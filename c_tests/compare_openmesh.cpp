@@ -82,7 +82,7 @@ std::vector<double> angle_weighted_reference(const models::Indexed& m) {
   std::vector<std::size_t> offsets;
   auto p = [&](uint32_t v, int k) { return m.positions[3 * v + k]; };
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    const std::vector<uint32_t> face = m.face(f, offsets);
+    const indexed::Corners face = m.face(f, offsets);
     const std::size_t n = face.size();
     double normal[3] = {0, 0, 0};
     for (std::size_t i = 0; i < n; ++i) {

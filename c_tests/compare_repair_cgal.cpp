@@ -284,7 +284,7 @@ void compare(const std::filesystem::path& path) {
   const indexed::Mesh after{"", ours.positions(), ours.face_sizes(), ours.indices()};
   std::size_t proper = 0;
   for (std::size_t f = 0; f < after.n_faces(); ++f) {
-    const std::vector<uint32_t> face = after.face(f, offsets);
+    const indexed::Corners face = after.face(f, offsets);
     proper += distinct_corners(std::vector<std::size_t>(face.begin(), face.end())) >= 3;
   }
   CHECK(proper == theirs.polygons.size());

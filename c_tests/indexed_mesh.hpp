@@ -13,6 +13,17 @@
 
 namespace indexed {
 
+/// The corners of one face: a view into the mesh's indices (no copy, so no allocation for
+/// GCC 12 to misjudge as freeing a pointer inside a block).
+struct Corners {
+  const uint32_t* first;
+  const uint32_t* last;
+  const uint32_t* begin() const { return first; }
+  const uint32_t* end() const { return last; }
+  std::size_t size() const { return std::size_t(last - first); }
+  uint32_t operator[](std::size_t i) const { return first[i]; }
+};
+
 /// x, y, z per vertex; corners per face; vertex index per corner.
 struct Mesh {
   std::string name;
@@ -27,12 +38,12 @@ struct Mesh {
     return true;
   }
   /// The corners of face f (`offsets` caches the face starts between calls).
-  std::vector<uint32_t> face(std::size_t f, std::vector<std::size_t>& offsets) const {
+  Corners face(std::size_t f, std::vector<std::size_t>& offsets) const {
     if (offsets.empty()) {
       offsets.push_back(0);
       for (uint32_t size : face_sizes) offsets.push_back(offsets.back() + size);
     }
-    return {indices.begin() + offsets[f], indices.begin() + offsets[f + 1]};
+    return {indices.data() + offsets[f], indices.data() + offsets[f + 1]};
   }
 };
 
