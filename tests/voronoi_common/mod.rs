@@ -258,11 +258,38 @@ pub fn check_cells_hold_their_nearest_points(
     }
 }
 
-/// Does the counter-clockwise polygon `poly` (at least a triangle) hold `q`, to within 1e-9 of
-/// `size` squared?
+/// Whether the cell `poly` holds `q`, or `q` lies on the cell's boundary within 1e-9 of the
+/// region's `size` and four ulps of its own coordinates (the rounding of the cell's corners).
+/// By winding number, not by the sides' half-planes: rounding can leave a corner of a cell
+/// turning clockwise by an ulp (two ends of a nearly vertical side rounded to either side of
+/// it), and the extension of a side there passes beside points of the cell.
 fn holds(poly: &[[f64; 2]], q: [f64; 2], size: f64) -> bool {
     let n = poly.len();
-    n >= 3 && (0..n).all(|k| orient2d(poly[k], poly[(k + 1) % n], q) >= -1e-9 * size * size)
+    if n < 3 {
+        return false;
+    }
+    let tolerance = q.map(|c| 1e-9 * size + 4.0 * (c.abs().next_up() - c.abs()));
+    let mut winding = 0i32;
+    for k in 0..n {
+        let (a, b) = (poly[k], poly[(k + 1) % n]);
+        let within_box = (0..2).all(|i| {
+            q[i] >= a[i].min(b[i]) - tolerance[i] && q[i] <= a[i].max(b[i]) + tolerance[i]
+        });
+        // |orient| is the side's length times q's distance from its line: within the tolerance
+        // across each axis, weighted by how far the side runs along the other.
+        let slack = tolerance[0] * (b[1] - a[1]).abs() + tolerance[1] * (b[0] - a[0]).abs();
+        if within_box && orient2d(a, b, q).abs() <= slack {
+            return true;
+        }
+        if a[1] <= q[1] {
+            if b[1] > q[1] && orient2d(a, b, q) > 0.0 {
+                winding += 1;
+            }
+        } else if b[1] <= q[1] && orient2d(a, b, q) < 0.0 {
+            winding -= 1;
+        }
+    }
+    winding != 0
 }
 
 /// Bounding box of the points, widened by `margin` of its size, and by at least one ulp on
