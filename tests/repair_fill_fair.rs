@@ -17,17 +17,23 @@ use halfwing::soup::FaceList;
 fn sphere_band(segments: u32, rim: impl Fn(f64) -> f64) -> Mesh {
     let step = TAU / f64::from(segments);
     let rings = (20f64.to_radians() / step).ceil().max(2.0) as u32;
-    let mut positions = Vec::new();
-    for r in 0..=rings {
-        for s in 0..segments {
-            let lon = step * f64::from(s);
-            let lat = rim(lon) - step * f64::from(r);
-            positions.push([lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()]);
-        }
-    }
+    band(segments, rings, |r, s| {
+        let lon = step * f64::from(s);
+        let lat = rim(lon) - step * f64::from(r);
+        [lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()]
+    })
+}
+
+/// A band of `rows` rows of `segments` quads, each split in two, its rows of vertices at
+/// `position(row, segment)`, row 0 the top loop (the hole).
+fn band(segments: u32, rows: u32, position: impl Fn(u32, u32) -> [f64; 3]) -> Mesh {
+    let positions: Vec<[f64; 3]> = (0..=rows)
+        .flat_map(|r| (0..segments).map(move |s| (r, s)))
+        .map(|(r, s)| position(r, s))
+        .collect();
     let at = |r: u32, s: u32| r * segments + s % segments;
     let mut indices = Vec::new();
-    for r in 0..rings {
+    for r in 0..rows {
         for s in 0..segments {
             let (a, b, c, d) = (at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
             indices.extend([a, c, b, a, d, c]);
@@ -135,27 +141,10 @@ fn faired_cap_of_1000_edges_follows_the_sphere() {
 /// A tube of radius 1 from z = −1 up to an open rim at z = 0, of `segments` edges around and
 /// `rows` bands of tall faces; open at both ends (vertices `0..segments` are the top loop).
 fn tall_tube(segments: u32, rows: u32) -> Mesh {
-    let mut positions = Vec::new();
-    for r in 0..=rows {
-        for s in 0..segments {
-            let t = TAU * f64::from(s) / f64::from(segments);
-            positions.push([t.cos(), t.sin(), -f64::from(r) / f64::from(rows)]);
-        }
-    }
-    let at = |r: u32, s: u32| r * segments + s % segments;
-    let mut indices = Vec::new();
-    for r in 0..rows {
-        for s in 0..segments {
-            let (a, b, c, d) = (at(r, s), at(r, s + 1), at(r + 1, s + 1), at(r + 1, s));
-            indices.extend([a, c, b, a, d, c]);
-        }
-    }
-    Mesh::from_face_list(
-        &FaceList::triangles(&positions, &indices),
-        BuildPolicy::Strict,
-    )
-    .unwrap()
-    .0
+    band(segments, rows, |r, s| {
+        let t = TAU * f64::from(s) / f64::from(segments);
+        [t.cos(), t.sin(), -f64::from(r) / f64::from(rows)]
+    })
 }
 
 #[test]
