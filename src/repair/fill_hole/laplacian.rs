@@ -104,8 +104,9 @@ fn cotangent(apex: [f64; 3], p: [f64; 3], q: [f64; 3]) -> f64 {
 /// patch sorted.
 #[derive(Clone, Debug)]
 pub(super) struct Laplacian {
+    /// Each vertex's neighbours in the patch.
     pub(super) neighbours: Vec<Vec<u32>>,
-    /// The weight of the edge to each neighbour, symmetric.
+    /// The weight of the edge to each neighbour (the same from both ends but along the rim).
     weights: Vec<Vec<f64>>,
     /// `Σ_j weights[w][j]` with the rim corners' weights from the mesh.
     totals: Vec<f64>,
@@ -177,6 +178,8 @@ impl Laplacian {
     }
 
     /// The entries of column `c` of `U`: `(w, U[w][c])` for `c` itself and each neighbour `w`.
+    /// For an added vertex `c` only: its edges' weights come from the patch's triangles, the same
+    /// from both ends, where a rim corner's edges along the rim also count the mesh's faces.
     pub(super) fn column(&self, c: usize) -> impl Iterator<Item = (usize, f64)> + '_ {
         let diagonal = (c, -self.scales[c] * self.totals[c]);
         let others = self.neighbours[c]
