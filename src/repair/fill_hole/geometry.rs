@@ -36,6 +36,11 @@ pub(super) fn triangle_normal(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> ([f64; 3
     (unit(n), 0.5 * norm(n))
 }
 
+/// Area of the triangle `a b c`.
+pub(super) fn triangle_area(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    0.5 * norm(cross(sub(b, a), sub(c, a)))
+}
+
 /// Angle between two unit normals; π (the worst) when either is zero (no area: no direction).
 pub(super) fn angle_between(n1: [f64; 3], n2: [f64; 3]) -> f64 {
     if n1 == [0.0; 3] || n2 == [0.0; 3] {

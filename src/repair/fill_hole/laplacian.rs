@@ -12,7 +12,7 @@
 //! move (the operator is linear in the moves), the faces around the hole from the mesh (a
 //! polygon by the triangle at the rim corner), and the patch's from its triangles.
 
-use super::geometry::{cross, dot, norm, sub};
+use super::geometry::{cross, dot, norm, sub, triangle_area};
 use super::refine::Patch;
 use crate::mesh::{Mesh, VertexId};
 
@@ -60,7 +60,7 @@ impl Surround {
                 let (pp, qp) = (mesh.position(p), mesh.position(q));
                 edges.push((q, 0.5 * cotangent(pp, at, qp)));
                 edges.push((p, 0.5 * cotangent(qp, at, pp)));
-                area += norm(cross(sub(pp, at), sub(qp, at))) / 6.0;
+                area += triangle_area(pp, at, qp) / 3.0;
             }
             // One weight per edge, whatever the vertex's degree: O(d log d).
             edges.sort_unstable_by_key(|&(w, _)| w.0);
@@ -137,7 +137,7 @@ impl Laplacian {
             add(&mut weights, b, c, 0.5 * cotangent(pa, pb, pc));
             add(&mut weights, c, a, 0.5 * cotangent(pb, pc, pa));
             add(&mut weights, a, b, 0.5 * cotangent(pc, pa, pb));
-            let third = norm(cross(sub(pb, pa), sub(pc, pa))) / 6.0;
+            let third = triangle_area(pa, pb, pc) / 3.0;
             [a, b, c].iter().for_each(|&v| areas[v as usize] += third);
         }
         let mut outer = vec![[0.0; 3]; m];

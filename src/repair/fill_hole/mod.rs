@@ -34,9 +34,9 @@
 //! squared cotangent Laplacian), the rim and the mesh around it fixed, by a sparse Cholesky
 //! factorisation refined to [`FAIR_TOLERANCE`] within [`FAIR_ITERATIONS_MAX`] iterations; the
 //! faired patch is refined again where fairing stretched it, and faired again, up to
-//! [`REFINE_PASSES_MAX`] times. The refined (and faired) patch passes the same fold and intersection tests before the mesh is
-//! touched; a solve that does not converge refuses the hole ([`FillError::NotFaired`], which
-//! says how far it got).
+//! [`REFINE_PASSES_MAX`] times. The refined (and faired) patch passes the same fold and
+//! intersection tests before the mesh is touched; a solve that does not converge refuses the
+//! hole ([`FillError::NotFaired`], which says how far it got).
 //!
 //! New faces, edges and corners get zero user attributes (as [`Mesh::add_face`] and
 //! [`Mesh::split_face`] give them); the mesh keeps no per-corner normals or texture coordinates
@@ -267,8 +267,8 @@ pub fn fill_hole(mesh: &mut Mesh, h: HalfedgeId) -> Result<FilledHole, FillError
 
 /// [`fill_hole`], then refined or refined and faired as `mode` says (see the module docs).
 /// Refinement costs O(m log m) more for a fill of m triangles (about the hole's area over the
-/// square of the mean length of the edges at its rim); fairing O(m^1.5) time and O(m log m) memory per round of
-/// refinement (a sparse Cholesky factorisation in nested-dissection order).
+/// square of the mean length of the edges at its rim); fairing O(m^1.5) time and O(m log m)
+/// memory per round of refinement (a sparse Cholesky factorisation in nested-dissection order).
 ///
 /// # Errors
 /// As [`fill_hole`]; and [`FillError::NotFaired`] when fairing does not converge. The mesh is
@@ -353,15 +353,11 @@ fn fill_hole_within(
         let scales = corners.iter().map(|&v| rim_scale(mesh, v)).collect();
         let mut patch = Patch::new(&points, triangles, scales);
         let surround = (mode == FillMode::Fair).then(|| Surround::of(mesh, &corners));
-        let mut faired = Ok(());
         let refined = patch.refine(&joined, |patch| match &surround {
-            Some(surround) => {
-                faired = fair(patch, surround, limits).map(|_| ());
-                faired.is_ok()
-            }
-            None => true,
+            Some(surround) => fair(patch, surround, limits).map(|_| ()),
+            None => Ok(()),
         });
-        if let (false, Err(failure)) = (refined, faired) {
+        if let Err(failure) = refined {
             return Err(not_faired(failure, patch.n_added()));
         }
         return add_patch(mesh, h, &patch, &ids, &rim_normals, surroundings);

@@ -4,8 +4,8 @@
 //!
 //! Each corner has a *scale*: a rim corner the mean length of the mesh's edges at it (Liepa's
 //! σ, see [`rim_scale`]), a new vertex the mean scale of the triangle it split; no scale is
-//! below [`SCALE_FLOOR`] times the rim's mean boundary edge. A triangle is split when, for each of its
-//! corners, [`DENSITY`] times the distance from its centroid to the corner exceeds both the
+//! below [`SCALE_FLOOR`] times the rim's mean boundary edge. A triangle is split when, for each
+//! of its corners, [`DENSITY`] times the distance from its centroid to the corner exceeds both the
 //! corner's scale and the centroid's. An interior edge is flipped when the two angles facing
 //! it sum to more than π, unless the other diagonal is an edge already (here or in the mesh)
 //! or a new triangle would be degenerate or turned against the two it replaces.
@@ -107,13 +107,13 @@ impl Patch {
     /// Splits and flips until no triangle is split (at most [`REFINE_ROUNDS_MAX`] rounds in
     /// all), then calls `after_refining` on the patch (fairing moves the new vertices there);
     /// when that stretched triangles enough to split again, refines and calls it again, at most
-    /// [`REFINE_PASSES_MAX`] times. Whether every call succeeded. O(m log m) for a result of m
-    /// triangles, besides the calls.
-    pub(super) fn refine(
+    /// [`REFINE_PASSES_MAX`] times. Stops at the first call that fails, with its error. O(m log m)
+    /// for a result of m triangles, besides the calls.
+    pub(super) fn refine<E>(
         &mut self,
         joined: &JoinedCorners,
-        mut after_refining: impl FnMut(&mut Patch) -> bool,
-    ) -> bool {
+        mut after_refining: impl FnMut(&mut Patch) -> Result<(), E>,
+    ) -> Result<(), E> {
         let mut rounds = 0;
         for _ in 0..REFINE_PASSES_MAX {
             let mut split = false;
@@ -125,11 +125,9 @@ impl Patch {
             if !split {
                 break;
             }
-            if !after_refining(self) {
-                return false;
-            }
+            after_refining(self)?;
         }
-        true
+        Ok(())
     }
 
     /// Splits every triangle the density test marks at its centroid, but for those whose
@@ -138,8 +136,9 @@ impl Patch {
     fn split_large_triangles(&mut self) -> bool {
         let count = self.triangles.len();
         let mut split = false;
-        let rim_scale = self.scales[..self.n_rim].iter().sum::<f64>() / self.n_rim.max(1) as f64;
-        let mut added = RoundVertices::new(rim_scale / DENSITY);
+        let mean_rim_scale =
+            self.scales[..self.n_rim].iter().sum::<f64>() / self.n_rim.max(1) as f64;
+        let mut added = RoundVertices::new(mean_rim_scale / DENSITY);
         for t in 0..count {
             let tri = self.triangles[t];
             let corners = tri.map(|v| self.points[v as usize]);
