@@ -1,29 +1,35 @@
-//! The C smoke test: builds the static library, compiles the C consumer program of
-//! `c_tests/consumer/main.c` against `include/halfwing.h` with the `cc` crate's compiler, links,
-//! runs it. A Rust-only change that breaks the C ABI (or the committed header) fails here, before
-//! CMake is ever involved.
+//! The C smoke test: takes the static library cargo built with the tests, compiles the C
+//! consumer program of `c_tests/consumer/main.c` against `include/halfwing.h` with the `cc`
+//! crate's compiler, links, runs it. A Rust-only change that breaks the C ABI (or the committed
+//! header) fails here, before CMake is ever involved.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const MANIFEST_DIR: &str = env!("CARGO_MANIFEST_DIR");
 
-fn build_static_library(target_dir: &Path) -> PathBuf {
-    // A separate target directory: the outer `cargo test` may still hold the lock on its own.
-    let status = Command::new(env!("CARGO"))
-        .args(["build", "--lib", "--quiet", "--manifest-path"])
-        .arg(Path::new(MANIFEST_DIR).join("Cargo.toml"))
-        .env("CARGO_TARGET_DIR", target_dir)
-        .status()
-        .expect("cargo runs");
-    assert!(status.success(), "cargo build of the static library failed");
-    target_dir.join("debug").join("libhalfwing.a")
+/// The static library `cargo test` built beside this test binary: the `staticlib` crate type
+/// comes out of the same compilation as the `rlib` the other tests link, so a second cargo
+/// build (and a second target directory of a gigabyte) is not needed.
+fn static_library() -> PathBuf {
+    let test_binary = std::env::current_exe().expect("the test binary has a path");
+    let library = test_binary
+        .parent()
+        .expect("the test binary lies in a directory")
+        .join("libhalfwing.a");
+    assert!(
+        library.is_file(),
+        "{} is missing: cargo builds it with the tests",
+        library.display()
+    );
+    library
 }
 
 #[test]
 fn c_program_builds_links_and_runs_against_the_header() {
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("c-smoke");
-    let library = build_static_library(&work.join("target"));
+    std::fs::create_dir_all(&work).expect("the work directory can be made");
+    let library = static_library();
     let target = env!("HALFWING_BUILD_TARGET");
     let compiler = cc::Build::new()
         .target(target)
