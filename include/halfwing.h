@@ -311,7 +311,12 @@ typedef struct hw_voronoi hw_voronoi;
  *
  * The cells tile the region without gaps or overlaps; a corner shared by several cells is one
  * entry of hw_voronoi_cells_positions(). Cells are indexed by site and counter-clockwise; a
- * duplicate site, or a site whose cell misses the region, has an empty cell.
+ * duplicate site, or a site whose cell misses the region or meets it only along its boundary,
+ * has an empty cell. A cell narrower than the spacing of doubles is still listed (its corners
+ * may coincide once rounded; where rounding collapses it, it is rebuilt from its exact polygon
+ * with corners of its own); one narrower than the rounding of its own corners can come out
+ * clockwise, with twice its area within `4nε·X·D` (n corners, largest coordinate magnitude X,
+ * largest offset D from the first corner, ε = DBL_EPSILON).
  * \ingroup voronoi
  */
 typedef struct hw_voronoi_cells hw_voronoi_cells;
@@ -3457,7 +3462,8 @@ size_t hw_voronoi_cells_n_cells(const hw_voronoi_cells *cells);
 
 /**
  * A read-only view of all cell corners: `*out_xy` (x, y per position; the region's corners
- * first, then Voronoi vertices inside it, then boundary crossings; NULL when empty) and their
+ * first, then Voronoi vertices inside it, then boundary crossings, then the corners of cells
+ * rebuilt from their exact polygons; NULL when empty) and their
  * number `*out_n_positions`, valid as long as the cells.
  *
  * # Safety

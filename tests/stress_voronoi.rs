@@ -137,7 +137,6 @@ fn case(rng: &mut TestRng) {
 }
 
 #[test]
-#[ignore = "known open defects, 11 of 1500 cases fail (see docs/testing.md): run with --ignored"]
 fn random_diagrams_tile_their_regions() {
     run("voronoi", 1500, case);
 }

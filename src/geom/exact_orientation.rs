@@ -248,7 +248,7 @@ pub(crate) fn integer_list(values: &[f64]) -> Vec<WideInteger> {
 }
 
 /// The exponent of the smallest unit among the non-zero `values` (0 when there are none).
-fn smallest_unit(values: &[f64]) -> i32 {
+pub(crate) fn smallest_unit(values: &[f64]) -> i32 {
     values
         .iter()
         .map(|&x| dyadic(x))

@@ -5,6 +5,7 @@
 //! integer times a power of two, so the coordinates of one call become integers once multiplied
 //! by the power of two of their smallest unit ([`WideInteger::from_dyadic`]).
 
+use crate::voronoi::predicates::pow2;
 use std::cmp::Ordering;
 
 /// A signed integer as sign and magnitude; the magnitude is little-endian 32-bit limbs with no
@@ -107,6 +108,23 @@ impl WideInteger {
         let magnitude = top as f64;
         let exponent = 32 * (n - take) as i64;
         (if self.negative { -magnitude } else { magnitude }, exponent)
+    }
+
+    /// `self / denominator · 2^exponent` as a double: the quotient of the two numbers' leading
+    /// bits (each within `2^-64` of its own value), scaled by powers of two in steps that stay
+    /// representable, so within about two ulps of the exact value (0 or infinity beyond
+    /// doubles). `denominator` is not zero.
+    pub(crate) fn ratio(&self, denominator: &WideInteger, exponent: i64) -> f64 {
+        let (mantissa, own_exponent) = self.to_float_parts();
+        let (divisor, divisor_exponent) = denominator.to_float_parts();
+        let mut value = mantissa / divisor;
+        let mut shift = own_exponent - divisor_exponent + exponent;
+        while shift != 0 && value != 0.0 && value.is_finite() {
+            let step = shift.clamp(-1000, 1000);
+            value *= pow2(step as i32);
+            shift -= step;
+        }
+        value
     }
 
     /// `|self|`.

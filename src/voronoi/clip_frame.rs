@@ -14,6 +14,7 @@
 
 use super::clip_region::ClipPolygon;
 use super::diagram::{Voronoi, exactly_rounded_circumcentre_offset};
+use super::exact_cell::FrameMap;
 use super::expansion::two_diff;
 use super::predicates::normalising_scale_of_box;
 
@@ -131,6 +132,14 @@ fn local_offset(p: [f64; 2], offset: [f64; 2], origin: [f64; 2], scale: f64) -> 
 }
 
 impl LocalFrame {
+    /// How a point of the input maps into the frame.
+    pub(crate) fn frame_map(&self) -> FrameMap {
+        FrameMap {
+            origin: self.origin,
+            scale: self.scale,
+        }
+    }
+
     /// Moves `positions` (all but the first `corners.len()`, which are the region's corners)
     /// from the frame back to the diagram's coordinates; the corners become `corners` exactly.
     pub(crate) fn to_diagram(&self, positions: &mut [[f64; 2]], corners: &[[f64; 2]]) {

@@ -8,7 +8,7 @@ use super::crossing_order::{
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
-use super::exact_cell::cell_has_interior;
+use super::exact_cell::{FrameMap, cell_has_interior, exact_cell_corners};
 use super::ids::SiteId;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
@@ -26,15 +26,22 @@ use std::cmp::Ordering;
 /// outside it) and every duplicate site have an empty polygon.
 ///
 /// A cell is the part of the region nearest to its site, and it is listed when that part has an
-/// interior, however thin: a cell that meets the region only along its boundary (in a segment or
-/// a point) is empty, and every other cell has at least three positions. Where a cell is
-/// narrower than the spacing of doubles there (sites an ulp apart far from the origin, or far
-/// closer together than the region is wide), it keeps its own positions, in their exact order
-/// along the region's boundary, but some of them may coincide once rounded: such a cell has zero
-/// area in floating point. One known limit: a cell narrower than the rounding of its own Voronoi
-/// vertices inside the region (vertices near 1e23 in a region near 1e73, strips 1e-13 tall
-/// ending at vertices near 1e31) has corners whose order only rounding decides, and can come
-/// out clockwise, its area (of either sign) within the rounding of its corners' coordinates.
+/// interior, however thin (decided exactly): a cell that meets the region only along its
+/// boundary (in a segment or a point) is empty, and every other cell has at least three
+/// positions. Where a cell is narrower than the spacing of doubles there (sites an ulp apart far
+/// from the origin, or far closer together than the region is wide), it keeps its own positions,
+/// in their exact order along the region's boundary, but some of them may coincide once rounded:
+/// such a cell has zero area in floating point. Where rounding collapses such a cell altogether
+/// (its sides rounded onto the region's boundary or onto one another), it is rebuilt from its
+/// exact polygon: its corners, each within two ulps of its exact place, are positions of its own,
+/// after all the shared ones, and its neighbours meet one another there within rounding.
+///
+/// A cell narrower than the rounding of its own corners (vertices near 1e23 in a region near
+/// 1e73, strips 1e-13 tall ending at vertices near 1e31) has corners whose order only rounding
+/// decides, and can come out clockwise; its signed area `A` is then within the rounding of its
+/// corners: `2|A| ≤ 4nε·X·D` for `n` corners whose largest coordinate magnitude is `X` and
+/// largest offset from the first corner is `D` (`ε` is [`f64::EPSILON`]). Every other cell is
+/// counter-clockwise.
 #[derive(Clone, Debug)]
 pub struct ClippedCells {
     positions: Vec<[f64; 2]>,
@@ -71,11 +78,36 @@ enum PerimeterKind {
 const EXACT_ORDER_BAND: f64 = 1.0e-6;
 
 /// The sites and the region's corners in the input's own coordinates, where the exact order of
-/// crossings is decided (clipping may run in a local frame; see `clip_frame`).
+/// crossings is decided (clipping may run in a local frame; see `clip_frame`), and the map from
+/// them into the frame.
 #[derive(Clone, Copy)]
 struct InputPlaces<'a> {
     sites: &'a [[f64; 2]],
     corners: &'a [[f64; 2]],
+    frame: FrameMap,
+}
+
+/// What clipping leaves of a Voronoi edge.
+#[derive(Clone, Copy, Debug)]
+enum ClippedEdge {
+    /// The `[start, end]` positions of its piece inside the region.
+    Piece([u32; 2]),
+    /// Nothing of positive length in floating point, though the edge passes the region within
+    /// rounding: a cell beside it that comes out empty may be a sliver narrower than rounding,
+    /// which is decided exactly (see [`Voronoi::exact_cell`]).
+    NearMiss,
+    /// Nothing, with room to spare.
+    Miss,
+}
+
+impl ClippedEdge {
+    /// The piece's positions, [`INVALID`] for a miss.
+    fn piece(self) -> [u32; 2] {
+        match self {
+            ClippedEdge::Piece(piece) => piece,
+            _ => [INVALID; 2],
+        }
+    }
 }
 
 /// Positions under construction: `[corners][Voronoi vertices inside][boundary crossings]`.
@@ -351,16 +383,23 @@ impl Builder<'_> {
         };
         enter < m
             && exit < m
-            && lo - hi
-                <= EXACT_ORDER_BAND
-                    * lo.abs()
-                        .max(hi.abs())
-                        .max(self.reach.parameter_extent(base, dir))
+            && self.within_rounding([lo, hi], [base, dir])
             && bisector_has_piece_inside(
                 self.input.corners,
                 sites.map(|s| self.input.sites[s as usize]),
                 reversed,
             )
+    }
+
+    /// Do the parameters `lo ≥ hi` of crossings along `base + s·dir` lie within
+    /// [`EXACT_ORDER_BAND`] of each other, relative to the larger of them and of how far they
+    /// reach across the region (see [`Reach::parameter_extent`])?
+    fn within_rounding(&self, [lo, hi]: [f64; 2], [base, dir]: [[f64; 2]; 2]) -> bool {
+        lo - hi
+            <= EXACT_ORDER_BAND
+                * lo.abs()
+                    .max(hi.abs())
+                    .max(self.reach.parameter_extent(base, dir))
     }
 
     /// The two sites of crossing `i` in the input's coordinates, if it is a bisector crossing.
@@ -417,9 +456,14 @@ impl Voronoi {
         let input = InputPlaces {
             sites: self.delaunay.sites(),
             corners: clip.vertices(),
+            frame: FrameMap::IDENTITY,
         };
         let Some(local) = self.local_clip_frame(clip) else {
             return self.clip_in_own_frame(clip, input, region_owner);
+        };
+        let input = InputPlaces {
+            frame: local.frame_map(),
+            ..input
         };
         let mut cells = local
             .diagram
@@ -457,7 +501,7 @@ impl Voronoi {
         // crossings, are clipped, each once for both of its cells, in the order of their keys.
         let placed = |v: u32| vertex_position[v as usize] != INVALID;
         let keys = self.edges_with_unplaced_end(placed, &unplaced);
-        let clipped: Vec<(u32, [u32; 2])> = keys
+        let clipped: Vec<(u32, ClippedEdge)> = keys
             .into_iter()
             .map(|key| {
                 (
@@ -476,18 +520,22 @@ impl Voronoi {
             let to = vertex_position[side.to as usize];
             (from != INVALID && to != INVALID).then_some([from, to])
         };
-        let piece = |side: Side| -> [u32; 2] {
+        // The side's piece (`[INVALID; 2]` for none), and whether it missed the region only
+        // within rounding.
+        let piece = |side: Side| -> ([u32; 2], bool) {
             if let Some(p) = placed_piece(side) {
-                return p;
+                return (p, false);
             }
-            let [start, end] = clipped
+            let edge = clipped
                 .binary_search_by_key(&side.edge, |&(key, _)| key)
-                .map_or([INVALID; 2], |i| clipped[i].1);
-            if side.reversed {
+                .map_or(ClippedEdge::Miss, |i| clipped[i].1);
+            let [start, end] = edge.piece();
+            let piece = if side.reversed {
                 [end, start]
             } else {
                 [start, end]
-            }
+            };
+            (piece, matches!(edge, ClippedEdge::NearMiss))
         };
         let n_sites = self.delaunay.n_sites();
         let mut ranges = large_arrays::zeroed::<[u32; 2]>(n_sites);
@@ -498,6 +546,7 @@ impl Voronoi {
         let assemble_run = |_, run: &[u32]| {
             let mut local = large_arrays::with_capacity(7 * run.len());
             let mut spans = Vec::with_capacity(run.len());
+            let mut rebuilt = Vec::new();
             let (mut sides, mut cell_pieces) = (Vec::new(), Vec::new());
             for &handle in run {
                 let first = local.len();
@@ -508,20 +557,32 @@ impl Voronoi {
                         .map(|[from, _]| local.push(from))
                         .is_some()
                 });
-                let has_sides = if all_placed {
+                // One or two corners: Voronoi vertices that coincide once rounded.
+                let merged = all_placed && (1..3).contains(&(local.len() - first));
+                let has_sides = if all_placed && !merged {
                     local.len() > first
                 } else {
                     local.truncate(first);
                     self.handle_sides(handle, &mut sides);
                     cell_pieces.clear();
-                    cell_pieces.extend(sides.iter().map(|&side| piece(side)));
+                    let mut near_miss = merged;
+                    cell_pieces.extend(sides.iter().map(|&side| {
+                        let (piece, near) = piece(side);
+                        near_miss |= near;
+                        piece
+                    }));
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
-                    // Fewer than three corners, or corners in a line that are the rounding of
-                    // no interior: the cell meets the region only along its boundary, in a
-                    // segment or a point (see `ClippedCells`).
-                    if local.len() - first < 3 || !self.has_interior(s, &sides, &local[first..], &b)
-                    {
+                    if local.len() - first < 3 {
+                        // Fewer than three corners: the cell meets the region only along its
+                        // boundary, in a segment or a point (see `ClippedCells`), unless rounding
+                        // collapsed it.
+                        local.truncate(first);
+                        if near_miss && let Some(corners) = self.exact_cell(s, &sides, &b) {
+                            rebuilt.push((s, corners));
+                        }
+                    } else if !self.has_interior(s, &sides, &local[first..], &b) {
+                        // Corners in a line that are the rounding of no interior.
                         local.truncate(first);
                     }
                     !sides.is_empty()
@@ -530,7 +591,7 @@ impl Voronoi {
                     spans.push([s, first as u32, (local.len() - first) as u32]);
                 }
             }
-            (local, spans)
+            (local, spans, rebuilt)
         };
         let runs = map_each(
             order.chunks(run_length(order.len())).collect(),
@@ -541,9 +602,11 @@ impl Voronoi {
         let mut indices = if single {
             Vec::new()
         } else {
-            large_arrays::with_capacity(runs.iter().map(|(l, _)| l.len()).sum())
+            large_arrays::with_capacity(runs.iter().map(|(l, _, _)| l.len()).sum())
         };
-        for (local, spans) in runs {
+        let mut rebuilt = Vec::new();
+        for (local, spans, run_rebuilt) in runs {
+            rebuilt.extend(run_rebuilt);
             let offset = indices.len() as u32;
             if single {
                 let len = local.len();
@@ -561,6 +624,14 @@ impl Voronoi {
             if owner != INVALID {
                 ranges[owner as usize] = [0, m as u32];
                 indices.extend(0..m as u32);
+            }
+        }
+        // Cells that rounding collapsed, from their exact polygons, with positions of their own.
+        for (site, corners) in rebuilt {
+            ranges[site as usize] = [indices.len() as u32, corners.len() as u32];
+            for p in corners {
+                indices.push(b.positions.len() as u32);
+                b.positions.push(p);
             }
         }
         ClippedCells {
@@ -603,7 +674,29 @@ impl Voronoi {
         if twice_area.abs() > rounding {
             return true;
         }
-        let neighbours: Vec<[f64; 2]> = sides
+        cell_has_interior(
+            b.input.sites[site as usize],
+            &self.neighbour_sites(site, sides, b),
+            b.input.corners,
+        )
+    }
+
+    /// The corners of the cell of `site` (with sides `sides`), rounded from their exact places,
+    /// when it has an interior: for a cell whose floating-point pieces collapsed onto fewer than
+    /// three positions (see [`ClippedEdge::NearMiss`]).
+    #[cold]
+    fn exact_cell(&self, site: u32, sides: &[Side], b: &Builder) -> Option<Vec<[f64; 2]>> {
+        exact_cell_corners(
+            b.input.sites[site as usize],
+            &self.neighbour_sites(site, sides, b),
+            b.input.corners,
+            b.input.frame,
+        )
+    }
+
+    /// The sites across the sides `sides` of the cell of `site`, in the input's coordinates.
+    fn neighbour_sites(&self, site: u32, sides: &[Side], b: &Builder) -> Vec<[f64; 2]> {
+        sides
             .iter()
             .map(|side| {
                 let ends = self.edge_ends(side.edge);
@@ -614,8 +707,7 @@ impl Voronoi {
                 };
                 b.input.sites[other as usize]
             })
-            .collect();
-        cell_has_interior(b.input.sites[site as usize], &neighbours, b.input.corners)
+            .collect()
     }
 
     /// Gives every Voronoi vertex inside the region (closed test; the same test decides every
@@ -666,10 +758,8 @@ impl Voronoi {
             .map_or(INVALID, |site| site.0)
     }
 
-    /// Clips the edge with ends `ends`: `[start, end]` positions, or `[INVALID; 2]` when
-    /// nothing of positive length is left.
-    fn clip_edge(&self, ends: EdgeEnds, vertex_position: &[u32], b: &mut Builder) -> [u32; 2] {
-        const NONE: [u32; 2] = [INVALID, INVALID];
+    /// Clips the edge with ends `ends` to the region.
+    fn clip_edge(&self, ends: EdgeEnds, vertex_position: &[u32], b: &mut Builder) -> ClippedEdge {
         let clip = b.clip;
         let m = clip.vertices().len();
         let (o, t) = (ends.from, ends.to);
@@ -681,7 +771,10 @@ impl Voronoi {
             EdgeGeometry::Segment { from, to } => {
                 if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
                 {
-                    return [vertex_position[o as usize], vertex_position[t as usize]];
+                    return ClippedEdge::Piece([
+                        vertex_position[o as usize],
+                        vertex_position[t as usize],
+                    ]);
                 }
                 // From the end nearer the region: a crossing's parameter is rounded relative to
                 // its distance from the base, which for a far end (a circumcentre of nearly
@@ -724,7 +817,15 @@ impl Voronoi {
             };
             if rate == 0.0 {
                 if f0 < 0.0 {
-                    return NONE;
+                    // Parallel to side `i` and outside it: near when its distance is lost in
+                    // the rounding of the edge functions at `base`.
+                    let largest = (0..m).map(|k| clip.edge_function(k, base).abs());
+                    let near = -f0 <= EXACT_ORDER_BAND * largest.fold(0.0, f64::max);
+                    return if near {
+                        ClippedEdge::NearMiss
+                    } else {
+                        ClippedEdge::Miss
+                    };
                 }
                 continue;
             }
@@ -748,7 +849,11 @@ impl Voronoi {
                 reversed,
             )
         {
-            return NONE;
+            return if b.within_rounding([lo, hi], [base, dir]) {
+                ClippedEdge::NearMiss
+            } else {
+                ClippedEdge::Miss
+            };
         }
         let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
         let start = if enter == usize::MAX {
@@ -767,10 +872,12 @@ impl Voronoi {
         } else {
             b.crossing(exit, at(hi), sites)
         };
+        // A piece whose ends rounded onto one point, or onto an end the region holds only in
+        // floating point.
         if start == INVALID || end == INVALID || start == end {
-            return NONE;
+            return ClippedEdge::NearMiss;
         }
-        if reversed { [end, start] } else { [start, end] }
+        ClippedEdge::Piece(if reversed { [end, start] } else { [start, end] })
     }
 }
 
@@ -839,8 +946,9 @@ fn assemble_cell(pieces: &[[u32; 2]], b: &Builder, out: &mut Vec<u32>) {
 }
 
 impl ClippedCells {
-    /// All vertex positions (corners of the region first, then Voronoi vertices inside it, then
-    /// boundary crossings).
+    /// All vertex positions: the corners of the region first, then Voronoi vertices inside it,
+    /// then boundary crossings, then the corners of cells rebuilt from their exact polygons (see
+    /// [`ClippedCells`]).
     pub fn positions(&self) -> &[[f64; 2]] {
         &self.positions
     }
@@ -978,6 +1086,25 @@ mod tests {
         for site in (0..sites.len() as u32).map(SiteId) {
             assert!(cells.cell(site).unwrap().len() >= 3, "{site}");
         }
+    }
+
+    #[test]
+    fn a_sliver_that_rounding_collapses_is_rebuilt_exactly() {
+        // The bisector of the first two sites runs 2e-294 above the region's bottom side y = 1:
+        // the tiny site's part of the region is a strip that thin, whose Voronoi vertex with
+        // the third site rounds onto that side. Its cell came out empty.
+        let sites = [[0.0, 2.0], [1e-294, 4e-294], [2.0, 1.0]];
+        let clip = ClipPolygon::rectangle([0.0, 1.0], [2.0, 2.0]).unwrap();
+        let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+        check_tiling(&cells, &clip);
+        let sliver = cells.cell_polygon(SiteId(1)).unwrap();
+        assert!(sliver.len() >= 3, "{sliver:?}");
+        // Its corners lie on the bottom side, from the left corner to where the strip ends.
+        for p in &sliver {
+            assert_eq!(p[1], 1.0, "{sliver:?}");
+            assert!((0.0..=2.0).contains(&p[0]), "{sliver:?}");
+        }
+        assert!(sliver.contains(&[0.0, 1.0]), "{sliver:?}");
     }
 
     #[test]

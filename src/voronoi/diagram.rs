@@ -9,8 +9,8 @@ use super::expansion::Exact;
 use super::ids::{SiteId, VoronoiHalfedgeId, VoronoiVertexId};
 use super::incremental::prev_edge;
 use super::parallel::{map_each, seamed_run_length};
-use super::predicates::{incircle_in, normalising_scale_of_box, pow2};
-use crate::geom::exact_orientation::{dyadic, integers};
+use super::predicates::{incircle_in, normalising_scale_of_box};
+use crate::geom::exact_orientation::{integers, smallest_unit};
 use crate::support::disjoint_sets;
 use crate::support::large_arrays;
 
@@ -578,13 +578,7 @@ fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2], unit: f64) -
 fn wide_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let values = [a[0], a[1], b[0], b[1], c[0], c[1]];
     // `integers` multiplies every value by the power of two of the smallest unit among them.
-    let unit = values
-        .iter()
-        .map(|&x| dyadic(x))
-        .filter(|&(_, mantissa, _)| mantissa != 0)
-        .map(|(_, _, exponent)| i64::from(exponent))
-        .min()
-        .unwrap_or(0);
+    let unit = i64::from(smallest_unit(&values));
     let [ax, ay, bx, by, cx, cy] = integers(values);
     let (bx, by, cx, cy) = (bx.sub(&ax), by.sub(&ay), cx.sub(&ax), cy.sub(&ay));
     let bl = bx.mul(&bx).add(&by.mul(&by));
@@ -592,20 +586,8 @@ fn wide_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
     let det = bx.mul(&cy).sub(&by.mul(&cx));
     let ux = cy.mul(&bl).sub(&by.mul(&cl));
     let uy = bx.mul(&cl).sub(&cx.mul(&bl));
-    let (det_mantissa, det_exponent) = det.to_float_parts();
     // Degree three over degree two, halved: the result is in units of 2^unit.
-    [ux, uy].map(|u| {
-        let (mantissa, exponent) = u.to_float_parts();
-        let mut value = mantissa / det_mantissa;
-        let mut shift = exponent - det_exponent + unit - 1;
-        // Powers of two in steps that stay representable; the last rounds once.
-        while shift != 0 && value != 0.0 && value.is_finite() {
-            let step = shift.clamp(-1000, 1000);
-            value *= pow2(step as i32);
-            shift -= step;
-        }
-        value
-    })
+    [ux, uy].map(|u| u.ratio(&det, unit - 1))
 }
 
 #[cfg(test)]
