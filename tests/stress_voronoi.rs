@@ -62,10 +62,13 @@ fn random_sites(rng: &mut TestRng) -> Vec<[f64; 2]> {
         // Mixed magnitudes: a few sites scaled by powers of ten up to 1e±300.
         // Up to 1e±150: circumcentres of flat triangles lie up to 1e16 times farther out and
         // must stay finite for the checks.
+        // Each scaled from where it was drawn: a site drawn twice was scaled twice, up to
+        // infinity.
+        let drawn = sites.clone();
         for _ in 0..rng.random_range(1..4) {
             let k = rng.random_range(0..sites.len());
             let factor = 10f64.powi(rng.random_range(-300..=150));
-            sites[k] = sites[k].map(|x| x * factor);
+            sites[k] = drawn[k].map(|x| x * factor);
         }
     }
     sites

@@ -13,7 +13,7 @@
 //! coordinates.
 
 use super::clip_region::ClipPolygon;
-use super::diagram::{Voronoi, exactly_rounded_circumcentre_offset};
+use super::diagram::{SplitCentre, Voronoi};
 use super::exact_cell::FrameMap;
 use super::expansion::two_diff;
 use super::predicates::normalising_scale_of_box;
@@ -95,10 +95,16 @@ impl Voronoi {
         let unscale = d.scale.recip();
         let diagram = Voronoi::from_delaunay_by(delaunay, |_, t| {
             let [a, b, c] = d.triangle_points(t);
-            let offset = exactly_rounded_circumcentre_offset(a, b, c).map(|x| x * unscale);
-            let corner = sites[d.triangles[3 * t as usize] as usize];
-            let centre = local_offset(corner, offset, origin, scale);
-            (centre, (offset[0].abs() + offset[1].abs()) * scale)
+            let split = SplitCentre::of(a, b, c);
+            let offset = split.offset.map(|x| x * unscale);
+            // The corners' own coordinates, which the scaled points are exact multiples of.
+            let base = [0, 1].map(|k| {
+                let corner = d.triangles[3 * t as usize + split.corner[k]];
+                sites[corner as usize][k]
+            });
+            let centre = local_offset(base, offset, origin, scale);
+            let [ux, uy] = split.from_first.map(|x| x * unscale);
+            (centre, (ux.abs() + uy.abs()) * scale)
         });
         Some(LocalFrame {
             diagram,

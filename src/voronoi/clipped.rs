@@ -807,12 +807,21 @@ impl Voronoi {
                 false,
             ),
         };
+        // The vertices at `s = 0` and (for a segment) at `s = 1`, and their positions.
+        let (base_vertex, far_vertex) = if reversed { (t, o) } else { (o, t) };
+        let position = |v: u32| vertex_position.get(v as usize).copied().unwrap_or(INVALID);
+        // An end outside the region is cut off by a side it lies outside of, even where the
+        // crossing's parameter rounds onto the end's own (a vertex outside by far less than an
+        // ulp of the edge).
+        let needs_entry = position(base_vertex) == INVALID;
+        let needs_exit = far.is_some() && position(far_vertex) == INVALID;
         let (mut enter, mut exit) = (usize::MAX, usize::MAX);
         for i in 0..m {
             let f0 = clip.edge_function(i, base);
             // For segments use the end's own edge function so the test agrees with the vertex's.
-            let rate = match far {
-                Some(to) => clip.edge_function(i, to) - f0,
+            let f1 = far.map(|to| clip.edge_function(i, to));
+            let rate = match f1 {
+                Some(f1) => f1 - f0,
                 None => clip.edge_rate(i, dir),
             };
             if rate == 0.0 {
@@ -831,11 +840,13 @@ impl Voronoi {
             }
             let s = -f0 / rate;
             if rate > 0.0 {
-                if s > lo {
+                if s > lo || (s == lo && needs_entry && enter == usize::MAX && f0 < 0.0) {
                     lo = s;
                     enter = i;
                 }
-            } else if s < hi {
+            } else if s < hi
+                || (s == hi && needs_exit && exit == usize::MAX && f1.is_some_and(|f1| f1 < 0.0))
+            {
                 hi = s;
                 exit = i;
             }
@@ -860,15 +871,13 @@ impl Voronoi {
             // No entering constraint: the start is the finite end of the edge, inside. (A line
             // or ray whose rates all round to zero has no such end: the edge is dropped rather
             // than indexed past the vertices.)
-            let v = if reversed { t } else { o };
-            vertex_position.get(v as usize).copied().unwrap_or(INVALID)
+            position(base_vertex)
         } else {
             b.crossing(enter, at(lo), sites)
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if exit == usize::MAX {
-            let v = if reversed { o } else { t };
-            vertex_position.get(v as usize).copied().unwrap_or(INVALID)
+            position(far_vertex)
         } else {
             b.crossing(exit, at(hi), sites)
         };
@@ -1105,6 +1114,25 @@ mod tests {
             assert!((0.0..=2.0).contains(&p[0]), "{sliver:?}");
         }
         assert!(sliver.contains(&[0.0, 1.0]), "{sliver:?}");
+    }
+
+    #[test]
+    fn an_edge_ending_just_outside_the_region_is_cut_at_its_side() {
+        // The Voronoi vertex of the first three sites lies 5e-67 below the region's bottom
+        // side, an ulp of its edges' parameters being 1e-16: the crossings of both its edges
+        // with the side rounded onto the vertex itself, no side cut the edges off, and they were
+        // dropped; the first site's cell lost its triangle down to the side.
+        let sites = [
+            [1.0, 1.0],
+            [2.0, 0.0],
+            [3e-66, 2e-66],
+            [1.0, 2.0],
+            [3.0, 1.0],
+        ];
+        let clip = ClipPolygon::rectangle([3e-66, 2e-66], [3.0, 2.0]).unwrap();
+        let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+        check_tiling(&cells, &clip);
+        assert_eq!(cells.cell_area(SiteId(0)).unwrap(), 2.0);
     }
 
     #[test]

@@ -246,9 +246,14 @@ impl Voronoi {
     fn circumcircle(&self, t: u32, unscale: f64) -> ([f64; 2], f64) {
         let d = &self.delaunay;
         let [a, b, c] = d.triangle_points(t);
-        let [ux, uy] = circumcentre_offset(a, b, c);
-        let centre = [(a[0] + ux) * unscale, (a[1] + uy) * unscale];
-        (centre, (ux.abs() + uy.abs()) * unscale)
+        let (centre, [ux, uy]) = match fast_circumcentre_offset(a, b, c) {
+            Some(u) => ([a[0] + u[0], a[1] + u[1]], u),
+            None => {
+                let split = SplitCentre::of(a, b, c);
+                (split.centre(), split.from_first)
+            }
+        };
+        (centre.map(|x| x * unscale), (ux.abs() + uy.abs()) * unscale)
     }
 
     /// The underlying Delaunay triangulation.
@@ -451,22 +456,31 @@ pub(crate) struct EdgeEnds {
     pub right: u32,
 }
 
-/// The circumcentre of triangle `abc` minus `a`, to within about 1e-10 of its length.
+/// The circumcentre of triangle `abc` minus `a`, to within about 1e-10 of its length:
+/// [`fast_circumcentre_offset`], or for a flat triangle the exact offset rounded once.
+#[cfg(test)]
+fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
+    fast_circumcentre_offset(a, b, c)
+        .unwrap_or_else(|| exactly_rounded_circumcentre_offset(a, b, c))
+}
+
+/// The circumcentre of triangle `abc` minus `a`, to within about 1e-10 of its length, or `None`
+/// for a flat triangle.
 ///
 /// The usual formula `(cy·|b|² − by·|c|², bx·|c|² − cx·|b|²) / 2(bx·cy − by·cx)` (with `b`, `c`
 /// taken relative to `a`) is used when a bound on its rounding errors says it is that accurate:
 /// every rounding, the differences `b − a`, `c − a` included, is at most a few ulps of the
 /// magnitudes of the products, so when the results are no more than [`CANCELLATION_LIMIT`]
 /// times smaller than those magnitudes the relative error stays below ~1e-10. Flatter triangles
-/// (a small fraction; their centres are far away and sensitive) are computed exactly and
-/// rounded once.
+/// (a small fraction; their centres are far away and sensitive) are left to exact arithmetic
+/// ([`SplitCentre`]).
 ///
 /// The differences are first brought near 1 by a power of two (exact, short of underflow), so
 /// that products of three of them neither underflow (sites of a frame normalised for a far site,
 /// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
 /// sites near `1e-300` keep their low bits beside one at `1e301`).
-#[inline]
-pub(crate) fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
+#[inline(always)]
+fn fast_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
     let (cx, cy) = (c[0] - a[0], c[1] - a[1]);
     let (unit, unit_inverse) = unit_of_differences([bx, by, cx, cy]);
@@ -476,18 +490,13 @@ pub(crate) fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64
     let (ux, uy) = (cy * bl - by * cl, bx * cl - cx * bl);
     let det_size = (bx * cy).abs() + (by * cx).abs();
     let u_size = (cy * bl).abs() + (by * cl).abs() + (bx * cl).abs() + (cx * bl).abs();
-    let offset = if det != 0.0
+    let accurate = det != 0.0
         && det.abs() * CANCELLATION_LIMIT >= det_size
         && (ux.abs() + uy.abs()) * CANCELLATION_LIMIT >= u_size
-        && (ux.is_finite() && uy.is_finite())
-    {
-        let inverse = 0.5 / det;
-        [ux * inverse, uy * inverse]
-    } else {
-        exact_circumcentre_offset(a, b, c, unit)
-    };
+        && (ux.is_finite() && uy.is_finite());
+    let inverse = 0.5 / det;
     // `unit_inverse` is exact, so this rounds as dividing by `unit` would, several times faster.
-    offset.map(|x| x * unit_inverse)
+    accurate.then(|| [ux * inverse, uy * inverse].map(|x| x * unit_inverse))
 }
 
 /// [`normalising_scale_of_box`] of a box reaching `largest` (not negative) in every direction,
@@ -516,7 +525,7 @@ fn unit_of_differences([bx, by, cx, cy]: [f64; 4]) -> (f64, f64) {
 }
 
 /// The circumcentre of triangle `abc` minus `a`, each coordinate rounded from the exact value
-/// (not only the offset's length accurate, as [`circumcentre_offset`] gives it: a triangle
+/// (not only the offset's length accurate, as [`fast_circumcentre_offset`] gives it: a triangle
 /// 1e15 times wider than tall has a centre whose short coordinate matters).
 pub(crate) fn exactly_rounded_circumcentre_offset(
     a: [f64; 2],
@@ -525,6 +534,50 @@ pub(crate) fn exactly_rounded_circumcentre_offset(
 ) -> [f64; 2] {
     let (unit, _) = unit_of_differences([b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]]);
     exact_circumcentre_offset(a, b, c, unit).map(|x| x / unit)
+}
+
+/// A circumcentre as `base + offset`, coordinate by coordinate: `base[k]` is the coordinate of
+/// the triangle's corner nearest to the centre along axis `k`, and `offset[k]` the centre's
+/// offset from it, rounded once from its exact value, so that their sum is within about an ulp
+/// of the centre's coordinate. From the first corner alone a short coordinate can be lost: with
+/// that corner 1e109 away along x and 5e96 along y, and the two others 5e-13 apart along y
+/// beside the centre, its y came out 0 instead of 536.
+pub(crate) struct SplitCentre {
+    pub base: [f64; 2],
+    /// Which corner (0, 1 or 2, from `a`) each coordinate of `base` is taken from.
+    pub corner: [usize; 2],
+    pub offset: [f64; 2],
+    /// The centre minus the first corner, each coordinate rounded once.
+    pub from_first: [f64; 2],
+}
+
+impl SplitCentre {
+    pub(crate) fn of(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> SplitCentre {
+        let from_first = exactly_rounded_circumcentre_offset(a, b, c);
+        let approximate = [0, 1].map(|k| a[k] + from_first[k]);
+        let rotations = [[a, b, c], [b, c, a], [c, a, b]];
+        let (mut base, mut corner, mut offset) = (a, [0; 2], from_first);
+        for k in 0..2 {
+            let gap = |r: usize| (rotations[r][0][k] - approximate[k]).abs();
+            corner[k] = (1..3).fold(0, |best, r| if gap(r) < gap(best) { r } else { best });
+            if corner[k] != 0 {
+                let [p, q, r] = rotations[corner[k]];
+                base[k] = p[k];
+                offset[k] = exactly_rounded_circumcentre_offset(p, q, r)[k];
+            }
+        }
+        SplitCentre {
+            base,
+            corner,
+            offset,
+            from_first,
+        }
+    }
+
+    /// The centre, each coordinate rounded from `base + offset`.
+    pub(crate) fn centre(&self) -> [f64; 2] {
+        [0, 1].map(|k| self.base[k] + self.offset[k])
+    }
 }
 
 /// Can two adjacent triangles be exactly cocircular, given their floating-point circumcentres
@@ -610,6 +663,32 @@ mod tests {
         assert!(
             (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
         );
+    }
+
+    #[test]
+    fn a_flat_triangles_centre_keeps_its_short_coordinate() {
+        // Two sites 5e-13 apart on a vertical line at 1e15 and one 1e109 away: the centre lies on
+        // their horizontal bisector, y = 536.26932490503235, but 5e108 from every corner. Taken
+        // from the far corner, whose y is 5e96, its y came out 0.
+        let far = [1.000000000000049e109, 5.362693249050314e96];
+        let (b, c) = (
+            [1000000000000051.5, 536.2693249050326],
+            [1000000000000051.5, 536.2693249050321],
+        );
+        let midpoint = 0.5 * (b[1] + c[1]);
+        let from_far = exactly_rounded_circumcentre_offset(far, b, c);
+        assert_eq!(far[1] + from_far[1], 0.0);
+        for [p, q, r] in [[far, b, c], [b, c, far], [c, far, b]] {
+            let [x, y] = SplitCentre::of(p, q, r).centre();
+            assert!(
+                (y - midpoint).abs() <= 2.0 * f64::EPSILON * midpoint,
+                "y = {y}"
+            );
+            assert!(
+                (x - 5.000000000000245e108).abs() <= 4.0 * f64::EPSILON * x,
+                "x = {x}"
+            );
+        }
     }
 
     #[test]
