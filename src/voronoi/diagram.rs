@@ -247,8 +247,8 @@ impl Voronoi {
         let d = &self.delaunay;
         let [a, b, c] = d.triangle_points(t);
         let (centre, [ux, uy]) = match fast_circumcentre_offset(a, b, c) {
-            Some(u) => ([a[0] + u[0], a[1] + u[1]], u),
-            None => {
+            Some(u) if !loses_a_coordinate(a, u) => ([a[0] + u[0], a[1] + u[1]], u),
+            _ => {
                 let split = SplitCentre::of(a, b, c);
                 (split.centre(), split.from_first)
             }
@@ -536,6 +536,18 @@ pub(crate) fn exactly_rounded_circumcentre_offset(
     exact_circumcentre_offset(a, b, c, unit).map(|x| x / unit)
 }
 
+/// Does the centre `a + offset` have a coordinate far smaller than the rounding of the fast
+/// formula there? That rounding scales with the offset's length and with `a`'s coordinate, not
+/// with the centre's: a centre 5e-288 above a region's side, 2e-59 from its corners, came out on
+/// the side. Such a centre is placed by [`SplitCentre`] instead; elsewhere (all but a sliver of
+/// the plane along the axes) the fast formula stays within a few hundred ulps.
+#[inline(always)]
+fn loses_a_coordinate(a: [f64; 2], offset: [f64; 2]) -> bool {
+    const SHORT: f64 = 1.0 / 256.0;
+    let reach = offset[0].abs() + offset[1].abs();
+    (0..2).any(|k| (a[k] + offset[k]).abs() < SHORT * (reach + a[k].abs()))
+}
+
 /// A circumcentre as `base + offset`, coordinate by coordinate: `base[k]` is the coordinate of
 /// the triangle's corner nearest to the centre along axis `k`, and `offset[k]` the centre's
 /// offset from it, rounded once from its exact value, so that their sum is within about an ulp
@@ -599,6 +611,10 @@ fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
 /// error from a few ulps (2.2e-16 each) amplified by this factor.
 const CANCELLATION_LIMIT: f64 = 1.0e5;
 
+/// Below this, a product of three scaled differences can underflow (`2^-300` cubed is
+/// `2^-900`, and the products' error terms lie 2^-106 below that).
+const UNDERFLOWING_TERM: f64 = 4.909093465297727e-91; // 2^-300
+
 /// [`circumcentre_offset`] in exact arithmetic on the differences times `unit` (a power of two),
 /// each coordinate rounded once at the end (the division adds half an ulp).
 #[cold]
@@ -609,6 +625,16 @@ fn exact_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2], unit: f64) -
     };
     let (bx, by) = (difference(b[0], a[0]), difference(b[1], a[1]));
     let (cx, cy) = (difference(c[0], a[0]), difference(c[1], a[1]));
+    // Products of three terms this small underflow (a difference of 1e-287 beside one of 2e-59
+    // lost the centre's short coordinate): integers take them.
+    let smallest = [&bx, &by, &cx, &cy]
+        .iter()
+        .flat_map(|Exact(terms)| terms.iter())
+        .filter(|t| **t != 0.0)
+        .fold(f64::INFINITY, |m, t| m.min(t.abs()));
+    if smallest < UNDERFLOWING_TERM {
+        return wide_circumcentre_offset(a, b, c).map(|x| x * unit);
+    }
     let bl = bx.times(&bx).plus(&by.times(&by)).compressed();
     let cl = cx.times(&cx).plus(&cy.times(&cy)).compressed();
     let det = bx.times(&cy).minus(&by.times(&cx)).value();
@@ -688,6 +714,19 @@ mod tests {
                 (x - 5.000000000000245e108).abs() <= 4.0 * f64::EPSILON * x,
                 "x = {x}"
             );
+        }
+    }
+
+    #[test]
+    fn a_centre_keeps_a_coordinate_whose_products_underflow() {
+        // The bisector of (0, 0) and (0, 1e-287) is y = 5e-288; with (2e-59, 1e-59) the centre
+        // is (1.25e-59, 5e-288). Cubes of the scaled differences underflowed in the expansions
+        // (and the fast formula's rounding is 1e-75 there): y came out 0, on a region's side.
+        let corners = [[0.0, 0.0], [2e-59, 1e-59], [0.0, 1e-287]];
+        for [p, q, r] in [corners, [corners[1], corners[2], corners[0]]] {
+            let [x, y] = SplitCentre::of(p, q, r).centre();
+            assert!((y - 5e-288).abs() <= 1e-12 * 5e-288, "y = {y:e}");
+            assert!((x - 1.25e-59).abs() <= 1e-12 * 1.25e-59, "x = {x:e}");
         }
     }
 
