@@ -14,17 +14,32 @@
 
 use super::clip_region::ClipPolygon;
 use super::diagram::{SplitCentre, Voronoi};
-use super::exact_cell::FrameMap;
 use super::expansion::two_diff;
 use super::predicates::normalising_scale_of_box;
 
+/// How a point of the input maps into the coordinates clipping works in:
+/// `(p - origin) · scale`, `scale` a power of two.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FrameMap {
+    pub origin: [f64; 2],
+    pub scale: f64,
+}
+
+impl FrameMap {
+    /// The input's own coordinates.
+    pub(crate) const IDENTITY: FrameMap = FrameMap {
+        origin: [0.0, 0.0],
+        scale: 1.0,
+    };
+}
+
 /// The diagram and region moved to a local frame: a point `p` of the frame is
-/// `origin + p / scale` in the diagram's coordinates.
+/// `map.origin + p / map.scale` in the diagram's coordinates.
 pub(crate) struct LocalFrame {
     pub diagram: Voronoi,
     pub clip: ClipPolygon,
-    origin: [f64; 2],
-    scale: f64,
+    /// How a point of the input maps into the frame.
+    pub map: FrameMap,
 }
 
 /// A region whose extent is below this fraction of its largest coordinate has fewer than
@@ -109,8 +124,7 @@ impl Voronoi {
         Some(LocalFrame {
             diagram,
             clip: local_clip,
-            origin,
-            scale,
+            map: FrameMap { origin, scale },
         })
     }
 }
@@ -138,21 +152,14 @@ fn local_offset(p: [f64; 2], offset: [f64; 2], origin: [f64; 2], scale: f64) -> 
 }
 
 impl LocalFrame {
-    /// How a point of the input maps into the frame.
-    pub(crate) fn frame_map(&self) -> FrameMap {
-        FrameMap {
-            origin: self.origin,
-            scale: self.scale,
-        }
-    }
-
     /// Moves `positions` (all but the first `corners.len()`, which are the region's corners)
     /// from the frame back to the diagram's coordinates; the corners become `corners` exactly.
     pub(crate) fn to_diagram(&self, positions: &mut [[f64; 2]], corners: &[[f64; 2]]) {
-        let unscale = 1.0 / self.scale;
+        let FrameMap { origin, scale } = self.map;
+        let unscale = 1.0 / scale;
         positions[..corners.len()].copy_from_slice(corners);
         for p in &mut positions[corners.len()..] {
-            *p = [0, 1].map(|k| self.origin[k] + p[k] * unscale);
+            *p = [0, 1].map(|k| origin[k] + p[k] * unscale);
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Voronoi cells clipped to a convex region: closed polygons that share their vertices.
 
 use super::cell_sides::Side;
+use super::clip_frame::FrameMap;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::crossing_order::{
     bisector_has_piece_inside, bisector_meets, compare_crossings, crosses_edge,
@@ -8,7 +9,7 @@ use super::crossing_order::{
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
 use super::error::VoronoiError;
-use super::exact_cell::{FrameMap, cell_has_interior, exact_cell_corners};
+use super::exact_cell::{cell_has_interior, exact_cell_corners};
 use super::ids::SiteId;
 use super::parallel::{map_each, run_length};
 use super::predicates::normalising_scale_of_box;
@@ -462,7 +463,7 @@ impl Voronoi {
             return self.clip_in_own_frame(clip, input, region_owner);
         };
         let input = InputPlaces {
-            frame: local.frame_map(),
+            frame: local.map,
             ..input
         };
         let mut cells = local

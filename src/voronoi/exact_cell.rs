@@ -8,6 +8,7 @@
 //! there, so nothing is rounded until a corner is wanted as a position. Only cells of zero
 //! floating-point area, or collapsed ones, come here.
 
+use super::clip_frame::FrameMap;
 use crate::geom::exact_orientation::{dyadic, integer_list, smallest_unit};
 use crate::geom::wide_integer::WideInteger;
 
@@ -25,22 +26,6 @@ fn side(line: &Line, first: &Line, second: &Line) -> i32 {
     let w = first.a.mul(&second.b).sub(&second.a.mul(&first.b));
     let value = line.a.mul(&x).add(&line.b.mul(&y)).add(&line.c.mul(&w));
     value.signum() * w.signum()
-}
-
-/// How a point of the input maps into the coordinates clipping works in:
-/// `(p - origin) · scale`, `scale` a power of two (see `clip_frame`).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FrameMap {
-    pub origin: [f64; 2],
-    pub scale: f64,
-}
-
-impl FrameMap {
-    /// The input's own coordinates.
-    pub(crate) const IDENTITY: FrameMap = FrameMap {
-        origin: [0.0, 0.0],
-        scale: 1.0,
-    };
 }
 
 /// The part of a convex region strictly nearer to a site than to each of its neighbours, in
