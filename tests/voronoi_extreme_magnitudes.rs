@@ -321,3 +321,85 @@ fn cells_at_the_corner_of_a_region_far_larger_than_them_keep_their_shape() {
         "{area} vs {legs:?}"
     );
 }
+
+/// Sites on the line y = -3x, one of them 1e45 out, in a region from (-7, -2.7e26) to
+/// (9e25, 21): the cells that matter lie within 30 of the corner (-7, 21), 1e-25 of the region.
+/// Their edges end at Voronoi vertices far beyond it, and a crossing computed along such an edge
+/// was off by 3e10 (the ulp of its far end), on the wrong side of the corner: a cell that meets
+/// the region only at the corner walked the whole boundary. Crossings are now placed from the
+/// sites, and the sides an edge crosses are decided exactly where rounding chose them.
+#[test]
+fn cells_beside_the_near_corner_of_a_huge_region_are_placed_from_their_sites() {
+    let sites = [
+        [-12.0, 36.0],
+        [-18.0, 54.0],
+        [-2.0, 6.0],
+        [7.000000000000001e44, -2.1000000000000003e45],
+    ];
+    let clip = ClipPolygon::rectangle([-7.0, -2.7000000000000004e26], [9e25, 21.0]).unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+    // The bisector of the first and third sites passes exactly through the corner (-7, 21).
+    assert!(v.clip(&clip).cell(SiteId(0)).unwrap().is_empty());
+}
+
+/// A box 5 ulps wide and 6 tall at 1e15 + 50, whose right side the bisector of the two sites
+/// beside it runs along, inside by 1e-23: the cell of the site to the right is that sliver.
+/// Its crossings with the bottom and the top were taken from a point of the edge rounded in
+/// the box's frame, where the bisector lies on the side: both came out at the bottom corner,
+/// and the sliver lost its top. Placed from the sites, they lie at either end of the side.
+#[test]
+fn a_bisector_along_a_side_of_a_box_a_few_ulps_wide_keeps_its_sliver() {
+    let sites = [
+        [1000000000000050.0, -922.8153790296379],
+        [1000000000000050.3, -922.8153790296402],
+        [1000000000000050.6, -922.815379029639],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [1000000000000049.5, -922.8153790296402],
+        [1000000000000050.1, -922.8153790296395],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+}
+
+/// Sites at 2e-59 and 1e-287 beside the corner (0, 0) of a 1 × 2 box: the Voronoi edge of the
+/// first and the site at (0, 2) crosses the left side 2.5e-59 before its vertex inside, half a
+/// unit along the edge, so the crossing's parameter rounds onto the vertex's. The piece from
+/// the crossing to the vertex was dropped, and with it a quarter of that site's cell. The
+/// crossing, placed from the sites where the edge puts it, keeps the piece.
+#[test]
+fn an_edge_crossing_a_side_just_before_its_vertex_inside_is_kept() {
+    let sites = [
+        [2e-59, 1e-59],
+        [0.0, 9.999999999999996e-288],
+        [0.0, 0.0],
+        [0.0, 2.0],
+    ];
+    let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 2.0]).unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+}
+
+/// Sites on the line y = -1.5x at 1e45, 1e-259 and 32, and a box a few ulps wide around the
+/// tiny one: the circumcentre lies beyond the range of doubles, and moving it into the box's
+/// local frame divided infinity by infinity. Its direction is kept instead.
+#[test]
+fn a_vertex_beyond_doubles_keeps_its_direction_in_a_local_frame() {
+    let sites = [
+        [2.6000000000000004e45, -3.9000000000000006e45],
+        [9.999999999999996e-260, -1.4999999999999995e-259],
+        [-32.0, 48.0],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [9.999999999999993e-260, -1.4999999999999998e-259],
+        [9.999999999999999e-260, -1.499999999999999e-259],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    let cells = v.clip(&clip);
+    assert!(cells.positions().iter().flatten().all(|x| x.is_finite()));
+    // The whole box is nearest to the site inside it.
+    assert_eq!(cells.cell(SiteId(1)).unwrap().len(), 4);
+}

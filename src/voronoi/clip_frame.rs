@@ -146,8 +146,18 @@ fn local_offset(p: [f64; 2], offset: [f64; 2], origin: [f64; 2], scale: f64) -> 
     let largest = sum[0].abs().max(sum[1].abs());
     if largest * scale <= FARTHEST {
         sum.map(|x| x * scale)
-    } else {
+    } else if largest.is_finite() {
         sum.map(|x| x / largest * FARTHEST)
+    } else {
+        // A centre beyond the range of doubles (see `Voronoi`): its infinite coordinates give
+        // its direction (`inf / inf` would be NaN).
+        sum.map(|x| {
+            if x.is_infinite() {
+                x.signum() * FARTHEST
+            } else {
+                0.0
+            }
+        })
     }
 }
 

@@ -4,7 +4,7 @@ use super::cell_sides::Side;
 use super::clip_frame::FrameMap;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::crossing_order::{
-    bisector_has_piece_inside, bisector_meets, compare_crossings, crosses_edge,
+    bisector_crossing, bisector_meets, bisector_piece_sides, compare_crossings, crosses_edge,
 };
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
@@ -206,13 +206,13 @@ impl Builder<'_> {
         }
     }
 
-    /// Adds the point of clip edge `edge` near `x`, snapped onto the edge: where the bisector of
-    /// `sites` crosses it, or a Voronoi vertex (`sites` is `None`). A crossing goes onto a corner
-    /// only when it lies exactly there: one whose parameter merely rounds to a corner is kept
-    /// as a point of its own at the corner's position (see [`ClippedCells`]).
-    fn crossing(&mut self, edge: usize, x: [f64; 2], sites: Option<[u32; 2]>) -> u32 {
+    /// Adds the point of clip edge `edge` at parameters `[t, t − 1]` along it (see
+    /// [`ClipPolygon::edge_parameters`]): where the bisector of `sites` crosses it, or a Voronoi
+    /// vertex (`sites` is `None`). A crossing goes onto a corner only when it lies exactly
+    /// there: one whose parameter merely rounds to a corner is kept as a point of its own at the
+    /// corner's position (see [`ClippedCells`]).
+    fn crossing(&mut self, edge: usize, [t, from_end]: [f64; 2], sites: Option<[u32; 2]>) -> u32 {
         let m = self.clip.vertices().len();
-        let [t, from_end] = self.clip.edge_parameters(edge, x);
         let (t, from_end) = (t.clamp(0.0, 1.0), from_end.clamp(-1.0, 0.0));
         let at_corner = |corner: usize| {
             sites.is_none_or(|[p, q]| {
@@ -362,34 +362,59 @@ impl Builder<'_> {
         }
     }
 
-    /// Has the bisector of `sites` a piece of positive length between its crossing into the
-    /// region across side `enter` (at `lo` along the edge) and out across side `exit` (at `hi`),
-    /// though `lo ≥ hi` in floating point? Decided exactly where they lie within
-    /// [`EXACT_ORDER_BAND`] of each other, relative to the larger of them and of how far they
-    /// reach across the region along `base + s·dir` (the scale of their rounding, see
-    /// [`Reach::parameter_extent`]): the bisector passing a corner, or crossing the region,
-    /// within far less than an ulp. Elsewhere `lo ≥ hi` stands. The edge's own ends are not
-    /// re-examined: only an edge cut by two sides comes here.
-    fn has_piece_narrower_than_rounding(
+    /// The parameters along side `side` where the bisector of `sites` crosses it, when that
+    /// crossing lies on the side and goes the way `entering` says along the clipped edge (run
+    /// against the bisector's own direction when `reversed`). `None` for a side chosen only by
+    /// rounding: one the bisector crosses beyond its corners, or the other way.
+    fn crossing_on_side(
         &self,
-        [enter, exit]: [usize; 2],
-        [lo, hi]: [f64; 2],
-        [base, dir]: [[f64; 2]; 2],
-        sites: Option<[u32; 2]>,
+        side: usize,
+        sites: [u32; 2],
+        entering: bool,
         reversed: bool,
+    ) -> Option<[f64; 2]> {
+        let sites = sites.map(|s| self.input.sites[s as usize]);
+        let crossing = bisector_crossing(self.input_edge(side), sites)?;
+        let [t, _] = crossing.parameters;
+        ((0.0..=1.0).contains(&t) && (crossing.goes_in != reversed) == entering)
+            .then_some(crossing.parameters)
+    }
+
+    /// Does the point at `parameters` along side `side` coincide with position `vertex` within
+    /// the rounding of `base + s·dir`, where the floating-point clipping put the crossing?
+    fn meets_vertex(
+        &self,
+        side: usize,
+        [t, from_end]: [f64; 2],
+        vertex: u32,
+        [base, dir]: [[f64; 2]; 2],
+        s: f64,
     ) -> bool {
-        let m = self.clip.vertices().len();
-        let Some(sites) = sites else {
+        const ROUNDINGS: f64 = 64.0;
+        let Some(&v) = self.positions.get(vertex as usize) else {
             return false;
         };
-        enter < m
-            && exit < m
-            && self.within_rounding([lo, hi], [base, dir])
-            && bisector_has_piece_inside(
-                self.input.corners,
-                sites.map(|s| self.input.sites[s as usize]),
-                reversed,
-            )
+        let x = self.edge_point(side, t.clamp(0.0, 1.0), from_end.clamp(-1.0, 0.0));
+        let magnitude = [base, [s * dir[0], s * dir[1]], v]
+            .iter()
+            .flatten()
+            .fold(0.0_f64, |m, c| m.max(c.abs()));
+        let apart = (x[0] - v[0]).abs().max((x[1] - v[1]).abs());
+        apart <= ROUNDINGS * f64::EPSILON * magnitude
+    }
+
+    /// The sides across which the bisector of `sites` enters and leaves the region (see
+    /// [`bisector_piece_sides`]), decided exactly: for an edge whose floating-point clipping
+    /// chose a side only by rounding, or found no piece where the crossings lie within rounding
+    /// of each other (the bisector passing a corner, or crossing the region, within far less
+    /// than an ulp).
+    #[cold]
+    fn exact_piece_sides(&self, sites: [u32; 2], reversed: bool) -> Option<[usize; 2]> {
+        bisector_piece_sides(
+            self.input.corners,
+            sites.map(|s| self.input.sites[s as usize]),
+            reversed,
+        )
     }
 
     /// Do the parameters `lo ≥ hi` of crossings along `base + s·dir` lie within
@@ -744,7 +769,7 @@ impl Voronoi {
             } else if zero(i + m - 1) {
                 i as u32
             } else {
-                b.crossing(i, p, None)
+                b.crossing(i, clip.edge_parameters(i, p), None)
             };
         }
         (vertex_position, outside)
@@ -852,35 +877,72 @@ impl Voronoi {
                 exit = i;
             }
         }
-        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less)
-            && !b.has_piece_narrower_than_rounding(
-                [enter, exit],
-                [lo, hi],
-                [base, dir],
-                sites,
-                reversed,
-            )
-        {
-            return if b.within_rounding([lo, hi], [base, dir]) {
-                ClippedEdge::NearMiss
-            } else {
-                ClippedEdge::Miss
-            };
+        let sides = [ends.left, ends.right];
+        let (cut_at_start, cut_at_end) = (enter != usize::MAX, exit != usize::MAX);
+        let found_piece = lo.partial_cmp(&hi) == Some(Ordering::Less);
+        if !found_piece && !b.within_rounding([lo, hi], [base, dir]) {
+            return ClippedEdge::Miss;
         }
+        // Each crossing from the sites, where it lies on its side and goes the right way.
+        let on_side =
+            |side: usize, entering: bool| b.crossing_on_side(side, sides, entering, reversed);
+        let (mut entry, mut exit_at) = (
+            cut_at_start.then(|| on_side(enter, true)).flatten(),
+            cut_at_end.then(|| on_side(exit, false)).flatten(),
+        );
+        let chosen_by_rounding =
+            (cut_at_start && entry.is_none()) || (cut_at_end && exit_at.is_none());
+        if cut_at_start && cut_at_end {
+            if !found_piece || chosen_by_rounding {
+                // Both ends on the boundary: the sides are decided exactly.
+                let Some([exact_enter, exact_exit]) = b.exact_piece_sides(sides, reversed) else {
+                    return ClippedEdge::NearMiss;
+                };
+                (enter, entry) = (exact_enter, on_side(exact_enter, true));
+                (exit, exit_at) = (exact_exit, on_side(exact_exit, false));
+                if entry.is_none() || exit_at.is_none() {
+                    return ClippedEdge::NearMiss;
+                }
+            }
+        } else if !found_piece {
+            // One end at a vertex inside the region, and the crossing's parameter rounded onto
+            // the vertex's: the piece from the crossing, placed from the sites, to the vertex is
+            // kept when the crossing lies on its side and where the edge put it, within the
+            // rounding of that computation (an edge crossing a side steeply, next to a vertex
+            // far closer to the side than an ulp of the edge). An edge running along a side
+            // within rounding has a crossing anywhere along it, and is left as missing.
+            let (side, crossing, vertex) = if cut_at_start {
+                (enter, entry, far_vertex)
+            } else {
+                (exit, exit_at, base_vertex)
+            };
+            let s = if cut_at_start { lo } else { hi };
+            let kept = crossing.is_some_and(|parameters| {
+                b.meets_vertex(side, parameters, position(vertex), [base, dir], s)
+            });
+            if !kept {
+                return ClippedEdge::NearMiss;
+            }
+        }
+        // A side chosen by rounding beside an end at a vertex (an edge running along a side
+        // within rounding) keeps the floating-point crossing, which agrees with where the test
+        // of the vertices put that end.
         let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
-        let start = if enter == usize::MAX {
+        let start = if cut_at_start {
+            let parameters = entry.unwrap_or_else(|| clip.edge_parameters(enter, at(lo)));
+            b.crossing(enter, parameters, sites)
+        } else {
             // No entering constraint: the start is the finite end of the edge, inside. (A line
             // or ray whose rates all round to zero has no such end: the edge is dropped rather
             // than indexed past the vertices.)
             position(base_vertex)
-        } else {
-            b.crossing(enter, at(lo), sites)
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
-        let end = if exit == usize::MAX {
-            position(far_vertex)
+        let end = if cut_at_end {
+            let parameters = exit_at.unwrap_or_else(|| clip.edge_parameters(exit, at(hi)));
+            b.crossing(exit, parameters, sites)
         } else {
-            b.crossing(exit, at(hi), sites)
+            position(far_vertex)
         };
         // A piece whose ends rounded onto one point, or onto an end the region holds only in
         // floating point.

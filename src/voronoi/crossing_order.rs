@@ -1,4 +1,6 @@
-//! Exact order of the points where Voronoi edges cross one edge of a clip region.
+//! Where Voronoi edges cross the sides of a clip region, from their sites: the crossings
+//! themselves, which sides a bisector enters and leaves by, and the exact order of crossings
+//! along one side.
 //!
 //! The bisector of sites `p` and `q` meets the line `a + t·(b − a)` at
 //! `t = (|a − q|² − |a − p|²) / (2 (b − a)·(q − p))`. Two such parameters are compared without
@@ -9,6 +11,7 @@
 use std::cmp::Ordering;
 
 use super::exact_distance::Metric;
+use super::predicates::normalising_scale_of_box;
 use crate::geom::exact_orientation::{integer_list, integers};
 use crate::geom::wide_integer::WideInteger;
 
@@ -54,21 +57,135 @@ pub(crate) fn compare_crossings(
     Some(difference.cmp(&0))
 }
 
-/// Does the bisector of `[p, q]`, run along `rot90(q − p)` (reversed when `reversed`), have a
-/// piece of positive length inside the convex region with counter-clockwise `corners`? That
-/// is: is it strictly inside every side it is parallel to, and does it cross the last of the
-/// sides it goes in across strictly before the first of those it goes out across?
+/// Where a bisector crosses the line of an edge of the region (see [`bisector_crossing`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BisectorCrossing {
+    /// The parameter `t` of `a + t·(b − a)` and `t − 1`: the one that places the point (`t` up
+    /// to the middle of the edge, `t − 1` beyond) within 3e-12 of its exact value, relative
+    /// (`t − 1` is computed from `b`, as `(|b − q|² − |b − p|²) / D`, so it keeps its own low
+    /// bits near `b`).
+    pub parameters: [f64; 2],
+    /// Does the bisector of `[p, q]`, run along `rot90(q − p)`, go into the region there (cross
+    /// the edge from its outer side)? Exact.
+    pub goes_in: bool,
+}
+
+/// Where the bisector of `[p, q]` crosses the line of the edge from `a` to `b`, and which way;
+/// `None` when it is parallel to the edge.
+///
+/// Computed from the sites and corners, not from a point on the Voronoi edge: an edge placed
+/// from a vertex far beyond a large region is rounded there to ulps of that distance, which can
+/// be far wider than the cells beside a corner of the region.
+pub(crate) fn bisector_crossing(
+    edge: [[f64; 2]; 2],
+    sites: [[f64; 2]; 2],
+) -> Option<BisectorCrossing> {
+    fast_bisector_crossing(edge, sites).or_else(|| exact_bisector_crossing(edge, sites))
+}
+
+/// [`bisector_crossing`] in floating point, when a bound on its rounding says the parameter
+/// that places the point (`t` up to the middle of the edge, `t − 1` beyond) is within 3e-12 of
+/// its value; `None` elsewhere (a crossing near a corner seen from sites far from it, extreme
+/// magnitudes, a bisector nearly parallel to the edge).
+fn fast_bisector_crossing(
+    [a, b]: [[f64; 2]; 2],
+    [p, q]: [[f64; 2]; 2],
+) -> Option<BisectorCrossing> {
+    // Each value below is rounded by at most five ulps of the sum of its terms' magnitudes (its
+    // size); one whose size is at most this many times the value is within 5120 ulps of it,
+    // and a ratio of two such within 3e-12.
+    const CANCELLATION: f64 = 1024.0;
+    let differences = [
+        [0, 1].map(|k| b[k] - a[k]),
+        [0, 1].map(|k| p[k] - q[k]),
+        [0, 1].map(|k| a[k] - p[k]),
+        [0, 1].map(|k| a[k] - q[k]),
+        [0, 1].map(|k| b[k] - p[k]),
+        [0, 1].map(|k| b[k] - q[k]),
+    ];
+    let largest = differences
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    if !(largest.is_finite() && largest > 0.0) {
+        return None;
+    }
+    // A power of two that brings the largest difference near 1: products neither overflow nor
+    // (short of differences 1e-150 times smaller, which the bound then refuses) underflow.
+    let unit = normalising_scale_of_box([[-largest, -largest], [largest, largest]]);
+    let [e, w, ap, aq, bp, bq] = differences.map(|d| d.map(|x| x * unit));
+    // `|c − q|² − |c − p|² = (p − q)·((c − p) + (c − q))`, and the size of its terms.
+    let from_corner = |cp: [f64; 2], cq: [f64; 2]| {
+        let sum = [0, 1].map(|k| cp[k] + cq[k]);
+        let size: f64 = (0..2)
+            .map(|k| w[k].abs() * (cp[k].abs() + cq[k].abs()))
+            .sum();
+        (w[0] * sum[0] + w[1] * sum[1], size)
+    };
+    let numerator = from_corner(ap, aq);
+    let end_numerator = from_corner(bp, bq);
+    // `D = 2 (b − a)·(q − p)`.
+    let denominator = (
+        -2.0 * (e[0] * w[0] + e[1] * w[1]),
+        2.0 * ((e[0] * w[0]).abs() + (e[1] * w[1]).abs()),
+    );
+    let accurate = |(value, size): (f64, f64)| {
+        value.abs() >= f64::MIN_POSITIVE && size <= CANCELLATION * value.abs()
+    };
+    let t = numerator.0 / denominator.0;
+    let placing = if t <= 0.5 { numerator } else { end_numerator };
+    (accurate(denominator) && accurate(placing)).then(|| BisectorCrossing {
+        parameters: [t, end_numerator.0 / denominator.0],
+        goes_in: denominator.0 > 0.0,
+    })
+}
+
+/// [`bisector_crossing`] from the exact numerators and denominator, in integers of any size.
+#[cold]
+fn exact_bisector_crossing(
+    [a, b]: [[f64; 2]; 2],
+    [p, q]: [[f64; 2]; 2],
+) -> Option<BisectorCrossing> {
+    let [ax, ay, bx, by, px, py, qx, qy] =
+        integers([a[0], a[1], b[0], b[1], p[0], p[1], q[0], q[1]]);
+    let from_corner = |cx: &WideInteger, cy: &WideInteger| {
+        let squared = |x: &WideInteger, y: &WideInteger| {
+            let (dx, dy) = (cx.sub(x), cy.sub(y));
+            dx.mul(&dx).add(&dy.mul(&dy))
+        };
+        squared(&qx, &qy).sub(&squared(&px, &py))
+    };
+    let along = bx
+        .sub(&ax)
+        .mul(&qx.sub(&px))
+        .add(&by.sub(&ay).mul(&qy.sub(&py)));
+    if along.signum() == 0 {
+        return None;
+    }
+    let denominator = along.add(&along);
+    let numerators = [from_corner(&ax, &ay), from_corner(&bx, &by)];
+    Some(BisectorCrossing {
+        parameters: numerators.map(|n| n.ratio(&denominator, 0)),
+        goes_in: denominator.signum() > 0,
+    })
+}
+
+/// The sides across which the bisector of `[p, q]`, run along `rot90(q − p)` (reversed when
+/// `reversed`), enters and leaves the convex region with counter-clockwise `corners`, when it
+/// has a piece of positive length inside: that is, when it is strictly inside every side it is
+/// parallel to, and crosses the last of the sides it goes in across (the entry) strictly before
+/// the first of those it goes out across (the exit). `None` when it has no such piece.
 ///
 /// The crossing of side `[a, b]` lies at `a + t·(b − a)` with `t = N / D` (see the module
 /// documentation), at `(d·a·D + N·d·(b − a)) / D` along the bisector's direction `d`; `D` is
 /// positive where the bisector goes in. Compared without rounding, the positions tell a piece
 /// narrower than an ulp (a bisector passing a corner by far less than an ulp, inside it) from
-/// none. O(corners) comparisons.
-pub(crate) fn bisector_has_piece_inside(
+/// none, and the side it enters by from its neighbour across a corner. O(corners) comparisons.
+pub(crate) fn bisector_piece_sides(
     corners: &[[f64; 2]],
     [p, q]: [[f64; 2]; 2],
     reversed: bool,
-) -> bool {
+) -> Option<[usize; 2]> {
     // Swapping the sites reverses `d` (and leaves every crossing where it is).
     let [p, q] = if reversed { [q, p] } else { [p, q] };
     let values: Vec<f64> = corners.iter().chain([&p, &q]).flatten().copied().collect();
@@ -93,7 +210,7 @@ pub(crate) fn bisector_has_piece_inside(
             // Parallel: strictly inside where the sites' midpoint is, `e × (p + q − 2a) > 0`.
             let (mx, my) = (px.add(qx).sub(ax).sub(ax), py.add(qy).sub(ay).sub(ay));
             if ex.mul(&my).sub(&ey.mul(&mx)).signum() <= 0 {
-                return false;
+                return None;
             }
             continue;
         }
@@ -110,20 +227,22 @@ pub(crate) fn bisector_has_piece_inside(
             denominator,
         );
         if position.1.signum() > 0 {
-            if last_in.as_ref().is_none_or(|last| before(last, &position)) {
-                last_in = Some(position);
+            if last_in
+                .as_ref()
+                .is_none_or(|(_, last)| before(last, &position))
+            {
+                last_in = Some((i, position));
             }
         } else if first_out
             .as_ref()
-            .is_none_or(|first| before(&position, first))
+            .is_none_or(|(_, first)| before(&position, first))
         {
-            first_out = Some(position);
+            first_out = Some((i, position));
         }
     }
-    match (last_in, first_out) {
-        (Some(entry), Some(exit)) => before(&entry, &exit),
-        _ => true,
-    }
+    // A bounded region: a line not parallel to every side both enters and leaves it.
+    let ((entry, entry_at), (exit, exit_at)) = (last_in?, first_out?);
+    before(&entry_at, &exit_at).then_some([entry, exit])
 }
 
 /// Does the bisector of `sites` cross the line of the edge from `a` to `b` at a single point
@@ -176,44 +295,72 @@ mod tests {
     }
 
     #[test]
+    fn a_crossing_near_the_end_of_a_long_side_keeps_its_offset_from_it() {
+        // The bisector of (-2, 6) and (1, -3) crosses y = 21 at x = 58, 65 from the side's end
+        // (-7, 21) and 9e25 from its start.
+        let side = [[9e25, 21.0], [-7.0, 21.0]];
+        let crossing = bisector_crossing(side, [[-2.0, 6.0], [1.0, -3.0]]).unwrap();
+        let [t, from_end] = crossing.parameters;
+        assert_eq!(t, 1.0);
+        let offset = from_end * (-7.0 - 9e25);
+        assert!((offset - 65.0).abs() <= 1e-13, "{offset}");
+        // Along rot90(q − p) = (9, 3) the bisector goes up, out across the top side.
+        assert!(!crossing.goes_in);
+    }
+
+    #[test]
+    fn fast_crossings_agree_with_exact_ones() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut fast_ones = 0;
+        for _ in 0..10_000 {
+            let mut point = || [next(), next()];
+            let (edge, sites) = ([point(), point()], [point(), point()]);
+            let Some(fast) = fast_bisector_crossing(edge, sites) else {
+                continue;
+            };
+            fast_ones += 1;
+            let exact = exact_bisector_crossing(edge, sites).unwrap();
+            assert_eq!(fast.goes_in, exact.goes_in);
+            let [t, from_end] = exact.parameters;
+            let placing = if t <= 0.5 { 0 } else { 1 };
+            let (got, want) = (fast.parameters[placing], exact.parameters[placing]);
+            assert!(
+                (got - want).abs() <= 3e-12 * want.abs(),
+                "{edge:?} {sites:?}: {got} vs {want} ({t}, {from_end})"
+            );
+        }
+        assert!(fast_ones > 9_500, "{fast_ones}");
+    }
+
+    fn has_piece(corners: &[[f64; 2]], sites: [[f64; 2]; 2], reversed: bool) -> bool {
+        bisector_piece_sides(corners, sites, reversed).is_some()
+    }
+
+    #[test]
     fn a_piece_far_narrower_than_an_ulp_inside_a_corner_is_found() {
         let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         // The bisector of the corner and a point 1e-200 along the diagonal cuts a triangle
         // 1e-200 wide off the corner; that of two points on the far side of it misses.
         let tiny = 1e-200;
-        assert!(bisector_has_piece_inside(
-            &square,
-            [[0.0, 0.0], [tiny, tiny]],
-            false
-        ));
-        assert!(bisector_has_piece_inside(
-            &square,
-            [[0.0, 0.0], [tiny, tiny]],
-            true
-        ));
-        assert!(!bisector_has_piece_inside(
+        assert!(has_piece(&square, [[0.0, 0.0], [tiny, tiny]], false));
+        assert!(has_piece(&square, [[0.0, 0.0], [tiny, tiny]], true));
+        assert!(!has_piece(
             &square,
             [[-tiny, -tiny], [-3.0 * tiny, -tiny]],
             false
         ));
         // Through the corner only (x + y = 0): a point, no piece.
-        assert!(!bisector_has_piece_inside(
-            &square,
-            [[tiny, tiny], [-tiny, -tiny]],
-            false
-        ));
+        assert!(!has_piece(&square, [[tiny, tiny], [-tiny, -tiny]], false));
         // Parallel to the bottom side: inside by 2^-60, and on it.
         let y = 2.0_f64.powi(-60);
-        assert!(bisector_has_piece_inside(
-            &square,
-            [[0.5, 0.0], [0.5, 2.0 * y]],
-            false
-        ));
-        assert!(!bisector_has_piece_inside(
-            &square,
-            [[0.5, -y], [0.5, y]],
-            false
-        ));
+        assert!(has_piece(&square, [[0.5, 0.0], [0.5, 2.0 * y]], false));
+        assert!(!has_piece(&square, [[0.5, -y], [0.5, y]], false));
     }
 
     #[test]
