@@ -429,13 +429,8 @@ mod tests {
     /// face or a corner: the tree finds exactly the pairs a quadratic scan finds.
     #[test]
     fn overlapping_pairs_are_those_of_a_quadratic_scan() {
-        let mut state = 0x853c_49e6_748f_ea9bu64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state % 1000) as f64 / 10.0
-        };
+        let mut bits = crate::support::test_random::xorshift(0x853c_49e6_748f_ea9b);
+        let mut next = move || (bits() % 1000) as f64 / 10.0;
         for count in [0usize, 1, 2, 5, 17, 300, 3000] {
             let boxes: Vec<BoundingBox> = (0..count)
                 .map(|i| match i % 5 {

@@ -327,13 +327,7 @@ mod tests {
     #[test]
     fn embedded_stars_have_no_meeting_triangles() {
         use crate::geom::triangle_intersection::{SharedCorners, triangles_meet};
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::support::test_random::uniform(0x2545_f491_4f6c_dd1d);
         let (mut embedded_count, mut rejected) = (0, 0);
         for case in 0..4000 {
             let k = 3 + case % 9;

@@ -88,13 +88,8 @@ mod tests {
     /// must give up), and far from them (where it decides): always the exact predicate's sign.
     #[test]
     fn sides_agree_with_the_exact_predicate_near_and_far_from_the_plane() {
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::support::test_random::uniform(0x9e37_79b9_7f4a_7c15);
+        let mut next = move || 2.0 * uniform() - 1.0;
         let mut zeros = 0;
         for _ in 0..20_000 {
             // Few significant bits: the point on the plane is computed exactly.

@@ -16,3 +16,5 @@ pub(crate) mod prefetch;
 pub(crate) mod radix_sort;
 pub(crate) mod rare_hits;
 pub(crate) mod sparse_cholesky;
+#[cfg(test)]
+pub(crate) mod test_random;

@@ -310,13 +310,8 @@ mod tests {
 
     #[test]
     fn fast_crossings_agree_with_exact_ones() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::support::test_random::uniform(0x9e37_79b9_7f4a_7c15);
+        let mut next = || 2.0 * uniform() - 1.0;
         let mut fast_ones = 0;
         for _ in 0..10_000 {
             let mut point = || [next(), next()];
