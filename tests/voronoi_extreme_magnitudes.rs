@@ -403,3 +403,111 @@ fn a_vertex_beyond_doubles_keeps_its_direction_in_a_local_frame() {
     // The whole box is nearest to the site inside it.
     assert_eq!(cells.cell(SiteId(1)).unwrap().len(), 4);
 }
+
+/// Three sites on a vertical line an ulp or two apart at 1e15 + 49.5, a fourth a quarter to
+/// their right, and a region from 1e15 + 50.6 to 1e53: the fourth site's cell holds all of it. The two circumcentres round to one Voronoi vertex, which merges
+/// away the edge between the middle site and the fourth. The middle site's cell, rebuilt from
+/// its exact polygon, was cut only by the sites across its remaining sides and came out as a
+/// strip across the whole region. The sites across edges merged away bound it too.
+#[test]
+fn a_cell_rebuilt_exactly_is_cut_by_the_sites_across_merged_edges() {
+    let sites = [
+        [1000000000000049.5, -86.56064164729837],
+        [1000000000000049.5, -86.56064164729838],
+        [1000000000000049.5, -86.5606416472984],
+        [1000000000000049.8, -86.56064164729844],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [1000000000000050.6, -8.656064164729844e39],
+        [1.0000000000000504e53, -86.56064164729833],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+    let cells = v.clip(&clip);
+    for site in 0..3 {
+        assert!(cells.cell(SiteId(site)).unwrap().is_empty(), "site {site}");
+    }
+    // Rebuilt from its exact polygon, the whole region keeps its own corners.
+    assert_eq!(cells.cell_polygon(SiteId(3)).unwrap(), clip.vertices());
+}
+
+/// Four sites a quarter apart at 1e15 + 49 in a region from there to 1e88: one Voronoi vertex,
+/// at 7e10, rounds onto the region's left side, 1.5e-65 of its length before the bottom
+/// corner, so its parameter rounds to the corner's. It was put on the corner, and the cell
+/// between it and the corner went round the whole region (the areas summed to twice the
+/// region's). It keeps its offset from the corner.
+#[test]
+fn a_vertex_just_before_the_end_of_a_long_side_is_not_moved_onto_the_corner() {
+    let sites = [
+        [1000000000000048.9, 487.74455113359664],
+        [1000000000000049.1, 487.744551133596],
+        [1000000000000049.1, 487.7445511335953],
+        [1000000000000049.4, 487.74455113359625],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [1000000000000049.1, 487.7445511335957],
+        [1.000000000000049e88, 4.877445511335963e75],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+}
+
+/// Three sites an ulp apart at 1e15 + 49.4 in a box 23 ulps wide and 11 tall: the cell on the
+/// right meets its neighbours at x = 1e15 + 49.4375, between two doubles. Its corners round to
+/// either side of that, so the cell comes out with a reflex corner an ulp deep, and the
+/// extension of a side there passes beside its own site. The site still lies in its cell.
+#[test]
+fn a_cell_with_a_corner_rounded_reflex_holds_its_site() {
+    let sites = [
+        [1000000000000049.4, -598.8040313554328],
+        [1000000000000049.4, -598.8040313554326],
+        [1000000000000049.5, -598.8040313554328],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [1000000000000048.6, -598.8040313554336],
+        [1000000000000051.5, -598.8040313554324],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+}
+
+/// Three sites at 1e15 + 51 and a box 7 ulps wide and 6 tall beside them, whose right side the
+/// Voronoi vertex lies on exactly (placed in the box's local frame). The edge between the two
+/// sites to the right leaves the box at once from that vertex: its crossing with the side is
+/// the vertex itself. It was kept as a piece from the vertex to that crossing, and the cell
+/// beside it went round the whole box (the areas summed to twice the box's).
+#[test]
+fn an_edge_leaving_at_once_from_a_vertex_on_the_boundary_has_no_piece() {
+    let sites = [
+        [1000000000000051.4, 944.403761974561],
+        [1000000000000051.4, 944.4037619745623],
+        [1000000000000050.6, 944.4037619745606],
+    ];
+    let clip = ClipPolygon::rectangle(
+        [1000000000000050.1, 944.4037619745613],
+        [1000000000000051.0, 944.403761974562],
+    )
+    .unwrap();
+    let v = Voronoi::new(&sites).unwrap();
+    check_clipped(&v, &clip);
+}
+
+/// Two sites 1e-286 apart near 1e-271 and one at 1e15: their circumcentre lies at
+/// (3.6e15, 8.0e27), but the fast formula, on differences scaled into the subnormals, put it
+/// at infinity.
+#[test]
+fn a_centre_of_sites_1e_minus_286_apart_beside_one_at_1e15_is_finite() {
+    let sites = [
+        [1.0000000000000491e-271, -3.924186530907457e-284],
+        [1.000000000000048e-271, -3.924186530907452e-284],
+        [1000000000000049.8, -392.4186530907462],
+    ];
+    let v = Voronoi::new(&sites).unwrap();
+    check_voronoi(&v);
+    let [x, y] = v.vertices()[0];
+    assert!((x - 3.647977311966128e15).abs() <= 1e-9 * x, "x = {x:e}");
+    assert!((y - 8.021986944739589e27).abs() <= 1e-9 * y, "y = {y:e}");
+}

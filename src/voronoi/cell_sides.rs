@@ -62,25 +62,55 @@ impl Voronoi {
         visit: impl FnMut(Side) -> bool,
     ) -> (u32, bool) {
         if self.delaunay.dimension() == Dimension::Plane {
-            let all = self.visit_triangle_sides(handle, visit);
+            let all = self.visit_triangle_sides(handle, false, visit);
             (self.delaunay.triangles[handle as usize], all)
         } else {
             (handle, self.visit_half_edge_sides(handle, visit))
         }
     }
 
+    /// The site of the cell of `handle` and the sites whose bisectors bound it exactly: those
+    /// across its sides and across the edges merged away (between Voronoi vertices that coincide
+    /// once rounded, an edge has no length in floating point, but its sites still cut the cell).
+    pub(crate) fn handle_neighbours(&self, handle: u32) -> (u32, Vec<u32>) {
+        let mut neighbours = Vec::new();
+        let mut push_other = |site: u32, side: Side| {
+            let ends = self.edge_ends(side.edge);
+            neighbours.push(if ends.left == site {
+                ends.right
+            } else {
+                ends.left
+            });
+            true
+        };
+        let site = if self.delaunay.dimension() == Dimension::Plane {
+            let site = self.delaunay.triangles[handle as usize];
+            self.visit_triangle_sides(handle, true, |side| push_other(site, side));
+            site
+        } else {
+            self.visit_half_edge_sides(handle, |side| push_other(handle, side));
+            handle
+        };
+        (site, neighbours)
+    }
+
     /// Circulates counter-clockwise over the Delaunay edges leaving a site, from its vertex edge
     /// `first` (the outgoing hull edge for a hull site): each one not merged away is dual to a
-    /// side; past the hull the cell closes with the ray out across the incoming hull edge.
-    /// Hands every side to `visit` in order until it returns `false`; returns whether all were
-    /// visited.
+    /// side (every one, with `merged_too`); past the hull the cell closes with the ray out
+    /// across the incoming hull edge. Hands every side to `visit` in order until it returns
+    /// `false`; returns whether all were visited.
     #[inline(always)]
-    fn visit_triangle_sides(&self, first: u32, mut visit: impl FnMut(Side) -> bool) -> bool {
+    fn visit_triangle_sides(
+        &self,
+        first: u32,
+        merged_too: bool,
+        mut visit: impl FnMut(Side) -> bool,
+    ) -> bool {
         let d = &self.delaunay;
         let vertex = |e: u32| self.triangle_vertex[(e / 3) as usize];
         let mut e = first;
         loop {
-            if !self.is_merged(e) {
+            if merged_too || !self.is_merged(e) {
                 let twin = d.twins[e as usize];
                 let side = if twin == INVALID {
                     Side {

@@ -214,19 +214,22 @@ impl Builder<'_> {
     fn crossing(&mut self, edge: usize, [t, from_end]: [f64; 2], sites: Option<[u32; 2]>) -> u32 {
         let m = self.clip.vertices().len();
         let (t, from_end) = (t.clamp(0.0, 1.0), from_end.clamp(-1.0, 0.0));
-        let at_corner = |corner: usize| {
-            sites.is_none_or(|[p, q]| {
+        // A bisector lies on a corner when it meets it exactly; a vertex when its offset from
+        // it is zero (a vertex 7e10 before the end of a side 5e75 long has `t` = 1 too).
+        let at_corner = |corner: usize, offset: f64| match sites {
+            None => offset == 0.0,
+            Some([p, q]) => {
                 let sites = self.input.sites;
                 bisector_meets(
                     self.input.corners[corner],
                     [sites[p as usize], sites[q as usize]],
                 )
-            })
+            }
         };
-        if t == 0.0 && at_corner(edge) {
+        if t == 0.0 && at_corner(edge, t) {
             return edge as u32;
         }
-        if t == 1.0 && at_corner((edge + 1) % m) {
+        if t == 1.0 && at_corner((edge + 1) % m, from_end) {
             return ((edge + 1) % m) as u32;
         }
         self.positions.push(self.edge_point(edge, t, from_end));
@@ -604,10 +607,10 @@ impl Voronoi {
                         // boundary, in a segment or a point (see `ClippedCells`), unless rounding
                         // collapsed it.
                         local.truncate(first);
-                        if near_miss && let Some(corners) = self.exact_cell(s, &sides, &b) {
+                        if near_miss && let Some(corners) = self.exact_cell(handle, &b) {
                             rebuilt.push((s, corners));
                         }
-                    } else if !self.has_interior(s, &sides, &local[first..], &b) {
+                    } else if !self.has_interior(handle, &local[first..], &b) {
                         // Corners in a line that are the rounding of no interior.
                         local.truncate(first);
                     }
@@ -668,11 +671,11 @@ impl Voronoi {
         }
     }
 
-    /// Does the assembled cell `cell` of `site` (with sides `sides`) have an interior? Its area
-    /// in floating point says so when it is larger than the rounding of its corners can make
-    /// it; an area within that (a cell pinched to a corner of the region, whose corners rounded
-    /// apart) is decided exactly.
-    fn has_interior(&self, site: u32, sides: &[Side], cell: &[u32], b: &Builder) -> bool {
+    /// Does the assembled cell `cell` of `handle` (see [`Voronoi::cell_handles`]) have an
+    /// interior? Its area in floating point says so when it is larger than the rounding of its
+    /// corners can make it; an area within that (a cell pinched to a corner of the region, whose
+    /// corners rounded apart) is decided exactly.
+    fn has_interior(&self, handle: u32, cell: &[u32], b: &Builder) -> bool {
         let points = cell.iter().map(|&i| b.positions[i as usize]);
         let origin = b.positions[cell[0] as usize];
         let (mut twice_area, mut previous) = (0.0_f64, origin);
@@ -700,40 +703,25 @@ impl Voronoi {
         if twice_area.abs() > rounding {
             return true;
         }
-        cell_has_interior(
-            b.input.sites[site as usize],
-            &self.neighbour_sites(site, sides, b),
-            b.input.corners,
-        )
+        let (site, neighbours) = self.input_neighbours(handle, b);
+        cell_has_interior(site, &neighbours, b.input.corners)
     }
 
-    /// The corners of the cell of `site` (with sides `sides`), rounded from their exact places,
-    /// when it has an interior: for a cell whose floating-point pieces collapsed onto fewer than
-    /// three positions (see [`ClippedEdge::NearMiss`]).
+    /// The corners of the cell of `handle`, rounded from their exact places, when it has an
+    /// interior: for a cell whose floating-point pieces collapsed onto fewer than three
+    /// positions (see [`ClippedEdge::NearMiss`]).
     #[cold]
-    fn exact_cell(&self, site: u32, sides: &[Side], b: &Builder) -> Option<Vec<[f64; 2]>> {
-        exact_cell_corners(
-            b.input.sites[site as usize],
-            &self.neighbour_sites(site, sides, b),
-            b.input.corners,
-            b.input.frame,
-        )
+    fn exact_cell(&self, handle: u32, b: &Builder) -> Option<Vec<[f64; 2]>> {
+        let (site, neighbours) = self.input_neighbours(handle, b);
+        exact_cell_corners(site, &neighbours, b.input.corners, b.input.frame)
     }
 
-    /// The sites across the sides `sides` of the cell of `site`, in the input's coordinates.
-    fn neighbour_sites(&self, site: u32, sides: &[Side], b: &Builder) -> Vec<[f64; 2]> {
-        sides
-            .iter()
-            .map(|side| {
-                let ends = self.edge_ends(side.edge);
-                let other = if ends.left == site {
-                    ends.right
-                } else {
-                    ends.left
-                };
-                b.input.sites[other as usize]
-            })
-            .collect()
+    /// The site of the cell of `handle` and the sites that bound it exactly (see
+    /// [`Voronoi::handle_neighbours`]), in the input's coordinates.
+    fn input_neighbours(&self, handle: u32, b: &Builder) -> ([f64; 2], Vec<[f64; 2]>) {
+        let (site, neighbours) = self.handle_neighbours(handle);
+        let place = |s: u32| b.input.sites[s as usize];
+        (place(site), neighbours.into_iter().map(place).collect())
     }
 
     /// Gives every Voronoi vertex inside the region (closed test; the same test decides every
@@ -910,16 +898,19 @@ impl Voronoi {
             // kept when the crossing lies on its side and where the edge put it, within the
             // rounding of that computation (an edge crossing a side steeply, next to a vertex
             // far closer to the side than an ulp of the edge). An edge running along a side
-            // within rounding has a crossing anywhere along it, and is left as missing.
+            // within rounding has a crossing anywhere along it, and is left as missing; so is
+            // one leaving at once from a vertex on the boundary, whose crossing is the vertex.
             let (side, crossing, vertex) = if cut_at_start {
                 (enter, entry, far_vertex)
             } else {
                 (exit, exit_at, base_vertex)
             };
             let s = if cut_at_start { lo } else { hi };
-            let kept = crossing.is_some_and(|parameters| {
-                b.meets_vertex(side, parameters, position(vertex), [base, dir], s)
-            });
+            let inside = position(vertex) != INVALID && b.perimeter(position(vertex)).is_none();
+            let kept = inside
+                && crossing.is_some_and(|parameters| {
+                    b.meets_vertex(side, parameters, position(vertex), [base, dir], s)
+                });
             if !kept {
                 return ClippedEdge::NearMiss;
             }

@@ -475,7 +475,8 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
 /// (a small fraction; their centres are far away and sensitive) are left to exact arithmetic
 /// ([`SplitCentre`]).
 ///
-/// The differences are first brought near 1 by a power of two (exact, short of underflow), so
+/// The differences are first brought near 1 by a power of two (exact, short of underflow: sums
+/// below [`SMALLEST_BOUNDED_SIZE`] go to exact arithmetic too), so
 /// that products of three of them neither underflow (sites of a frame normalised for a far site,
 /// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
 /// sites near `1e-300` keep their low bits beside one at `1e301`).
@@ -490,7 +491,8 @@ fn fast_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f6
     let (ux, uy) = (cy * bl - by * cl, bx * cl - cx * bl);
     let det_size = (bx * cy).abs() + (by * cx).abs();
     let u_size = (cy * bl).abs() + (by * cl).abs() + (bx * cl).abs() + (cx * bl).abs();
-    let accurate = det != 0.0
+    let accurate = det_size >= SMALLEST_BOUNDED_SIZE
+        && u_size >= SMALLEST_BOUNDED_SIZE
         && det.abs() * CANCELLATION_LIMIT >= det_size
         && (ux.abs() + uy.abs()) * CANCELLATION_LIMIT >= u_size
         && (ux.is_finite() && uy.is_finite());
@@ -611,6 +613,13 @@ fn may_be_cocircular(here: [f64; 2], there: [f64; 2], radius: f64) -> bool {
 /// error from a few ulps (2.2e-16 each) amplified by this factor.
 const CANCELLATION_LIMIT: f64 = 1.0e5;
 
+/// The rounding bound of [`fast_circumcentre_offset`] holds for sums of products at least this
+/// large (about 2^-900): a difference scaled into the subnormals, or a product there, is off by
+/// up to 2^-1074, which is negligible only beside them. Two sites 1e-286 apart beside one at
+/// 1e15 have scaled differences near 1e-313: a determinant made of them lost every digit, and
+/// the centre, 8e27 away, came out infinite.
+const SMALLEST_BOUNDED_SIZE: f64 = 1.0e-271;
+
 /// Below this, a product of three scaled differences can underflow (`2^-300` cubed is
 /// `2^-900`, and the products' error terms lie 2^-106 below that).
 const UNDERFLOWING_TERM: f64 = 4.909093465297727e-91; // 2^-300
@@ -689,6 +698,28 @@ mod tests {
         assert!(
             (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[0].hypot(expect[1])
         );
+    }
+
+    #[test]
+    fn a_centre_from_differences_scaled_into_the_subnormals_is_exact() {
+        // Two sites 1e-286 apart near 1e-271 and one at 1e15: scaled so that 1e15 is near 1, the
+        // short differences are subnormal. The centre lies at (3.6e15, 8.0e27).
+        let sites = [
+            [1.0000000000000491e-271, -3.924186530907457e-284],
+            [1.000000000000048e-271, -3.924186530907452e-284],
+            [1000000000000049.8, -392.4186530907462],
+        ];
+        let exact = wide_circumcentre_offset(sites[0], sites[1], sites[2]);
+        assert!((exact[1] - 8.021986944739589e27).abs() <= 1e-15 * exact[1]);
+        for r in 0..3 {
+            let [a, b, c] = [0, 1, 2].map(|k| sites[(r + k) % 3]);
+            let [x, y] = circumcentre_offset(a, b, c);
+            let expect = wide_circumcentre_offset(a, b, c);
+            assert!(
+                (x - expect[0]).abs() + (y - expect[1]).abs() <= 1e-10 * expect[1].abs(),
+                "rotation {r}: {x:e}, {y:e} against {expect:?}"
+            );
+        }
     }
 
     #[test]

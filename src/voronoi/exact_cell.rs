@@ -124,16 +124,22 @@ impl ExactCell {
         })
     }
 
-    /// The corners, counter-clockwise, each as `(p - origin) · scale` within about two ulps of
-    /// its exact value (see [`WideInteger::ratio`]).
-    fn rounded_corners(&self, scale: f64) -> Vec<[f64; 2]> {
+    /// The corners, counter-clockwise, each as `(p - origin) · scale`: a corner of the region
+    /// (`region`, already in that frame) exactly, every other one within about two ulps of its
+    /// exact value (see [`WideInteger::ratio`]).
+    fn rounded_corners(&self, region: &[[f64; 2]], scale: f64) -> Vec<[f64; 2]> {
         let (_, _, scale_exponent) = dyadic(scale);
         let exponent = self.unit + i64::from(scale_exponent);
         let n = self.polygon.len();
         (0..n)
             .map(|k| {
-                let first = &self.lines[self.polygon[(k + n - 1) % n]];
-                let second = &self.lines[self.polygon[k]];
+                let (before, after) = (self.polygon[(k + n - 1) % n], self.polygon[k]);
+                // Lines below `region.len()` are the region's sides; side `i` starts at corner
+                // `i`.
+                if before < region.len() && after < region.len() {
+                    return region[after];
+                }
+                let (first, second) = (&self.lines[before], &self.lines[after]);
                 // The meeting point in homogeneous coordinates (x / w, y / w).
                 let x = first.b.mul(&second.c).sub(&second.b.mul(&first.c));
                 let y = first.c.mul(&second.a).sub(&second.c.mul(&first.a));
@@ -166,8 +172,15 @@ pub(crate) fn exact_cell_corners(
     corners: &[[f64; 2]],
     frame: FrameMap,
 ) -> Option<Vec<[f64; 2]>> {
-    ExactCell::new(site, neighbours, corners, frame.origin)
-        .map(|cell| cell.rounded_corners(frame.scale))
+    let FrameMap { origin, scale } = frame;
+    // Exact: clipping runs in a local frame only where the region's corners map into it
+    // exactly (see `clip_frame`).
+    let region: Vec<[f64; 2]> = corners
+        .iter()
+        .map(|p| [0, 1].map(|k| (p[k] - origin[k]) * scale))
+        .collect();
+    ExactCell::new(site, neighbours, corners, origin)
+        .map(|cell| cell.rounded_corners(&region, scale))
 }
 
 #[cfg(test)]

@@ -75,6 +75,16 @@ impl Integer {
         }
         Integer::new(self.negative != other.negative, limbs)
     }
+
+    /// `log2 |self|` (`-inf` for zero), from its two leading limbs.
+    fn log2(&self) -> f64 {
+        let n = self.limbs.len();
+        let leading = self.limbs[n.saturating_sub(2)..]
+            .iter()
+            .rev()
+            .fold(0.0, |value, &limb| value * 4294967296.0 + limb as f64);
+        leading.log2() + 32.0 * n.saturating_sub(2) as f64
+    }
 }
 
 fn compare_magnitudes(a: &[u32], b: &[u32]) -> Ordering {
@@ -132,6 +142,8 @@ fn side(line: &Line, first: &Line, second: &Line) -> i32 {
 pub struct ExactPlane {
     sites: Vec<[Integer; 2]>,
     corners: Vec<[Integer; 2]>,
+    /// Every integer is its double divided by `2^unit`.
+    unit: i32,
 }
 
 /// A finite `x` as `±mantissa · 2^exponent`.
@@ -168,7 +180,19 @@ impl ExactPlane {
         ExactPlane {
             sites: points(sites),
             corners: points(corners),
+            unit,
         }
+    }
+
+    /// `log2 |orient2d(a, b, c)|` of sites `a`, `b`, `c` from the exact determinant (the
+    /// predicate's value only has the right sign: it may be scaled, or rounded to a subnormal).
+    pub fn log2_orientation(&self, [a, b, c]: [usize; 3]) -> f64 {
+        let [[ax, ay], [bx, by], [cx, cy]] = [a, b, c].map(|k| &self.sites[k]);
+        let determinant = bx
+            .sub(ax)
+            .mul(&cy.sub(ay))
+            .sub(&by.sub(ay).mul(&cx.sub(ax)));
+        determinant.log2() + 2.0 * self.unit as f64
     }
 
     /// Does the part of the region strictly nearer to `site` than to every site of `others`
