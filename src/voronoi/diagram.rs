@@ -476,10 +476,10 @@ fn circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> [f64; 2] {
 /// ([`SplitCentre`]).
 ///
 /// The differences are first brought near 1 by a power of two (exact, short of underflow: sums
-/// below [`SMALLEST_BOUNDED_SIZE`] go to exact arithmetic too), so
-/// that products of three of them neither underflow (sites of a frame normalised for a far site,
-/// `1e154` beside the unit square, are `1e-154` apart) nor overflow (a frame kept wide so that
-/// sites near `1e-300` keep their low bits beside one at `1e301`).
+/// below [`SMALLEST_BOUNDED_SIZE`] go to exact arithmetic too), so that products of three of
+/// them neither underflow (sites of a frame normalised for a far site, `1e154` beside the unit
+/// square, are `1e-154` apart) nor overflow (a frame kept wide so that sites near `1e-300` keep
+/// their low bits beside one at `1e301`).
 #[inline(always)]
 fn fast_circumcentre_offset(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<[f64; 2]> {
     let (bx, by) = (b[0] - a[0], b[1] - a[1]);
