@@ -20,6 +20,19 @@ fn assert_each_site_nearest_to_itself(v: &Voronoi) {
     }
 }
 
+/// The diagram of `sites`, and its cells clipped to the rectangle from `min` to `max` checked
+/// (`check_clipped`).
+fn checked_in_rectangle(
+    sites: &[[f64; 2]],
+    min: [f64; 2],
+    max: [f64; 2],
+) -> (Voronoi, ClipPolygon) {
+    let clip = ClipPolygon::rectangle(min, max).unwrap();
+    let v = Voronoi::new(sites).unwrap();
+    check_clipped(&v, &clip);
+    (v, clip)
+}
+
 #[test]
 fn one_far_site_among_unit_square_sites() {
     // Squared distances between the unit-square sites, in the frame that brings 1e154 near 1,
@@ -238,9 +251,7 @@ fn a_bisector_passing_a_corner_by_less_than_an_ulp_keeps_its_cell() {
         [-3.0, -2.0],
         [42.0, 28.0],
     ];
-    let clip = ClipPolygon::rectangle([0.0, 0.0], [42.0, 28.0]).unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    let (v, clip) = checked_in_rectangle(&sites, [0.0, 0.0], [42.0, 28.0]);
     assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
 }
 
@@ -250,9 +261,7 @@ fn a_bisector_passing_a_corner_by_less_than_an_ulp_keeps_its_cell() {
 #[test]
 fn an_edge_crossing_a_region_flatter_than_an_ulp_is_kept() {
     let sites = [[2.0, 0.0], [1.0, 0.0], [2.0, 1.0], [1.0, 1.0], [3.0, 0.0]];
-    let clip = ClipPolygon::rectangle([1e-252, 0.0], [2.0, 2e-252]).unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    let (v, clip) = checked_in_rectangle(&sites, [1e-252, 0.0], [2.0, 2e-252]);
     assert!(v.clip(&clip).cell(SiteId(0)).unwrap().len() >= 3);
 }
 
@@ -336,9 +345,7 @@ fn cells_beside_the_near_corner_of_a_huge_region_are_placed_from_their_sites() {
         [-2.0, 6.0],
         [7.000000000000001e44, -2.1000000000000003e45],
     ];
-    let clip = ClipPolygon::rectangle([-7.0, -2.7000000000000004e26], [9e25, 21.0]).unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    let (v, clip) = checked_in_rectangle(&sites, [-7.0, -2.7000000000000004e26], [9e25, 21.0]);
     // The bisector of the first and third sites passes exactly through the corner (-7, 21).
     assert!(v.clip(&clip).cell(SiteId(0)).unwrap().is_empty());
 }
@@ -355,13 +362,11 @@ fn a_bisector_along_a_side_of_a_box_a_few_ulps_wide_keeps_its_sliver() {
         [1000000000000050.3, -922.8153790296402],
         [1000000000000050.6, -922.815379029639],
     ];
-    let clip = ClipPolygon::rectangle(
+    checked_in_rectangle(
+        &sites,
         [1000000000000049.5, -922.8153790296402],
         [1000000000000050.1, -922.8153790296395],
-    )
-    .unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    );
 }
 
 /// Sites at 2e-59 and 1e-287 beside the corner (0, 0) of a 1 × 2 box: the Voronoi edge of the
@@ -377,9 +382,7 @@ fn an_edge_crossing_a_side_just_before_its_vertex_inside_is_kept() {
         [0.0, 0.0],
         [0.0, 2.0],
     ];
-    let clip = ClipPolygon::rectangle([0.0, 0.0], [1.0, 2.0]).unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    checked_in_rectangle(&sites, [0.0, 0.0], [1.0, 2.0]);
 }
 
 /// Sites on the line y = -1.5x at 1e45, 1e-259 and 32, and a box a few ulps wide around the
@@ -417,13 +420,11 @@ fn a_cell_rebuilt_exactly_is_cut_by_the_sites_across_merged_edges() {
         [1000000000000049.5, -86.5606416472984],
         [1000000000000049.8, -86.56064164729844],
     ];
-    let clip = ClipPolygon::rectangle(
+    let (v, clip) = checked_in_rectangle(
+        &sites,
         [1000000000000050.6, -8.656064164729844e39],
         [1.0000000000000504e53, -86.56064164729833],
-    )
-    .unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    );
     let cells = v.clip(&clip);
     for site in 0..3 {
         assert!(cells.cell(SiteId(site)).unwrap().is_empty(), "site {site}");
@@ -445,13 +446,11 @@ fn a_vertex_just_before_the_end_of_a_long_side_is_not_moved_onto_the_corner() {
         [1000000000000049.1, 487.7445511335953],
         [1000000000000049.4, 487.74455113359625],
     ];
-    let clip = ClipPolygon::rectangle(
+    checked_in_rectangle(
+        &sites,
         [1000000000000049.1, 487.7445511335957],
         [1.000000000000049e88, 4.877445511335963e75],
-    )
-    .unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    );
 }
 
 /// Three sites an ulp apart at 1e15 + 49.4 in a box 23 ulps wide and 11 tall: the cell on the
@@ -465,13 +464,11 @@ fn a_cell_with_a_corner_rounded_reflex_holds_its_site() {
         [1000000000000049.4, -598.8040313554326],
         [1000000000000049.5, -598.8040313554328],
     ];
-    let clip = ClipPolygon::rectangle(
+    checked_in_rectangle(
+        &sites,
         [1000000000000048.6, -598.8040313554336],
         [1000000000000051.5, -598.8040313554324],
-    )
-    .unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    );
 }
 
 /// Three sites at 1e15 + 51 and a box 7 ulps wide and 6 tall beside them, whose right side the
@@ -486,13 +483,11 @@ fn an_edge_leaving_at_once_from_a_vertex_on_the_boundary_has_no_piece() {
         [1000000000000051.4, 944.4037619745623],
         [1000000000000050.6, 944.4037619745606],
     ];
-    let clip = ClipPolygon::rectangle(
+    checked_in_rectangle(
+        &sites,
         [1000000000000050.1, 944.4037619745613],
         [1000000000000051.0, 944.403761974562],
-    )
-    .unwrap();
-    let v = Voronoi::new(&sites).unwrap();
-    check_clipped(&v, &clip);
+    );
 }
 
 /// Two sites 1e-286 apart near 1e-271 and one at 1e15: their circumcentre lies at
