@@ -408,8 +408,9 @@ fn a_vertex_beyond_doubles_keeps_its_direction_in_a_local_frame() {
 }
 
 /// Three sites on a vertical line an ulp or two apart at 1e15 + 49.5, a fourth a quarter to
-/// their right, and a region from 1e15 + 50.6 to 1e53: the fourth site's cell holds all of it. The two circumcentres round to one Voronoi vertex, which merges
-/// away the edge between the middle site and the fourth. The middle site's cell, rebuilt from
+/// their right, and a region from 1e15 + 50.6 to 1e53: the fourth site's cell holds all of it.
+/// The two circumcentres round to one Voronoi vertex, which merges away the edge between the
+/// middle site and the fourth. The middle site's cell, rebuilt from
 /// its exact polygon, was cut only by the sites across its remaining sides and came out as a
 /// strip across the whole region. The sites across edges merged away bound it too.
 #[test]
@@ -505,4 +506,128 @@ fn a_centre_of_sites_1e_minus_286_apart_beside_one_at_1e15_is_finite() {
     let [x, y] = v.vertices()[0];
     assert!((x - 3.647977311966128e15).abs() <= 1e-9 * x, "x = {x:e}");
     assert!((y - 8.021986944739589e27).abs() <= 1e-9 * y, "y = {y:e}");
+}
+
+/// A region 4 wide and 2e-86 tall along the x axis. The Voronoi vertex (3, 0) of (2, 0), (4, 0)
+/// and (3, 1) lies on its bottom side, and the edges from it cross the region to its top in
+/// 2e-86, a parameter that rounds onto the vertex's. Such an edge was dropped like one leaving
+/// at once through the side its vertex lies on, and the cell of (2, 0) walked round the region
+/// the wrong way. It reaches the opposite side, and keeps its piece.
+#[test]
+fn an_edge_crossing_a_flat_region_to_a_vertex_on_its_other_side_is_kept() {
+    let sites = [
+        [3.0, 2.0],
+        [4.0, 2.0],
+        [2.0, 0.0],
+        [3.0, 1.0],
+        [0.0, 3.0],
+        [1.0, 1.0],
+        [4.0, 0.0],
+    ];
+    let (v, clip) = checked_in_rectangle(&sites, [2e-86, 0.0], [4.0, 2e-86]);
+    let cells = v.clip(&clip);
+    let area = |site: u32| cells.cell_area(SiteId(site)).unwrap();
+    // (1, 1) holds x < 1, (2, 0) 1 < x < 3 and (4, 0) x > 3; (3, 1) a triangle 4e-86 wide.
+    let height = 2e-86;
+    for (site, width) in [(5, 1.0), (2, 2.0), (6, 1.0)] {
+        let expected = width * height;
+        assert!(
+            (area(site) - expected).abs() <= 1e-9 * expected,
+            "cell {site}"
+        );
+    }
+    assert!(!cells.cell(SiteId(3)).unwrap().is_empty());
+}
+
+/// Sites near 1 beside one at (2.9e28, 5.2e28), and a region from one of them to 7.9e143. The
+/// bisector of (0.13, 0.90) and (0.39, 0.88) runs from a Voronoi vertex at 3e28 with a slope of
+/// 15, and leaves the region by its left side at y = 9; from the vertex, rounded to ulps of
+/// 3e28, it seemed to leave by the bottom, and the cell of (0.39, 0.88) went round the whole
+/// region. It leaves by the side it crosses exactly.
+#[test]
+fn a_steep_edge_from_a_far_vertex_leaves_by_the_side_it_crosses_exactly() {
+    let sites = [
+        [0.9860278425343197, 0.7369339860406604],
+        [0.7942519096707895, 0.54344487021357],
+        [0.13044504911924937, 0.8990791036405866],
+        [0.38508462327067194, 0.8824461812645711],
+        [2.8897113354128375e28, 5.239935461917e28],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [0.7942519096707895, 0.54344487021357],
+        [7.942519096707896e143, 5.434448702135702e143],
+    );
+}
+
+/// A box 7 ulps wide and 7 tall at 1e15 + 51. The bisector of the sites a quarter to either
+/// side of its right side runs along that side, 1e-25 inside it, and the edge from its Voronoi
+/// vertex on the side missed the box within rounding: the sliver between the two, the cell of
+/// the site to the right, kept only the three positions of its other edge, on the side, and
+/// lost its top. A cell whose positions lie in a line beside such an edge is rebuilt from its
+/// exact polygon.
+#[test]
+fn a_sliver_beside_an_edge_that_missed_within_rounding_is_rebuilt_exactly() {
+    let sites = [
+        [1000000000000051.4, -839.1401399746389],
+        [1000000000000051.1, -839.1401399746392],
+        [1000000000000051.4, -839.1401399746375],
+        [1000000000000051.1, -839.1401399746368],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [1000000000000050.4, -839.1401399746381],
+        [1000000000000051.3, -839.1401399746373],
+    );
+}
+
+/// Sites an ulp or two apart at 1e15 + 48.5, above and to the left of a region that reaches
+/// 1e62. The Voronoi edge between two of them is 1e-12 long, outside the region, but its ends,
+/// rounded to ulps of 1e15, took it across the region's corner: its crossings, placed from the
+/// sites where its bisector crosses the sides, gave a piece from the left side to the bottom
+/// 1e37 away, and the areas summed to twice the region's. A crossing is kept only where it lies
+/// on the edge, which is decided exactly.
+#[test]
+fn an_edge_crossing_a_corner_only_once_its_ends_are_rounded_has_no_piece() {
+    let sites = [
+        [1000000000000048.3, -928.6921875644529],
+        [1000000000000048.6, -928.6921875644535],
+        [1000000000000048.6, -928.6921875644518],
+        [1000000000000048.6, -928.6921875644533],
+        [1000000000000049.5, -928.6921875644531],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [1000000000000049.8, -9.286921875644536e49],
+        [1.0000000000000496e62, -928.6921875644538],
+    );
+}
+
+/// A region 7 subnormals wide around the site (0, 0), whose cell holds all of it. In the
+/// region's local frame the sites (2, 3) and (3, 2) lie 1e300 out, and the ray between them,
+/// moved along their bisector rounded to ulps of 1e300, crossed the region: the cell of (0, 0)
+/// came out empty. The ray's crossings lie beyond its vertex, nearer to (0, 0).
+#[test]
+fn a_ray_whose_line_crosses_a_subnormal_region_beyond_its_vertex_misses_it() {
+    let sites = [
+        [0.0, 3e-251],
+        [3e-9, 0.0],
+        [0.0, 0.0],
+        [2.0, 3.0],
+        [3.0, 2.0],
+    ];
+    let clip = ClipPolygon::rectangle([-2e-323, -5e-324], [1.5e-323, 5e-324]).unwrap();
+    let cells = Voronoi::new(&sites).unwrap().clip(&clip);
+    for site in 0..sites.len() as u32 {
+        let cell = cells.cell_polygon(SiteId(site)).unwrap();
+        if site == 2 {
+            let mut corners = cell.clone();
+            corners.sort_by(|p, q| p.partial_cmp(q).unwrap());
+            let mut region = clip.vertices().to_vec();
+            region.sort_by(|p, q| p.partial_cmp(q).unwrap());
+            assert_eq!(corners, region, "the cell of (0, 0) is the region");
+        } else {
+            assert!(cell.is_empty(), "site {site}: {cell:?}");
+        }
+    }
 }

@@ -199,6 +199,25 @@ impl Voronoi {
         }
     }
 
+    /// The third sites of the Delaunay triangles at the ends of the edge with key `edge`, at
+    /// its `from` and `to` ends ([`INVALID`] at infinity, and for every edge of a diagram
+    /// without triangles, whose edges have no vertices). Past an end, its third site is nearer
+    /// than the edge's own two.
+    pub(crate) fn edge_third_sites(&self, edge: u32) -> [u32; 2] {
+        if self.delaunay.dimension() != Dimension::Plane {
+            return [INVALID; 2];
+        }
+        let d = &self.delaunay;
+        let third = |e: u32| {
+            if e == INVALID {
+                INVALID
+            } else {
+                d.triangles[prev_edge(e) as usize]
+            }
+        };
+        [third(d.twins[edge as usize]), third(edge)]
+    }
+
     /// The keys, in increasing order, of every edge with an end that is not placed: at
     /// infinity, or a vertex for which `is_placed` fails. `unplaced` lists those vertices.
     pub(crate) fn edges_with_unplaced_end(

@@ -5,6 +5,7 @@ use super::clip_frame::FrameMap;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::crossing_order::{
     bisector_crossing, bisector_meets, bisector_piece_sides, compare_crossings, crosses_edge,
+    crossing_nearer_than,
 };
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
@@ -33,7 +34,8 @@ use std::cmp::Ordering;
 /// from the origin, or far closer together than the region is wide), it keeps its own positions,
 /// in their exact order along the region's boundary, but some of them may coincide once rounded:
 /// such a cell has zero area in floating point. Where rounding collapses such a cell altogether
-/// (its sides rounded onto the region's boundary or onto one another), it is rebuilt from its
+/// (its sides rounded onto the region's boundary or onto one another, or its corners into one
+/// line beside an edge that missed the region only within rounding), it is rebuilt from its
 /// exact polygon: its corners, each within two ulps of its exact place, are positions of its own,
 /// after all the shared ones, and its neighbours meet one another there within rounding.
 ///
@@ -383,26 +385,23 @@ impl Builder<'_> {
             .then_some(crossing.parameters)
     }
 
-    /// Does the point at `parameters` along side `side` coincide with position `vertex` within
-    /// the rounding of `base + s·dir`, where the floating-point clipping put the crossing?
-    fn meets_vertex(
+    /// Does the point at `parameters` along side `side` coincide with `point` within the
+    /// rounding of `base + s·dir`, where the floating-point clipping put the crossing?
+    fn meets_point(
         &self,
         side: usize,
         [t, from_end]: [f64; 2],
-        vertex: u32,
+        point: [f64; 2],
         [base, dir]: [[f64; 2]; 2],
         s: f64,
     ) -> bool {
         const ROUNDINGS: f64 = 64.0;
-        let Some(&v) = self.positions.get(vertex as usize) else {
-            return false;
-        };
         let x = self.edge_point(side, t.clamp(0.0, 1.0), from_end.clamp(-1.0, 0.0));
-        let magnitude = [base, [s * dir[0], s * dir[1]], v]
+        let magnitude = [base, [s * dir[0], s * dir[1]], point]
             .iter()
             .flatten()
             .fold(0.0_f64, |m, c| m.max(c.abs()));
-        let apart = (x[0] - v[0]).abs().max((x[1] - v[1]).abs());
+        let apart = (x[0] - point[0]).abs().max((x[1] - point[1]).abs());
         apart <= ROUNDINGS * f64::EPSILON * magnitude
     }
 
@@ -443,6 +442,15 @@ impl Builder<'_> {
     fn input_edge(&self, edge: usize) -> [[f64; 2]; 2] {
         let m = self.input.corners.len();
         [edge, (edge + 1) % m].map(|k| self.input.corners[k])
+    }
+
+    /// Does position `p` lie on side `side` (a crossing of it, or one of its two corners)?
+    fn lies_on_side(&self, p: u32, side: usize) -> bool {
+        let m = self.clip.vertices().len();
+        self.perimeter(p).is_some_and(|at| {
+            let edge = at.edge as usize;
+            edge == side || (at.kind == PerimeterKind::Corner && (edge + m - 1) % m == side)
+        })
     }
 
     /// Is `to` at or after `from`, both on the same edge?
@@ -532,12 +540,7 @@ impl Voronoi {
         let keys = self.edges_with_unplaced_end(placed, &unplaced);
         let clipped: Vec<(u32, ClippedEdge)> = keys
             .into_iter()
-            .map(|key| {
-                (
-                    key,
-                    self.clip_edge(self.edge_ends(key), &vertex_position, &mut b),
-                )
-            })
+            .map(|key| (key, self.clip_edge(key, &vertex_position, &mut b)))
             .collect();
         b.order_crossings();
         // A side with both ends placed is its own piece.
@@ -602,15 +605,19 @@ impl Voronoi {
                     }));
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
-                    if local.len() - first < 3 {
+                    let cell = &local[first..];
+                    let flat = cell.len() < 3 || !area_beyond_rounding(cell, &b);
+                    if flat && (cell.len() < 3 || near_miss) {
                         // Fewer than three corners: the cell meets the region only along its
                         // boundary, in a segment or a point (see `ClippedCells`), unless rounding
-                        // collapsed it.
+                        // collapsed it. So may corners in a line beside an edge that missed the
+                        // region within rounding: with that edge's piece, a sliver along a side
+                        // lost its extent (a bisector running 1e-25 inside the side).
                         local.truncate(first);
                         if near_miss && let Some(corners) = self.exact_cell(handle, &b) {
                             rebuilt.push((s, corners));
                         }
-                    } else if !self.has_interior(handle, &local[first..], &b) {
+                    } else if flat && !self.has_exact_interior(handle, &b) {
                         // Corners in a line that are the rounding of no interior.
                         local.truncate(first);
                     }
@@ -671,42 +678,6 @@ impl Voronoi {
         }
     }
 
-    /// Does the assembled cell `cell` of `handle` (see [`Voronoi::cell_handles`]) have an
-    /// interior? Its area in floating point says so when it is larger than the rounding of its
-    /// corners can make it; an area within that (a cell pinched to a corner of the region, whose
-    /// corners rounded apart) is decided exactly.
-    fn has_interior(&self, handle: u32, cell: &[u32], b: &Builder) -> bool {
-        let points = cell.iter().map(|&i| b.positions[i as usize]);
-        let origin = b.positions[cell[0] as usize];
-        let (mut twice_area, mut previous) = (0.0_f64, origin);
-        let (mut largest_offset, mut largest_coordinate) = (0.0_f64, 0.0_f64);
-        for p in points.skip(1) {
-            let (u, w) = (
-                [0, 1].map(|k| previous[k] - origin[k]),
-                [0, 1].map(|k| p[k] - origin[k]),
-            );
-            twice_area += u[0] * w[1] - u[1] * w[0];
-            largest_offset = largest_offset.max(w[0].abs()).max(w[1].abs());
-            largest_coordinate = largest_coordinate.max(p[0].abs()).max(p[1].abs());
-            previous = p;
-        }
-        // The region's own reach too: in a local frame (see `clip_frame`) a Voronoi vertex near
-        // the origin carries the rounding of its offset from sites a region's width away.
-        let reach = b.reach.centre[0].abs().max(b.reach.centre[1].abs()) + b.reach.radius;
-        largest_coordinate = largest_coordinate
-            .max(origin[0].abs())
-            .max(origin[1].abs())
-            .max(reach);
-        // Each corner lies within an ulp of its exact place: an area of zero can round to up to
-        // about (corners × ulp × extent); four times that, for the sums.
-        let rounding = 4.0 * cell.len() as f64 * f64::EPSILON * largest_coordinate * largest_offset;
-        if twice_area.abs() > rounding {
-            return true;
-        }
-        let (site, neighbours) = self.input_neighbours(handle, b);
-        cell_has_interior(site, &neighbours, b.input.corners)
-    }
-
     /// The corners of the cell of `handle`, rounded from their exact places, when it has an
     /// interior: for a cell whose floating-point pieces collapsed onto fewer than three
     /// positions (see [`ClippedEdge::NearMiss`]).
@@ -714,6 +685,15 @@ impl Voronoi {
     fn exact_cell(&self, handle: u32, b: &Builder) -> Option<Vec<[f64; 2]>> {
         let (site, neighbours) = self.input_neighbours(handle, b);
         exact_cell_corners(site, &neighbours, b.input.corners, b.input.frame)
+    }
+
+    /// Does the cell of `handle` have an interior, decided exactly? For an assembled cell whose
+    /// area lies within the rounding of its corners (see [`area_beyond_rounding`]): corners in a
+    /// line, or a cell pinched to a corner of the region whose corners rounded apart.
+    #[cold]
+    fn has_exact_interior(&self, handle: u32, b: &Builder) -> bool {
+        let (site, neighbours) = self.input_neighbours(handle, b);
+        cell_has_interior(site, &neighbours, b.input.corners)
     }
 
     /// The site of the cell of `handle` and the sites that bound it exactly (see
@@ -772,8 +752,9 @@ impl Voronoi {
             .map_or(INVALID, |site| site.0)
     }
 
-    /// Clips the edge with ends `ends` to the region.
-    fn clip_edge(&self, ends: EdgeEnds, vertex_position: &[u32], b: &mut Builder) -> ClippedEdge {
+    /// Clips the edge with key `key` to the region.
+    fn clip_edge(&self, key: u32, vertex_position: &[u32], b: &mut Builder) -> ClippedEdge {
+        let ends = self.edge_ends(key);
         let clip = b.clip;
         let m = clip.vertices().len();
         let (o, t) = (ends.from, ends.to);
@@ -880,6 +861,34 @@ impl Voronoi {
         );
         let chosen_by_rounding =
             (cut_at_start && entry.is_none()) || (cut_at_end && exit_at.is_none());
+        let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
+        if chosen_by_rounding && cut_at_start != cut_at_end {
+            // One end at a vertex inside, and a side its bisector does not cross exactly: a
+            // bisector far steeper than the rounding of the vertex (sites near 1 beside one at
+            // 1e28) leaves by the side it crosses exactly, where that crossing lies within the
+            // rounding of the floating-point one. The cells between the two sides' corners
+            // depend on it.
+            let (entering, s) = if cut_at_start {
+                (true, lo)
+            } else {
+                (false, hi)
+            };
+            let exact = b
+                .exact_piece_sides(sides, reversed)
+                .and_then(|[enter, exit]| {
+                    let side = if entering { enter } else { exit };
+                    let parameters = on_side(side, entering)?;
+                    b.meets_point(side, parameters, at(s), [base, dir], s)
+                        .then_some((side, parameters))
+                });
+            if let Some((side, parameters)) = exact {
+                if entering {
+                    (enter, entry) = (side, Some(parameters));
+                } else {
+                    (exit, exit_at) = (side, Some(parameters));
+                }
+            }
+        }
         if cut_at_start && cut_at_end {
             if !found_piece || chosen_by_rounding {
                 // Both ends on the boundary: the sides are decided exactly.
@@ -899,26 +908,41 @@ impl Voronoi {
             // rounding of that computation (an edge crossing a side steeply, next to a vertex
             // far closer to the side than an ulp of the edge). An edge running along a side
             // within rounding has a crossing anywhere along it, and is left as missing; so is
-            // one leaving at once from a vertex on the boundary, whose crossing is the vertex.
+            // one leaving at once from a vertex on the boundary through the side the vertex
+            // lies on, whose crossing is the vertex. One reaching a vertex on another side
+            // crosses the region (a region 1e-86 tall, whose height rounds away against 3).
             let (side, crossing, vertex) = if cut_at_start {
                 (enter, entry, far_vertex)
             } else {
                 (exit, exit_at, base_vertex)
             };
             let s = if cut_at_start { lo } else { hi };
-            let inside = position(vertex) != INVALID && b.perimeter(position(vertex)).is_none();
-            let kept = inside
+            let kept = position(vertex) != INVALID
+                && !b.lies_on_side(position(vertex), side)
                 && crossing.is_some_and(|parameters| {
-                    b.meets_vertex(side, parameters, position(vertex), [base, dir], s)
+                    let vertex_at = b.positions[position(vertex) as usize];
+                    b.meets_point(side, parameters, vertex_at, [base, dir], s)
                 });
             if !kept {
+                return ClippedEdge::NearMiss;
+            }
+        }
+        if cut_at_start && cut_at_end {
+            // Both crossings are placed from the sites, and kept where they lie on the edge
+            // exactly: the rounding of an end can take an edge across the region when its
+            // bisector crosses it beyond that end (a segment 1e-12 long between vertices rounded
+            // to ulps of 1e15 crossing a corner, or a ray whose vertex lies 1e300 out in a local
+            // frame, moved along a bisector rounded to ulps of that).
+            let off_edge = |side: usize, parameters: Option<[f64; 2]>| {
+                parameters.is_some() && !self.crosses_on_edge(key, side, b)
+            };
+            if off_edge(enter, entry) || off_edge(exit, exit_at) {
                 return ClippedEdge::NearMiss;
             }
         }
         // A side chosen by rounding beside an end at a vertex (an edge running along a side
         // within rounding) keeps the floating-point crossing, which agrees with where the test
         // of the vertices put that end.
-        let at = |s: f64| [base[0] + s * dir[0], base[1] + s * dir[1]];
         let start = if cut_at_start {
             let parameters = entry.unwrap_or_else(|| clip.edge_parameters(enter, at(lo)));
             b.crossing(enter, parameters, sites)
@@ -945,6 +969,20 @@ impl Voronoi {
 }
 
 impl Voronoi {
+    /// Does the edge with key `key` cross side `side` of the region (where its bisector does)
+    /// between its ends or at one of them, decided exactly (see [`crossing_nearer_than`])?
+    #[cold]
+    fn crosses_on_edge(&self, key: u32, side: usize, b: &Builder) -> bool {
+        let ends = self.edge_ends(key);
+        let place = |s: u32| b.input.sites[s as usize];
+        let sites = [place(ends.left), place(ends.right)];
+        self.edge_third_sites(key).iter().all(|&third| {
+            third == INVALID
+                || crossing_nearer_than(b.input_edge(side), sites, place(third))
+                    != Some(Ordering::Greater)
+        })
+    }
+
     /// The geometry of the edge with ends `ends`, its ends far from the region (see [`Reach`])
     /// moved along the bisector of its two sites to just beyond the region.
     ///
@@ -984,6 +1022,36 @@ impl Voronoi {
             line @ EdgeGeometry::Line { .. } => line,
         }
     }
+}
+
+/// Is the signed area of the assembled cell `cell` (at least three positions) larger than the
+/// rounding of its corners can make it?
+fn area_beyond_rounding(cell: &[u32], b: &Builder) -> bool {
+    let points = cell.iter().map(|&i| b.positions[i as usize]);
+    let origin = b.positions[cell[0] as usize];
+    let (mut twice_area, mut previous) = (0.0_f64, origin);
+    let (mut largest_offset, mut largest_coordinate) = (0.0_f64, 0.0_f64);
+    for p in points.skip(1) {
+        let (u, w) = (
+            [0, 1].map(|k| previous[k] - origin[k]),
+            [0, 1].map(|k| p[k] - origin[k]),
+        );
+        twice_area += u[0] * w[1] - u[1] * w[0];
+        largest_offset = largest_offset.max(w[0].abs()).max(w[1].abs());
+        largest_coordinate = largest_coordinate.max(p[0].abs()).max(p[1].abs());
+        previous = p;
+    }
+    // The region's own reach too: in a local frame (see `clip_frame`) a Voronoi vertex near
+    // the origin carries the rounding of its offset from sites a region's width away.
+    let reach = b.reach.centre[0].abs().max(b.reach.centre[1].abs()) + b.reach.radius;
+    largest_coordinate = largest_coordinate
+        .max(origin[0].abs())
+        .max(origin[1].abs())
+        .max(reach);
+    // Each corner lies within an ulp of its exact place: an area of zero can round to up to
+    // about (corners × ulp × extent); four times that, for the sums.
+    let rounding = 4.0 * cell.len() as f64 * f64::EPSILON * largest_coordinate * largest_offset;
+    twice_area.abs() > rounding
 }
 
 /// Appends to `out` the corners of a cell given its clipped pieces in order (`[start, end]`

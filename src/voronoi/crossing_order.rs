@@ -57,6 +57,40 @@ pub(crate) fn compare_crossings(
     Some(difference.cmp(&0))
 }
 
+/// Is the point where the bisector of `[p, q]` crosses the line of the edge from `a` to `b`
+/// nearer to `p` than to `other` (`Less`), as near (`Equal`) or farther (`Greater`)? `None`
+/// when the bisector is parallel to the edge.
+///
+/// A point of the bisector lies on the Voronoi edge of `p` and `q` when it is nearer to them
+/// than to the third site of the Delaunay triangle at either end: past an end, that site is
+/// nearer. Exact, so it tells a crossing on an edge from one just beyond a vertex rounded to
+/// ulps of its distance from the origin.
+pub(crate) fn crossing_nearer_than(
+    [a, b]: [[f64; 2]; 2],
+    [p, q]: [[f64; 2]; 2],
+    other: [f64; 2],
+) -> Option<Ordering> {
+    let [ax, ay, bx, by, px, py, qx, qy, ox, oy] = integers([
+        a[0], a[1], b[0], b[1], p[0], p[1], q[0], q[1], other[0], other[1],
+    ]);
+    let (ex, ey) = (bx.sub(&ax), by.sub(&ay));
+    let squared_distance = |x: &WideInteger, y: &WideInteger| {
+        let (dx, dy) = (ax.sub(x), ay.sub(y));
+        dx.mul(&dx).add(&dy.mul(&dy))
+    };
+    // The crossing is `a + (N / 2D)·e`, and at `a + τ·e`,
+    // `|x − p|² − |x − o|² = |a − p|² − |a − o|² + 2τ·e·(o − p)`.
+    let numerator = squared_distance(&qx, &qy).sub(&squared_distance(&px, &py));
+    let denominator = ex.mul(&qx.sub(&px)).add(&ey.mul(&qy.sub(&py)));
+    if denominator.signum() == 0 {
+        return None;
+    }
+    let at_a = squared_distance(&px, &py).sub(&squared_distance(&ox, &oy));
+    let towards_other = ex.mul(&ox.sub(&px)).add(&ey.mul(&oy.sub(&py)));
+    let difference = at_a.mul(&denominator).add(&numerator.mul(&towards_other));
+    Some((difference.signum() * denominator.signum()).cmp(&0))
+}
+
 /// Where a bisector crosses the line of an edge of the region (see [`bisector_crossing`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct BisectorCrossing {
@@ -292,6 +326,30 @@ mod tests {
         // A bisector parallel to the edge has no crossing.
         let above = [[1e15 + 49.0, 1.0], [1e15 + 49.0, 2.0]];
         assert_eq!(compare_crossings([a, b], above, left), None);
+    }
+
+    #[test]
+    fn a_crossing_lies_on_the_edge_between_the_third_sites_bisectors() {
+        // The bisector of (0, 1) and (0, -1) is the x axis; it crosses the side x = 3 at (3, 0).
+        let side = [[3.0, -5.0], [3.0, 5.0]];
+        let sites = [[0.0, 1.0], [0.0, -1.0]];
+        // (3, 0) is 10 from the sites (squared): nearer to them than to (10, 0), as near as to
+        // (6, 1), and farther than from (4, 0).
+        let nearer = |other| crossing_nearer_than(side, sites, other);
+        assert_eq!(nearer([10.0, 0.0]), Some(Ordering::Less));
+        assert_eq!(nearer([6.0, 1.0]), Some(Ordering::Equal));
+        assert_eq!(nearer([4.0, 0.0]), Some(Ordering::Greater));
+        // Either way along the side, and with the sites swapped.
+        let reversed = [side[1], side[0]];
+        assert_eq!(
+            crossing_nearer_than(reversed, [sites[1], sites[0]], [4.0, 0.0]),
+            Some(Ordering::Greater)
+        );
+        // A bisector parallel to the side crosses it nowhere.
+        assert_eq!(
+            crossing_nearer_than([[0.0, 3.0], [1.0, 3.0]], sites, [9.0, 0.0]),
+            None
+        );
     }
 
     #[test]
