@@ -901,6 +901,17 @@ impl Voronoi {
                     return ClippedEdge::NearMiss;
                 }
             }
+            // Both crossings are placed from the sites, and kept where they lie on the edge
+            // exactly: the rounding of an end can take an edge across the region when its
+            // bisector crosses it beyond that end (a segment 1e-12 long between vertices rounded
+            // to ulps of 1e15 crossing a corner, or a ray whose vertex lies 1e300 out in a local
+            // frame, moved along a bisector rounded to ulps of that).
+            let off_edge = |side: usize, parameters: Option<[f64; 2]>| {
+                parameters.is_some() && !self.crosses_on_edge(key, side, b)
+            };
+            if off_edge(enter, entry) || off_edge(exit, exit_at) {
+                return ClippedEdge::NearMiss;
+            }
         } else if !found_piece {
             // One end at a vertex inside the region, and the crossing's parameter rounded onto
             // the vertex's: the piece from the crossing, placed from the sites, to the vertex is
@@ -924,19 +935,6 @@ impl Voronoi {
                     b.meets_point(side, parameters, vertex_at, [base, dir], s)
                 });
             if !kept {
-                return ClippedEdge::NearMiss;
-            }
-        }
-        if cut_at_start && cut_at_end {
-            // Both crossings are placed from the sites, and kept where they lie on the edge
-            // exactly: the rounding of an end can take an edge across the region when its
-            // bisector crosses it beyond that end (a segment 1e-12 long between vertices rounded
-            // to ulps of 1e15 crossing a corner, or a ray whose vertex lies 1e300 out in a local
-            // frame, moved along a bisector rounded to ulps of that).
-            let off_edge = |side: usize, parameters: Option<[f64; 2]>| {
-                parameters.is_some() && !self.crosses_on_edge(key, side, b)
-            };
-            if off_edge(enter, entry) || off_edge(exit, exit_at) {
                 return ClippedEdge::NearMiss;
             }
         }

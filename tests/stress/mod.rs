@@ -1,5 +1,6 @@
 //! Shared driver of the randomized stress tests (`tests/stress_*.rs`): every case draws from
-//! its own seeded generator, the number of cases comes from `HALFWING_STRESS_CASES`, one case is
+//! its own seeded generator, the number of cases comes from `HALFWING_STRESS_CASES` (from the
+//! seed `HALFWING_STRESS_FIRST_SEED`, so that a long run splits across processes), one case is
 //! replayed with `HALFWING_STRESS_SEED`, and a failing case names its seed (see
 //! docs/testing.md).
 #![allow(dead_code)]
@@ -33,9 +34,9 @@ fn variable(name: &str) -> Option<u64> {
     )
 }
 
-/// Runs `case` on `bounded` seeds (in `cargo test`), or on `HALFWING_STRESS_CASES` of them, or
-/// on the one seed `HALFWING_STRESS_SEED`. A failing case panics naming its seed. Returns the
-/// number of cases run.
+/// Runs `case` on `bounded` seeds (in `cargo test`), or on `HALFWING_STRESS_CASES` of them
+/// (from `HALFWING_STRESS_FIRST_SEED`, if set), or on the one seed `HALFWING_STRESS_SEED`. A
+/// failing case panics naming its seed. Returns the number of cases run.
 pub fn run(target: &str, bounded: u64, case: impl Fn(&mut TestRng)) -> u64 {
     run_from(target, 0, bounded, case)
 }
@@ -49,7 +50,10 @@ pub fn run_long(target: &str, case: impl Fn(&mut TestRng)) -> u64 {
 fn run_from(target: &str, first: u64, default_cases: u64, case: impl Fn(&mut TestRng)) -> u64 {
     let seeds = match variable("HALFWING_STRESS_SEED") {
         Some(seed) => seed..seed + 1,
-        None => first..first + variable("HALFWING_STRESS_CASES").unwrap_or(default_cases),
+        None => {
+            let first = variable("HALFWING_STRESS_FIRST_SEED").unwrap_or(first);
+            first..first + variable("HALFWING_STRESS_CASES").unwrap_or(default_cases)
+        }
     };
     let count = seeds.end - seeds.start;
     // With HALFWING_STRESS_KEEP_GOING set, every case runs and all failing seeds are listed.
@@ -64,6 +68,8 @@ fn run_from(target: &str, first: u64, default_cases: u64, case: impl Fn(&mut Tes
                 .or_else(|| cause.downcast_ref::<&str>().copied())
                 .unwrap_or("(no message)");
             if keep_going {
+                // Named at once too: a run of hours can be stopped with what it found so far.
+                eprintln!("{target}: case {seed} failed: {message}");
                 failed.push(seed);
                 continue;
             }
