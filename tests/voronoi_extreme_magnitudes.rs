@@ -631,3 +631,22 @@ fn a_ray_whose_line_crosses_a_subnormal_region_beyond_its_vertex_misses_it() {
         }
     }
 }
+
+/// A box 23 ulps wide and 2 tall at 1e15 + 50, narrower than the rounding of its own corners:
+/// every cell's area there lies within rounding. The bisector of two sites crosses it half way
+/// between two doubles, and a cell beside an edge that missed the box was rebuilt from its
+/// exact polygon, its crossings rounded the other way from the shared ones: the two cells
+/// overlapped by an ulp. Only a cell whose corners lie exactly in a line is rebuilt so.
+#[test]
+fn cells_in_a_box_narrower_than_rounding_share_their_crossings() {
+    let sites = [
+        [1000000000000049.5, -4.81294127104001],
+        [1000000000000049.4, -4.812941271040022],
+        [1000000000000049.5, -4.812941271040022],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [1000000000000048.6, -4.812941271040014],
+        [1000000000000051.5, -4.812941271040012],
+    );
+}

@@ -13,7 +13,7 @@ use super::error::VoronoiError;
 use super::exact_cell::{cell_has_interior, exact_cell_corners};
 use super::ids::SiteId;
 use super::parallel::{map_each, run_length};
-use super::predicates::normalising_scale_of_box;
+use super::predicates::{normalising_scale_of_box, orient2d};
 use crate::soup::PolygonSoup;
 use crate::support::large_arrays;
 use std::cmp::Ordering;
@@ -606,8 +606,7 @@ impl Voronoi {
                     cell_pieces.retain(|p: &[u32; 2]| p[0] != INVALID);
                     assemble_cell(&cell_pieces, &b, &mut local);
                     let cell = &local[first..];
-                    let flat = cell.len() < 3 || !area_beyond_rounding(cell, &b);
-                    if flat && (cell.len() < 3 || near_miss) {
+                    if cell.len() < 3 || near_miss && corners_in_a_line(cell, &b) {
                         // Fewer than three corners: the cell meets the region only along its
                         // boundary, in a segment or a point (see `ClippedCells`), unless rounding
                         // collapsed it. So may corners in a line beside an edge that missed the
@@ -617,7 +616,9 @@ impl Voronoi {
                         if near_miss && let Some(corners) = self.exact_cell(handle, &b) {
                             rebuilt.push((s, corners));
                         }
-                    } else if flat && !self.has_exact_interior(handle, &b) {
+                    } else if !area_beyond_rounding(cell, &b)
+                        && !self.has_exact_interior(handle, &b)
+                    {
                         // Corners in a line that are the rounding of no interior.
                         local.truncate(first);
                     }
@@ -1020,6 +1021,16 @@ impl Voronoi {
             line @ EdgeGeometry::Line { .. } => line,
         }
     }
+}
+
+/// Do the positions of the assembled cell `cell` (at least three) lie on one line, exactly?
+fn corners_in_a_line(cell: &[u32], b: &Builder) -> bool {
+    let at = |i: &u32| b.positions[*i as usize];
+    let first = at(&cell[0]);
+    let Some(second) = cell.iter().map(at).find(|&p| p != first) else {
+        return true;
+    };
+    cell.iter().all(|i| orient2d(first, second, at(i)) == 0.0)
 }
 
 /// Is the signed area of the assembled cell `cell` (at least three positions) larger than the
