@@ -908,7 +908,7 @@ impl Voronoi {
             // to ulps of 1e15 crossing a corner, or a ray whose vertex lies 1e300 out in a local
             // frame, moved along a bisector rounded to ulps of that).
             let off_edge = |side: usize, parameters: Option<[f64; 2]>| {
-                parameters.is_some() && !self.crosses_on_edge(key, side, b)
+                parameters.is_some() && !self.crosses_on_edge(key, ends, side, b)
             };
             if off_edge(enter, entry) || off_edge(exit, exit_at) {
                 return ClippedEdge::NearMiss;
@@ -968,11 +968,11 @@ impl Voronoi {
 }
 
 impl Voronoi {
-    /// Does the edge with key `key` cross side `side` of the region (where its bisector does)
-    /// between its ends or at one of them, decided exactly (see [`crossing_nearer_than`])?
+    /// Does the edge with key `key` and ends `ends` cross side `side` of the region (where its
+    /// bisector does) between its ends or at one of them, decided exactly (see
+    /// [`crossing_nearer_than`])?
     #[cold]
-    fn crosses_on_edge(&self, key: u32, side: usize, b: &Builder) -> bool {
-        let ends = self.edge_ends(key);
+    fn crosses_on_edge(&self, key: u32, ends: EdgeEnds, side: usize, b: &Builder) -> bool {
         let place = |s: u32| b.input.sites[s as usize];
         let sites = [place(ends.left), place(ends.right)];
         self.edge_third_sites(key).iter().all(|&third| {
