@@ -373,3 +373,38 @@ fn invalid_element_ids_give_invalid_not_panics() {
     assert_eq!(d.outgoing(SiteId::INVALID).count(), 0);
     assert!(d.neighbours(SiteId::INVALID).is_empty());
 }
+
+#[test]
+fn a_vertex_an_ulp_inside_a_side_is_placed_on_that_side() {
+    // Each diagram has a Voronoi vertex within an ulp of the region's side and exactly inside
+    // it (or on it), whose circumcentre rounds to just outside: its edges were clipped as if
+    // it lay outside, and a cell beside it walked round the whole region.
+    let cases: [(&[[f64; 2]], f64, f64); 3] = [
+        (&[[0.0, 0.0], [1.0, 1.0], [0.1, 0.1], [1.0, 2.0]], -0.4, 4.4),
+        (
+            &[
+                [0.2, 0.2],
+                [9.999999999999997e-116, 1.9999999999999994e-115],
+                [0.0, 0.0],
+                [1.0, 0.0],
+            ],
+            -0.2,
+            2.2,
+        ),
+        (
+            &[
+                [1.0, 0.0],
+                [0.2, 0.2],
+                [1.9999999999999995e-141, 9.999999999999998e-142],
+                [1.0, 1.0],
+            ],
+            -0.30000000000000004,
+            3.3,
+        ),
+    ];
+    for (sites, low, high) in cases {
+        let v = Voronoi::new(sites).unwrap();
+        check_voronoi(&v);
+        check_clipped(&v, &ClipPolygon::rectangle([low; 2], [high; 2]).unwrap());
+    }
+}

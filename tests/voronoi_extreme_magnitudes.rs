@@ -650,3 +650,21 @@ fn cells_in_a_box_narrower_than_rounding_share_their_crossings() {
         [1000000000000051.5, -4.812941271040012],
     );
 }
+
+#[test]
+fn a_vertex_rounded_out_of_a_region_at_1e97_is_placed_on_its_side() {
+    // Sites from 1 to 6 beside one at 4e97: the Voronoi vertex at (2e97, 4e96) lies on or
+    // inside the region's top side exactly, and rounds an ulp above it. The areas came to 1.5
+    // times the region's.
+    let sites = [
+        [6.0, 1.0],
+        [4.000000000000001e97, 0.0],
+        [5.0, 6.0],
+        [2.0, 6.0],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [-4.000000000000001e96, -4.000000000000001e96],
+        [4.400000000000001e97, 4.000000000000001e96],
+    );
+}

@@ -1,6 +1,6 @@
 //! Where Voronoi edges cross the sides of a clip region, from their sites: the crossings
-//! themselves, which sides a bisector enters and leaves by, and the exact order of crossings
-//! along one side.
+//! themselves, which sides a bisector enters and leaves by, the exact order of crossings along
+//! one side, and which side of a side's line a Voronoi vertex lies on.
 //!
 //! The bisector of sites `p` and `q` meets the line `a + t·(b − a)` at
 //! `t = (|a − q|² − |a − p|²) / (2 (b − a)·(q − p))`. Two such parameters are compared without
@@ -89,6 +89,35 @@ pub(crate) fn crossing_nearer_than(
     let towards_other = ex.mul(&ox.sub(&px)).add(&ey.mul(&oy.sub(&py)));
     let difference = at_a.mul(&denominator).add(&numerator.mul(&towards_other));
     Some((difference.signum() * denominator.signum()).cmp(&0))
+}
+
+/// Which side of the line from `a` to `b` the circumcentre of `[p, q, r]` lies on: `Greater`
+/// on its left (inside a counter-clockwise region), `Equal` on the line. `None` for collinear
+/// sites.
+///
+/// Exact: a Voronoi vertex within an ulp of a side is rounded to either side of it, and the
+/// clipping of its edges follows where the vertex is.
+pub(crate) fn circumcentre_side(
+    [a, b]: [[f64; 2]; 2],
+    [p, q, r]: [[f64; 2]; 3],
+) -> Option<Ordering> {
+    let [ax, ay, bx, by, px, py, qx, qy, rx, ry] =
+        integers([a[0], a[1], b[0], b[1], p[0], p[1], q[0], q[1], r[0], r[1]]);
+    let (ex, ey) = (bx.sub(&ax), by.sub(&ay));
+    let (ux, uy, wx, wy) = (qx.sub(&px), qy.sub(&py), rx.sub(&px), ry.sub(&py));
+    let determinant = ux.mul(&wy).sub(&uy.mul(&wx));
+    if determinant.signum() == 0 {
+        return None;
+    }
+    // The circumcentre is `p + (cx, cy) / 2D`, with `D` the determinant, so its side of the
+    // line has the sign of `2D·(e × (p − a)) + e × (cx, cy)` times that of `D`.
+    let (u2, w2) = (ux.mul(&ux).add(&uy.mul(&uy)), wx.mul(&wx).add(&wy.mul(&wy)));
+    let (cx, cy) = (wy.mul(&u2).sub(&uy.mul(&w2)), ux.mul(&w2).sub(&wx.mul(&u2)));
+    let from_a = ex.mul(&py.sub(&ay)).sub(&ey.mul(&px.sub(&ax)));
+    let offset = ex.mul(&cy).sub(&ey.mul(&cx));
+    let twice = determinant.add(&determinant);
+    let side = twice.mul(&from_a).add(&offset).signum() * determinant.signum();
+    Some(side.cmp(&0))
 }
 
 /// Where a bisector crosses the line of an edge of the region (see [`bisector_crossing`]).
@@ -421,5 +450,30 @@ mod tests {
         // Squared distances 1 + 1e-600 and 1 from the corner: apart only exactly.
         assert!(!bisector_meets([0.0, 0.0], [[1.0, 1e-300], [0.0, 1.0]]));
         assert!(bisector_meets([0.0, 0.0], [[1.0, 1e-300], [1e-300, 1.0]]));
+    }
+
+    #[test]
+    fn a_circumcentre_an_ulp_from_a_side_is_placed_exactly() {
+        // The circumcentre of these sites is (-0.4, 1.5) in reals; in doubles it lies 2.8e-17
+        // right of the line x = -0.4 (the double nearest -0.4), and rounds 2 ulps left of it.
+        let sites = [[0.1, 0.1], [1.0, 1.0], [1.0, 2.0]];
+        let down = [[-0.4, 4.4], [-0.4, -0.4]];
+        assert_eq!(circumcentre_side(down, sites), Some(Ordering::Greater));
+        assert_eq!(
+            circumcentre_side([down[1], down[0]], sites),
+            Some(Ordering::Less)
+        );
+        // (1, 1): on the line x = 1, and on the left of the line y = 3 run leftwards.
+        let right_angle = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]];
+        assert_eq!(
+            circumcentre_side([[1.0, 0.0], [1.0, 5.0]], right_angle),
+            Some(Ordering::Equal)
+        );
+        assert_eq!(
+            circumcentre_side([[9.0, 3.0], [-9.0, 3.0]], right_angle),
+            Some(Ordering::Greater)
+        );
+        let collinear = [[0.0, 0.0], [1.0, 1.0], [3.0, 3.0]];
+        assert_eq!(circumcentre_side(down, collinear), None);
     }
 }
