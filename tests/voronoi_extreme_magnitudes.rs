@@ -668,3 +668,36 @@ fn a_vertex_rounded_out_of_a_region_at_1e97_is_placed_on_its_side() {
         [4.400000000000001e97, 4.000000000000001e96],
     );
 }
+
+#[test]
+fn a_sliver_along_a_side_within_1e_minus_12_of_parallel_is_kept() {
+    // A box 7 ulps wide at 1e15 + 50, and the bisector of sites 0 and 1 running along its right
+    // side, 1e-25 inside it: site 0's part is a sliver. In the local frame the bisector, moved
+    // from a vertex 2.5e12 out and rounded to ulps of 3.5, seemed to leave the box by that side
+    // before it entered by the top, 8e-5 of its length away: it was taken for a miss by far
+    // more than rounding, and site 0 had no cell.
+    let sites = [
+        [1000000000000051.4, 489.7919087613411],
+        [1000000000000050.6, 489.79190876134055],
+        [1000000000000049.4, 489.7919087613401],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [1000000000000050.1, 489.791908761341],
+        [1000000000000051.0, 489.79190876134135],
+    );
+}
+
+#[test]
+fn a_bisector_crossing_just_beyond_a_corner_enters_by_the_other_side() {
+    // Three collinear sites near 1, in a region reaching 6.6e64: the bisector y = x - 2 meets
+    // the left side's line 2 below the bottom-left corner, at -6e63, and enters by the bottom.
+    // Its parameter along the left side rounded onto that corner, the bisector was taken to
+    // enter there, and the middle strip walked round the whole region.
+    let sites = [[2.0, 1.0], [1.0, 2.0], [3.0, 0.0]];
+    checked_in_rectangle(
+        &sites,
+        [-6.000000000000001e63, -6.000000000000001e63],
+        [1.6000000000000004e64, 6.600000000000001e64],
+    );
+}

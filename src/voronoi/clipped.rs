@@ -4,8 +4,8 @@ use super::cell_sides::Side;
 use super::clip_frame::FrameMap;
 use super::clip_region::{ClipPolygon, polygon_area_centroid};
 use super::crossing_order::{
-    bisector_crossing, bisector_meets, bisector_piece_sides, circumcentre_side, compare_crossings,
-    crosses_edge, crossing_nearer_than,
+    bisector_crossing, bisector_meets, bisector_meets_edge, bisector_piece_sides,
+    circumcentre_side, compare_crossings, crosses_edge, crossing_nearer_than,
 };
 use super::delaunay::INVALID;
 use super::diagram::{EdgeEnds, EdgeGeometry, Voronoi};
@@ -379,10 +379,17 @@ impl Builder<'_> {
         reversed: bool,
     ) -> Option<[f64; 2]> {
         let sites = sites.map(|s| self.input.sites[s as usize]);
-        let crossing = bisector_crossing(self.input_edge(side), sites)?;
-        let [t, _] = crossing.parameters;
-        ((0.0..=1.0).contains(&t) && (crossing.goes_in != reversed) == entering)
-            .then_some(crossing.parameters)
+        let edge = self.input_edge(side);
+        let crossing = bisector_crossing(edge, sites)?;
+        let [t, from_end] = crossing.parameters;
+        // A crossing within the rounding of its parameters (3e-12, relative) of a corner may lie
+        // beyond it: one 2 units past a corner at 6e63 rounds onto it.
+        let on_edge = if t.abs().min(from_end.abs()) <= 1e-11 {
+            bisector_meets_edge(edge, sites)
+        } else {
+            (0.0..=1.0).contains(&t)
+        };
+        (on_edge && (crossing.goes_in != reversed) == entering).then_some(crossing.parameters)
     }
 
     /// Does the point at `parameters` along side `side` coincide with `point` within the
@@ -419,15 +426,38 @@ impl Builder<'_> {
         )
     }
 
-    /// Do the parameters `lo ≥ hi` of crossings along `base + s·dir` lie within
-    /// [`EXACT_ORDER_BAND`] of each other, relative to the larger of them and of how far they
-    /// reach across the region (see [`Reach::parameter_extent`])?
-    fn within_rounding(&self, [lo, hi]: [f64; 2], [base, dir]: [[f64; 2]; 2]) -> bool {
-        lo - hi
-            <= EXACT_ORDER_BAND
-                * lo.abs()
-                    .max(hi.abs())
-                    .max(self.reach.parameter_extent(base, dir))
+    /// Do the parameters `lo ≥ hi` of crossings along `base + s·dir` with sides `sides` (entry
+    /// and exit, `usize::MAX` for none) lie within [`EXACT_ORDER_BAND`] of each other, relative
+    /// to the larger of them and of how far they reach across the region (see
+    /// [`Reach::parameter_extent`]), or within the rounding of where the line crosses those
+    /// sides?
+    fn within_rounding(
+        &self,
+        [lo, hi]: [f64; 2],
+        [base, dir]: [[f64; 2]; 2],
+        sides: [usize; 2],
+    ) -> bool {
+        let band = EXACT_ORDER_BAND
+            * lo.abs()
+                .max(hi.abs())
+                .max(self.reach.parameter_extent(base, dir));
+        let crossings = sides.map(|side| self.crossing_rounding(side, [base, dir]));
+        lo - hi <= band + crossings[0] + crossings[1]
+    }
+
+    /// How far rounding can move the parameter where `base + s·dir` crosses side `side` (0 for
+    /// `usize::MAX`): the rounding of a position near the region over the sine of the angle
+    /// they meet at. A bisector within 1e-12 of parallel to a side, rounded to ulps of 3.5,
+    /// crosses it anywhere along 1e-4 of the region.
+    fn crossing_rounding(&self, side: usize, [base, dir]: [[f64; 2]; 2]) -> f64 {
+        if side == usize::MAX {
+            return 0.0;
+        }
+        let e = self.clip.edge_vector(side);
+        let length = e[0].hypot(e[1]);
+        let across = (e[0] / length * dir[1] - e[1] / length * dir[0]).abs();
+        let size = base[0].abs().max(base[1].abs()) + self.reach.distance(base) + self.reach.radius;
+        8.0 * f64::EPSILON * size / across
     }
 
     /// The two sites of crossing `i` in the input's coordinates, if it is a bisector crossing.
@@ -936,7 +966,7 @@ impl Voronoi {
         let sides = [ends.left, ends.right];
         let (cut_at_start, cut_at_end) = (enter != usize::MAX, exit != usize::MAX);
         let found_piece = lo.partial_cmp(&hi) == Some(Ordering::Less);
-        if !found_piece && !b.within_rounding([lo, hi], [base, dir]) {
+        if !found_piece && !b.within_rounding([lo, hi], [base, dir], [enter, exit]) {
             return ClippedEdge::Miss;
         }
         // Each crossing from the sites, where it lies on its side and goes the right way.

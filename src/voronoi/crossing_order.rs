@@ -320,6 +320,13 @@ pub(crate) fn crosses_edge([a, b]: [[f64; 2]; 2], [p, q]: [[f64; 2]; 2]) -> bool
     along.signum() != 0
 }
 
+/// Does the bisector of `[p, q]` meet the edge from `a` to `b` between its corners or at one,
+/// exactly? (A crossing 2 units beyond a corner at 6e63 rounds onto it.)
+pub(crate) fn bisector_meets_edge([a, b]: [[f64; 2]; 2], [p, q]: [[f64; 2]; 2]) -> bool {
+    let nearer_p = |corner: [f64; 2]| Metric::Euclidean.compare(corner, p, q);
+    nearer_p(a) != nearer_p(b) || nearer_p(a) == Ordering::Equal
+}
+
 /// Does the bisector of `sites` pass exactly through `corner`?
 pub(crate) fn bisector_meets(corner: [f64; 2], [p, q]: [[f64; 2]; 2]) -> bool {
     Metric::Euclidean.compare(corner, p, q) == Ordering::Equal
@@ -475,5 +482,20 @@ mod tests {
         );
         let collinear = [[0.0, 0.0], [1.0, 1.0], [3.0, 3.0]];
         assert_eq!(circumcentre_side(down, collinear), None);
+    }
+
+    #[test]
+    fn a_bisector_meets_an_edge_only_between_its_corners() {
+        let corner = -6.000000000000001e63;
+        let left = [[corner, 6.6e64], [corner, corner]];
+        let bottom = [[corner, corner], [1.6e64, corner]];
+        // y = x - 2: 2 below the corner on the left side's line, 2 right of it on the bottom.
+        let below = [[2.0, 1.0], [3.0, 0.0]];
+        assert!(!bisector_meets_edge(left, below));
+        assert!(bisector_meets_edge(bottom, below));
+        // y = x passes through the corner itself.
+        let through = [[2.0, 1.0], [1.0, 2.0]];
+        assert!(bisector_meets_edge(left, through));
+        assert!(bisector_meets_edge(bottom, through));
     }
 }
