@@ -152,13 +152,6 @@ impl Reach {
         self.distance(p) > Self::FAR * self.radius
     }
 
-    /// How far parameters along `base + s·dir` reach to get across the region from `base`:
-    /// the scale of their rounding (the edge functions at `base` are rounded relative to its
-    /// distance from the region, however near to `base` the crossings are).
-    fn parameter_extent(&self, base: [f64; 2], dir: [f64; 2]) -> f64 {
-        (self.distance(base) + self.radius) / dir[0].hypot(dir[1])
-    }
-
     /// Is `p` at most as far from the centre as `q`? (Squared distances, unless one overflows.)
     fn is_nearer(&self, p: [f64; 2], q: [f64; 2]) -> bool {
         let squared = |p: [f64; 2]| {
@@ -427,37 +420,37 @@ impl Builder<'_> {
     }
 
     /// Do the parameters `lo ≥ hi` of crossings along `base + s·dir` with sides `sides` (entry
-    /// and exit, `usize::MAX` for none) lie within [`EXACT_ORDER_BAND`] of each other, relative
-    /// to the larger of them and of how far they reach across the region (see
-    /// [`Reach::parameter_extent`]), or within the rounding of where the line crosses those
-    /// sides?
+    /// and exit, `usize::MAX` for none) lie within rounding of each other? That is within
+    /// [`EXACT_ORDER_BAND`] of each other, relative to the larger of them and to how far
+    /// parameters reach to get across the region from `base` (the edge functions at `base` are
+    /// rounded relative to its distance from the region, however near to `base` the crossings
+    /// are), or within the rounding of where the line crosses those sides.
     fn within_rounding(
         &self,
         [lo, hi]: [f64; 2],
         [base, dir]: [[f64; 2]; 2],
         sides: [usize; 2],
     ) -> bool {
-        let band = EXACT_ORDER_BAND
-            * lo.abs()
-                .max(hi.abs())
-                .max(self.reach.parameter_extent(base, dir));
-        let crossings = sides.map(|side| self.crossing_rounding(side, [base, dir]));
-        lo - hi <= band + crossings[0] + crossings[1]
-    }
-
-    /// How far rounding can move the parameter where `base + s·dir` crosses side `side` (0 for
-    /// `usize::MAX`): the rounding of a position near the region over the sine of the angle
-    /// they meet at. A bisector within 1e-12 of parallel to a side, rounded to ulps of 3.5,
-    /// crosses it anywhere along 1e-4 of the region.
-    fn crossing_rounding(&self, side: usize, [base, dir]: [[f64; 2]; 2]) -> f64 {
-        if side == usize::MAX {
-            return 0.0;
+        let reach = self.reach.distance(base) + self.reach.radius;
+        let extent = reach / dir[0].hypot(dir[1]);
+        let gap = lo - hi;
+        if gap <= EXACT_ORDER_BAND * lo.abs().max(hi.abs()).max(extent) {
+            return true;
         }
-        let e = self.clip.edge_vector(side);
-        let length = e[0].hypot(e[1]);
-        let across = (e[0] / length * dir[1] - e[1] / length * dir[0]).abs();
-        let size = base[0].abs().max(base[1].abs()) + self.reach.distance(base) + self.reach.radius;
-        8.0 * f64::EPSILON * size / across
+        // Where the line meets a side at an angle whose sine is `sin`, rounding a position
+        // near the region by `δ` moves the crossing by `δ / sin` along it: a bisector within
+        // 1e-12 of parallel to a side, rounded to ulps of 3.5, crosses it anywhere along 1e-4
+        // of the region. (The sine from the side's largest coordinate, not its length: at most
+        // √2 too large, and no square root for the many clean misses.)
+        let rounding = 8.0 * f64::EPSILON * (base[0].abs().max(base[1].abs()) + reach);
+        let moved = |side: usize| {
+            if side == usize::MAX {
+                return 0.0;
+            }
+            let e = self.clip.edge_vector(side);
+            rounding * e[0].abs().max(e[1].abs()) / (e[0] * dir[1] - e[1] * dir[0]).abs()
+        };
+        gap <= moved(sides[0]) + moved(sides[1])
     }
 
     /// The two sites of crossing `i` in the input's coordinates, if it is a bisector crossing.
@@ -850,33 +843,30 @@ impl Voronoi {
         // An in-ray (from infinity) is clipped as the ray from its finite end, and a segment
         // from its end nearer the region, then reversed where that runs against the edge.
         let position = |v: u32| vertex_position.get(v as usize).copied().unwrap_or(INVALID);
+        let (at_o, at_t) = (position(o), position(t));
+        if at_o != INVALID && at_t != INVALID {
+            return ClippedEdge::Piece([at_o, at_t]);
+        }
         // A placed end is clipped from its position: a vertex that rounding put just outside the
         // region but lies on or inside its side exactly is placed on that side (see
         // `rounded_out_vertices`).
-        let placed_at = |v: u32, p: [f64; 2]| match position(v) {
+        let placed_at = |at: u32, p: [f64; 2]| match at {
             INVALID => p,
             i => b.positions[i as usize],
         };
         let geometry = match self.near_geometry(ends, b.reach) {
             EdgeGeometry::Segment { from, to } => EdgeGeometry::Segment {
-                from: placed_at(o, from),
-                to: placed_at(t, to),
+                from: placed_at(at_o, from),
+                to: placed_at(at_t, to),
             },
             EdgeGeometry::Ray { origin, direction } => EdgeGeometry::Ray {
-                origin: placed_at(if o == INVALID { t } else { o }, origin),
+                origin: placed_at(if o == INVALID { at_t } else { at_o }, origin),
                 direction,
             },
             line => line,
         };
         let (base, dir, far, mut lo, mut hi, reversed) = match geometry {
             EdgeGeometry::Segment { from, to } => {
-                if vertex_position[o as usize] != INVALID && vertex_position[t as usize] != INVALID
-                {
-                    return ClippedEdge::Piece([
-                        vertex_position[o as usize],
-                        vertex_position[t as usize],
-                    ]);
-                }
                 // From the end nearer the region: a crossing's parameter is rounded relative to
                 // its distance from the base, which for a far end (a circumcentre of nearly
                 // collinear sites) is the whole edge, an ulp of which can be the whole cell.
@@ -908,25 +898,25 @@ impl Voronoi {
                 false,
             ),
         };
-        // The vertices at `s = 0` and (for a segment) at `s = 1`, and their positions.
-        let (base_vertex, far_vertex) = if reversed { (t, o) } else { (o, t) };
+        // The positions of the vertices at `s = 0` and (for a segment) at `s = 1`.
+        let (base_at, far_at) = if reversed { (at_t, at_o) } else { (at_o, at_t) };
         // An end outside the region is cut off by a side it lies outside of, even where the
         // crossing's parameter rounds onto the end's own (a vertex outside by far less than an
         // ulp of the edge).
-        let needs_entry = position(base_vertex) == INVALID;
-        let needs_exit = far.is_some() && position(far_vertex) == INVALID;
+        let needs_entry = base_at == INVALID;
+        let needs_exit = far.is_some() && far_at == INVALID;
         let (mut enter, mut exit) = (usize::MAX, usize::MAX);
         // An end placed on a side lies on it, whatever the rounding of its position says.
-        let placed_on = |v: u32, i: usize| position(v) != INVALID && b.lies_on_side(position(v), i);
+        let placed_on = |at: u32, i: usize| at != INVALID && b.lies_on_side(at, i);
         for i in 0..m {
-            let f0 = if placed_on(base_vertex, i) {
+            let f0 = if placed_on(base_at, i) {
                 0.0
             } else {
                 clip.edge_function(i, base)
             };
             // For segments use the end's own edge function so the test agrees with the vertex's.
             let f1 = far.map(|to| {
-                if placed_on(far_vertex, i) {
+                if placed_on(far_at, i) {
                     0.0
                 } else {
                     clip.edge_function(i, to)
@@ -1040,15 +1030,15 @@ impl Voronoi {
             // lies on, whose crossing is the vertex. One reaching a vertex on another side
             // crosses the region (a region 1e-86 tall, whose height rounds away against 3).
             let (side, crossing, vertex) = if cut_at_start {
-                (enter, entry, far_vertex)
+                (enter, entry, far_at)
             } else {
-                (exit, exit_at, base_vertex)
+                (exit, exit_at, base_at)
             };
             let s = if cut_at_start { lo } else { hi };
-            let kept = position(vertex) != INVALID
-                && !b.lies_on_side(position(vertex), side)
+            let kept = vertex != INVALID
+                && !b.lies_on_side(vertex, side)
                 && crossing.is_some_and(|parameters| {
-                    let vertex_at = b.positions[position(vertex) as usize];
+                    let vertex_at = b.positions[vertex as usize];
                     b.meets_point(side, parameters, vertex_at, [base, dir], s)
                 });
             if !kept {
@@ -1065,14 +1055,14 @@ impl Voronoi {
             // No entering constraint: the start is the finite end of the edge, inside. (A line
             // or ray whose rates all round to zero has no such end: the edge is dropped rather
             // than indexed past the vertices.)
-            position(base_vertex)
+            base_at
         };
         // Without an exit constraint a segment's far end is inside (a ray always exits).
         let end = if cut_at_end {
             let parameters = exit_at.unwrap_or_else(|| clip.edge_parameters(exit, at(hi)));
             b.crossing(exit, parameters, sites)
         } else {
-            position(far_vertex)
+            far_at
         };
         // A piece whose ends rounded onto one point, or onto an end the region holds only in
         // floating point.
