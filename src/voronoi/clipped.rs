@@ -22,12 +22,10 @@ use std::cmp::Ordering;
 ///
 /// The cells tile the clip polygon without gaps or overlaps: a Voronoi vertex inside the region,
 /// a point where a Voronoi edge crosses the region's boundary, and a corner of the region each
-/// exist once in [`ClippedCells::positions`] and are shared by every cell that touches them. A
-/// Voronoi vertex on a side, or inside the region by less than its own rounding but computed
-/// just outside (decided exactly), is a point of that side. Each edge is clipped once for both
-/// of its cells, so neighbours always agree. Cells are counter-clockwise and indexed by site; a
-/// site whose cell misses the region (possible for sites outside it) and every duplicate site
-/// have an empty polygon.
+/// exist once in [`ClippedCells::positions`] and are shared by every cell that touches them.
+/// Each edge is clipped once for both of its cells, so neighbours always agree. Cells are
+/// counter-clockwise and indexed by site; a site whose cell misses the region (possible for sites
+/// outside it) and every duplicate site have an empty polygon.
 ///
 /// A cell is the part of the region nearest to its site, and it is listed when that part has an
 /// interior, however thin (decided exactly): a cell that meets the region only along its
@@ -739,7 +737,7 @@ impl Voronoi {
         let m = clip.vertices().len();
         let (mut on_boundary, mut outside, mut just_outside) = (Vec::new(), Vec::new(), Vec::new());
         // Outside by less than this (a millionth of the region's depth) is within the rounding
-        // of a vertex, and decided exactly below.
+        // of a vertex: see `rounded_out_vertices`.
         let depth = (0..m).map(|i| clip.edge_function(i, b.reach.centre));
         let rounding_band = EXACT_ORDER_BAND * depth.fold(0.0, f64::max);
         let mut vertex_position = large_arrays::with_capacity(self.vertices.len());
@@ -750,7 +748,7 @@ impl Voronoi {
                 (b.positions.len() - 1) as u32
             } else {
                 if lowest == 0.0 {
-                    on_boundary.push(v as u32);
+                    on_boundary.push(v);
                 } else {
                     outside.push(v as u32);
                     if -lowest <= rounding_band {
@@ -760,23 +758,8 @@ impl Voronoi {
                 INVALID
             }
         }));
-        // A vertex on a side in floating point may lie strictly inside exactly: a circumcentre
-        // 2e-26 inside a side at 1e15 + 50, rounded onto it in the local frame. It is a vertex
-        // inside, so that an edge from it running along the side, 2e-26 inside it, keeps its
-        // piece to where it leaves (see `Voronoi::clip_edge`).
-        if !on_boundary.is_empty() {
-            let sides = self.exact_sides(&on_boundary, b);
-            for (&v, side) in on_boundary.iter().zip(sides) {
-                if side == Some(Ordering::Greater) {
-                    b.positions.push(self.vertices[v as usize]);
-                    vertex_position[v as usize] = (b.positions.len() - 1) as u32;
-                }
-            }
-            on_boundary.retain(|&v| vertex_position[v as usize] == INVALID);
-        }
         b.first_crossing = b.positions.len();
         for &v in &on_boundary {
-            let v = v as usize;
             let p = self.vertices[v];
             let zero = |i: usize| clip.edge_function(i % m, p) == 0.0;
             let i = (0..m).find(|&i| zero(i)).unwrap_or(0);
@@ -788,48 +771,40 @@ impl Voronoi {
                 b.crossing(i, clip.edge_parameters(i, p), None)
             };
         }
-        // A vertex just outside in floating point may lie inside or on the boundary exactly: a
-        // circumcentre of sites near 0.1 lies 2.8e-17 inside the side at x = -0.4 and rounds 2
-        // ulps outside it. Its edges were clipped as if they entered the region at crossings
-        // beyond the vertex, and a cell beside it walked round the whole region. It is placed on
-        // the side it is nearest, as a point of the boundary.
         if !just_outside.is_empty() {
-            let sides = self.exact_sides(&just_outside, b);
-            for (&v, side) in just_outside.iter().zip(sides) {
-                if side >= Some(Ordering::Equal) {
-                    let p = self.vertices[v as usize];
-                    let functions = (0..m).map(|i| (clip.edge_function(i, p), i));
-                    let (_, nearest) = functions
-                        .min_by(|x, y| x.0.total_cmp(&y.0))
-                        .unwrap_or((0.0, 0));
-                    let parameters = clip.edge_parameters(nearest, p);
-                    vertex_position[v as usize] = b.crossing(nearest, parameters, None);
-                }
+            for (v, side) in self.rounded_out_vertices(&just_outside, b) {
+                let p = self.vertices[v as usize];
+                vertex_position[v as usize] = b.crossing(side, clip.edge_parameters(side, p), None);
             }
             outside.retain(|&v| vertex_position[v as usize] == INVALID);
         }
         (vertex_position, outside)
     }
 
-    /// Where each of `vertices` (near the boundary in floating point) lies, exactly: `Less`
-    /// outside a side it is outside of or on in floating point, else `Equal` on one, else
-    /// `Greater` (strictly inside them). `None` where its triangle is flat.
+    /// The vertices of `just_outside` (outside the region by less than the rounding of a
+    /// vertex) that lie inside it or on its boundary exactly, each with the side it is nearest:
+    /// it is placed there, on the boundary. (A circumcentre of sites near 0.1 lies 2.8e-17
+    /// inside the side at x = -0.4 and rounds 2 ulps outside it: its edges were clipped as if
+    /// they entered the region there, at crossings beyond the vertex, and a cell beside it
+    /// walked round the whole region.)
     #[cold]
-    fn exact_sides(&self, vertices: &[u32], b: &Builder) -> Vec<Option<Ordering>> {
+    fn rounded_out_vertices(&self, just_outside: &[u32], b: &Builder) -> Vec<(u32, usize)> {
         let clip = b.clip;
         let m = clip.vertices().len();
-        let triangles = self.a_triangle_of_each(vertices.iter().copied());
-        vertices
+        let triangles = self.a_triangle_of_each(just_outside.iter().copied());
+        just_outside
             .iter()
             .zip(triangles)
-            .map(|(&v, t)| {
+            .filter_map(|(&v, t)| {
                 let p = self.vertices[v as usize];
                 let sites = [0, 1, 2]
                     .map(|k| b.input.sites[self.delaunay.triangles[3 * t as usize + k] as usize]);
-                (0..m)
-                    .filter(|&i| clip.edge_function(i, p) <= 0.0)
-                    .map(|i| circumcentre_side(b.input_edge(i), sites))
-                    .try_fold(Ordering::Greater, |lowest, side| Some(lowest.min(side?)))
+                let functions = (0..m).map(|i| (clip.edge_function(i, p), i));
+                let inside_exactly = functions.clone().filter(|&(f, _)| f < 0.0).all(|(_, i)| {
+                    circumcentre_side(b.input_edge(i), sites) >= Some(Ordering::Equal)
+                });
+                let (_, side) = functions.min_by(|x, y| x.0.total_cmp(&y.0))?;
+                inside_exactly.then_some((v, side))
             })
             .collect()
     }
@@ -874,7 +849,7 @@ impl Voronoi {
         }
         // A placed end is clipped from its position: a vertex that rounding put just outside the
         // region but lies on or inside its side exactly is placed on that side (see
-        // `Voronoi::place_vertices_in`).
+        // `rounded_out_vertices`).
         let placed_at = |at: u32, p: [f64; 2]| match at {
             INVALID => p,
             i => b.positions[i as usize],
@@ -1049,13 +1024,11 @@ impl Voronoi {
             // the vertex's: the piece from the crossing, placed from the sites, to the vertex is
             // kept when the crossing lies on its side and where the edge put it, within the
             // rounding of that computation (an edge crossing a side steeply, next to a vertex
-            // far closer to the side than an ulp of the edge), or where it lies on the edge
-            // exactly (an edge from a vertex 2e-26 inside a side, running along it to leave
-            // near the far corner). Another edge running along a side within rounding has a
-            // crossing anywhere along it, and is left as missing; so is one leaving at once
-            // from a vertex on the boundary through the side the vertex lies on, whose crossing
-            // is the vertex. One reaching a vertex on another side crosses the region (a region
-            // 1e-86 tall, whose height rounds away against 3).
+            // far closer to the side than an ulp of the edge). An edge running along a side
+            // within rounding has a crossing anywhere along it, and is left as missing; so is
+            // one leaving at once from a vertex on the boundary through the side the vertex
+            // lies on, whose crossing is the vertex. One reaching a vertex on another side
+            // crosses the region (a region 1e-86 tall, whose height rounds away against 3).
             let (side, crossing, vertex) = if cut_at_start {
                 (enter, entry, far_at)
             } else {
@@ -1067,7 +1040,6 @@ impl Voronoi {
                 && crossing.is_some_and(|parameters| {
                     let vertex_at = b.positions[vertex as usize];
                     b.meets_point(side, parameters, vertex_at, [base, dir], s)
-                        || self.crosses_on_edge(key, ends, side, b)
                 });
             if !kept {
                 return ClippedEdge::NearMiss;
