@@ -701,3 +701,23 @@ fn a_bisector_crossing_just_beyond_a_corner_enters_by_the_other_side() {
         [1.6000000000000004e64, 6.600000000000001e64],
     );
 }
+
+#[test]
+fn a_ray_along_a_side_from_a_vertex_rounded_onto_it_is_kept() {
+    // A box 5 ulps wide at 1e15 + 50.75, its left side half way between site 1 and the other
+    // three. The Voronoi vertex of sites 0, 1 and 2 lies 2e-26 inside that side and rounds onto
+    // it; the ray of sites 1 and 2 runs down the side from it, inside by less, and leaves the
+    // box 7e-15 above the bottom. The ray was dropped as leaving through the vertex's own side
+    // at once, and site 1's sliver along the side lost all but its tip.
+    let sites = [
+        [1000000000000050.9, 95.77401993858466],
+        [1000000000000050.6, 95.77401993858452],
+        [1000000000000050.9, 95.77401993858444],
+        [1000000000000050.9, 95.7740199385847],
+    ];
+    checked_in_rectangle(
+        &sites,
+        [1000000000000050.8, 95.77401993858447],
+        [1000000000000051.4, 95.77401993858456],
+    );
+}
