@@ -24,10 +24,10 @@ use std::cmp::Ordering;
 /// a point where a Voronoi edge crosses the region's boundary, and a corner of the region each
 /// exist once in [`ClippedCells::positions`] and are shared by every cell that touches them. A
 /// Voronoi vertex on a side in floating point, or computed just outside a side that it lies on
-/// or inside exactly, is a point of that side. Each edge is clipped once for both of its cells,
-/// so neighbours always agree. Cells are counter-clockwise and indexed by site; a site whose
-/// cell misses the region (possible for sites outside it) and every duplicate site have an empty
-/// polygon.
+/// or inside exactly, is a point of that side; an edge from it that runs inside along that side
+/// keeps its piece there. Each edge is clipped once for both of its cells, so neighbours always
+/// agree. Cells are counter-clockwise and indexed by site; a site whose cell misses the region
+/// (possible for sites outside it) and every duplicate site have an empty polygon.
 ///
 /// A cell is the part of the region nearest to its site, and it is listed when that part has an
 /// interior, however thin (decided exactly): a cell that meets the region only along its
