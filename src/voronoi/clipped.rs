@@ -469,6 +469,13 @@ impl Builder<'_> {
         [edge, (edge + 1) % m].map(|k| self.input.corners[k])
     }
 
+    /// Which side of side `side`'s line the Voronoi vertex of the sites `triangle` lies on,
+    /// decided exactly: `Greater` inside (see [`circumcentre_side`]).
+    fn vertex_side(&self, side: usize, triangle: [u32; 3]) -> Option<Ordering> {
+        let sites = triangle.map(|s| self.input.sites[s as usize]);
+        circumcentre_side(self.input_edge(side), sites)
+    }
+
     /// Does position `p` lie on side `side` (a crossing of it, or one of its two corners)?
     fn lies_on_side(&self, p: u32, side: usize) -> bool {
         let m = self.clip.vertices().len();
@@ -799,12 +806,12 @@ impl Voronoi {
             .zip(triangles)
             .filter_map(|(&v, t)| {
                 let p = self.vertices[v as usize];
-                let sites = [0, 1, 2]
-                    .map(|k| b.input.sites[self.delaunay.triangles[3 * t as usize + k] as usize]);
+                let triangle = [0, 1, 2].map(|k| self.delaunay.triangles[3 * t as usize + k]);
                 let functions = (0..m).map(|i| (clip.edge_function(i, p), i));
-                let inside_exactly = functions.clone().filter(|&(f, _)| f < 0.0).all(|(_, i)| {
-                    circumcentre_side(b.input_edge(i), sites) >= Some(Ordering::Equal)
-                });
+                let inside_exactly = functions
+                    .clone()
+                    .filter(|&(f, _)| f < 0.0)
+                    .all(|(_, i)| b.vertex_side(i, triangle) >= Some(Ordering::Equal));
                 let (_, side) = functions.min_by(|x, y| x.0.total_cmp(&y.0))?;
                 inside_exactly.then_some((v, side))
             })
@@ -1106,8 +1113,7 @@ impl Voronoi {
         if third == INVALID {
             return false;
         }
-        let sites = [ends.left, ends.right, third].map(|s| b.input.sites[s as usize]);
-        circumcentre_side(b.input_edge(side), sites) == Some(Ordering::Greater)
+        b.vertex_side(side, [ends.left, ends.right, third]) == Some(Ordering::Greater)
             && self.crosses_on_edge(key, ends, side, b)
     }
 
